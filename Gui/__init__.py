@@ -1,0 +1,1 @@
+"""FabGuide GUI: the workbench, its commands, task panels and view providers."""

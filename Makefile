@@ -1,0 +1,33 @@
+# FabGuide: the two commands a user needs, wrapping CMake (see README.md).
+#   make          install missing Debian packages, build everything into build/
+#   make test     ... then run every test (C++, headless FreeCAD, FreeCAD GUI under Xvfb)
+#   make demo     ... then install the workbench into FreeCAD and run it on a bundled example
+#   make install  ... then install the workbench (MOD_DIR=... to choose the folder)
+BUILD ?= build
+JOBS ?= $(shell nproc)
+MOD_DIR ?=
+
+.PHONY: all deps test demo install format clean
+
+all: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake --build $(BUILD) -j$(JOBS)
+
+deps:
+	@tools/install-deps
+
+test: all
+	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS)
+
+install: all
+	cmake --install $(BUILD) $(if $(MOD_DIR),--prefix $(MOD_DIR)) >/dev/null
+	@echo "FabGuide installed into $$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' $(BUILD)/CMakeCache.txt)$(if $(MOD_DIR), (here: $(MOD_DIR)))"
+
+demo: install
+	freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
+
+format:
+	clang-format -i $$(git ls-files 'App/*.cpp' 'App/*.h' 'python/*.cpp' 'tests/*.cpp' 'tests/*.h')
+
+clean:
+	rm -rf $(BUILD)

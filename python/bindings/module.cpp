@@ -1,0 +1,16 @@
+// fabguide_core: Python bindings of the C++ core. Plain data crosses this boundary
+// (numbers, lists, dicts); FreeCAD document objects in python/fabguide call into it.
+#include "Core/Version.h"
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(fabguide_core, m)
+{
+    m.doc() = "FabGuide core: works-like solving, flat-pack layout and zero-waste exploration";
+    m.attr("__version__") = fabguide::version();
+    m.def("dependency_versions", &fabguide::dependencyVersions,
+          "List of (library, version) compiled into the core.");
+}
