@@ -27,7 +27,7 @@ demo: install
 	freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
 
 format:
-	clang-format -i $$(git ls-files 'App/*.cpp' 'App/*.h' 'python/*.cpp' 'tests/*.cpp' 'tests/*.h')
+	clang-format -i $$(find App python/bindings tests -name '*.cpp' -o -name '*.h')
 
 clean:
 	rm -rf $(BUILD)

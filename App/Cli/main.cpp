@@ -1,33 +1,18 @@
-// `fabguide`: the command-line face of the core. Each domain adds its subcommands here
-// (solve, pack, optimise, printable); every one reads and writes the documented JSON formats.
+// `fabguide`: the command-line face of the core. Every subcommand reads and writes the JSON
+// formats of docs/formats.md; errors name the file and the offending field.
+#include "Cli/Commands.h"
 #include "Core/Version.h"
-
-#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
-
-namespace {
-
-void addVersionCommand(CLI::App& app)
-{
-    auto* cmd =
-        app.add_subcommand("version", "Print the FabGuide version and the libraries it was built with");
-    cmd->callback([] {
-        std::cout << "fabguide " << fabguide::version() << "\n";
-        for (const auto& [library, version] : fabguide::dependencyVersions())
-            std::cout << "  " << library << " " << version << "\n";
-    });
-}
-
-}  // namespace
 
 int main(int argc, char** argv)
 {
     CLI::App app{"FabGuide: fabrication guided by function and material usage"};
     app.set_version_flag("--version", fabguide::version());
     app.require_subcommand(1);
-    addVersionCommand(app);
+    fabguide::cli::addVersionCommand(app);
+    fabguide::cli::addPackCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

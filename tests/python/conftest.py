@@ -13,3 +13,22 @@ def mod_dir():
 @pytest.fixture(scope="session")
 def source_dir():
     return os.environ["FABGUIDE_SOURCE_DIR"]
+
+
+@pytest.fixture(scope="session")
+def fabguide_cli():
+    """The command-line tool in the build tree."""
+    path = os.path.join(os.environ["FABGUIDE_BUILD_DIR"], "fabguide")
+    assert os.access(path, os.X_OK), path
+    return path
+
+
+@pytest.fixture(scope="session")
+def benchmarks(source_dir):
+    """../shared/benchmarks beside the clone; CI always has it, a user's clone may not."""
+    path = os.path.join(os.path.dirname(source_dir), "shared", "benchmarks")
+    if not os.path.isdir(path):
+        if os.environ.get("CI"):
+            pytest.fail("CI without ../shared/benchmarks beside the checkout")
+        pytest.skip("../shared/benchmarks is not beside this checkout")
+    return path

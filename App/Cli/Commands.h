@@ -1,0 +1,11 @@
+// The fabguide subcommands; each adds itself to the command line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace fabguide::cli {
+
+void addVersionCommand(CLI::App& app);
+void addPackCommand(CLI::App& app);
+
+}  // namespace fabguide::cli

@@ -1,0 +1,70 @@
+// `fabguide pack`: lay parts out on master boards (thesis 5.3.1, 5.4.3), or pack a strip.
+#include "Cli/Commands.h"
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+
+namespace fabguide::cli {
+
+namespace {
+
+struct PackArguments {
+    std::string input;
+    std::string output;
+    bool strip = false;
+    bool bottomLeft = false;
+    material::OrderingSearchOptions search;
+};
+
+void run(const PackArguments& args)
+{
+    const nlohmann::json document = io::readJsonFile(args.input);
+    const material::PackProblem problem =
+        args.strip ? io::readStripInstance(document) : io::readPackProblem(document);
+    material::OrderingSearchOptions search = args.search;
+    search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
+    const material::Layout layout = material::pack(problem, search);
+    io::writeJsonFile(
+        args.output,
+        io::layoutToJson(layout, problem, args.strip ? io::PartNames::Indices : io::PartNames::Ids));
+
+    std::printf("%zu parts on %zu board(s)\n", layout.placements.size(), layout.sheets.size());
+    if (problem.strip)
+        std::printf("strip height  %.6g (width %.6g)\n", layout.stripHeight, layout.sheets[0].width);
+    std::printf("usage         %.4f  (part area / layout bounding rectangle)\n", layout.usage());
+    std::printf("utilisation   %.4f  (part area / boards used)\n", layout.sheetUtilisation());
+    std::printf("waste area    %.6g mm^2\n", layout.wasteArea());
+    std::printf("layout        %s\n", args.output.c_str());
+}
+
+}  // namespace
+
+void addPackCommand(CLI::App& app)
+{
+    auto args = std::make_shared<PackArguments>();
+    auto* cmd = app.add_subcommand("pack", "Lay parts out on master boards (*.pack.json) or pack a strip");
+    cmd->add_option("input", args->input, "*.pack.json, or an OR-Datasets instance with --strip")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->output, "layout JSON to write")->required();
+    cmd->add_flag("--strip", args->strip,
+                  "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
+    cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");
+    cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
+    cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    args->search.iterations = std::numeric_limits<long>::max();
+    cmd->add_option("--iterations", args->search.iterations,
+                    "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)");
+    cmd->add_option("--memory", args->search.memory, "late-acceptance history of the ordering search")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->callback([args] { run(*args); });
+}
+
+}  // namespace fabguide::cli

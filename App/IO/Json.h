@@ -1,0 +1,43 @@
+// Reading JSON model files with errors that name the file, the position and the field.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace fabguide::io {
+
+/// Malformed input: the message names the offending field, e.g. "parts[2].width: must be > 0".
+struct FormatError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+nlohmann::json readJsonFile(const std::string& path);
+void writeJsonFile(const std::string& path, const nlohmann::json& value);
+
+/// A JSON object being read, with the path that names it in error messages.
+class Fields {
+public:
+    Fields(const nlohmann::json& object, std::string path);
+
+    /// A number; `fallback` when absent, else a FormatError. Checks `minimum` (inclusive) if given.
+    double number(const std::string& key, std::optional<double> fallback = std::nullopt,
+                  std::optional<double> minimum = std::nullopt) const;
+    /// A number that must be strictly positive.
+    double positive(const std::string& key) const;
+    int integer(const std::string& key, std::optional<int> fallback = std::nullopt) const;
+    std::string text(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
+    /// The array at key (required unless `optional`, then empty when absent).
+    const nlohmann::json& array(const std::string& key, bool optional = false) const;
+    std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+    bool has(const std::string& key) const { return object_.contains(key); }
+
+private:
+    const nlohmann::json* find(const std::string& key) const;
+    const nlohmann::json& object_;
+    std::string path_;
+};
+
+}  // namespace fabguide::io

@@ -1,0 +1,128 @@
+#include "Material/Pack.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fabguide::material {
+
+namespace {
+
+constexpr double kEpsilon = 1e-9;
+
+/// Cells a length of `mm` occupies (rounded up: a rasterised part never overlaps its neighbour).
+int cellsCovering(double mm, double resolution)
+{
+    return static_cast<int>(std::ceil(mm / resolution - kEpsilon));
+}
+
+/// Whole cells inside `mm` (rounded down: a layout never leaves the board).
+int cellsWithin(double mm, double resolution)
+{
+    return static_cast<int>(std::floor(mm / resolution + kEpsilon));
+}
+
+RasterPart rasterise(const PartSpec& spec, const PackSettings& settings)
+{
+    const double clearance = settings.kerf + settings.spacing;
+    const Footprint upright =
+        Footprint::rectangle(cellsCovering(spec.width + clearance, settings.resolution),
+                             cellsCovering(spec.height + clearance, settings.resolution));
+    RasterPart part{spec.id, {}, {}};
+    for (int rotation : spec.orientations) {
+        const Footprint shape = rotation % 180 == 0 ? upright : upright.rotated90();
+        if (std::find(part.shapes.begin(), part.shapes.end(), shape) == part.shapes.end()) {
+            part.shapes.push_back(shape);
+            part.rotations.push_back(rotation);
+        }
+    }
+    return part;
+}
+
+void checkSettings(const PackProblem& problem)
+{
+    const PackSettings& s = problem.settings;
+    if (!(s.resolution > 0))
+        throw std::invalid_argument("settings.resolution must be positive");
+    if (s.kerf < 0 || s.spacing < 0 || s.trim < 0)
+        throw std::invalid_argument("settings.kerf, spacing and trim must not be negative");
+    if (problem.boards.empty())
+        throw std::invalid_argument("boards: at least one master board is needed");
+    if (problem.parts.empty())
+        throw std::invalid_argument("parts: nothing to lay out");
+}
+
+}  // namespace
+
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+{
+    checkSettings(problem);
+    const PackSettings& settings = problem.settings;
+    const double clearance = settings.kerf + settings.spacing;
+
+    std::vector<RasterPart> parts;  // one per unit of demand
+    std::vector<int> specOf;
+    long stripCells = 0;
+    for (size_t i = 0; i < problem.parts.size(); ++i)
+        for (int q = 0; q < problem.parts[i].quantity; ++q) {
+            parts.push_back(rasterise(problem.parts[i], settings));
+            specOf.push_back(static_cast<int>(i));
+            stripCells += std::max(parts.back().shapes[0].width(), parts.back().shapes[0].height());
+        }
+
+    std::vector<BoardStock> stock;
+    for (const MasterBoard& board : problem.boards)
+        stock.push_back({cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
+                         problem.strip
+                             ? static_cast<int>(stripCells)
+                             : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
+                         problem.strip ? 1 : board.count});
+    if (problem.strip)
+        stock.resize(1);
+
+    OrderingSearchOptions options = search;
+    options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
+    // Up to half the time builds the best-fit order; the rest searches orderings from it and from
+    // the thesis' decreasing-extent order (each wins on some instances), half each.
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(options.timeLimit / 2));
+    const std::vector<int> bestFit = bestFitOrder(parts, stock, options.criterion, options.bounds, deadline);
+    const double left = options.timeLimit - std::chrono::duration<double>(Clock::now() - start).count();
+    options.timeLimit = std::max(0.0, left / 2);
+    GridLayout grid = exploreOrderings(parts, bestFit, stock, options);
+    GridLayout other = exploreOrderings(parts, decreasingExtentOrder(parts), stock, options);
+    if (cost(other, stock, options.bounds) < cost(grid, stock, options.bounds))
+        grid = std::move(other);
+
+    if (!grid.unplaced.empty())
+        throw PackingError("not enough master boards: part '" + parts[grid.unplaced.front()].name + "' and " +
+                           std::to_string(grid.unplaced.size() - 1) +
+                           " more do not fit on the boards available");
+
+    Layout layout;
+    const double tau = settings.resolution;
+    for (size_t s = 0; s < grid.stock.size(); ++s) {
+        MasterBoard sheet = problem.boards[grid.stock[s]];
+        if (problem.strip)
+            sheet.height = layout.stripHeight = grid.usedHeight[s] * tau - clearance;
+        sheet.count = 1;
+        layout.sheets.push_back(sheet);
+        layout.sheetArea += sheet.width * sheet.height;
+        const double usedWidth = problem.strip ? sheet.width : grid.usedWidth[s] * tau - clearance;
+        layout.boundingArea += usedWidth * (grid.usedHeight[s] * tau - clearance);
+    }
+    for (const Placed& p : grid.placed) {
+        const PartSpec& spec = problem.parts[specOf[p.part]];
+        const int rotation = parts[p.part].rotations[p.shape];
+        const bool turned = rotation % 180 != 0;
+        layout.placements.push_back({specOf[p.part], p.sheet, settings.trim + p.x * tau,
+                                     settings.trim + p.y * tau, rotation, turned ? spec.height : spec.width,
+                                     turned ? spec.width : spec.height});
+        layout.partArea += spec.width * spec.height;
+    }
+    return layout;
+}
+
+}  // namespace fabguide::material

@@ -1,0 +1,70 @@
+// Flat-pack layout in millimetres: master boards, parts, settings -> layout (thesis 5.2.2, 5.3.1, 5.4.3).
+#pragma once
+
+#include "Material/OrderingSearch.h"
+
+#include <string>
+#include <vector>
+
+namespace fabguide::material {
+
+/// A kind of master board (thesis 5.1): a leftover rectangle is just another one.
+struct MasterBoard {
+    std::string name;
+    std::string material;
+    double width = 0;      ///< mm, along the layout's x axis
+    double height = 0;     ///< mm
+    double thickness = 0;  ///< mm
+    int count = 1;         ///< boards in stock; -1 means as many as needed
+};
+
+/// A rectangular part to cut, `quantity` times.
+struct PartSpec {
+    std::string id;
+    double width = 0;   ///< mm
+    double height = 0;  ///< mm
+    int quantity = 1;
+    std::vector<int> orientations{0, 90, 180, 270};  ///< allowed rotations, degrees counter-clockwise
+};
+
+struct PackSettings {
+    double resolution = 0.5;  ///< grid cell size τ in mm (thesis 5.4.1)
+    double kerf = 0;          ///< width of the cut in mm
+    double spacing = 0;       ///< extra material left between parts, mm
+    double trim = 0;          ///< margin cut off every board edge, mm
+};
+
+struct PackProblem {
+    std::vector<MasterBoard> boards;
+    std::vector<PartSpec> parts;
+    PackSettings settings;
+    bool strip = false;  ///< strip packing: one board of boards[0].width, height to minimise
+};
+
+/// One unit of a part on a sheet; x, y is the lower-left corner of the part as placed.
+struct Placement {
+    int part = 0;   ///< index into PackProblem::parts
+    int sheet = 0;  ///< index into Layout::sheets
+    double x = 0, y = 0;
+    int rotation = 0;
+    double width = 0, height = 0;  ///< size as placed
+};
+
+struct Layout {
+    std::vector<MasterBoard> sheets;  ///< the boards used, in order
+    std::vector<Placement> placements;
+    double stripHeight = 0;   ///< strip mode: height used
+    double partArea = 0;      ///< mm²
+    double boundingArea = 0;  ///< summed bounding rectangles of each sheet's layout, mm²
+    double sheetArea = 0;     ///< summed areas of the boards used, mm²
+    double usage() const { return partArea / boundingArea; }  ///< the thesis' measure (5.2.3)
+    double sheetUtilisation() const { return partArea / sheetArea; }
+    double wasteArea() const { return sheetArea - partArea; }
+};
+
+/// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
+/// order search with Docking (or Bottom-Left), convert back to mm.
+/// Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search);
+
+}  // namespace fabguide::material

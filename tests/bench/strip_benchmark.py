@@ -1,0 +1,106 @@
+"""Strip-packing benchmark: C1-C7 (Hopper & Turton) and N1-N13 (Burke et al.) with rotation.
+
+Runs `build/fabguide pack --strip` on every instance, checks each layout independently
+(layout_check.py), and prints the gap to the optimal height (all instances are perfect packings)
+and the time per instance as a Markdown table; --write also puts it into docs/benchmarks.md.
+
+    python3 tests/bench/strip_benchmark.py [--time-limit S] [--write]
+"""
+import argparse
+import concurrent.futures
+import glob
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import layout_check  # noqa: E402
+
+SETS = [("C1-C7", "hopper-turton-c"), ("N1-N13", "burke-n")]
+MARK = "<!-- strip-benchmark -->"
+
+
+def instances(folder):
+    def key(path):
+        name = os.path.basename(path)[:-5]
+        digits = "".join(c if c.isdigit() else " " for c in name).split()
+        return [int(d) for d in digits]
+    return sorted(glob.glob(os.path.join(ROOT, "..", "shared", "benchmarks", "packing", folder, "*.json")), key=key)
+
+
+def run(path, time_limit, fabguide):
+    instance = json.load(open(path))
+    width, optimum = instance["Objects"][0]["Length"], instance["Objects"][0]["Height"]
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "layout.json")
+        start = time.monotonic()
+        subprocess.run([fabguide, "pack", "--strip", path, "-o", out, "--time-limit", str(time_limit)],
+                       check=True, capture_output=True)
+        seconds = time.monotonic() - start
+        layout = json.load(open(out))
+    bad = layout_check.problems(layout, layout_check.demand_of_strip_instance(instance),
+                                lambda board: (width, layout["strip_height"], 0))
+    if bad:
+        raise SystemExit("{}: invalid layout: {}".format(path, bad[:3]))
+    height = layout["strip_height"]
+    return {"name": os.path.basename(path)[:-5], "height": height, "optimum": optimum,
+            "gap": 100.0 * (height - optimum) / optimum, "seconds": seconds,
+            "items": len(layout["placements"])}
+
+
+def table(results, time_limit):
+    lines = [MARK, "### Strip packing, gap to the optimal height (rotation allowed)", "",
+             "`python3 tests/bench/strip_benchmark.py --time-limit {} --write` on {} ({} cores, one instance per core); "
+             "every layout checked for overlaps and demand.".format(time_limit, platform.machine(), os.cpu_count()),
+             "", "| set | instances | mean gap % | max gap % | mean s | max s |", "|---|---|---|---|---|---|"]
+    for label, rows in results:
+        lines.append("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |".format(
+            label, len(rows), statistics.mean(r["gap"] for r in rows), max(r["gap"] for r in rows),
+            statistics.mean(r["seconds"] for r in rows), max(r["seconds"] for r in rows)))
+    lines += ["", "<details><summary>per instance</summary>", "",
+              "| instance | items | height | optimum | gap % | s |", "|---|---|---|---|---|---|"]
+    for _, rows in results:
+        for r in rows:
+            lines.append("| {name} | {items} | {height:g} | {optimum} | {gap:.2f} | {seconds:.2f} |".format(**r))
+    lines += ["", "</details>", MARK]
+    return "\n".join(lines)
+
+
+def write(text):
+    path = os.path.join(ROOT, "docs", "benchmarks.md")
+    old = open(path).read() if os.path.exists(path) else "# Benchmarks\n"
+    parts = old.split(MARK)
+    new = parts[0] + text + parts[2] if len(parts) == 3 else old.rstrip() + "\n\n" + text + "\n"
+    open(path, "w").write(new)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--time-limit", type=float, default=1.0, help="seconds of ordering search per instance")
+    parser.add_argument("--fabguide", default=os.path.join(ROOT, "build", "fabguide"))
+    parser.add_argument("--jobs", type=int, default=os.cpu_count(), help="instances run at once")
+    parser.add_argument("--write", action="store_true", help="update docs/benchmarks.md")
+    args = parser.parse_args()
+    results = []
+    for label, folder in SETS:
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            rows = list(pool.map(lambda path: run(path, args.time_limit, args.fabguide), instances(folder)))
+        for r in rows:
+            print("{name:8} items {items:5} height {height:6g} / {optimum:4} gap {gap:6.2f}%  {seconds:.2f}s".format(**r),
+                  flush=True)
+        results.append((label, rows))
+    text = table(results, args.time_limit)
+    print(text)
+    if args.write:
+        write(text)
+
+
+if __name__ == "__main__":
+    main()

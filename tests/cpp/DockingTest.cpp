@@ -1,0 +1,122 @@
+#include "Material/Docking.h"
+#include "PackingTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+using namespace fabguide::material;
+using fabguide::material::testing::expectValidLayout;
+using fabguide::material::testing::randomParts;
+using fabguide::material::testing::rectanglePart;
+
+namespace {
+std::vector<int> inOrder(size_t n)
+{
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    return order;
+}
+}  // namespace
+
+TEST(Docking, FirstPartGoesToTheCorner)
+{
+    const std::vector<RasterPart> parts{rectanglePart("a", 4, 3)};
+    const GridLayout layout = dock(parts, {0}, {{10, 10, 1}}, Criterion::Docking);
+    ASSERT_EQ(layout.placed.size(), 1u);
+    EXPECT_EQ(layout.placed[0].x, 0);
+    EXPECT_EQ(layout.placed[0].y, 0);
+}
+
+TEST(Docking, FourSquaresTileTheirBoardExactly)
+{
+    std::vector<RasterPart> parts;
+    for (const char* name : {"a", "b", "c", "d"})
+        parts.push_back(rectanglePart(name, 10, 10));
+    const std::vector<BoardStock> stock{{20, 20, 1}};
+    const GridLayout layout = dock(parts, inOrder(4), stock, Criterion::Docking);
+    expectValidLayout(layout, parts, stock);
+    EXPECT_EQ(layout.usedWidth[0], 20);
+    EXPECT_EQ(layout.usedHeight[0], 20);
+}
+
+TEST(Docking, WastageCriterionKeepsTheLayoutCompact)
+{
+    // A tall part then a wide one: least wastage puts the wide one beside or above, never far away,
+    // so the bounding rectangle holds exactly the two parts' area plus the unavoidable gap.
+    const std::vector<RasterPart> parts{rectanglePart("tall", 2, 8, false),
+                                        rectanglePart("small", 2, 8, false)};
+    const GridLayout layout = dock(parts, {0, 1}, {{50, 50, 1}}, Criterion::Docking);
+    EXPECT_EQ(layout.usedWidth[0] * layout.usedHeight[0], 32);
+}
+
+TEST(Docking, EnclosedAreaCountsTheSpaceShutBehindAPart)
+{
+    Sheet sheet(10, 10);
+    sheet.place(Footprint::rectangle(2, 2), {0, 0});
+    // A 2x2 part hovering two rows above the first shuts in the 2x2 gap beneath it.
+    EXPECT_EQ(sheet.enclosedArea(Footprint::rectangle(2, 2), {0, 4}), 4);
+    // Resting right on top of it encloses nothing.
+    EXPECT_EQ(sheet.enclosedArea(Footprint::rectangle(2, 2), {0, 2}), 0);
+}
+
+TEST(Docking, RandomPartsNeverOverlapOnBoardsOrStrips)
+{
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        const std::vector<RasterPart> parts = randomParts(25, 12, seed);
+        for (Criterion criterion : {Criterion::Docking, Criterion::BottomLeft}) {
+            const std::vector<BoardStock> boards{{30, 20, -1}};
+            expectValidLayout(dock(parts, inOrder(parts.size()), boards, criterion), parts, boards);
+            const std::vector<BoardStock> strip{{30, 400, 1}};
+            expectValidLayout(dock(parts, inOrder(parts.size()), strip, criterion, Bounds::Strip), parts,
+                              strip);
+        }
+    }
+}
+
+TEST(Docking, BottomLeftPlacesLowestThenLeftmost)
+{
+    const std::vector<RasterPart> parts{rectanglePart("a", 5, 5, false), rectanglePart("b", 5, 5, false)};
+    const GridLayout layout = dock(parts, {0, 1}, {{20, 20, 1}}, Criterion::BottomLeft);
+    EXPECT_EQ(layout.placed[1].x, 5);
+    EXPECT_EQ(layout.placed[1].y, 0);
+}
+
+TEST(Docking, OverflowOpensFurtherBoards)
+{
+    std::vector<RasterPart> parts{rectanglePart("a", 6, 6), rectanglePart("b", 6, 6),
+                                  rectanglePart("c", 6, 6)};
+    const std::vector<BoardStock> stock{{10, 10, 3}};
+    const GridLayout layout = dock(parts, inOrder(3), stock, Criterion::Docking);
+    EXPECT_EQ(layout.stock.size(), 3u);
+    expectValidLayout(layout, parts, stock);
+}
+
+TEST(Docking, UsesTheNextStockWhenTheFirstRunsOut)
+{
+    std::vector<RasterPart> parts{rectanglePart("a", 6, 6), rectanglePart("b", 6, 6)};
+    const std::vector<BoardStock> stock{{10, 10, 1}, {8, 8, 1}};
+    const GridLayout layout = dock(parts, inOrder(2), stock, Criterion::Docking);
+    EXPECT_EQ(layout.stock, (std::vector<int>{0, 1}));
+}
+
+TEST(Docking, PartsLeftWhenTheBoardsRunOutAreListed)
+{
+    std::vector<RasterPart> parts{rectanglePart("left side", 6, 6), rectanglePart("right side", 6, 6)};
+    const GridLayout layout = dock(parts, inOrder(2), {{10, 10, 1}}, Criterion::Docking);
+    EXPECT_EQ(layout.placed.size(), 1u);
+    EXPECT_EQ(layout.unplaced, (std::vector<int>{1}));
+}
+
+TEST(Docking, PartLargerThanEveryBoardIsNamed)
+{
+    std::vector<RasterPart> parts{rectanglePart("table top", 30, 12)};
+    try {
+        dock(parts, {0}, {{20, 20, 5}, {25, 10, 5}}, Criterion::Docking);
+        FAIL() << "expected PackingError";
+    } catch (const PackingError& e) {
+        EXPECT_NE(std::string(e.what()).find("'table top' is larger than every master board"),
+                  std::string::npos)
+            << e.what();
+    }
+}

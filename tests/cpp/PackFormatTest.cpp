@@ -1,0 +1,120 @@
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+
+#include <gtest/gtest.h>
+
+using namespace fabguide;
+using nlohmann::json;
+
+namespace {
+
+json goodProblem()
+{
+    return json::parse(R"({
+      "format": "fabguide.pack", "version": 1,
+      "settings": {"resolution": 1, "kerf": 0.2, "spacing": 1, "trim": 5},
+      "boards": [{"name": "poplar", "material": "poplar plywood", "width": 600, "height": 400, "thickness": 4, "count": 2}],
+      "parts": [{"id": "lid", "width": 200, "height": 150, "quantity": 2, "orientations": [0, 180]},
+                {"id": "side", "width": 120, "height": 80}]
+    })");
+}
+
+/// The FormatError message for `document`, or "" if it reads.
+std::string errorOf(const json& document)
+{
+    try {
+        io::readPackProblem(document);
+    } catch (const io::FormatError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(PackFormat, ReadsEveryField)
+{
+    const material::PackProblem p = io::readPackProblem(goodProblem());
+    EXPECT_DOUBLE_EQ(p.settings.kerf, 0.2);
+    EXPECT_DOUBLE_EQ(p.settings.trim, 5);
+    ASSERT_EQ(p.boards.size(), 1u);
+    EXPECT_EQ(p.boards[0].material, "poplar plywood");
+    EXPECT_EQ(p.boards[0].count, 2);
+    ASSERT_EQ(p.parts.size(), 2u);
+    EXPECT_EQ(p.parts[0].orientations, (std::vector<int>{0, 180}));
+    EXPECT_EQ(p.parts[1].orientations, (std::vector<int>{0, 90, 180, 270}));
+    EXPECT_EQ(p.parts[1].quantity, 1);
+}
+
+TEST(PackFormat, ErrorsNameTheOffendingField)
+{
+    json d = goodProblem();
+    d["parts"][1].erase("width");
+    EXPECT_EQ(errorOf(d), "parts[1].width: missing (a number is required)");
+
+    d = goodProblem();
+    d["parts"][0]["height"] = -3;
+    EXPECT_EQ(errorOf(d), "parts[0].height: must be greater than 0, got -3");
+
+    d = goodProblem();
+    d["parts"][0]["width"] = "wide";
+    EXPECT_EQ(errorOf(d), "parts[0].width: must be a number, got \"wide\"");
+
+    d = goodProblem();
+    d["parts"][0]["orientations"] = {0, 45};
+    EXPECT_EQ(errorOf(d), "parts[0].orientations[1]: must be 0, 90, 180 or 270, got 45");
+
+    d = goodProblem();
+    d["boards"][0]["count"] = 0;
+    EXPECT_EQ(errorOf(d), "boards[0].count: must be a positive number of boards, or -1 for unlimited");
+
+    d = goodProblem();
+    d["settings"]["kerf"] = -1;
+    EXPECT_EQ(errorOf(d), "settings.kerf: must be at least 0, got -1");
+
+    d = goodProblem();
+    d["version"] = 7;
+    EXPECT_EQ(errorOf(d), "version: this FabGuide reads version 1, the file is version 7");
+
+    d = goodProblem();
+    d["boards"] = json::array();
+    EXPECT_EQ(errorOf(d), "boards: at least one master board is needed");
+
+    EXPECT_EQ(errorOf(json::array()), "document: must be a JSON object");
+}
+
+TEST(PackFormat, ReadsOrDatasetsStripInstances)
+{
+    const json instance = json::parse(R"({"Name": "t", "Objects": [{"Length": 20, "Height": 20}],
+      "Items": [{"Length": 10, "Height": 5, "Demand": 3}, {"Length": 2, "Height": 7}]})");
+    const material::PackProblem p = io::readStripInstance(instance);
+    EXPECT_TRUE(p.strip);
+    EXPECT_DOUBLE_EQ(p.boards[0].width, 20);
+    ASSERT_EQ(p.parts.size(), 2u);
+    EXPECT_EQ(p.parts[0].quantity, 3);
+    EXPECT_EQ(p.parts[1].quantity, 1);
+    EXPECT_THROW(io::readStripInstance(json::parse(R"({"Objects": [], "Items": []})")), io::FormatError);
+}
+
+TEST(PackFormat, LayoutJsonFollowsTheContract)
+{
+    const json instance = json::parse(R"({"Objects": [{"Length": 10, "Height": 10}],
+      "Items": [{"Length": 10, "Height": 3, "Demand": 2}, {"Length": 5, "Height": 4, "Demand": 2}]})");
+    const material::PackProblem problem = io::readStripInstance(instance);
+    material::OrderingSearchOptions options;
+    options.iterations = 50;
+    const json out = io::layoutToJson(material::pack(problem, options), problem, io::PartNames::Indices);
+    EXPECT_DOUBLE_EQ(out["strip_height"].get<double>(), 10);
+    ASSERT_EQ(out["placements"].size(), 4u);
+    for (const json& p : out["placements"]) {
+        for (const char* key : {"part", "board", "x", "y", "rotation", "width", "height"})
+            EXPECT_TRUE(p.contains(key)) << key;
+        EXPECT_TRUE(p["part"].is_number_integer());
+    }
+    EXPECT_EQ(out["boards"][0]["width"], 10);
+}
+
+TEST(PackFormat, UnreadableFilesAreNamed)
+{
+    EXPECT_THROW(io::readJsonFile("/nonexistent/x.pack.json"), io::FormatError);
+}

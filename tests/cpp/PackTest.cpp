@@ -1,0 +1,126 @@
+#include "Material/Pack.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace fabguide::material;
+
+namespace {
+
+PackProblem shelfProblem()
+{
+    PackProblem problem;
+    problem.boards.push_back({"birch", "birch plywood", 1000, 600, 18, 2});
+    problem.parts.push_back({"side", 300, 560, 2, {0, 90, 180, 270}});
+    problem.parts.push_back({"shelf", 300, 380, 3, {0, 180}});
+    problem.settings = {0.5, 6, 2, 10};  // τ, kerf (router bit), spacing, trim
+    return problem;
+}
+
+OrderingSearchOptions quick()
+{
+    OrderingSearchOptions options;
+    options.iterations = 100;
+    options.timeLimit = 10;
+    return options;
+}
+
+bool apart(const Placement& a, const Placement& b, double gap)
+{
+    const double eps = 1e-9;
+    return a.sheet != b.sheet || a.x + a.width + gap <= b.x + eps || b.x + b.width + gap <= a.x + eps ||
+           a.y + a.height + gap <= b.y + eps || b.y + b.height + gap <= a.y + eps;
+}
+
+}  // namespace
+
+TEST(Pack, KeepsKerfSpacingAndTrim)
+{
+    const PackProblem problem = shelfProblem();
+    const Layout layout = pack(problem, quick());
+    ASSERT_EQ(layout.placements.size(), 5u);
+    for (size_t i = 0; i < layout.placements.size(); ++i) {
+        const Placement& p = layout.placements[i];
+        const MasterBoard& board = layout.sheets[p.sheet];
+        EXPECT_GE(p.x, 10 - 1e-9);
+        EXPECT_GE(p.y, 10 - 1e-9);
+        EXPECT_LE(p.x + p.width, board.width - 10 + 1e-9);
+        EXPECT_LE(p.y + p.height, board.height - 10 + 1e-9);
+        for (size_t j = i + 1; j < layout.placements.size(); ++j)
+            EXPECT_TRUE(apart(p, layout.placements[j], 8))
+                << i << " and " << j << " closer than kerf + spacing";
+    }
+}
+
+TEST(Pack, RespectsAllowedOrientationsAndReportsPlacedSizes)
+{
+    const PackProblem problem = shelfProblem();
+    for (const Placement& p : pack(problem, quick()).placements) {
+        const PartSpec& spec = problem.parts[p.part];
+        if (spec.id == "shelf") {
+            EXPECT_EQ(p.rotation % 180, 0);
+        }
+        const bool turned = p.rotation % 180 != 0;
+        EXPECT_DOUBLE_EQ(p.width, turned ? spec.height : spec.width);
+        EXPECT_DOUBLE_EQ(p.height, turned ? spec.width : spec.height);
+    }
+}
+
+TEST(Pack, MetricsAddUp)
+{
+    const Layout layout = pack(shelfProblem(), quick());
+    EXPECT_DOUBLE_EQ(layout.partArea, 2 * 300 * 560 + 3 * 300 * 380);
+    EXPECT_DOUBLE_EQ(layout.sheetArea, static_cast<double>(layout.sheets.size()) * 1000 * 600);
+    EXPECT_DOUBLE_EQ(layout.wasteArea(), layout.sheetArea - layout.partArea);
+    EXPECT_GT(layout.usage(), layout.sheetUtilisation() - 1e-12);
+    EXPECT_LE(layout.usage(), 1.0);
+}
+
+TEST(Pack, StripModeReportsTheHeightUsed)
+{
+    PackProblem problem;
+    problem.strip = true;
+    problem.settings.resolution = 1;
+    problem.boards.push_back({"strip", "", 10, 0, 0, 1});
+    problem.parts.push_back({"0", 10, 3, 2, {0, 90, 180, 270}});
+    problem.parts.push_back({"1", 5, 4, 2, {0, 90, 180, 270}});
+    const Layout layout = pack(problem, quick());
+    EXPECT_DOUBLE_EQ(layout.stripHeight, 10);
+    EXPECT_DOUBLE_EQ(layout.usage(), 1.0);
+}
+
+TEST(Pack, RunningOutOfBoardsNamesAPart)
+{
+    PackProblem problem = shelfProblem();
+    problem.boards[0].count = 1;
+    try {
+        pack(problem, quick());
+        FAIL() << "expected PackingError";
+    } catch (const PackingError& e) {
+        EXPECT_NE(std::string(e.what()).find("not enough master boards: part '"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Pack, RejectsBadSettings)
+{
+    PackProblem problem = shelfProblem();
+    problem.settings.resolution = 0;
+    EXPECT_THROW(pack(problem, quick()), std::invalid_argument);
+    problem = shelfProblem();
+    problem.parts.clear();
+    EXPECT_THROW(pack(problem, quick()), std::invalid_argument);
+}
+
+TEST(Pack, OversizedPartIsNamed)
+{
+    PackProblem problem = shelfProblem();
+    problem.parts.push_back({"table top", 1200, 700, 1, {0, 90}});
+    try {
+        pack(problem, quick());
+        FAIL() << "expected PackingError";
+    } catch (const PackingError& e) {
+        EXPECT_NE(std::string(e.what()).find("'table top'"), std::string::npos) << e.what();
+    }
+}

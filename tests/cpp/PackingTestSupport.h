@@ -1,0 +1,63 @@
+// Helpers shared by the packing tests: building parts and checking layouts independently.
+#pragma once
+
+#include "Material/Docking.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+namespace fabguide::material::testing {
+
+inline RasterPart rectanglePart(const std::string& name, int w, int h, bool turnable = true)
+{
+    RasterPart part{name, {Footprint::rectangle(w, h)}, {0}};
+    if (turnable && w != h) {
+        part.shapes.push_back(part.shapes[0].rotated90());
+        part.rotations.push_back(90);
+    }
+    return part;
+}
+
+inline std::vector<RasterPart> randomParts(int count, int maxSide, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_int_distribution<int> side(1, maxSide);
+    std::vector<RasterPart> parts;
+    for (int i = 0; i < count; ++i)
+        parts.push_back(rectanglePart("p" + std::to_string(i), side(random), side(random)));
+    return parts;
+}
+
+/// Every part placed once, inside its sheet, on no other part's cells.
+inline void expectValidLayout(const GridLayout& layout, const std::vector<RasterPart>& parts,
+                              const std::vector<BoardStock>& stock)
+{
+    ASSERT_EQ(layout.placed.size(), parts.size());
+    std::vector<std::vector<int>> owner(layout.stock.size());
+    for (size_t s = 0; s < layout.stock.size(); ++s)
+        owner[s].assign(static_cast<size_t>(stock[layout.stock[s]].width) * stock[layout.stock[s]].height,
+                        -1);
+    std::vector<int> seen(parts.size(), 0);
+    for (const Placed& p : layout.placed) {
+        ++seen[p.part];
+        const Footprint& f = parts[p.part].shapes[p.shape];
+        const BoardStock& board = stock[layout.stock[p.sheet]];
+        ASSERT_TRUE(p.x >= 0 && p.y >= 0 && p.x + f.width() <= board.width &&
+                    p.y + f.height() <= board.height)
+            << parts[p.part].name << " leaves its sheet";
+        for (int y = 0; y < f.height(); ++y)
+            for (int x = 0; x < f.width(); ++x)
+                if (f.filled(x, y)) {
+                    int& cell = owner[p.sheet][static_cast<size_t>(p.y + y) * board.width + p.x + x];
+                    ASSERT_EQ(cell, -1) << parts[p.part].name << " overlaps part " << cell;
+                    cell = p.part;
+                }
+    }
+    for (size_t i = 0; i < parts.size(); ++i)
+        EXPECT_EQ(seen[i], 1) << parts[i].name;
+}
+
+}  // namespace fabguide::material::testing

@@ -1,0 +1,77 @@
+"""`fabguide pack` on real inputs: the bundled examples and an OR-Datasets strip instance, each
+layout checked independently; bad input gives an error that names the field or the part."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "bench"))
+import layout_check  # noqa: E402
+
+
+def pack(cli, *args):
+    return subprocess.run([cli, "pack", *args], capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.parametrize("example", ["bookshelf", "coffee-table"])
+def test_examples_pack_into_valid_layouts(fabguide_cli, source_dir, tmp_path, example):
+    source = os.path.join(source_dir, "examples", example + ".pack.json")
+    out = tmp_path / "layout.json"
+    run = pack(fabguide_cli, source, "-o", str(out), "--time-limit", "0.3")
+    assert run.returncode == 0, run.stderr
+    problem, layout = json.load(open(source)), json.load(out.open())
+    settings = problem["settings"]
+    boards = layout["boards"]
+    bad = layout_check.problems(layout, layout_check.demand_of_pack_problem(problem),
+                                lambda b: (boards[b]["width"], boards[b]["height"], settings["trim"]),
+                                clearance=settings["kerf"] + settings["spacing"])
+    assert bad == []
+    assert 0 < layout["sheet_utilisation"] <= layout["usage"] <= 1
+    assert "usage" in run.stdout and "utilisation" in run.stdout
+
+
+def test_strip_instance_reaches_a_near_optimal_height(fabguide_cli, benchmarks, tmp_path):
+    path = os.path.join(benchmarks, "packing", "hopper-turton-c", "C1_1.json")
+    instance = json.load(open(path))
+    out = tmp_path / "layout.json"
+    run = pack(fabguide_cli, "--strip", path, "-o", str(out), "--time-limit", "0.5")
+    assert run.returncode == 0, run.stderr
+    layout = json.load(out.open())
+    width, optimum = instance["Objects"][0]["Length"], instance["Objects"][0]["Height"]
+    assert layout_check.problems(layout, layout_check.demand_of_strip_instance(instance),
+                                 lambda b: (width, layout["strip_height"], 0)) == []
+    assert optimum <= layout["strip_height"] <= optimum * 1.10
+    assert all(isinstance(p["part"], int) for p in layout["placements"])
+
+
+def test_malformed_input_names_the_field(fabguide_cli, tmp_path):
+    bad = tmp_path / "bad.pack.json"
+    bad.write_text(json.dumps({"boards": [{"width": 100, "height": 100}], "parts": [{"id": "a", "width": 10}]}))
+    run = pack(fabguide_cli, str(bad), "-o", str(tmp_path / "out.json"))
+    assert run.returncode == 1
+    assert "parts[0].height: missing" in run.stderr
+    assert not (tmp_path / "out.json").exists()
+
+
+def test_invalid_json_names_the_file(fabguide_cli, tmp_path):
+    bad = tmp_path / "broken.pack.json"
+    bad.write_text("{\"boards\": [")
+    run = pack(fabguide_cli, str(bad), "-o", str(tmp_path / "out.json"))
+    assert run.returncode == 1 and "broken.pack.json: not valid JSON" in run.stderr
+
+
+def test_oversized_part_is_named(fabguide_cli, tmp_path):
+    problem = tmp_path / "big.pack.json"
+    problem.write_text(json.dumps({"boards": [{"width": 100, "height": 100}],
+                                   "parts": [{"id": "table top", "width": 150, "height": 120}]}))
+    run = pack(fabguide_cli, str(problem), "-o", str(tmp_path / "out.json"))
+    assert run.returncode == 1
+    assert "part 'table top' is larger than every master board" in run.stderr
+
+
+def test_help_lists_the_commands(fabguide_cli):
+    run = subprocess.run([fabguide_cli, "--help"], capture_output=True, text=True)
+    assert run.returncode == 0
+    assert "pack" in run.stdout and "version" in run.stdout
