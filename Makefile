@@ -3,11 +3,12 @@
 #   make test     ... then run every test (C++, headless FreeCAD, FreeCAD GUI under Xvfb)
 #   make demo     ... then install the workbench into FreeCAD and run it on a bundled example
 #   make install  ... then install the workbench (MOD_DIR=... to choose the folder)
+#   make bench    ... then regenerate docs/benchmarks.md
 BUILD ?= build
 JOBS ?= $(shell nproc)
 MOD_DIR ?=
 
-.PHONY: all deps test demo install format clean
+.PHONY: all deps test demo install bench format clean
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -25,6 +26,9 @@ install: all
 
 demo: install
 	freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
+
+bench: all
+	python3 tests/bench/benchmarks.py
 
 format:
 	clang-format -i $$(find App python/bindings tests -name '*.cpp' -o -name '*.h')
