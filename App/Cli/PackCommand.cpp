@@ -1,5 +1,6 @@
 // `fabguide pack`: lay parts out on master boards (thesis 5.3.1, 5.4.3), or pack a strip.
 #include "Cli/Commands.h"
+#include "IO/CutSheetFiles.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 
@@ -15,10 +16,28 @@ namespace {
 struct PackArguments {
     std::string input;
     std::string output;
+    std::string svgFolder, dxfFolder, csvFile;
     bool strip = false;
     bool bottomLeft = false;
     material::OrderingSearchOptions search;
 };
+
+void writeCutSheets(const PackArguments& args, const material::Layout& layout,
+                    const material::PackProblem& problem)
+{
+    if (args.svgFolder.empty() && args.dxfFolder.empty() && args.csvFile.empty())
+        return;
+    const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
+    for (const auto& [folder, extension] :
+         {std::pair{args.svgFolder, "svg"}, std::pair{args.dxfFolder, "dxf"}})
+        if (!folder.empty())
+            for (const std::string& path : io::writeSheets(sheets, folder, extension))
+                std::printf("cut sheet     %s\n", path.c_str());
+    if (!args.csvFile.empty()) {
+        io::writeCutList(material::cutList(layout, problem), args.csvFile);
+        std::printf("cut list      %s\n", args.csvFile.c_str());
+    }
+}
 
 void run(const PackArguments& args)
 {
@@ -39,6 +58,7 @@ void run(const PackArguments& args)
     std::printf("utilisation   %.4f  (part area / boards used)\n", layout.sheetUtilisation());
     std::printf("waste area    %.6g mm^2\n", layout.wasteArea());
     std::printf("layout        %s\n", args.output.c_str());
+    writeCutSheets(args, layout, problem);
 }
 
 }  // namespace
@@ -51,6 +71,11 @@ void addPackCommand(CLI::App& app)
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "layout JSON to write")->required();
+    cmd->add_option("--svg", args->svgFolder,
+                    "folder for one SVG cut sheet per board (red cut, blue engrave)");
+    cmd->add_option("--dxf", args->dxfFolder,
+                    "folder for one DXF R2000 cut sheet per board (layers CUT, ENGRAVE, SHEET)");
+    cmd->add_option("--csv", args->csvFile, "CSV cut list to write");
     cmd->add_flag("--strip", args->strip,
                   "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");

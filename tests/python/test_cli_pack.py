@@ -75,3 +75,42 @@ def test_help_lists_the_commands(fabguide_cli):
     run = subprocess.run([fabguide_cli, "--help"], capture_output=True, text=True)
     assert run.returncode == 0
     assert "pack" in run.stdout and "version" in run.stdout
+
+
+def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_path):
+    import csv
+    import struct
+
+    import ezdxf
+
+    source = os.path.join(source_dir, "examples", "bookshelf.pack.json")
+    sheets = tmp_path / "sheets"
+    run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--time-limit", "0.3",
+               "--svg", str(sheets), "--dxf", str(sheets), "--csv", str(tmp_path / "cutlist.csv"))
+    assert run.returncode == 0, run.stderr
+    layout = json.load((tmp_path / "layout.json").open())
+    board = layout["boards"][0]
+
+    # Inkscape renders the SVG at 25.4 dpi to exactly one pixel per millimetre of the board.
+    png = tmp_path / "sheet.png"
+    subprocess.run(["inkscape", str(sheets / "sheet-1.svg"), "--export-type=png", "--export-filename=" + str(png),
+                    "--export-dpi=25.4"], check=True, capture_output=True, timeout=120)
+    width, height = struct.unpack(">II", png.read_bytes()[16:24])
+    assert (width, height) == (board["width"], board["height"])
+    svg = (sheets / "sheet-1.svg").read_text()
+    assert 'width="{:g}mm"'.format(board["width"]) in svg and 'id="cut"' in svg and 'id="engrave"' in svg
+
+    # ezdxf reads the DXF as R2000 with no audit errors, millimetre units and one cut per part.
+    doc = ezdxf.readfile(str(sheets / "sheet-1.dxf"))
+    assert doc.dxfversion >= "AC1015"
+    assert not doc.audit().has_errors
+    assert doc.header["$INSUNITS"] == 4
+    entities = [(e.dxftype(), e.dxf.layer) for e in doc.modelspace()]
+    parts_on_board = [p for p in layout["placements"] if p["board"] == 0]
+    assert entities.count(("LWPOLYLINE", "CUT")) == len(parts_on_board)
+    assert entities.count(("TEXT", "ENGRAVE")) == len(parts_on_board)
+    assert entities.count(("LWPOLYLINE", "SHEET")) == 1
+
+    rows = list(csv.DictReader((tmp_path / "cutlist.csv").open()))
+    assert sum(int(r["quantity"]) for r in rows) == len(layout["placements"])
+    assert {r["material"] for r in rows} == {"birch plywood"} and {r["thickness"] for r in rows} == {"18"}

@@ -1,0 +1,36 @@
+// Plain 2-D geometry shared by the domains: points, polygons, outlines with holes (millimetres).
+#pragma once
+
+#include <vector>
+
+namespace fabguide::geometry {
+
+struct Point2 {
+    double x = 0;
+    double y = 0;
+};
+
+/// A closed polygon; the last point connects back to the first.
+using Polygon = std::vector<Point2>;
+
+/// A planar part's shape: one outer contour (counter-clockwise) and holes (clockwise).
+struct Outline {
+    Polygon outer;
+    std::vector<Polygon> holes;
+};
+
+/// An axis-aligned w × h rectangle with its lower-left corner at the origin.
+Outline rectangle(double width, double height);
+
+/// Signed area: positive for counter-clockwise polygons.
+double signedArea(const Polygon& polygon);
+
+/// Turns by `degrees` (a multiple of 90) counter-clockwise about the origin, then moves the result so
+/// that its bounding box's lower-left corner is at (x, y).
+Outline placed(const Outline& outline, int degrees, double x, double y);
+
+/// Grows outer contours and shrinks holes by `distance` (mitred corners), using Clipper:
+/// the tool path of a cut of width 2·distance that leaves the outline at its nominal size.
+Outline offset(const Outline& outline, double distance);
+
+}  // namespace fabguide::geometry

@@ -1,0 +1,186 @@
+#include "IO/CutSheetFiles.h"
+
+#include "IO/Json.h"
+
+#include <dxflib/dl_dxf.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace fabguide::io {
+
+namespace {
+
+std::ofstream create(const std::string& path)
+{
+    std::ofstream out(path);
+    if (!out)
+        throw FormatError(path + ": cannot write file");
+    return out;
+}
+
+std::string escapeXml(const std::string& text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+std::string quoteCsv(const std::string& text)
+{
+    if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+    std::string out = "\"";
+    for (char c : text)
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+}  // namespace
+
+void writeSvg(const material::CutSheet& sheet, const std::string& path)
+{
+    const double w = sheet.board.width, h = sheet.board.height;
+    std::ofstream out = create(path);
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "mm\" height=\"" << h
+        << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n"
+        << "  <title>" << escapeXml(sheet.board.name) << " " << w << " x " << h << " mm</title>\n"
+        << "  <g id=\"sheet\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.1\">\n"
+        << "    <rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\"/>\n  </g>\n"
+        << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.1\">\n";
+    for (const geometry::Polygon& cut : sheet.cuts) {
+        out << "    <path d=\"";
+        for (size_t i = 0; i < cut.size(); ++i)
+            out << (i ? " L" : "M") << cut[i].x << "," << h - cut[i].y;
+        out << " Z\"/>\n";
+    }
+    out << "  </g>\n  <g id=\"engrave\" fill=\"#0000ff\" stroke=\"none\" font-family=\"sans-serif\" "
+           "text-anchor=\"middle\" dominant-baseline=\"central\">\n";
+    for (const material::Label& label : sheet.labels)
+        out << "    <text x=\"" << label.at.x << "\" y=\"" << h - label.at.y << "\" font-size=\""
+            << label.height << "\">" << escapeXml(label.text) << "</text>\n";
+    out << "  </g>\n</svg>\n";
+    if (!out)
+        throw FormatError(path + ": cannot write file");
+}
+
+void writeDxf(const material::CutSheet& sheet, const std::string& path)
+{
+    DL_Dxf dxf;
+    std::unique_ptr<DL_WriterA> dw(dxf.out(path.c_str(), DL_Codes::AC1015));
+    if (!dw)
+        throw FormatError(path + ": cannot write file");
+    dxf.writeHeader(*dw);
+    dw->dxfString(9, "$INSUNITS");  // drawing units: millimetres
+    dw->dxfInt(70, 4);
+    dw->dxfString(9, "$MEASUREMENT");  // metric
+    dw->dxfInt(70, 1);
+    dw->sectionEnd();
+
+    dw->sectionTables();
+    dxf.writeVPort(*dw);
+    dw->tableLinetypes(3);
+    dxf.writeLinetype(*dw, DL_LinetypeData("BYBLOCK", "BYBLOCK", 0, 0, 0.0));
+    dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
+    dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
+    dw->tableEnd();
+    const std::pair<const char*, int> layers[] = {{"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}};
+    dw->tableLayers(4);
+    for (const auto& [name, colour] : layers)
+        dxf.writeLayer(*dw, DL_LayerData(name, 0), DL_Attributes("", colour, -1, "CONTINUOUS", 1.0));
+    dw->tableEnd();
+    dw->tableStyle(1);
+    dxf.writeStyle(*dw, DL_StyleData("Standard", 0, 0.0, 1.0, 0.0, 0, 2.5, "txt", ""));
+    dw->tableEnd();
+    dxf.writeView(*dw);
+    dxf.writeUcs(*dw);
+    dw->tableAppid(1);
+    dxf.writeAppid(*dw, "ACAD");
+    dw->tableEnd();
+    dxf.writeDimStyle(*dw, 1, 1, 1, 1, 1);
+    dxf.writeBlockRecord(*dw);
+    dw->tableEnd();
+    dw->sectionEnd();
+
+    dw->sectionBlocks();
+    for (const char* block : {"*Model_Space", "*Paper_Space", "*Paper_Space0"}) {
+        dxf.writeBlock(*dw, DL_BlockData(block, 0, 0.0, 0.0, 0.0));
+        dxf.writeEndBlock(*dw, block);
+    }
+    dw->sectionEnd();
+
+    dw->sectionEntities();
+    auto polygon = [&](const geometry::Polygon& points, const char* layer) {
+        const DL_Attributes attributes(layer, 256, -1, "BYLAYER", 1.0);  // colour and line type by layer
+        dxf.writePolyline(*dw, DL_PolylineData(static_cast<int>(points.size()), 0, 0, 1), attributes);
+        for (const geometry::Point2& p : points)
+            dxf.writeVertex(*dw, DL_VertexData(p.x, p.y, 0.0, 0.0));
+        dxf.writePolylineEnd(*dw);
+    };
+    polygon(
+        {{0, 0}, {sheet.board.width, 0}, {sheet.board.width, sheet.board.height}, {0, sheet.board.height}},
+        "SHEET");
+    for (const geometry::Polygon& cut : sheet.cuts)
+        polygon(cut, "CUT");
+    for (const material::Label& label : sheet.labels)  // centred horizontally (1) and vertically (2)
+        dxf.writeText(*dw,
+                      DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,
+                                  1, 2, label.text, "Standard", 0.0),
+                      DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
+    dw->sectionEnd();
+    dxf.writeObjects(*dw);
+    dxf.writeObjectsEnd(*dw);
+    dw->dxfEOF();
+    dw->close();
+}
+
+void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path)
+{
+    std::ofstream out = create(path);
+    out << "part,quantity,width,height,thickness,material,board\n";
+    for (const material::CutListRow& row : rows)
+        out << quoteCsv(row.part) << "," << row.quantity << "," << row.width << "," << row.height << ","
+            << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << "\n";
+    if (!out)
+        throw FormatError(path + ": cannot write file");
+}
+
+std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
+                                     const std::string& extension)
+{
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error)
+        throw FormatError(folder + ": cannot create folder (" + error.message() + ")");
+    std::vector<std::string> paths;
+    for (size_t s = 0; s < sheets.size(); ++s) {
+        paths.push_back(
+            (std::filesystem::path(folder) / ("sheet-" + std::to_string(s + 1) + "." + extension)).string());
+        if (extension == "svg")
+            writeSvg(sheets[s], paths.back());
+        else
+            writeDxf(sheets[s], paths.back());
+    }
+    return paths;
+}
+
+}  // namespace fabguide::io

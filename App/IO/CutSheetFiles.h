@@ -1,0 +1,26 @@
+// Cut-sheet files a laser cutter or CNC router accepts (docs/formats.md "Cut sheets"):
+// SVG and DXF per master board, a CSV cut list.
+#pragma once
+
+#include "Material/CutSheet.h"
+
+#include <string>
+#include <vector>
+
+namespace fabguide::io {
+
+/// SVG sized in millimetres; groups "cut" (red #ff0000 hairlines), "engrave" (blue #0000ff text) and
+/// "sheet" (grey board outline, not to be cut). y points up in FabGuide and down in SVG: flipped here.
+void writeSvg(const material::CutSheet& sheet, const std::string& path);
+
+/// DXF R2000 (AC1015) in millimetres with layers CUT (red LWPOLYLINEs), ENGRAVE (blue TEXT) and SHEET.
+void writeDxf(const material::CutSheet& sheet, const std::string& path);
+
+/// CSV cut list with header part,quantity,width,height,thickness,material,board (board numbered from 1).
+void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path);
+
+/// Writes sheet-1.svg / sheet-1.dxf ... into `folder` (created if missing); returns the paths written.
+std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
+                                     const std::string& extension);
+
+}  // namespace fabguide::io

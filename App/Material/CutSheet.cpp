@@ -1,0 +1,55 @@
+#include "Material/CutSheet.h"
+
+#include <algorithm>
+#include <map>
+
+namespace fabguide::material {
+
+namespace {
+
+/// Labels fit inside small parts and stay readable on large ones.
+double labelHeight(const Placement& p)
+{
+    return std::clamp(0.2 * std::min(p.width, p.height), 2.0, 12.0);
+}
+
+}  // namespace
+
+std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem)
+{
+    std::vector<CutSheet> sheets;
+    for (const MasterBoard& board : layout.sheets)
+        sheets.push_back({board, {}, {}});
+    std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
+    for (const Placement& p : layout.placements) {
+        const PartSpec& spec = problem.parts[p.part];
+        const geometry::Outline outline =
+            geometry::placed(geometry::rectangle(spec.width, spec.height), p.rotation, p.x, p.y);
+        const geometry::Outline path = geometry::offset(outline, problem.settings.kerf / 2);
+        CutSheet& sheet = sheets[p.sheet];
+        sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
+        outers[p.sheet].push_back(path.outer);
+        sheet.labels.push_back({spec.id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
+    }
+    for (size_t s = 0; s < sheets.size();
+         ++s)  // inner cuts first: a part never drops out before its holes are cut
+        sheets[s].cuts.insert(sheets[s].cuts.end(), outers[s].begin(), outers[s].end());
+    return sheets;
+}
+
+std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem)
+{
+    std::map<std::pair<int, int>, int> count;  // (part, sheet) -> quantity
+    for (const Placement& p : layout.placements)
+        ++count[{p.part, p.sheet}];
+    std::vector<CutListRow> rows;
+    for (const auto& [key, quantity] : count) {
+        const PartSpec& spec = problem.parts[key.first];
+        const MasterBoard& board = layout.sheets[key.second];
+        rows.push_back(
+            {spec.id, quantity, spec.width, spec.height, board.thickness, board.material, key.second});
+    }
+    return rows;
+}
+
+}  // namespace fabguide::material
