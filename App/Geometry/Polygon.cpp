@@ -60,6 +60,57 @@ double signedArea(const Polygon& polygon)
     return twice / 2;
 }
 
+double area(const Outline& outline)
+{
+    double total = std::abs(signedArea(outline.outer));
+    for (const Polygon& hole : outline.holes)
+        total -= std::abs(signedArea(hole));
+    return total;
+}
+
+Box2 bounds(const Polygon& polygon)
+{
+    Box2 box{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+             std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+    for (const Point2& p : polygon)
+        box = {std::min(box.minX, p.x), std::min(box.minY, p.y), std::max(box.maxX, p.x),
+               std::max(box.maxY, p.y)};
+    return box;
+}
+
+bool isRectangle(const Outline& outline)
+{
+    const Box2 box = bounds(outline.outer);
+    return outline.holes.empty() && outline.outer.size() == 4 &&
+           std::abs(std::abs(signedArea(outline.outer)) - box.width() * box.height()) <
+               1e-9 * (1 + box.width() * box.height());
+}
+
+Outline atOrigin(const Outline& outline)
+{
+    return placed(outline, 0, 0, 0);
+}
+
+std::vector<std::pair<double, double>> spansBetween(const Outline& outline, double y0, double y1)
+{
+    const Box2 box = bounds(outline.outer);
+    ClipperLib::Clipper clipper;
+    clipper.AddPath(toClipper(outline.outer), ClipperLib::ptSubject, true);
+    for (const Polygon& hole : outline.holes)
+        clipper.AddPath(toClipper(hole), ClipperLib::ptSubject, true);
+    clipper.AddPath(
+        toClipper({{box.minX - 1, y0}, {box.maxX + 1, y0}, {box.maxX + 1, y1}, {box.minX - 1, y1}}),
+        ClipperLib::ptClip, true);
+    ClipperLib::Paths pieces;
+    clipper.Execute(ClipperLib::ctIntersection, pieces, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+    std::vector<std::pair<double, double>> spans;
+    for (const ClipperLib::Path& piece : pieces) {
+        const Box2 b = bounds(fromClipper(piece));
+        spans.emplace_back(b.minX, b.maxX);
+    }
+    return spans;
+}
+
 Outline placed(const Outline& outline, int degrees, double x, double y)
 {
     Outline out;

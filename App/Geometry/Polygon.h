@@ -1,6 +1,7 @@
 // Plain 2-D geometry shared by the domains: points, polygons, outlines with holes (millimetres).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 namespace fabguide::geometry {
@@ -19,11 +20,32 @@ struct Outline {
     std::vector<Polygon> holes;
 };
 
+/// An axis-aligned box.
+struct Box2 {
+    double minX = 0, minY = 0, maxX = 0, maxY = 0;
+    double width() const { return maxX - minX; }
+    double height() const { return maxY - minY; }
+};
+
 /// An axis-aligned w × h rectangle with its lower-left corner at the origin.
 Outline rectangle(double width, double height);
 
 /// Signed area: positive for counter-clockwise polygons.
 double signedArea(const Polygon& polygon);
+
+/// Area of the outer contour less its holes.
+double area(const Outline& outline);
+
+Box2 bounds(const Polygon& polygon);
+
+/// True when the outline is a hole-free axis-aligned rectangle.
+bool isRectangle(const Outline& outline);
+
+/// The same outline moved so that its bounding box's lower-left corner is at the origin.
+Outline atOrigin(const Outline& outline);
+
+/// The x intervals in which the outline has area between heights y0 and y1 (clipped with Clipper).
+std::vector<std::pair<double, double>> spansBetween(const Outline& outline, double y0, double y1);
 
 /// Turns by `degrees` (a multiple of 90) counter-clockwise about the origin, then moves the result so
 /// that its bounding box's lower-left corner is at (x, y).

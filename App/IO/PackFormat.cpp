@@ -3,6 +3,7 @@
 #include "IO/Json.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fabguide::io {
 
@@ -44,13 +45,44 @@ material::MasterBoard readBoard(const nlohmann::json& json, const std::string& p
     return b;
 }
 
+/// A polygon as [[x, y], ...]: at least 3 points, not flat; returned counter-clockwise if `outer`.
+geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& path, bool outer)
+{
+    if (!json.is_array() || json.size() < 3)
+        throw FormatError(path + ": must be a list of at least 3 [x, y] points");
+    geometry::Polygon polygon;
+    for (size_t k = 0; k < json.size(); ++k) {
+        const nlohmann::json& point = json[k];
+        if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number())
+            throw FormatError(at(path, k) + ": must be a point [x, y], got " + point.dump());
+        polygon.push_back({point[0].get<double>(), point[1].get<double>()});
+    }
+    const double area = geometry::signedArea(polygon);
+    if (std::abs(area) < 1e-9)
+        throw FormatError(path + ": encloses no area");
+    if ((area > 0) != outer)
+        std::reverse(polygon.begin(), polygon.end());
+    return polygon;
+}
+
+geometry::Outline readOutline(const Fields& part)
+{
+    if (!part.has("outline"))
+        return geometry::rectangle(part.positive("width"), part.positive("height"));
+    geometry::Outline outline;
+    outline.outer = readPolygon(part.array("outline"), part.pathOf("outline"), true);
+    const nlohmann::json& holes = part.array("holes", true);
+    for (size_t k = 0; k < holes.size(); ++k)
+        outline.holes.push_back(readPolygon(holes[k], at(part.pathOf("holes"), k), false));
+    return geometry::atOrigin(outline);
+}
+
 material::PartSpec readPart(const nlohmann::json& json, const std::string& path, size_t index)
 {
     const Fields part(json, path);
     material::PartSpec p;
     p.id = part.text("id", "part " + std::to_string(index + 1));
-    p.width = part.positive("width");
-    p.height = part.positive("height");
+    p.outline = readOutline(part);
     p.quantity = part.integer("quantity", 1);
     if (p.quantity < 1)
         throw FormatError(part.pathOf("quantity") + ": must be at least 1, got " +
@@ -109,10 +141,8 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
     const nlohmann::json& items = root.array("Items");
     for (size_t i = 0; i < items.size(); ++i) {
         const Fields item(items[i], at("Items", i));
-        material::PartSpec p;
-        p.id = std::to_string(i);
-        p.width = item.positive("Length");
-        p.height = item.positive("Height");
+        material::PartSpec p =
+            material::rectangularPart(std::to_string(i), item.positive("Length"), item.positive("Height"));
         p.quantity = item.integer("Demand", 1);
         if (p.quantity < 1)
             throw FormatError(item.pathOf("Demand") + ": must be at least 1");

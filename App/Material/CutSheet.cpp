@@ -23,8 +23,7 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
     for (const Placement& p : layout.placements) {
         const PartSpec& spec = problem.parts[p.part];
-        const geometry::Outline outline =
-            geometry::placed(geometry::rectangle(spec.width, spec.height), p.rotation, p.x, p.y);
+        const geometry::Outline outline = geometry::placed(spec.outline, p.rotation, p.x, p.y);
         const geometry::Outline path = geometry::offset(outline, problem.settings.kerf / 2);
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
@@ -47,7 +46,7 @@ std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem
         const PartSpec& spec = problem.parts[key.first];
         const MasterBoard& board = layout.sheets[key.second];
         rows.push_back(
-            {spec.id, quantity, spec.width, spec.height, board.thickness, board.material, key.second});
+            {spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material, key.second});
     }
     return rows;
 }

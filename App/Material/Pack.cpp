@@ -1,36 +1,20 @@
 #include "Material/Pack.h"
 
+#include "Material/Raster.h"
+
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace fabguide::material {
 
 namespace {
 
-constexpr double kEpsilon = 1e-9;
-
-/// Cells a length of `mm` occupies (rounded up: a rasterised part never overlaps its neighbour).
-int cellsCovering(double mm, double resolution)
+RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 {
-    return static_cast<int>(std::ceil(mm / resolution - kEpsilon));
-}
-
-/// Whole cells inside `mm` (rounded down: a layout never leaves the board).
-int cellsWithin(double mm, double resolution)
-{
-    return static_cast<int>(std::floor(mm / resolution + kEpsilon));
-}
-
-RasterPart rasterise(const PartSpec& spec, const PackSettings& settings)
-{
-    const double clearance = settings.kerf + settings.spacing;
-    const Footprint upright =
-        Footprint::rectangle(cellsCovering(spec.width + clearance, settings.resolution),
-                             cellsCovering(spec.height + clearance, settings.resolution));
     RasterPart part{spec.id, {}, {}};
     for (int rotation : spec.orientations) {
-        const Footprint shape = rotation % 180 == 0 ? upright : upright.rotated90();
+        const Footprint shape = rasterise(geometry::placed(spec.outline, rotation, 0, 0), settings.resolution,
+                                          settings.kerf + settings.spacing);
         if (std::find(part.shapes.begin(), part.shapes.end(), shape) == part.shapes.end()) {
             part.shapes.push_back(shape);
             part.rotations.push_back(rotation);
@@ -54,6 +38,12 @@ void checkSettings(const PackProblem& problem)
 
 }  // namespace
 
+PartSpec rectangularPart(std::string id, double width, double height, int quantity,
+                         std::vector<int> orientations)
+{
+    return {std::move(id), geometry::rectangle(width, height), quantity, std::move(orientations)};
+}
+
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     checkSettings(problem);
@@ -65,7 +55,7 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
     long stripCells = 0;
     for (size_t i = 0; i < problem.parts.size(); ++i)
         for (int q = 0; q < problem.parts[i].quantity; ++q) {
-            parts.push_back(rasterise(problem.parts[i], settings));
+            parts.push_back(rasterPart(problem.parts[i], settings));
             specOf.push_back(static_cast<int>(i));
             stripCells += std::max(parts.back().shapes[0].width(), parts.back().shapes[0].height());
         }
@@ -117,10 +107,10 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
         const PartSpec& spec = problem.parts[specOf[p.part]];
         const int rotation = parts[p.part].rotations[p.shape];
         const bool turned = rotation % 180 != 0;
-        layout.placements.push_back({specOf[p.part], p.sheet, settings.trim + p.x * tau,
-                                     settings.trim + p.y * tau, rotation, turned ? spec.height : spec.width,
-                                     turned ? spec.width : spec.height});
-        layout.partArea += spec.width * spec.height;
+        layout.placements.push_back(
+            {specOf[p.part], p.sheet, settings.trim + p.x * tau, settings.trim + p.y * tau, rotation,
+             turned ? spec.height() : spec.width(), turned ? spec.width() : spec.height()});
+        layout.partArea += geometry::area(spec.outline);
     }
     return layout;
 }

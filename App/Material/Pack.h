@@ -1,6 +1,7 @@
 // Flat-pack layout in millimetres: master boards, parts, settings -> layout (thesis 5.2.2, 5.3.1, 5.4.3).
 #pragma once
 
+#include "Geometry/Polygon.h"
 #include "Material/OrderingSearch.h"
 
 #include <string>
@@ -18,14 +19,19 @@ struct MasterBoard {
     int count = 1;         ///< boards in stock; -1 means as many as needed
 };
 
-/// A rectangular part to cut, `quantity` times.
+/// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres.
 struct PartSpec {
     std::string id;
-    double width = 0;   ///< mm
-    double height = 0;  ///< mm
+    geometry::Outline outline;  ///< its bounding box's lower-left corner at the origin
     int quantity = 1;
     std::vector<int> orientations{0, 90, 180, 270};  ///< allowed rotations, degrees counter-clockwise
+    double width() const { return geometry::bounds(outline.outer).width(); }
+    double height() const { return geometry::bounds(outline.outer).height(); }
 };
+
+/// A plain width × height rectangular part.
+PartSpec rectangularPart(std::string id, double width, double height, int quantity = 1,
+                         std::vector<int> orientations = {0, 90, 180, 270});
 
 struct PackSettings {
     double resolution = 0.5;  ///< grid cell size τ in mm (thesis 5.4.1)

@@ -3,9 +3,9 @@
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 #include "Material/OrderingSearch.h"
+#include "Material/Raster.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <random>
@@ -47,9 +47,10 @@ void study(const std::string& path)
     const double tau = problem.settings.resolution;
     for (const PartSpec& spec : problem.parts)
         for (int q = 0; q < spec.quantity; ++q) {
-            const Footprint f = Footprint::rectangle(static_cast<int>(std::ceil(spec.width / tau)),
-                                                     static_cast<int>(std::ceil(spec.height / tau)));
-            parts.push_back({spec.id, {f, f.rotated90()}, {0, 90}});
+            parts.push_back({spec.id,
+                             {rasterise(spec.outline, tau, 0),
+                              rasterise(geometry::placed(spec.outline, 90, 0, 0), tau, 0)},
+                             {0, 90}});
         }
     const MasterBoard& board = problem.boards.front();
     const std::vector<BoardStock> stock{

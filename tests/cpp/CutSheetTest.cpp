@@ -12,8 +12,8 @@ PackProblem problem()
 {
     PackProblem p;
     p.boards.push_back({"birch", "birch plywood", 600, 400, 6, 2});
-    p.parts.push_back({"lid", 200, 100, 2, {0, 90, 180, 270}});
-    p.parts.push_back({"side", 150, 80, 1, {0, 90, 180, 270}});
+    p.parts.push_back(rectangularPart("lid", 200, 100, 2, {0, 90, 180, 270}));
+    p.parts.push_back(rectangularPart("side", 150, 80, 1, {0, 90, 180, 270}));
     p.settings = {0.5, 0.2, 1, 5};
     return p;
 }

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <polyclipping/clipper.hpp>
+
+#include <cmath>
 #include <stdexcept>
 
 using namespace fabguide::material;
@@ -12,8 +15,8 @@ PackProblem shelfProblem()
 {
     PackProblem problem;
     problem.boards.push_back({"birch", "birch plywood", 1000, 600, 18, 2});
-    problem.parts.push_back({"side", 300, 560, 2, {0, 90, 180, 270}});
-    problem.parts.push_back({"shelf", 300, 380, 3, {0, 180}});
+    problem.parts.push_back(rectangularPart("side", 300, 560, 2, {0, 90, 180, 270}));
+    problem.parts.push_back(rectangularPart("shelf", 300, 380, 3, {0, 180}));
     problem.settings = {0.5, 6, 2, 10};  // τ, kerf (router bit), spacing, trim
     return problem;
 }
@@ -62,8 +65,8 @@ TEST(Pack, RespectsAllowedOrientationsAndReportsPlacedSizes)
             EXPECT_EQ(p.rotation % 180, 0);
         }
         const bool turned = p.rotation % 180 != 0;
-        EXPECT_DOUBLE_EQ(p.width, turned ? spec.height : spec.width);
-        EXPECT_DOUBLE_EQ(p.height, turned ? spec.width : spec.height);
+        EXPECT_DOUBLE_EQ(p.width, turned ? spec.height() : spec.width());
+        EXPECT_DOUBLE_EQ(p.height, turned ? spec.width() : spec.height());
     }
 }
 
@@ -83,8 +86,8 @@ TEST(Pack, StripModeReportsTheHeightUsed)
     problem.strip = true;
     problem.settings.resolution = 1;
     problem.boards.push_back({"strip", "", 10, 0, 0, 1});
-    problem.parts.push_back({"0", 10, 3, 2, {0, 90, 180, 270}});
-    problem.parts.push_back({"1", 5, 4, 2, {0, 90, 180, 270}});
+    problem.parts.push_back(rectangularPart("0", 10, 3, 2, {0, 90, 180, 270}));
+    problem.parts.push_back(rectangularPart("1", 5, 4, 2, {0, 90, 180, 270}));
     const Layout layout = pack(problem, quick());
     EXPECT_DOUBLE_EQ(layout.stripHeight, 10);
     EXPECT_DOUBLE_EQ(layout.usage(), 1.0);
@@ -116,11 +119,61 @@ TEST(Pack, RejectsBadSettings)
 TEST(Pack, OversizedPartIsNamed)
 {
     PackProblem problem = shelfProblem();
-    problem.parts.push_back({"table top", 1200, 700, 1, {0, 90}});
+    problem.parts.push_back(rectangularPart("table top", 1200, 700, 1, {0, 90}));
     try {
         pack(problem, quick());
         FAIL() << "expected PackingError";
     } catch (const PackingError& e) {
         EXPECT_NE(std::string(e.what()).find("'table top'"), std::string::npos) << e.what();
     }
+}
+
+namespace {
+
+/// Area shared by two outlines (Clipper, 0.001 mm² resolution).
+double sharedArea(const fabguide::geometry::Outline& a, const fabguide::geometry::Outline& b)
+{
+    auto path = [](const fabguide::geometry::Polygon& polygon) {
+        ClipperLib::Path p;
+        for (const auto& q : polygon)
+            p.emplace_back(std::llround(q.x * 1000), std::llround(q.y * 1000));
+        return p;
+    };
+    ClipperLib::Clipper clipper;
+    clipper.AddPath(path(a.outer), ClipperLib::ptSubject, true);
+    clipper.AddPath(path(b.outer), ClipperLib::ptClip, true);
+    ClipperLib::Paths shared;
+    clipper.Execute(ClipperLib::ctIntersection, shared);
+    double area = 0;
+    for (const auto& p : shared)
+        area += std::abs(ClipperLib::Area(p)) / 1e6;
+    return area;
+}
+
+}  // namespace
+
+TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
+{
+    using fabguide::geometry::Outline;
+    PackProblem problem;
+    problem.boards.push_back({"ply", "", 600, 400, 6, 1});
+    problem.settings = {0.5, 0.2, 2, 5};
+    const Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
+    const Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
+    problem.parts.push_back({"ell", ell, 2, {0, 90, 180, 270}});
+    problem.parts.push_back({"tri", triangle, 3, {0, 90, 180, 270}});
+    const Layout layout = pack(problem, quick());
+    ASSERT_EQ(layout.placements.size(), 5u);
+    EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(ell) + 3 * 7200, 1e-6);
+
+    // Every outline grown by just under half the clearance stays clear of every other one.
+    std::vector<Outline> grown;
+    for (const Placement& p : layout.placements)
+        grown.push_back(fabguide::geometry::offset(
+            fabguide::geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y), 1.1 - 1e-3));
+    for (size_t i = 0; i < grown.size(); ++i)
+        for (size_t j = i + 1; j < grown.size(); ++j)
+            EXPECT_EQ(sharedArea(grown[i], grown[j]), 0) << i << " and " << j;
+    // The L-shapes interlock: the layout is far smaller than their bounding boxes side by side.
+    EXPECT_LT(layout.boundingArea, 2 * 200 * 200 + 3 * 120 * 120);
 }

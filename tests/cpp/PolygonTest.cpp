@@ -2,23 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-
 using namespace fabguide::geometry;
-
-namespace {
-struct Box {
-    double minX, minY, maxX, maxY;
-};
-Box bounds(const Polygon& p)
-{
-    Box b{1e300, 1e300, -1e300, -1e300};
-    for (const Point2& q : p)
-        b = {std::min(b.minX, q.x), std::min(b.minY, q.y), std::max(b.maxX, q.x), std::max(b.maxY, q.y)};
-    return b;
-}
-}  // namespace
 
 TEST(Polygon, RectangleIsCounterClockwise)
 {
@@ -28,7 +12,7 @@ TEST(Polygon, RectangleIsCounterClockwise)
 TEST(Polygon, PlacedTurnsAndMovesTheBoundingBox)
 {
     const Outline o = placed(rectangle(40, 10), 90, 100, 200);
-    const Box b = bounds(o.outer);
+    const Box2 b = bounds(o.outer);
     EXPECT_DOUBLE_EQ(b.minX, 100);
     EXPECT_DOUBLE_EQ(b.minY, 200);
     EXPECT_DOUBLE_EQ(b.maxX, 110);
@@ -40,12 +24,34 @@ TEST(Polygon, OffsetGrowsOutlinesAndShrinksHolesKeepingCorners)
     Outline frame = rectangle(100, 60);
     frame.holes.push_back({{20, 20}, {20, 40}, {80, 40}, {80, 20}});  // clockwise
     const Outline path = offset(frame, 0.1);
-    const Box outer = bounds(path.outer);
-    EXPECT_NEAR(outer.maxX - outer.minX, 100.2, 1e-6);
-    EXPECT_NEAR(outer.maxY - outer.minY, 60.2, 1e-6);
+    const Box2 outer = bounds(path.outer);
+    EXPECT_NEAR(outer.width(), 100.2, 1e-6);
+    EXPECT_NEAR(outer.height(), 60.2, 1e-6);
     EXPECT_EQ(path.outer.size(), 4u);  // mitred: still a rectangle
     ASSERT_EQ(path.holes.size(), 1u);
-    const Box hole = bounds(path.holes[0]);
-    EXPECT_NEAR(hole.maxX - hole.minX, 59.8, 1e-6);
-    EXPECT_NEAR(hole.maxY - hole.minY, 19.8, 1e-6);
+    const Box2 hole = bounds(path.holes[0]);
+    EXPECT_NEAR(hole.width(), 59.8, 1e-6);
+    EXPECT_NEAR(hole.height(), 19.8, 1e-6);
+}
+
+TEST(Polygon, AreaSubtractsHolesAndRectanglesAreRecognised)
+{
+    Outline frame = rectangle(10, 10);
+    EXPECT_TRUE(isRectangle(frame));
+    frame.holes.push_back({{2, 2}, {2, 4}, {4, 4}, {4, 2}});
+    EXPECT_DOUBLE_EQ(area(frame), 96);
+    EXPECT_FALSE(isRectangle(frame));
+    EXPECT_FALSE(isRectangle({{{0, 0}, {10, 0}, {10, 10}, {5, 12}}, {}}));
+}
+
+TEST(Polygon, SpansBetweenFollowTheOutline)
+{
+    const Outline ell{{{0, 0}, {30, 0}, {30, 10}, {10, 10}, {10, 30}, {0, 30}}, {}};
+    auto low = spansBetween(ell, 2, 4);
+    ASSERT_EQ(low.size(), 1u);
+    EXPECT_NEAR(low[0].second, 30, 1e-6);
+    auto high = spansBetween(ell, 20, 22);
+    ASSERT_EQ(high.size(), 1u);
+    EXPECT_NEAR(high[0].second, 10, 1e-6);
+    EXPECT_TRUE(spansBetween(ell, 31, 33).empty());
 }
