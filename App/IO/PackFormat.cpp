@@ -153,6 +153,46 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
     return problem;
 }
 
+material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
+                            PartNames names)
+{
+    const Fields root(document, "");
+    material::Layout layout;
+    const nlohmann::json& boards = root.array("boards");
+    for (size_t i = 0; i < boards.size(); ++i) {
+        layout.sheets.push_back(readBoard(boards[i], at("boards", i)));
+        layout.sheetArea += layout.sheets.back().width * layout.sheets.back().height;
+    }
+    const nlohmann::json& placements = root.array("placements");
+    for (size_t i = 0; i < placements.size(); ++i) {
+        const Fields p(placements[i], at("placements", i));
+        material::Placement placement;
+        if (names == PartNames::Indices) {
+            placement.part = p.integer("part");
+        } else {
+            const std::string id = p.text("part");
+            const auto found = std::find_if(problem.parts.begin(), problem.parts.end(),
+                                            [&](const material::PartSpec& s) { return s.id == id; });
+            placement.part = static_cast<int>(found - problem.parts.begin());
+        }
+        if (placement.part < 0 || placement.part >= static_cast<int>(problem.parts.size()))
+            throw FormatError(p.pathOf("part") + ": no such part in the problem");
+        placement.sheet = p.integer("board");
+        if (placement.sheet < 0 || placement.sheet >= static_cast<int>(layout.sheets.size()))
+            throw FormatError(p.pathOf("board") + ": no such board in the layout");
+        placement.x = p.number("x");
+        placement.y = p.number("y");
+        placement.rotation = p.integer("rotation");
+        placement.width = p.positive("width");
+        placement.height = p.positive("height");
+        layout.placements.push_back(placement);
+        layout.partArea += geometry::area(problem.parts[placement.part].outline);
+    }
+    layout.boundingArea = layout.partArea / root.number("usage", 1.0);
+    layout.stripHeight = root.number("strip_height", 0.0);
+    return layout;
+}
+
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,
                             PartNames names)
 {

@@ -26,4 +26,9 @@ enum class PartNames { Ids, Indices };
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,
                             PartNames names);
 
+/// Reads a layout JSON written by layoutToJson back, against the problem it was made for, so cut
+/// sheets can be written for exactly the layout a user has seen. Throws FormatError naming the field.
+material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
+                            PartNames names);
+
 }  // namespace fabguide::io

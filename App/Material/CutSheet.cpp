@@ -15,20 +15,27 @@ double labelHeight(const Placement& p)
 
 }  // namespace
 
+geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem, size_t k)
+{
+    const Placement& p = layout.placements[k];
+    return geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
+}
+
 std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem)
 {
     std::vector<CutSheet> sheets;
     for (const MasterBoard& board : layout.sheets)
         sheets.push_back({board, {}, {}});
     std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
-    for (const Placement& p : layout.placements) {
-        const PartSpec& spec = problem.parts[p.part];
-        const geometry::Outline outline = geometry::placed(spec.outline, p.rotation, p.x, p.y);
-        const geometry::Outline path = geometry::offset(outline, problem.settings.kerf / 2);
+    for (size_t k = 0; k < layout.placements.size(); ++k) {
+        const Placement& p = layout.placements[k];
+        const geometry::Outline path =
+            geometry::offset(placedOutline(layout, problem, k), problem.settings.kerf / 2);
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
         outers[p.sheet].push_back(path.outer);
-        sheet.labels.push_back({spec.id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
+        sheet.labels.push_back(
+            {problem.parts[p.part].id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
     }
     for (size_t s = 0; s < sheets.size();
          ++s)  // inner cuts first: a part never drops out before its holes are cut

@@ -23,6 +23,9 @@ struct CutSheet {
     std::vector<Label> labels;
 };
 
+/// Placement k's outline at its nominal size, turned and moved as placed on its sheet.
+geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem, size_t k);
+
 /// The cutting plans of a layout: each part's outline turned and moved as placed, offset by half
 /// the kerf so that the cut leaves it at nominal size (outer contours outward, holes inward).
 std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem);

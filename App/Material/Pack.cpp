@@ -86,10 +86,14 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
     if (cost(other, stock, options.bounds) < cost(grid, stock, options.bounds))
         grid = std::move(other);
 
-    if (!grid.unplaced.empty())
-        throw PackingError("not enough master boards: part '" + parts[grid.unplaced.front()].name + "' and " +
-                           std::to_string(grid.unplaced.size() - 1) +
-                           " more do not fit on the boards available");
+    if (!grid.unplaced.empty()) {
+        const std::string first = "'" + parts[grid.unplaced.front()].name + "'";
+        const size_t more = grid.unplaced.size() - 1;
+        throw PackingError("not enough master boards: " +
+                           (more ? "part " + first + " and " + std::to_string(more) + " more do not fit"
+                                 : "part " + first + " does not fit") +
+                           " on the boards available");
+    }
 
     Layout layout;
     const double tau = settings.resolution;

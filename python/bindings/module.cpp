@@ -1,8 +1,8 @@
 // fabguide_core: Python bindings of the C++ core. Plain data crosses this boundary
 // (numbers, lists, dicts); FreeCAD document objects in python/fabguide call into it.
+#include "Bindings.h"
 #include "Core/Version.h"
 
-#include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
@@ -13,4 +13,5 @@ PYBIND11_MODULE(fabguide_core, m)
     m.attr("__version__") = fabguide::version();
     m.def("dependency_versions", &fabguide::dependencyVersions,
           "List of (library, version) compiled into the core.");
+    fabguide::bindings::bindMaterial(m);
 }

@@ -118,3 +118,25 @@ TEST(PackFormat, UnreadableFilesAreNamed)
 {
     EXPECT_THROW(io::readJsonFile("/nonexistent/x.pack.json"), io::FormatError);
 }
+
+TEST(PackFormat, LayoutsReadBackAsWritten)
+{
+    const material::PackProblem problem = io::readPackProblem(goodProblem());
+    material::OrderingSearchOptions options;
+    options.iterations = 30;
+    const material::Layout layout = material::pack(problem, options);
+    const json written = io::layoutToJson(layout, problem, io::PartNames::Ids);
+    const material::Layout read = io::readLayout(written, problem, io::PartNames::Ids);
+    ASSERT_EQ(read.placements.size(), layout.placements.size());
+    for (size_t i = 0; i < read.placements.size(); ++i) {
+        EXPECT_EQ(read.placements[i].part, layout.placements[i].part);
+        EXPECT_DOUBLE_EQ(read.placements[i].x, layout.placements[i].x);
+        EXPECT_EQ(read.placements[i].rotation, layout.placements[i].rotation);
+    }
+    EXPECT_NEAR(read.usage(), layout.usage(), 1e-9);
+    EXPECT_EQ(io::layoutToJson(read, problem, io::PartNames::Ids), written);
+
+    json bad = written;
+    bad["placements"][0]["part"] = "drawer";
+    EXPECT_THROW(io::readLayout(bad, problem, io::PartNames::Ids), io::FormatError);
+}

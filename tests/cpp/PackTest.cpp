@@ -103,6 +103,7 @@ TEST(Pack, RunningOutOfBoardsNamesAPart)
     } catch (const PackingError& e) {
         EXPECT_NE(std::string(e.what()).find("not enough master boards: part '"), std::string::npos)
             << e.what();
+        EXPECT_EQ(std::string(e.what()).find(" 0 more"), std::string::npos) << e.what();
     }
 }
 

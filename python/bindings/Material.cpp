@@ -1,0 +1,100 @@
+// Bindings of the flat-pack layout (thesis ch. 5): problems and layouts are the dicts of docs/formats.md.
+#include "Bindings.h"
+#include "IO/CutSheetFiles.h"
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+#include "Json.h"
+
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace fabguide::bindings {
+
+namespace {
+
+py::object pack(const py::object& problemDict, long iterations, double timeLimit, std::uint64_t seed,
+                bool bottomLeft)
+{
+    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
+    material::OrderingSearchOptions options;
+    options.iterations = iterations;
+    options.timeLimit = timeLimit;
+    options.seed = seed;
+    options.criterion = bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
+    material::Layout layout;
+    {
+        py::gil_scoped_release release;
+        layout = material::pack(problem, options);
+    }
+    return fromJson(io::layoutToJson(layout, problem, io::PartNames::Ids));
+}
+
+std::vector<std::string> writeCutSheets(const py::object& problemDict, const py::object& layoutDict,
+                                        const std::string& svgFolder, const std::string& dxfFolder,
+                                        const std::string& csvFile)
+{
+    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
+    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
+    std::vector<std::string> written;
+    for (const auto& [folder, extension] : {std::pair{svgFolder, "svg"}, std::pair{dxfFolder, "dxf"}})
+        if (!folder.empty())
+            for (const std::string& path : io::writeSheets(sheets, folder, extension))
+                written.push_back(path);
+    if (!csvFile.empty()) {
+        io::writeCutList(material::cutList(layout, problem), csvFile);
+        written.push_back(csvFile);
+    }
+    return written;
+}
+
+py::list placedOutlines(const py::object& problemDict, const py::object& layoutDict)
+{
+    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
+    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    auto points = [](const geometry::Polygon& polygon) {
+        py::list list;
+        for (const geometry::Point2& p : polygon)
+            list.append(py::make_tuple(p.x, p.y));
+        return list;
+    };
+    py::list out;
+    for (size_t k = 0; k < layout.placements.size(); ++k) {
+        const geometry::Outline outline = material::placedOutline(layout, problem, k);
+        py::list holes;
+        for (const geometry::Polygon& hole : outline.holes)
+            holes.append(points(hole));
+        py::dict item;
+        item["board"] = layout.placements[k].sheet;
+        item["part"] = problem.parts[layout.placements[k].part].id;
+        item["outline"] = points(outline.outer);
+        item["holes"] = holes;
+        out.append(item);
+    }
+    return out;
+}
+
+}  // namespace
+
+void bindMaterial(py::module_& m)
+{
+    py::register_exception<io::FormatError>(m, "FormatError", PyExc_ValueError);
+    py::register_exception<material::PackingError>(m, "PackingError", PyExc_RuntimeError);
+    m.def(
+        "pack", &pack, py::arg("problem"), py::arg("iterations") = -1, py::arg("time_limit") = 60.0,
+        py::arg("seed") = 1, py::arg("bottom_left") = false,
+        "Lay the parts of a pack problem (a *.pack.json dict) out on its master boards; returns the layout "
+        "dict.\n"
+        "iterations=-1 tries |parts|^2 ordering swaps (thesis 5.4.3); the same inputs give the same layout.\n"
+        "Raises FormatError naming a bad field, PackingError naming a part that does not fit.");
+    m.def("placed_outlines", &placedOutlines, py::arg("problem"), py::arg("layout"),
+          "Each placement's outline as placed on its board: [{'board', 'part', 'outline': [(x, y)...], "
+          "'holes'}].");
+    m.def("write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
+          py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
+          "Write SVG/DXF cut sheets per board and a CSV cut list for a layout of the problem; returns the "
+          "paths.");
+}
+
+}  // namespace fabguide::bindings

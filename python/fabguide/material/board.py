@@ -1,0 +1,162 @@
+"""Board: a planar part of one thickness (thesis 5.2), made from a sketch or face plus a thickness, or
+from a thin solid whose thickness and outline are detected. Its shape is always the flat slab; the
+outline the layout packs is read from the slab's largest planar face."""
+import re
+
+import FreeCAD
+import Part
+
+from fabguide import properties
+
+SAMPLING = 0.05  # mm: arcs and splines become polygons deviating at most this much (thesis 5.4.1)
+ROTATIONS = {"Any": [0, 90, 180, 270], "Keep grain (0/180)": [0, 180], "Fixed": [0]}
+
+
+class BoardError(ValueError):
+    """A board that cannot be made; the message names the board and its source."""
+
+
+class Board(properties.Proxy):
+    TYPE = "FabGuide::Board"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkSub", "Source", "Board", "Sketch, planar face or thin solid the board is made of")
+        add(obj, "App::PropertyLength", "Thickness", "Board",
+            "Thickness of a board made from a sketch or face (detected for a solid)", 18)
+        add(obj, "App::PropertyInteger", "Quantity", "Board", "How many to cut", 1)
+        if "Rotation" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyEnumeration", "Rotation", "Board", "Turns allowed on the master board")
+            obj.Rotation = list(ROTATIONS)
+        add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
+        add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
+
+    def execute(self, obj):
+        slab, thickness = make_slab(obj)
+        obj.Shape = slab
+        if abs(obj.Thickness.Value - thickness) > 1e-9:
+            obj.Thickness = thickness
+        outline = outline_of(slab)
+        xs = [p[0] for p in outline["outline"]]
+        ys = [p[1] for p in outline["outline"]]
+        obj.OutlineWidth, obj.OutlineHeight = max(xs) - min(xs), max(ys) - min(ys)
+
+
+def create(doc, source, subelement=None, thickness=18, label="Board"):
+    """A board from `source` (a sketch, a solid, or with `subelement` 'FaceN' a planar face of it)."""
+    obj = doc.addObject("Part::FeaturePython", label)
+    Board(obj)
+    obj.Source = (source, [subelement] if subelement else [])
+    obj.Thickness = thickness
+    return obj
+
+
+def is_board(obj):
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == Board.TYPE
+
+
+def element_name(name):
+    """'Face3' from a selection sub-element name, also FreeCAD 1.0's mapped ';g543;…F.Face3'."""
+    match = re.search(r"(Face\d+)$", name)
+    return match.group(1) if match else name
+
+
+def make_slab(obj):
+    """(slab solid, thickness) for a board, or BoardError naming the board and its source."""
+    if obj.Source is None:
+        raise BoardError("Board '{}': no Source (select a sketch, a planar face or a thin solid)".format(obj.Label))
+    source, subs = obj.Source
+    what = "Board '{}' (source '{}')".format(obj.Label, source.Label)
+    shape = getattr(source, "Shape", None)
+    if shape is None or shape.isNull():
+        raise BoardError("{}: the source has no shape".format(what))
+    if subs:
+        face = shape.getElement(element_name(subs[0]))
+        return extrude(face, obj.Thickness.Value, what), obj.Thickness.Value
+    if shape.Solids:
+        if len(shape.Solids) > 1:
+            raise BoardError("{}: the source holds {} solids; make one board per solid".format(what, len(shape.Solids)))
+        thickness = slab_thickness(shape.Solids[0], what)
+        return shape.Solids[0].copy(), thickness
+    closed = [wire for wire in shape.Wires if wire.isClosed()]
+    if not closed:
+        raise BoardError("{}: needs closed wires, a planar face or a solid".format(what))
+    try:
+        face = Part.makeFace(closed, "Part::FaceMakerBullseye")
+    except Part.OCCError as error:
+        raise BoardError("{}: its wires do not make a planar face ({})".format(what, error))
+    return extrude(face, obj.Thickness.Value, what), obj.Thickness.Value
+
+
+def extrude(face, thickness, what):
+    if not is_planar(face):
+        raise BoardError("{}: the face is not planar".format(what))
+    if thickness <= 0:
+        raise BoardError("{}: Thickness must be greater than 0".format(what))
+    return face.extrude(face.normalAt(0, 0) * thickness)
+
+
+def is_planar(face):
+    return face.Surface.TypeId == "Part::GeomPlane"
+
+
+def largest_planar_face(shape):
+    faces = [f for f in shape.Faces if is_planar(f)]
+    return max(faces, key=lambda f: f.Area) if faces else None
+
+
+def slab_thickness(solid, what):
+    """Distance between the solid's largest planar face and the parallel face opposite it; the solid
+    must be that face swept straight through (a flat board), else BoardError."""
+    top = largest_planar_face(solid)
+    if top is None:
+        raise BoardError("{}: has no planar face, so it is not a flat board".format(what))
+    normal = top.normalAt(0, 0)
+    opposite = [f for f in solid.Faces if is_planar(f) and f.normalAt(0, 0).dot(normal) < -1 + 1e-9
+                and abs(f.Area - top.Area) <= 1e-6 * top.Area]
+    if not opposite:
+        raise BoardError("{}: no face parallel and opposite to its largest face, so it is not a flat board"
+                         .format(what))
+    thickness = abs((opposite[0].CenterOfMass - top.CenterOfMass).dot(normal))
+    if abs(solid.Volume - top.Area * thickness) > 1e-3 * solid.Volume:
+        raise BoardError("{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)"
+                         .format(what, solid.Volume, top.Area * thickness))
+    return thickness
+
+
+def plane_frame(face):
+    """Unit axes (u, v) in the face's plane, u along its longest straight outer edge."""
+    normal = face.normalAt(0, 0)
+    lines = [e for e in face.OuterWire.Edges if e.Curve.TypeId == "Part::GeomLine"]
+    if lines:
+        longest = max(lines, key=lambda e: e.Length)
+        u = longest.Vertexes[-1].Point - longest.Vertexes[0].Point
+    else:
+        u = normal.cross(FreeCAD.Vector(0, 0, 1))
+        if u.Length < 1e-9:
+            u = FreeCAD.Vector(1, 0, 0)
+    u.normalize()
+    return u, normal.cross(u)
+
+
+def outline_of(slab):
+    """The slab's outline in its largest face's plane: {'outline': [[u, v]...], 'holes': [...]} in mm."""
+    face = largest_planar_face(slab)
+    u, v = plane_frame(face)
+    origin = face.OuterWire.Vertexes[0].Point
+
+    def polygon(wire):
+        points = wire.discretize(Deflection=SAMPLING)
+        if len(points) > 1 and (points[0] - points[-1]).Length < 1e-9:
+            points = points[:-1]
+        return [[(p - origin).dot(u), (p - origin).dot(v)] for p in points]
+
+    holes = [polygon(w) for w in face.Wires if not w.isSame(face.OuterWire)]
+    return {"outline": polygon(face.OuterWire), "holes": holes}
+
+
+def as_problem_part(obj, part_id):
+    """The board as a *.pack.json part."""
+    outline = outline_of(obj.Shape)
+    return {"id": part_id, "outline": outline["outline"], "holes": outline["holes"],
+            "quantity": obj.Quantity, "orientations": ROTATIONS[obj.Rotation]}

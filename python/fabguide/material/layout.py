@@ -1,0 +1,142 @@
+"""Layout: the boards laid out on the master boards by docking (thesis 5.3.1, 5.4.3), shown as 2-D sheets
+beside the model, with the material usage. Cut sheets are written from exactly the layout shown."""
+import json
+import os
+import re
+
+import FreeCAD
+import Part
+
+import fabguide_core
+from fabguide import properties
+from fabguide.material import board, master_board
+
+GAP = 100  # mm between the model and the sheets, and between sheets
+
+
+class LayoutError(ValueError):
+    """A layout that cannot be made; the message names the layout and the board at fault."""
+
+
+class Layout(properties.Proxy):
+    TYPE = "FabGuide::Layout"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkList", "Boards", "Layout", "Boards to lay out")
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Layout", "Master boards to cut them from, opened in this order")
+        add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
+        add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
+        add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
+        add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyInteger", "Iterations", "Search",
+            "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
+        add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
+        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / bounding rectangle of the layout", mode=1)
+        add(obj, "App::PropertyFloat", "SheetUtilisation", "Result", "Part area / area of the master boards used",
+            mode=1)
+        add(obj, "App::PropertyArea", "WasteArea", "Result", "Area of the master boards used minus part area", mode=1)
+        add(obj, "App::PropertyInteger", "SheetCount", "Result", "Master boards used", mode=1)
+        add(obj, "App::PropertyString", "ProblemJson", "Data", "The problem laid out (*.pack.json)", mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data", "The layout (layout JSON)", mode=2)
+
+    def execute(self, obj):
+        problem, boards = make_problem(obj)
+        try:
+            result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
+        except (fabguide_core.FormatError, fabguide_core.PackingError) as error:
+            raise LayoutError("Layout '{}': {}".format(obj.Label, name_boards(str(error), boards)))
+        obj.ProblemJson = json.dumps(problem)
+        obj.LayoutJson = json.dumps(result)
+        obj.Usage = result["usage"]
+        obj.SheetUtilisation = result["sheet_utilisation"]
+        obj.WasteArea = result["waste_area"]
+        obj.SheetCount = len(result["boards"])
+        obj.Shape = sheets_shape(problem, result, beside(boards))
+        FreeCAD.Console.PrintMessage("{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}\n"
+                                     .format(obj.Label, len(result["placements"]), obj.SheetCount, obj.Usage,
+                                             obj.SheetUtilisation))
+
+
+def create(doc, boards, master_boards, label="Layout"):
+    obj = doc.addObject("Part::FeaturePython", label)
+    Layout(obj)
+    obj.Boards = list(boards)
+    obj.MasterBoards = list(master_boards)
+    return obj
+
+
+def is_layout(obj):
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == Layout.TYPE
+
+
+def part_ids(boards):
+    """Each board's name on the cut sheets: its label, made unique with its internal name if needed."""
+    labels = [b.Label for b in boards]
+    return [b.Label if labels.count(b.Label) == 1 else "{} ({})".format(b.Label, b.Name) for b in boards]
+
+
+def make_problem(obj):
+    """(the *.pack.json problem of the layout, its boards in part order), or LayoutError naming the fault."""
+    boards = [b for b in obj.Boards if board.is_board(b)]
+    masters = [m for m in obj.MasterBoards if master_board.is_master_board(m)]
+    if not boards:
+        raise LayoutError("Layout '{}': no boards to lay out (add FabGuide boards to Boards)".format(obj.Label))
+    if not masters:
+        raise LayoutError("Layout '{}': no master boards (add one to MasterBoards)".format(obj.Label))
+    for b in boards:
+        if b.Shape.isNull():
+            raise LayoutError("Layout '{}': board '{}' has no shape; recompute it first".format(obj.Label, b.Label))
+        for m in masters:
+            if abs(b.Thickness.Value - m.Thickness.Value) > 0.01:
+                raise LayoutError("Layout '{}': board '{}' is {:g} mm thick but master board '{}' is {:g} mm"
+                                  .format(obj.Label, b.Label, b.Thickness.Value, m.Label, m.Thickness.Value))
+    problem = {
+        "format": "fabguide.pack", "version": 1,
+        "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
+                     "trim": obj.Trim.Value},
+        "boards": [master_board.as_problem_board(m) for m in masters],
+        "parts": [board.as_problem_part(b, part_id) for b, part_id in zip(boards, part_ids(boards))],
+    }
+    return problem, boards
+
+
+def name_boards(message, boards):
+    """The core names parts as parts[i]: say which board that is."""
+    return re.sub(r"parts\[(\d+)\]", lambda m: "board '{}'".format(boards[int(m.group(1))].Label), message)
+
+
+def beside(boards):
+    """Where the sheets go: to the right of the boards' bounding box, level with its bottom."""
+    box = boards[0].Shape.BoundBox
+    for b in boards[1:]:
+        box.add(b.Shape.BoundBox)
+    return FreeCAD.Vector(box.XMax + GAP, box.YMin, 0)
+
+
+def sheets_shape(problem, result, origin):
+    """A compound: one face per master board used (1 mm below), then one face per placed part."""
+    def face(points, holes=(), z=0.0, dx=0.0):
+        def wire(poly):
+            pts = [origin + FreeCAD.Vector(x + dx, y, z) for x, y in poly]
+            return Part.makePolygon(pts + pts[:1])
+        return Part.makeFace([wire(points)] + [wire(h) for h in holes], "Part::FaceMakerBullseye")
+
+    offsets, x = [], 0.0
+    for sheet in result["boards"]:
+        offsets.append(x)
+        x += sheet["width"] + GAP
+    sheets = [face([(0, 0), (s["width"], 0), (s["width"], s["height"]), (0, s["height"])], z=-1.0, dx=dx)
+              for s, dx in zip(result["boards"], offsets)]
+    parts = [face(p["outline"], p["holes"], dx=offsets[p["board"]])
+             for p in fabguide_core.placed_outlines(problem, result)]
+    return Part.makeCompound(sheets + parts)
+
+
+def export_cut_sheets(obj, folder):
+    """SVG and DXF per master board and cutlist.csv into `folder`, for the layout as last computed."""
+    if not obj.LayoutJson:
+        raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
+    os.makedirs(folder, exist_ok=True)
+    return fabguide_core.write_cut_sheets(json.loads(obj.ProblemJson), json.loads(obj.LayoutJson), svg_folder=folder,
+                                          dxf_folder=folder, csv_file=os.path.join(folder, "cutlist.csv"))

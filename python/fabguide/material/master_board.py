@@ -1,0 +1,38 @@
+"""MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
+from fabguide import properties
+
+
+class MasterBoard(properties.Proxy):
+    TYPE = "FabGuide::MasterBoard"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLength", "Width", "Master board", "Size along the layout's x axis", 2440)
+        add(obj, "App::PropertyLength", "Height", "Master board", "Size along the layout's y axis", 1220)
+        add(obj, "App::PropertyLength", "Thickness", "Master board", "Material thickness", 18)
+        add(obj, "App::PropertyInteger", "Count", "Master board", "Boards in stock; 0 = as many as needed", 1)
+        add(obj, "App::PropertyString", "Material", "Master board", "Material name for the cut list", "plywood")
+
+    def execute(self, obj):
+        for name in ("Width", "Height", "Thickness"):
+            if getattr(obj, name).Value <= 0:
+                raise ValueError("Master board '{}': {} must be greater than 0".format(obj.Label, name))
+        if obj.Count < 0:
+            raise ValueError("Master board '{}': Count must be 0 (as many as needed) or more".format(obj.Label))
+
+
+def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard"):
+    obj = doc.addObject("App::FeaturePython", label)
+    MasterBoard(obj)
+    obj.Width, obj.Height, obj.Thickness, obj.Count, obj.Material = width, height, thickness, count, material
+    return obj
+
+
+def is_master_board(obj):
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == MasterBoard.TYPE
+
+
+def as_problem_board(obj):
+    """The master board as a *.pack.json board."""
+    return {"name": obj.Label, "material": obj.Material, "width": obj.Width.Value, "height": obj.Height.Value,
+            "thickness": obj.Thickness.Value, "count": obj.Count if obj.Count > 0 else -1}

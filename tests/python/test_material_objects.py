@@ -1,0 +1,180 @@
+"""Flat-pack document objects, headless: boards from solids, faces and sketches; master boards; the
+layout recomputes, names its errors, survives save/reload and undo, and exports its cut sheets."""
+import json
+import math
+
+import FreeCAD
+import Part
+import Sketcher
+import pytest
+
+from fabguide.material import board, layout, master_board
+
+
+@pytest.fixture
+def doc():
+    document = FreeCAD.newDocument("material")
+    name = document.Name
+    yield document
+    if name in FreeCAD.listDocuments():  # a test may have closed it already
+        FreeCAD.closeDocument(name)
+
+
+def box(doc, name, x, y, z, at=(0, 0, 0), rotation=None):
+    obj = doc.addObject("Part::Box", name)
+    obj.Length, obj.Width, obj.Height = x, y, z
+    obj.Placement.Base = FreeCAD.Vector(*at)
+    if rotation:
+        obj.Placement.Rotation = rotation
+    return obj
+
+
+def shelf_unit(doc):
+    """Two 18 mm sides and three shelves as plain Part boxes, then boards made from them."""
+    parts = [box(doc, "SideL", 18, 300, 800), box(doc, "SideR", 18, 300, 800, at=(582, 0, 0))]
+    parts += [box(doc, "Shelf{}".format(i), 564, 300, 18, at=(18, 0, 100 + 300 * i)) for i in range(3)]
+    doc.recompute()
+    boards = [board.create(doc, p, label=p.Label.lower()) for p in parts]
+    masters = [master_board.create(doc, 1220, 1220, 18, count=0, material="birch plywood")]
+    doc.recompute()
+    return boards, masters
+
+
+def test_thickness_and_outline_are_detected_from_thin_solids(doc):
+    tilted = box(doc, "Tilted", 400, 250, 12, rotation=FreeCAD.Rotation(FreeCAD.Vector(1, 1, 0), 37))
+    doc.recompute()
+    b = board.create(doc, tilted, thickness=99)
+    doc.recompute()
+    assert "Invalid" not in b.State
+    assert b.Thickness.Value == pytest.approx(12)
+    assert (b.OutlineWidth.Value, b.OutlineHeight.Value) == (pytest.approx(400), pytest.approx(250))
+
+
+def test_a_face_or_a_sketch_with_a_hole_becomes_a_board(doc):
+    slab = box(doc, "Slab", 300, 200, 50)
+    doc.recompute()
+    from_face = board.create(doc, slab, "Face6", thickness=6)  # the top face
+    sketch = doc.addObject("Sketcher::SketchObject", "Ring")
+    sketch.addGeometry(Part.Circle(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(0, 0, 1), 100))
+    sketch.addGeometry(Part.Circle(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(0, 0, 1), 40))
+    ring = board.create(doc, sketch, thickness=6)
+    doc.recompute()
+    assert from_face.Shape.Volume == pytest.approx(300 * 200 * 6)
+    assert ring.Shape.Volume == pytest.approx(math.pi * (100 ** 2 - 40 ** 2) * 6, rel=1e-6)
+    part = board.as_problem_part(ring, "ring")
+    assert len(part["holes"]) == 1 and len(part["outline"]) > 100  # the circle is sampled finely
+
+
+def test_selection_names_of_freecad_1_are_understood():
+    assert board.element_name(";g543;SKT;:H1,F.Face3") == "Face3"
+    assert board.element_name("Face12") == "Face12"
+
+
+@pytest.mark.parametrize("make, message", [
+    (lambda doc: Part.makeSphere(50), "has no planar face"),
+    (lambda doc: Part.makeCone(50, 20, 80), "not a flat board"),
+    (lambda doc: Part.makeBox(10, 10, 10).fuse(Part.makeBox(30, 30, 5)), "not a flat board"),
+])
+def test_solids_that_are_not_boards_are_refused_by_name(doc, make, message):
+    source = doc.addObject("Part::Feature", "Blob")
+    source.Shape = make(doc)
+    b = board.create(doc, source, label="Odd")
+    with pytest.raises(board.BoardError, match="Board 'Odd' \\(source 'Blob'\\): .*" + message):
+        b.Proxy.execute(b)
+    doc.recompute()
+    assert "Invalid" in b.State
+
+
+def test_layout_packs_every_board_and_reports_usage(doc):
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    assert "Invalid" not in lay.State
+    result = json.loads(lay.LayoutJson)
+    assert len(result["placements"]) == 5 and lay.SheetCount == len(result["boards"]) == 1
+    assert 0 < lay.SheetUtilisation <= lay.Usage <= 1
+    assert lay.WasteArea.Value == pytest.approx(1220 * 1220 - (2 * 800 * 300 + 3 * 564 * 300))
+    assert len(lay.Shape.Faces) == 1 + 5  # the sheet and the parts
+    model = boards[0].Shape.BoundBox
+    for b in boards[1:]:
+        model.add(b.Shape.BoundBox)
+    assert lay.Shape.BoundBox.XMin > model.XMax  # shown beside the model, not on it
+
+
+def test_changing_a_board_updates_the_layout(doc):
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    before = lay.Usage
+    boards[2].Quantity = 2
+    doc.recompute()
+    assert len(json.loads(lay.LayoutJson)["placements"]) == 6
+    assert lay.Usage != before
+
+
+def test_layout_errors_name_the_board_at_fault(doc):
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    masters[0].Thickness = 12
+    doc.recompute()
+    assert "Invalid" in lay.State
+    with pytest.raises(layout.LayoutError, match="board 'sidel' is 18 mm thick but master board"):
+        lay.Proxy.execute(lay)
+    masters[0].Thickness = 18
+    masters[0].Width, masters[0].Height = 500, 500
+    with pytest.raises(layout.LayoutError, match="board 'side.' is larger than every master board|part 'side.'"):
+        lay.Proxy.execute(lay)
+    assert all("Invalid" not in b.State for b in boards)  # the user's boards are untouched
+
+
+def test_save_and_reload_reproduce_the_layout(doc, tmp_path):
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    saved, name = lay.LayoutJson, lay.Name
+    path = str(tmp_path / "shelf.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        again = reopened.getObject(name)
+        assert again.LayoutJson == saved
+        for obj in reopened.Objects:
+            obj.touch()
+        reopened.recompute()
+        assert "Invalid" not in again.State
+        assert again.LayoutJson == saved
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_undo_removes_a_layout_in_one_step(doc):
+    doc.UndoMode = 1
+    boards, masters = shelf_unit(doc)
+    doc.openTransaction("Layout")
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    doc.commitTransaction()
+    name = lay.Name
+    doc.undo()
+    assert doc.getObject(name) is None
+    assert all(doc.getObject(b.Name) for b in boards)
+
+
+def test_export_writes_what_the_layout_shows(doc, tmp_path):
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    written = layout.export_cut_sheets(lay, str(tmp_path / "sheets"))
+    names = sorted(p.split("/")[-1] for p in written)
+    assert names == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"]
+    svg = (tmp_path / "sheets" / "sheet-1.svg").read_text()
+    assert 'width="1220mm"' in svg and svg.count("<path") == 5 and ">sidel<" in svg
+    csv = (tmp_path / "sheets" / "cutlist.csv").read_text().splitlines()
+    assert csv[0] == "part,quantity,width,height,thickness,material,board" and len(csv) == 6
+
+
+def test_export_before_recompute_is_refused(doc):
+    lay = layout.create(doc, [], [])
+    with pytest.raises(layout.LayoutError, match="has not been computed"):
+        layout.export_cut_sheets(lay, "/tmp/never")
