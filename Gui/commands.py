@@ -1,18 +1,16 @@
 """FabGuide's GUI commands and where the workbench shows them."""
 import FreeCADGui as Gui
 
-from fabguide_gui import about
+from fabguide_gui import about, material_commands
 
-# Toolbar and menu contents, filled by the feature work: Function (thesis ch. 4), Material (ch. 5).
+# Toolbar and menu contents: Function (thesis ch. 4), Material (ch. 5).
 TOOLBARS = {
     "Function": [],
-    "Material": [],
+    "Material": list(material_commands.COMMANDS),
 }
 HELP = ["FabGuide_About"]
 
-COMMANDS = {
-    "FabGuide_About": about.AboutCommand(),
-}
+COMMANDS = dict(material_commands.COMMANDS, FabGuide_About=about.AboutCommand())
 
 
 def register():

@@ -11,14 +11,29 @@ import FreeCADGui
 from PySide import QtCore
 
 
-def screenshot(name):
-    """Grab the whole FreeCAD window into $FABGUIDE_SCREENSHOTS/name.png; returns the path."""
+def _path(name):
     folder = os.environ["FABGUIDE_SCREENSHOTS"]
     os.makedirs(folder, exist_ok=True)
-    path = os.path.join(folder, name + ".png")
+    return os.path.join(folder, name + ".png")
+
+
+def screenshot(name):
+    """Grab the FreeCAD window (panels, toolbars) into $FABGUIDE_SCREENSHOTS/name.png; returns the path.
+    The 3-D view is OpenGL, which a window grab leaves blank: see view_image."""
+    path = _path(name)
     FreeCADGui.updateGui()
     if not FreeCADGui.getMainWindow().grab().save(path):
         raise RuntimeError("could not save screenshot " + path)
+    return path
+
+
+def view_image(name, width=1200, height=900):
+    """Render the active 3-D view into $FABGUIDE_SCREENSHOTS/name.png; returns the path."""
+    path = _path(name)
+    FreeCADGui.updateGui()
+    FreeCADGui.activeDocument().activeView().saveImage(path, width, height, "White")
+    if not os.path.isfile(path):
+        raise RuntimeError("could not save 3-D view " + path)
     return path
 
 

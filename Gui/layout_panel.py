@@ -1,0 +1,52 @@
+"""Task panel of a Layout: the material usage, live, and the cutting settings (thesis 5.1: the
+material-space view updates as the design changes)."""
+import os
+
+import FreeCADGui
+
+from fabguide_gui import resources
+
+SETTINGS = ("Kerf", "Spacing", "Trim")
+
+
+class LayoutPanel:
+    def __init__(self, layout):
+        self.layout = layout
+        self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "LayoutPanel.ui"))
+        self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Layout.svg")))
+        layout.Document.openTransaction("Edit layout")
+        for name in SETTINGS:
+            box = getattr(self.form, name.lower())
+            box.setValue(getattr(layout, name).Value)
+            box.valueChanged.connect(lambda value, name=name: self.set(name, value))
+        self.show()
+
+    def set(self, name, value):
+        setattr(self.layout, name, value)
+        self.layout.Document.recompute()
+        self.show()
+
+    def show(self):
+        """The layout's figures, or why it could not be made."""
+        layout, form = self.layout, self.form
+        if "Invalid" in layout.State:
+            form.message.setText("<b>The layout could not be made.</b> See the report view for the reason.")
+            return
+        form.message.setText("")
+        form.usage.setText("{:.1%}".format(layout.Usage))
+        form.utilisation.setText("{:.1%}".format(layout.SheetUtilisation))
+        form.waste.setText("{:.3f} m²".format(layout.WasteArea.Value / 1e6))
+        form.sheets.setText(str(layout.SheetCount))
+
+    def accept(self):
+        self.layout.Document.commitTransaction()
+        FreeCADGui.ActiveDocument.resetEdit()
+        return True
+
+    def reject(self):
+        document = self.layout.Document
+        document.abortTransaction()
+        document.recompute()
+        FreeCADGui.ActiveDocument.resetEdit()
+        return True
+

@@ -1,0 +1,162 @@
+"""Material toolbar (thesis ch. 5): master boards, boards, layout, cut sheets. Each command is one undo
+step; the work itself is done by the document objects in fabguide.material."""
+import contextlib
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from fabguide.material import board, layout, master_board
+from fabguide_gui import resources, viewproviders
+
+
+@contextlib.contextmanager
+def transaction(doc, name):
+    """One undo step, or none if the command fails."""
+    doc.openTransaction(name)
+    try:
+        yield
+    except Exception:
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+
+
+def tell(message):
+    """A user mistake: said in the report view and in a message box."""
+    from PySide import QtGui
+
+    FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
+    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "FabGuide", message)
+
+
+def selected(test):
+    return [s.Object for s in FreeCADGui.Selection.getSelectionEx() if test(s.Object)]
+
+
+def all_in(doc, test):
+    return [o for o in doc.Objects if test(o)]
+
+
+def first_thickness(doc):
+    boards = selected(board.is_board) or all_in(doc, board.is_board)
+    return boards[0].Thickness.Value if boards else 18
+
+
+class Command:
+    """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
+
+    def GetResources(self):
+        return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        self.run(FreeCAD.ActiveDocument)
+
+
+class NewMasterBoard(Command):
+    ICON, MENU = "FabGuide_MasterBoard.svg", "New Master Board"
+    TIP = "Add a master board (sheet size, thickness, stock, material) to cut boards from"
+
+    def run(self, doc):
+        with transaction(doc, "New master board"):
+            obj = master_board.create(doc, thickness=first_thickness(doc))
+            viewproviders.ViewProviderMasterBoard(obj.ViewObject)
+            doc.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+
+
+class MakeBoard(Command):
+    ICON, MENU = "FabGuide_Board.svg", "Make Board"
+    TIP = "Make a board from each selected sketch or planar face, as thick as the master boards"
+
+    def run(self, doc):
+        picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() for sub in (s.SubElementNames or [None])
+                 if sub is None or board.element_name(sub).startswith("Face")]
+        if not picks:
+            return tell("Select sketches or planar faces first.")
+        masters = all_in(doc, master_board.is_master_board)
+        thickness = masters[0].Thickness.Value if masters else 18
+        with transaction(doc, "Make board"):
+            made = [board.create(doc, source, board.element_name(sub) if sub else None, thickness,
+                                 label=source.Label + " board") for source, sub in picks]
+            finish_boards(doc, made)
+
+
+class BoardsFromSolids(Command):
+    ICON, MENU = "FabGuide_BoardsFromSolids.svg", "Boards from Solids"
+    TIP = "Turn each selected thin solid into a board, detecting its thickness and outline"
+
+    def run(self, doc):
+        solids = selected(lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))
+        if not solids:
+            return tell("Select the solids of your furniture model (flat boxes, pads, extrusions) first.")
+        with transaction(doc, "Boards from solids"):
+            made = [board.create(doc, solid, label=solid.Label + " board") for solid in solids]
+            finish_boards(doc, made)
+            for solid in solids:
+                solid.Visibility = False
+
+
+def finish_boards(doc, made):
+    for obj in made:
+        viewproviders.ViewProviderBoard(obj.ViewObject)
+    doc.recompute()
+    failed = [obj.Label for obj in made if "Invalid" in obj.State]
+    if failed:
+        FreeCAD.Console.PrintWarning("FabGuide: see the messages above for " + ", ".join(failed) + "\n")
+
+
+class MakeLayout(Command):
+    ICON, MENU = "FabGuide_Layout.svg", "Layout"
+    TIP = "Lay the selected (or all) boards out on the master boards and show the material usage"
+
+    def run(self, doc):
+        boards = selected(board.is_board) or all_in(doc, board.is_board)
+        if not boards:
+            return tell("There are no boards yet: use Boards from Solids or Make Board first.")
+        with transaction(doc, "Layout"):
+            masters = selected(master_board.is_master_board) or all_in(doc, master_board.is_master_board)
+            if not masters:
+                masters = [master_board.create(doc, thickness=boards[0].Thickness.Value)]
+                viewproviders.ViewProviderMasterBoard(masters[0].ViewObject)
+            obj = layout.create(doc, boards, masters)
+            viewproviders.ViewProviderLayout(obj.ViewObject)
+            doc.recompute()
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+
+
+class ExportCutSheets(Command):
+    ICON, MENU = "FabGuide_ExportCutSheets.svg", "Export Cut Sheets"
+    TIP = "Write SVG and DXF cut sheets per master board and a CSV cut list for the selected layout"
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, layout.is_layout))
+
+    def run(self, doc):
+        from PySide import QtGui
+
+        layouts = selected(layout.is_layout) or all_in(doc, layout.is_layout)
+        if len(layouts) > 1:
+            return tell("Select the layout to export.")
+        start = os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~")
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the cut sheets", start)
+        if not folder:
+            return
+        try:
+            written = layout.export_cut_sheets(layouts[0], folder)
+        except (layout.LayoutError, ValueError, RuntimeError) as error:
+            return tell(str(error))
+        FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
+
+
+COMMANDS = {
+    "FabGuide_NewMasterBoard": NewMasterBoard(),
+    "FabGuide_BoardsFromSolids": BoardsFromSolids(),
+    "FabGuide_MakeBoard": MakeBoard(),
+    "FabGuide_Layout": MakeLayout(),
+    "FabGuide_ExportCutSheets": ExportCutSheets(),
+}

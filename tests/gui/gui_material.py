@@ -1,0 +1,117 @@
+"""Material toolbar in the real FreeCAD GUI: a shelf unit made of Part boxes becomes boards, is laid out
+(task panel with the usage), edited live, undone, and exported; screenshots of the 3-D view and panel."""
+import os
+import tempfile
+
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtGui
+
+import guitest
+
+state = {}
+
+
+def model_and_workbench():
+    Gui.activateWorkbench("FabGuideWorkbench")
+    doc = FreeCAD.newDocument("Shelf")
+    sizes = [("Side", (18, 300, 800), (0, 0, 0)), ("Side", (18, 300, 800), (582, 0, 0))]
+    sizes += [("Shelf", (564, 300, 18), (18, 0, 100 + 300 * i)) for i in range(3)]
+    for label, (x, y, z), at in sizes:
+        box = doc.addObject("Part::Box", label)
+        box.Length, box.Width, box.Height = x, y, z
+        box.Placement.Base = FreeCAD.Vector(*at)
+    doc.recompute()
+    state["doc"] = doc
+    state["solids"] = list(doc.Objects)
+
+
+def boards_from_solids_makes_one_board_per_solid():
+    doc = state["doc"]
+    Gui.Selection.clearSelection()
+    for solid in state["solids"]:
+        Gui.Selection.addSelection(solid)
+    Gui.runCommand("FabGuide_BoardsFromSolids")
+    boards = [o for o in doc.Objects if o.TypeId == "Part::FeaturePython" and hasattr(o, "Thickness")]
+    assert len(boards) == 5, [o.Label for o in doc.Objects]
+    assert all(b.Thickness.Value == 18 and "Invalid" not in b.State for b in boards)
+    assert not any(s.Visibility for s in state["solids"])
+    state["boards"] = boards
+
+
+def master_board_and_layout_open_the_usage_panel():
+    doc = state["doc"]
+    Gui.Selection.clearSelection()
+    Gui.runCommand("FabGuide_NewMasterBoard")
+    master = doc.ActiveObject
+    master.Width, master.Height = 1220, 1220
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.runCommand("FabGuide_Layout")
+    layouts = [o for o in doc.Objects if hasattr(o, "LayoutJson")]
+    assert len(layouts) == 1
+    layout = layouts[0]
+    assert "Invalid" not in layout.State and layout.SheetCount == 1 and 0.5 < layout.Usage <= 1
+    QtGui.QApplication.processEvents()
+    panels = [w for w in QtGui.QApplication.allWidgets() if w.objectName() == "LayoutPanel" and w.isVisible()]
+    assert len(panels) == 1, "the layout task panel is open"
+    state["layout"] = layout
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    QtGui.QApplication.processEvents()
+    colours = layout.ViewObject.DiffuseColor
+    assert len(colours) == len(layout.Shape.Faces) and colours[0] != colours[-1], "sheets and parts coloured"
+    print("screenshot: " + guitest.screenshot("material_layout_panel"))
+    print("3-D view: " + guitest.view_image("material_layout_3d"))
+
+
+def editing_the_kerf_in_the_panel_relays_out_live():
+    layout = state["layout"]
+    form = [w for w in Gui.getMainWindow().findChildren(QtGui.QDoubleSpinBox) if w.objectName() == "kerf"]
+    assert form, "kerf field in the panel"
+    before = layout.LayoutJson
+    form[0].setValue(8.0)
+    assert layout.Kerf.Value == 8.0
+    assert layout.LayoutJson != before
+    usage = [w for w in Gui.getMainWindow().findChildren(QtGui.QLabel) if w.objectName() == "usage"][0]
+    assert usage.text() == "{:.1%}".format(layout.Usage)
+    Gui.Control.activeDialog() and Gui.ActiveDocument.resetEdit()
+    Gui.Control.closeDialog()
+    state["doc"].commitTransaction()
+
+
+def top_view_of_the_sheet():
+    Gui.activeDocument().activeView().viewTop()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("material_layout_top"))
+
+
+def export_writes_svg_dxf_and_csv():
+    folder = tempfile.mkdtemp()
+    original = QtGui.QFileDialog.getExistingDirectory
+    QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kwargs: folder)
+    try:
+        Gui.Selection.clearSelection()
+        Gui.runCommand("FabGuide_ExportCutSheets")
+    finally:
+        QtGui.QFileDialog.getExistingDirectory = original
+    assert sorted(os.listdir(folder)) == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"], os.listdir(folder)
+
+
+def undo_removes_the_layout_in_one_step():
+    doc = state["doc"]
+    name = state["layout"].Name
+    doc.undo()
+    assert doc.getObject(name) is None
+    assert all(doc.getObject(b.Name) for b in state["boards"])
+
+
+guitest.run([
+    model_and_workbench,
+    boards_from_solids_makes_one_board_per_solid,
+    master_board_and_layout_open_the_usage_panel,
+    editing_the_kerf_in_the_panel_relays_out_live,
+    top_view_of_the_sheet,
+    export_writes_svg_dxf_and_csv,
+    undo_removes_the_layout_in_one_step,
+])
