@@ -44,7 +44,8 @@ class Board(properties.Proxy):
 
 def create(doc, source, subelement=None, thickness=18, label="Board"):
     """A board from `source` (a sketch, a solid, or with `subelement` 'FaceN' a planar face of it)."""
-    obj = doc.addObject("Part::FeaturePython", label)
+    obj = doc.addObject("Part::FeaturePython", "Board")
+    obj.Label = label
     Board(obj)
     obj.Source = (source, [subelement] if subelement else [])
     obj.Thickness = thickness

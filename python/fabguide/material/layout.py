@@ -59,7 +59,8 @@ class Layout(properties.Proxy):
 
 
 def create(doc, boards, master_boards, label="Layout"):
-    obj = doc.addObject("Part::FeaturePython", label)
+    obj = doc.addObject("Part::FeaturePython", "Layout")
+    obj.Label = label
     Layout(obj)
     obj.Boards = list(boards)
     obj.MasterBoards = list(master_boards)

@@ -22,7 +22,8 @@ class MasterBoard(properties.Proxy):
 
 
 def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard"):
-    obj = doc.addObject("App::FeaturePython", label)
+    obj = doc.addObject("App::FeaturePython", "MasterBoard")
+    obj.Label = label
     MasterBoard(obj)
     obj.Width, obj.Height, obj.Thickness, obj.Count, obj.Material = width, height, thickness, count, material
     return obj
