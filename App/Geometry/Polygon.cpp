@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace fabguide::geometry {
 
@@ -111,29 +113,105 @@ std::vector<std::pair<double, double>> spansBetween(const Outline& outline, doub
     return spans;
 }
 
+Point2 Placement2::operator()(Point2 p) const
+{
+    const Point2 t = turned(p, degrees);
+    return {t.x + dx, t.y + dy};
+}
+
+Placement2 placement(const Outline& outline, int degrees, double x, double y)
+{
+    double minX = std::numeric_limits<double>::max(), minY = minX;
+    for (const Point2& p : outline.outer) {
+        const Point2 t = turned(p, degrees);
+        minX = std::min(minX, t.x);
+        minY = std::min(minY, t.y);
+    }
+    return {degrees, x - minX, y - minY};
+}
+
 Outline placed(const Outline& outline, int degrees, double x, double y)
 {
-    Outline out;
-    double minX = std::numeric_limits<double>::max(), minY = minX;
-    auto turn = [&](const Polygon& polygon) {
+    const Placement2 move = placement(outline, degrees, x, y);
+    auto apply = [&](const Polygon& polygon) {
         Polygon result;
-        for (const Point2& p : polygon) {
-            result.push_back(turned(p, degrees));
-            minX = std::min(minX, result.back().x);
-            minY = std::min(minY, result.back().y);
-        }
+        for (const Point2& p : polygon)
+            result.push_back(move(p));
         return result;
     };
-    out.outer = turn(outline.outer);
+    Outline out{apply(outline.outer), {}};
     for (const Polygon& hole : outline.holes)
-        out.holes.push_back(turn(hole));
-    auto move = [&](Polygon& polygon) {
-        for (Point2& p : polygon)
-            p = {p.x - minX + x, p.y - minY + y};
-    };
-    move(out.outer);
-    for (Polygon& hole : out.holes)
-        move(hole);
+        out.holes.push_back(apply(hole));
+    return out;
+}
+
+namespace {
+
+ClipperLib::Paths paths(const Outline& outline)
+{
+    ClipperLib::Paths all{toClipper(outline.outer)};
+    for (const Polygon& hole : outline.holes)
+        all.push_back(toClipper(hole));
+    return all;
+}
+
+ClipperLib::Paths paths(const std::vector<Polygon>& polygons)
+{
+    ClipperLib::Paths all;
+    for (const Polygon& polygon : polygons)
+        all.push_back(toClipper(polygon));
+    return all;
+}
+
+/// One outline from a Clipper result tree, or an error if it is several pieces.
+Outline single(const ClipperLib::PolyTree& tree, const char* what)
+{
+    if (tree.ChildCount() != 1)
+        throw std::runtime_error(std::string(what) + " leaves the board in " +
+                                 std::to_string(tree.ChildCount()) + " pieces");
+    const ClipperLib::PolyNode* outer = tree.Childs[0];
+    Outline out{fromClipper(outer->Contour), {}};
+    for (const ClipperLib::PolyNode* hole : outer->Childs) {
+        out.holes.push_back(fromClipper(hole->Contour));
+        if (hole->ChildCount())
+            throw std::runtime_error(std::string(what) + " leaves an island inside a hole");
+    }
+    return out;
+}
+
+Outline combine(const Outline& outline, const std::vector<Polygon>& polygons, ClipperLib::ClipType type,
+                const char* what)
+{
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(paths(outline), ClipperLib::ptSubject, true);
+    clipper.AddPaths(paths(polygons), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(type, tree, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+    return single(tree, what);
+}
+
+}  // namespace
+
+Outline unite(const Outline& outline, const std::vector<Polygon>& polygons)
+{
+    return combine(outline, polygons, ClipperLib::ctUnion, "adding tabs");
+}
+
+Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons)
+{
+    return combine(outline, polygons, ClipperLib::ctDifference, "cutting slots");
+}
+
+std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
+{
+    ClipperLib::Clipper clipper;
+    clipper.AddPath(toClipper(polygon), ClipperLib::ptSubject, true);
+    clipper.AddPaths(paths(outline), ClipperLib::ptClip, true);
+    ClipperLib::Paths pieces;
+    clipper.Execute(ClipperLib::ctIntersection, pieces, ClipperLib::pftNonZero, ClipperLib::pftEvenOdd);
+    std::vector<Polygon> out;
+    for (const ClipperLib::Path& piece : pieces)
+        out.push_back(fromClipper(piece));
     return out;
 }
 

@@ -47,9 +47,29 @@ Outline atOrigin(const Outline& outline);
 /// The x intervals in which the outline has area between heights y0 and y1 (clipped with Clipper).
 std::vector<std::pair<double, double>> spansBetween(const Outline& outline, double y0, double y1);
 
-/// Turns by `degrees` (a multiple of 90) counter-clockwise about the origin, then moves the result so
-/// that its bounding box's lower-left corner is at (x, y).
+/// A turn by a multiple of 90° counter-clockwise about the origin followed by a move.
+struct Placement2 {
+    int degrees = 0;
+    double dx = 0, dy = 0;
+    Point2 operator()(Point2 p) const;
+};
+
+/// The placement that turns `outline` by `degrees` and moves its bounding box's lower-left corner to (x, y).
+Placement2 placement(const Outline& outline, int degrees, double x, double y);
+
+/// The outline turned by `degrees` (a multiple of 90) and moved so its bounding box's lower-left corner
+/// is at (x, y).
 Outline placed(const Outline& outline, int degrees, double x, double y);
+
+/// The outline with `polygons` added (union); throws std::runtime_error if it falls into pieces.
+Outline unite(const Outline& outline, const std::vector<Polygon>& polygons);
+
+/// The outline with `polygons` cut away: cut inside it they become holes, cut across its edge notches.
+/// Throws std::runtime_error if it falls into pieces.
+Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons);
+
+/// The parts of `polygon` inside `outline`.
+std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 
 /// Grows outer contours and shrinks holes by `distance` (mitred corners), using Clipper:
 /// the tool path of a cut of width 2·distance that leaves the outline at its nominal size.
