@@ -46,5 +46,5 @@ furniture("bookshelf", t,
 t = 12  # coffee table: a top on two legs with a shelf between them, for a laser cutter
 furniture("coffee-table", t,
           [("Top", (700, 420, t), (0, 0, 400)), ("Left leg", (t, 380, 400), (30, 20, 0)),
-           ("Right leg", (t, 380, 400), (700 - 30 - t, 20, 0)), ("Shelf", (640, 150, t), (30, 135, 120))],
+           ("Right leg", (t, 380, 400), (700 - 30 - t, 20, 0)), ("Shelf", (616, 150, t), (30 + t, 135, 120))],
           (1220, 915, 1, "poplar plywood"), (0.2, 3, 5))

@@ -41,9 +41,6 @@ Box2 bounds(const Polygon& polygon);
 /// True when the outline is a hole-free axis-aligned rectangle.
 bool isRectangle(const Outline& outline);
 
-/// The same outline moved so that its bounding box's lower-left corner is at the origin.
-Outline atOrigin(const Outline& outline);
-
 /// The x intervals in which the outline has area between heights y0 and y1 (clipped with Clipper).
 std::vector<std::pair<double, double>> spansBetween(const Outline& outline, double y0, double y1);
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 namespace fabguide::io {
 
@@ -54,6 +55,15 @@ std::string quoteCsv(const std::string& text)
     return out + "\"";
 }
 
+/// A closed SVG path; y flipped for SVG's downward axis on a sheet `height` tall.
+std::string svgPath(const geometry::Polygon& polygon, double height)
+{
+    std::ostringstream d;
+    for (size_t i = 0; i < polygon.size(); ++i)
+        d << (i ? " L" : "M") << polygon[i].x << "," << height - polygon[i].y;
+    return "<path d=\"" + d.str() + " Z\"/>";
+}
+
 }  // namespace
 
 void writeSvg(const material::CutSheet& sheet, const std::string& path)
@@ -67,17 +77,19 @@ void writeSvg(const material::CutSheet& sheet, const std::string& path)
         << "  <g id=\"sheet\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.1\">\n"
         << "    <rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\"/>\n  </g>\n"
         << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.1\">\n";
-    for (const geometry::Polygon& cut : sheet.cuts) {
-        out << "    <path d=\"";
-        for (size_t i = 0; i < cut.size(); ++i)
-            out << (i ? " L" : "M") << cut[i].x << "," << h - cut[i].y;
-        out << " Z\"/>\n";
-    }
+    for (const geometry::Polygon& cut : sheet.cuts)
+        out << "    " << svgPath(cut, h) << "\n";
+    out << "  </g>\n  <g id=\"drill\" fill=\"none\" stroke=\"#00a000\" stroke-width=\"0.1\">\n";
+    for (const material::Drill& drill : sheet.drills)
+        out << "    <circle cx=\"" << drill.at.x << "\" cy=\"" << h - drill.at.y << "\" r=\""
+            << drill.diameter / 2 << "\" data-depth=\"" << drill.depth << "\"/>\n";
     out << "  </g>\n  <g id=\"engrave\" fill=\"#0000ff\" stroke=\"none\" font-family=\"sans-serif\" "
            "text-anchor=\"middle\" dominant-baseline=\"central\">\n";
     for (const material::Label& label : sheet.labels)
         out << "    <text x=\"" << label.at.x << "\" y=\"" << h - label.at.y << "\" font-size=\""
             << label.height << "\">" << escapeXml(label.text) << "</text>\n";
+    for (const geometry::Polygon& mark : sheet.engraved)
+        out << "    " << svgPath(mark, h) << "\n";
     out << "  </g>\n</svg>\n";
     if (!out)
         throw FormatError(path + ": cannot write file");
@@ -103,8 +115,9 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path)
     dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
     dw->tableEnd();
-    const std::pair<const char*, int> layers[] = {{"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}};
-    dw->tableLayers(4);
+    const std::pair<const char*, int> layers[] = {
+        {"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"DRILL", 3}, {"SHEET", 8}};
+    dw->tableLayers(5);
     for (const auto& [name, colour] : layers)
         dxf.writeLayer(*dw, DL_LayerData(name, 0), DL_Attributes("", colour, -1, "CONTINUOUS", 1.0));
     dw->tableEnd();
@@ -141,6 +154,11 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path)
         "SHEET");
     for (const geometry::Polygon& cut : sheet.cuts)
         polygon(cut, "CUT");
+    for (const geometry::Polygon& mark : sheet.engraved)
+        polygon(mark, "ENGRAVE");
+    for (const material::Drill& drill : sheet.drills)
+        dxf.writeCircle(*dw, DL_CircleData(drill.at.x, drill.at.y, 0.0, drill.diameter / 2),
+                        DL_Attributes("DRILL", 256, -1, "BYLAYER", 1.0));
     for (const material::Label& label : sheet.labels)  // centred horizontally (1) and vertically (2)
         dxf.writeText(*dw,
                       DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,

@@ -9,11 +9,13 @@
 
 namespace fabguide::io {
 
-/// SVG sized in millimetres; groups "cut" (red #ff0000 hairlines), "engrave" (blue #0000ff text) and
-/// "sheet" (grey board outline, not to be cut). y points up in FabGuide and down in SVG: flipped here.
+/// SVG sized in millimetres; groups "cut" (red #ff0000 hairlines), "drill" (green #00a000 circles with
+/// data-depth), "engrave" (blue #0000ff text and marks) and "sheet" (grey board outline, not to be cut).
+/// y points up in FabGuide and down in SVG: flipped here.
 void writeSvg(const material::CutSheet& sheet, const std::string& path);
 
-/// DXF R2000 (AC1015) in millimetres with layers CUT (red LWPOLYLINEs), ENGRAVE (blue TEXT) and SHEET.
+/// DXF R2000 (AC1015) in millimetres with layers CUT (red LWPOLYLINEs), ENGRAVE (blue TEXT and marks),
+/// DRILL (green CIRCLEs) and SHEET.
 void writeDxf(const material::CutSheet& sheet, const std::string& path);
 
 /// CSV cut list with header part,quantity,width,height,thickness,material,board (board numbered from 1).

@@ -67,14 +67,53 @@ geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& pat
 
 geometry::Outline readOutline(const Fields& part)
 {
-    if (!part.has("outline"))
-        return geometry::rectangle(part.positive("width"), part.positive("height"));
-    geometry::Outline outline;
-    outline.outer = readPolygon(part.array("outline"), part.pathOf("outline"), true);
+    geometry::Outline outline{readPolygon(part.array("outline"), part.pathOf("outline"), true), {}};
     const nlohmann::json& holes = part.array("holes", true);
     for (size_t k = 0; k < holes.size(); ++k)
         outline.holes.push_back(readPolygon(holes[k], at(part.pathOf("holes"), k), false));
-    return geometry::atOrigin(outline);
+    return outline;
+}
+
+Eigen::Vector3d readVector(const Fields& fields, const std::string& key)
+{
+    const nlohmann::json& value = fields.array(key);
+    if (value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
+        throw FormatError(fields.pathOf(key) + ": must be [x, y, z], got " + value.dump());
+    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
+nlohmann::json points(const geometry::Polygon& polygon)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const geometry::Point2& p : polygon)
+        list.push_back({p.x, p.y});
+    return list;
+}
+
+/// The part's outline, drills and marks, moved together so the outline's box starts at the origin.
+void readShape(const Fields& part, material::PartSpec& p)
+{
+    if (!part.has("outline")) {
+        p.outline = geometry::rectangle(part.positive("width"), part.positive("height"));
+        return;
+    }
+    p.outline = readOutline(part);
+    const nlohmann::json& drills = part.array("drills", true);
+    for (size_t k = 0; k < drills.size(); ++k) {
+        const Fields drill(drills[k], at(part.pathOf("drills"), k));
+        p.drills.push_back(
+            {{drill.number("x"), drill.number("y")}, drill.positive("diameter"), drill.positive("depth")});
+    }
+    const nlohmann::json& marks = part.array("marks", true);
+    for (size_t k = 0; k < marks.size(); ++k)
+        p.marks.push_back(readPolygon(marks[k], at(part.pathOf("marks"), k), true));
+    const geometry::Placement2 move = geometry::placement(p.outline, 0, 0, 0);
+    p.outline = geometry::placed(p.outline, 0, 0, 0);
+    for (material::Drill& drill : p.drills)
+        drill.at = move(drill.at);
+    for (geometry::Polygon& mark : p.marks)
+        for (geometry::Point2& q : mark)
+            q = move(q);
 }
 
 material::PartSpec readPart(const nlohmann::json& json, const std::string& path, size_t index)
@@ -82,7 +121,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     const Fields part(json, path);
     material::PartSpec p;
     p.id = part.text("id", "part " + std::to_string(index + 1));
-    p.outline = readOutline(part);
+    readShape(part, p);
     p.quantity = part.integer("quantity", 1);
     if (p.quantity < 1)
         throw FormatError(part.pathOf("quantity") + ": must be at least 1, got " +
@@ -191,6 +230,65 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
     return layout;
+}
+
+std::vector<material::Board3> readBoards3(const nlohmann::json& document)
+{
+    if (!document.is_array())
+        throw FormatError("boards: must be a list of boards");
+    std::vector<material::Board3> boards;
+    for (size_t i = 0; i < document.size(); ++i) {
+        const Fields board(document[i], at("boards", i));
+        material::Board3 b{board.text("id"),       readOutline(board),     readVector(board, "origin"),
+                           readVector(board, "u"), readVector(board, "v"), board.positive("thickness")};
+        if (std::abs(b.u.norm() - 1) > 1e-6 || std::abs(b.v.norm() - 1) > 1e-6 ||
+            std::abs(b.u.dot(b.v)) > 1e-6)
+            throw FormatError(board.pathOf("u") + ", v: must be perpendicular unit vectors");
+        boards.push_back(b);
+    }
+    return boards;
+}
+
+material::JointStyle jointStyle(const std::string& name)
+{
+    if (name == "None")
+        return material::JointStyle::None;
+    if (name == "Fingers")
+        return material::JointStyle::Fingers;
+    if (name == "Auto")
+        return material::JointStyle::Auto;
+    throw FormatError("joint style: must be None, Fingers or Auto, got \"" + name + "\"");
+}
+
+nlohmann::json joinedToJson(const material::JoinedBoards& joined, const std::vector<material::Board3>& boards)
+{
+    nlohmann::json parts = nlohmann::json::array();
+    for (size_t i = 0; i < boards.size(); ++i) {
+        nlohmann::json holes = nlohmann::json::array(), drills = nlohmann::json::array(),
+                       marks = nlohmann::json::array();
+        for (const geometry::Polygon& hole : joined.outlines[i].holes)
+            holes.push_back(points(hole));
+        for (const material::Drill& d : joined.drills[i])
+            drills.push_back({{"x", d.at.x}, {"y", d.at.y}, {"diameter", d.diameter}, {"depth", d.depth}});
+        for (const geometry::Polygon& mark : joined.marks[i])
+            marks.push_back(points(mark));
+        parts.push_back({{"id", boards[i].id},
+                         {"outline", points(joined.outlines[i].outer)},
+                         {"holes", holes},
+                         {"drills", drills},
+                         {"marks", marks}});
+    }
+    nlohmann::json connectors = nlohmann::json::array();
+    for (const material::Connector& c : joined.connectors) {
+        const char* kind = c.kind == material::Connector::Kind::Fingers  ? "fingers"
+                           : c.kind == material::Connector::Kind::Dowels ? "dowels"
+                                                                         : "cross slots";
+        connectors.push_back({{"kind", kind},
+                              {"a", boards[c.a].id},
+                              {"b", boards[c.b].id},
+                              {"count", std::max(c.tabs.size(), c.drills.size())}});
+    }
+    return {{"parts", parts}, {"connectors", connectors}, {"notes", joined.notes}};
 }
 
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,

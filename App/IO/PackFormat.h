@@ -2,6 +2,7 @@
 // OR-Datasets strip-packing instances used as benchmarks.
 #pragma once
 
+#include "Material/Connectors.h"
 #include "Material/Pack.h"
 
 #include <nlohmann/json.hpp>
@@ -30,5 +31,17 @@ nlohmann::json layoutToJson(const material::Layout& layout, const material::Pack
 /// sheets can be written for exactly the layout a user has seen. Throws FormatError naming the field.
 material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
                             PartNames names);
+
+/// Reads boards in 3-D: [{"id", "outline", "holes", "origin": [x, y, z], "u": [...], "v": [...],
+/// "thickness"}], outlines kept in their own frames. Throws FormatError naming the field.
+std::vector<material::Board3> readBoards3(const nlohmann::json& document);
+
+/// "None", "Fingers" or "Auto"; FormatError otherwise.
+material::JointStyle jointStyle(const std::string& name);
+
+/// The joined boards as *.pack.json parts (outline, holes, drills, marks, in each board's frame), with
+/// the connectors made and the notes: {"parts": [...], "connectors": [...], "notes": [...]}.
+nlohmann::json joinedToJson(const material::JoinedBoards& joined,
+                            const std::vector<material::Board3>& boards);
 
 }  // namespace fabguide::io

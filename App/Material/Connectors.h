@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Geometry/Polygon.h"
+#include "Material/Drill.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -35,13 +36,6 @@ struct ConnectorSettings {
     double dowelDiameter = 8;  ///< mm
     double dowelPitch = 128;   ///< mm: dowels at most this far apart along a joint (at least two per joint)
     double tolerance = 0.01;   ///< mm: how close faces must be to touch
-};
-
-/// A hole to drill into a board's face (a dowel hole), in the board's outline frame.
-struct Drill {
-    geometry::Point2 at;
-    double diameter = 0;
-    double depth = 0;
 };
 
 /// How two boards are joined: `tabs` are added to board `a`, `slots` cut from board `b` (cross slots:

@@ -25,20 +25,28 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
 {
     std::vector<CutSheet> sheets;
     for (const MasterBoard& board : layout.sheets)
-        sheets.push_back({board, {}, {}});
+        sheets.push_back({board, {}, {}, {}, {}});
     std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
     for (size_t k = 0; k < layout.placements.size(); ++k) {
         const Placement& p = layout.placements[k];
+        const PartSpec& spec = problem.parts[p.part];
         const geometry::Outline path =
             geometry::offset(placedOutline(layout, problem, k), problem.settings.kerf / 2);
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
         outers[p.sheet].push_back(path.outer);
-        sheet.labels.push_back(
-            {problem.parts[p.part].id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
+        sheet.labels.push_back({spec.id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
+        const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
+        for (const Drill& drill : spec.drills)
+            sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
+        for (const geometry::Polygon& mark : spec.marks) {
+            sheet.engraved.emplace_back();
+            for (const geometry::Point2& q : mark)
+                sheet.engraved.back().push_back(move(q));
+        }
     }
-    for (size_t s = 0; s < sheets.size();
-         ++s)  // inner cuts first: a part never drops out before its holes are cut
+    // Inner cuts first: a part never drops out before its holes are cut.
+    for (size_t s = 0; s < sheets.size(); ++s)
         sheets[s].cuts.insert(sheets[s].cuts.end(), outers[s].begin(), outers[s].end());
     return sheets;
 }

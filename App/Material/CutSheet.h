@@ -21,6 +21,8 @@ struct CutSheet {
     MasterBoard board;
     std::vector<geometry::Polygon> cuts;  ///< closed tool paths, holes before outer contours
     std::vector<Label> labels;
+    std::vector<Drill> drills;                ///< holes drilled into the face, not through
+    std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)
 };
 
 /// Placement k's outline at its nominal size, turned and moved as placed on its sheet.

@@ -41,7 +41,7 @@ void checkSettings(const PackProblem& problem)
 PartSpec rectangularPart(std::string id, double width, double height, int quantity,
                          std::vector<int> orientations)
 {
-    return {std::move(id), geometry::rectangle(width, height), quantity, std::move(orientations)};
+    return {std::move(id), geometry::rectangle(width, height), quantity, std::move(orientations), {}, {}};
 }
 
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Geometry/Polygon.h"
+#include "Material/Drill.h"
 #include "Material/OrderingSearch.h"
 
 #include <string>
@@ -19,12 +20,15 @@ struct MasterBoard {
     int count = 1;         ///< boards in stock; -1 means as many as needed
 };
 
-/// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres.
+/// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres, with the
+/// holes to drill and the marks to engrave on it (from its connectors), in the outline's frame.
 struct PartSpec {
     std::string id;
     geometry::Outline outline;  ///< its bounding box's lower-left corner at the origin
     int quantity = 1;
     std::vector<int> orientations{0, 90, 180, 270};  ///< allowed rotations, degrees counter-clockwise
+    std::vector<Drill> drills;
+    std::vector<geometry::Polygon> marks;
     double width() const { return geometry::bounds(outline.outer).width(); }
     double height() const { return geometry::bounds(outline.outer).height(); }
 };

@@ -75,6 +75,17 @@ py::list placedOutlines(const py::object& problemDict, const py::object& layoutD
     return out;
 }
 
+/// Boards in 3-D -> the parts to cut with their connectors (docs/formats.md "Boards in 3-D").
+py::object joinBoards(const py::object& boards, const std::string& style, int fingerFactor, double dowelFrom)
+{
+    const std::vector<material::Board3> board3 = io::readBoards3(toJson(boards));
+    material::ConnectorSettings settings;
+    settings.style = io::jointStyle(style);
+    settings.fingerFactor = fingerFactor;
+    settings.dowelFrom = dowelFrom;
+    return fromJson(io::joinedToJson(material::joinBoards(board3, settings), board3));
+}
+
 }  // namespace
 
 void bindMaterial(py::module_& m)
@@ -88,6 +99,11 @@ void bindMaterial(py::module_& m)
         "dict.\n"
         "iterations=-1 tries |parts|^2 ordering swaps (thesis 5.4.3); the same inputs give the same layout.\n"
         "Raises FormatError naming a bad field, PackingError naming a part that does not fit.");
+    m.def(
+        "join_boards", &joinBoards, py::arg("boards"), py::arg("style") = "Auto",
+        py::arg("finger_factor") = 2, py::arg("dowel_from") = 18.0,
+        "Connectors where 3-D boards meet (style None, Fingers or Auto = dowels for thick boards); returns\n"
+        "{'parts': [pack parts with tabs, slots, drills, marks], 'connectors': [...], 'notes': [...]}.");
     m.def("placed_outlines", &placedOutlines, py::arg("problem"), py::arg("layout"),
           "Each placement's outline as placed on its board: [{'board', 'part', 'outline': [(x, y)...], "
           "'holes'}].");

@@ -161,8 +161,8 @@ TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
     problem.settings = {0.5, 0.2, 2, 5};
     const Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
     const Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
-    problem.parts.push_back({"ell", ell, 2, {0, 90, 180, 270}});
-    problem.parts.push_back({"tri", triangle, 3, {0, 90, 180, 270}});
+    problem.parts.push_back({"ell", ell, 2, {0, 90, 180, 270}, {}, {}});
+    problem.parts.push_back({"tri", triangle, 3, {0, 90, 180, 270}, {}, {}});
     const Layout layout = pack(problem, quick());
     ASSERT_EQ(layout.placements.size(), 5u);
     EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(ell) + 3 * 7200, 1e-6);

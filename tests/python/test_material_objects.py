@@ -2,6 +2,7 @@
 layout recomputes, names its errors, survives save/reload and undo, and exports its cut sheets."""
 import json
 import math
+import xml.etree.ElementTree as ET
 
 import FreeCAD
 import Part
@@ -48,6 +49,18 @@ def test_thickness_and_outline_are_detected_from_thin_solids(doc):
     assert "Invalid" not in b.State
     assert b.Thickness.Value == pytest.approx(12)
     assert (b.OutlineWidth.Value, b.OutlineHeight.Value) == (pytest.approx(400), pytest.approx(250))
+
+
+def test_a_board_sits_where_its_source_is(doc):
+    moved = box(doc, "Moved", 400, 250, 12, at=(30, 20, 400), rotation=FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 30))
+    doc.recompute()
+    b = board.create(doc, moved)
+    doc.recompute()
+    doc.recompute()  # stable on a second recompute too
+    for corner in range(8):
+        assert (b.Shape.BoundBox.getPoint(corner) - moved.Shape.BoundBox.getPoint(corner)).Length < 1e-9
+    frame = board.as_board3(b, "moved")
+    assert frame["origin"][2] == pytest.approx(400) or frame["origin"][2] == pytest.approx(412)
 
 
 def test_a_face_or_a_sketch_with_a_hole_becomes_a_board(doc):
@@ -169,7 +182,8 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     names = sorted(p.split("/")[-1] for p in written)
     assert names == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"]
     svg = (tmp_path / "sheets" / "sheet-1.svg").read_text()
-    assert 'width="1220mm"' in svg and svg.count("<path") == 5 and ">sidel<" in svg
+    cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='cut']/{http://www.w3.org/2000/svg}path")
+    assert 'width="1220mm"' in svg and len(cuts) == 5 and ">sidel<" in svg
     csv = (tmp_path / "sheets" / "cutlist.csv").read_text().splitlines()
     assert csv[0] == "part,quantity,width,height,thickness,material,board" and len(csv) == 6
 
@@ -178,3 +192,32 @@ def test_export_before_recompute_is_refused(doc):
     lay = layout.create(doc, [], [])
     with pytest.raises(layout.LayoutError, match="has not been computed"):
         layout.export_cut_sheets(lay, "/tmp/never")
+
+
+def test_thick_boards_are_doweled_and_the_holes_reach_the_cut_sheets(doc, tmp_path):
+    import ezdxf
+
+    boards, masters = shelf_unit(doc)  # 18 mm: dowels under the default Auto joints
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    assert len(lay.Connectors) == 6 and all("3 dowels" in c for c in lay.Connectors), lay.Connectors
+    layout.export_cut_sheets(lay, str(tmp_path))
+    svg = (tmp_path / "sheet-1.svg").read_text()
+    assert svg.count("<circle") == 18 and 'data-depth="9"' in svg
+    drills = [e for e in ezdxf.readfile(str(tmp_path / "sheet-1.dxf")).modelspace() if e.dxf.layer == "DRILL"]
+    assert len(drills) == 18 and all(e.dxftype() == "CIRCLE" and e.dxf.radius == 4 for e in drills)
+
+
+def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc):
+    parts = [box(doc, "Side", 6, 200, 300), box(doc, "Shelf", 300, 200, 6, at=(6, 0, 150))]
+    doc.recompute()
+    boards = [board.create(doc, p, label=p.Label + " board", thickness=6) for p in parts]
+    lay = layout.create(doc, boards, [master_board.create(doc, 600, 400, 6)])
+    doc.recompute()
+    assert lay.Connectors == ["Shelf board into Side board: 7 finger tabs"]  # 200 mm / 12 mm: 15 fingers
+    parts_cut = {p["id"]: p for p in json.loads(lay.ProblemJson)["parts"]}
+    assert len(parts_cut["Side board"]["holes"]) == 7  # through-slots for the shelf's tabs
+    assert len(parts_cut["Shelf board"]["outline"]) > 4
+    lay.Joints = "None"
+    doc.recompute()
+    assert lay.Connectors == [] and json.loads(lay.ProblemJson)["parts"][0]["holes"] == []

@@ -33,6 +33,9 @@ class Board(properties.Proxy):
 
     def execute(self, obj):
         slab, thickness = make_slab(obj)
+        # During a recompute FreeCAD moves an assigned shape to the object's Placement: the board sits
+        # where its source is, so it takes the slab's placement first.
+        obj.Placement = slab.Placement
         obj.Shape = slab
         if abs(obj.Thickness.Value - thickness) > 1e-9:
             obj.Thickness = thickness
@@ -125,9 +128,13 @@ def slab_thickness(solid, what):
     return thickness
 
 
-def plane_frame(face):
-    """Unit axes (u, v) in the face's plane, u along its longest straight outer edge."""
+def frame_of(slab):
+    """(face, origin, u, v) of a slab: its largest face, u along that face's longest straight outer edge,
+    v such that u x v points into the slab (thesis 5.2's part frame)."""
+    face = largest_planar_face(slab)
     normal = face.normalAt(0, 0)
+    if (slab.CenterOfMass - face.CenterOfMass).dot(normal) < 0:
+        normal = -normal  # point into the slab
     lines = [e for e in face.OuterWire.Edges if e.Curve.TypeId == "Part::GeomLine"]
     if lines:
         longest = max(lines, key=lambda e: e.Length)
@@ -137,14 +144,12 @@ def plane_frame(face):
         if u.Length < 1e-9:
             u = FreeCAD.Vector(1, 0, 0)
     u.normalize()
-    return u, normal.cross(u)
+    return face, face.OuterWire.Vertexes[0].Point, u, normal.cross(u)
 
 
 def outline_of(slab):
-    """The slab's outline in its largest face's plane: {'outline': [[u, v]...], 'holes': [...]} in mm."""
-    face = largest_planar_face(slab)
-    u, v = plane_frame(face)
-    origin = face.OuterWire.Vertexes[0].Point
+    """The slab's outline in its frame (frame_of): {'outline': [[x, y]...], 'holes': [...]} in mm."""
+    face, origin, u, v = frame_of(slab)
 
     def polygon(wire):
         points = wire.discretize(Deflection=SAMPLING)
@@ -154,6 +159,13 @@ def outline_of(slab):
 
     holes = [polygon(w) for w in face.Wires if not w.isSame(face.OuterWire)]
     return {"outline": polygon(face.OuterWire), "holes": holes}
+
+
+def as_board3(obj, part_id):
+    """The board in 3-D for the connectors: outline in its frame, the frame, its thickness."""
+    _, origin, u, v = frame_of(obj.Shape)
+    return dict(outline_of(obj.Shape), id=part_id, origin=list(origin), u=list(u), v=list(v),
+                thickness=obj.Thickness.Value)
 
 
 def as_problem_part(obj, part_id):

@@ -12,6 +12,7 @@ from fabguide import properties
 from fabguide.material import board, master_board
 
 GAP = 100  # mm between the model and the sheets, and between sheets
+JOINTS = {"Auto (dowels for thick boards)": "Auto", "Finger joints": "Fingers", "None": "None"}
 
 
 class LayoutError(ValueError):
@@ -28,6 +29,12 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
         add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
         add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
+        if "Joints" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyEnumeration", "Joints", "Cutting",
+                            "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm "
+                            "or more under Auto")
+            obj.Joints = list(JOINTS)
+        add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
         add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
         add(obj, "App::PropertyInteger", "Iterations", "Search",
             "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
@@ -43,8 +50,11 @@ class Layout(properties.Proxy):
     def execute(self, obj):
         problem, boards = make_problem(obj)
         try:
+            joined = join(obj, boards)
+            for part, joined_part in zip(problem["parts"], joined["parts"]):
+                part.update(joined_part)
             result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
-        except (fabguide_core.FormatError, fabguide_core.PackingError) as error:
+        except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             raise LayoutError("Layout '{}': {}".format(obj.Label, name_boards(str(error), boards)))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
@@ -52,6 +62,9 @@ class Layout(properties.Proxy):
         obj.SheetUtilisation = result["sheet_utilisation"]
         obj.WasteArea = result["waste_area"]
         obj.SheetCount = len(result["boards"])
+        obj.Connectors = [connector_text(c) for c in joined["connectors"]]
+        for note in joined["notes"]:
+            FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, note))
         obj.Shape = sheets_shape(problem, result, beside(boards))
         FreeCAD.Console.PrintMessage("{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}\n"
                                      .format(obj.Label, len(result["placements"]), obj.SheetCount, obj.Usage,
@@ -100,6 +113,18 @@ def make_problem(obj):
         "parts": [board.as_problem_part(b, part_id) for b, part_id in zip(boards, part_ids(boards))],
     }
     return problem, boards
+
+
+def join(obj, boards):
+    """The boards' outlines with the connectors where they meet (thesis 5.1), from their 3-D placement."""
+    boards3 = [board.as_board3(b, part_id) for b, part_id in zip(boards, part_ids(boards))]
+    return fabguide_core.join_boards(boards3, style=JOINTS[obj.Joints])
+
+
+def connector_text(c):
+    """'Shelf board into Left side board: 3 dowels', one line of the Connectors list."""
+    what = {"fingers": "finger tabs", "dowels": "dowels", "cross slots": "cross slots"}[c["kind"]]
+    return "{} into {}: {} {}".format(c["a"], c["b"], c["count"], what)
 
 
 def name_boards(message, boards):
