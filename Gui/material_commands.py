@@ -6,7 +6,7 @@ import os
 import FreeCAD
 import FreeCADGui
 
-from fabguide.material import board, layout, master_board
+from fabguide.material import board, layout, master_board, techdraw
 from fabguide_gui import resources, viewproviders
 
 
@@ -153,10 +153,30 @@ class ExportCutSheets(Command):
         FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
 
 
+class TechDrawPages(Command):
+    ICON, MENU = "FabGuide_TechDrawPages.svg", "TechDraw Pages"
+    TIP = "Make a TechDraw page per master board of the selected layout, with its cut sheet to scale and labels"
+
+    def IsActive(self):
+        return ExportCutSheets.IsActive(self)
+
+    def run(self, doc):
+        layouts = selected(layout.is_layout) or all_in(doc, layout.is_layout)
+        if len(layouts) > 1:
+            return tell("Select the layout to draw.")
+        try:
+            with transaction(doc, "TechDraw pages"):
+                pages = techdraw.make_pages(layouts[0])
+        except layout.LayoutError as error:
+            return tell(str(error))
+        pages[0].ViewObject.doubleClicked()
+
+
 COMMANDS = {
     "FabGuide_NewMasterBoard": NewMasterBoard(),
     "FabGuide_BoardsFromSolids": BoardsFromSolids(),
     "FabGuide_MakeBoard": MakeBoard(),
     "FabGuide_Layout": MakeLayout(),
     "FabGuide_ExportCutSheets": ExportCutSheets(),
+    "FabGuide_TechDrawPages": TechDrawPages(),
 }

@@ -66,20 +66,20 @@ std::string svgPath(const geometry::Polygon& polygon, double height)
 
 }  // namespace
 
-void writeSvg(const material::CutSheet& sheet, const std::string& path)
+std::string svg(const material::CutSheet& sheet, double stroke)
 {
     const double w = sheet.board.width, h = sheet.board.height;
-    std::ofstream out = create(path);
+    std::ostringstream out;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "mm\" height=\"" << h
         << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n"
         << "  <title>" << escapeXml(sheet.board.name) << " " << w << " x " << h << " mm</title>\n"
-        << "  <g id=\"sheet\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.1\">\n"
+        << "  <g id=\"sheet\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" << stroke << "\">\n"
         << "    <rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\"/>\n  </g>\n"
-        << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.1\">\n";
+        << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"" << stroke << "\">\n";
     for (const geometry::Polygon& cut : sheet.cuts)
         out << "    " << svgPath(cut, h) << "\n";
-    out << "  </g>\n  <g id=\"drill\" fill=\"none\" stroke=\"#00a000\" stroke-width=\"0.1\">\n";
+    out << "  </g>\n  <g id=\"drill\" fill=\"none\" stroke=\"#00a000\" stroke-width=\"" << stroke << "\">\n";
     for (const material::Drill& drill : sheet.drills)
         out << "    <circle cx=\"" << drill.at.x << "\" cy=\"" << h - drill.at.y << "\" r=\""
             << drill.diameter / 2 << "\" data-depth=\"" << drill.depth << "\"/>\n";
@@ -91,6 +91,13 @@ void writeSvg(const material::CutSheet& sheet, const std::string& path)
     for (const geometry::Polygon& mark : sheet.engraved)
         out << "    " << svgPath(mark, h) << "\n";
     out << "  </g>\n</svg>\n";
+    return out.str();
+}
+
+void writeSvg(const material::CutSheet& sheet, const std::string& path)
+{
+    std::ofstream out = create(path);
+    out << svg(sheet);
     if (!out)
         throw FormatError(path + ": cannot write file");
 }

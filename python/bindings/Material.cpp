@@ -86,6 +86,17 @@ py::object joinBoards(const py::object& boards, const std::string& style, int fi
     return fromJson(io::joinedToJson(material::joinBoards(board3, settings), board3));
 }
 
+std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::object& layoutDict,
+                                      double stroke)
+{
+    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
+    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    std::vector<std::string> texts;
+    for (const material::CutSheet& sheet : material::cutSheets(layout, problem))
+        texts.push_back(io::svg(sheet, stroke));
+    return texts;
+}
+
 }  // namespace
 
 void bindMaterial(py::module_& m)
@@ -107,6 +118,9 @@ void bindMaterial(py::module_& m)
     m.def("placed_outlines", &placedOutlines, py::arg("problem"), py::arg("layout"),
           "Each placement's outline as placed on its board: [{'board', 'part', 'outline': [(x, y)...], "
           "'holes'}].");
+    m.def(
+        "cut_sheet_svgs", &cutSheetSvgs, py::arg("problem"), py::arg("layout"), py::arg("stroke") = 0.1,
+        "The SVG text of each master board's cut sheet; stroke = line width in sheet mm (0.1: as written).");
     m.def("write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
           py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
           "Write SVG/DXF cut sheets per board and a CSV cut list for a layout of the problem; returns the "

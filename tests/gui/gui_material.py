@@ -98,6 +98,19 @@ def export_writes_svg_dxf_and_csv():
     assert sorted(os.listdir(folder)) == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"], os.listdir(folder)
 
 
+def techdraw_page_opens_with_the_cut_sheet():
+    Gui.Selection.clearSelection()
+    Gui.runCommand("FabGuide_TechDrawPages")
+    pages = [o for o in state["doc"].Objects if o.TypeId == "TechDraw::DrawPage"]
+    assert len(pages) == state["layout"].SheetCount
+    QtGui.QApplication.processEvents()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("screenshot: " + guitest.screenshot("material_techdraw_page"))
+    state["doc"].undo()  # the pages, in one step
+    assert not [o for o in state["doc"].Objects if o.TypeId == "TechDraw::DrawPage"]
+    Gui.getMainWindow().centralWidget().activateNextSubWindow()
+
+
 def undo_removes_the_layout_in_one_step():
     doc = state["doc"]
     name = state["layout"].Name
@@ -113,5 +126,6 @@ guitest.run([
     editing_the_kerf_in_the_panel_relays_out_live,
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,
+    techdraw_page_opens_with_the_cut_sheet,
     undo_removes_the_layout_in_one_step,
 ])

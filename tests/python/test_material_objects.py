@@ -221,3 +221,25 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc):
     lay.Joints = "None"
     doc.recompute()
     assert lay.Connectors == [] and json.loads(lay.ProblemJson)["parts"][0]["holes"] == []
+
+
+def test_techdraw_pages_draw_each_sheet_to_scale_and_are_replaced_on_rerun(doc):
+    from fabguide.material import techdraw
+
+    boards, masters = shelf_unit(doc)
+    masters[0].Width, masters[0].Height, masters[0].Count = 1220, 610, 0  # two sheets
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    assert lay.SheetCount >= 2
+    pages = techdraw.make_pages(lay)
+    assert len(pages) == lay.SheetCount
+    for number, page in enumerate(pages, start=1):
+        assert "Invalid" not in page.State and page.Template.Template.endswith("A3_Landscape_blank.svg")
+        (drawing,) = page.Views
+        assert drawing.Symbol.startswith("<?xml") and 'width="1220mm"' in drawing.Symbol
+        assert drawing.Scale * 1220 <= 420 - 30 and drawing.Caption.startswith("Sheet {} of".format(number))
+    symbols = [page.Views[0].Symbol for page in pages]
+    for b in boards:  # every board is labelled on exactly one page
+        assert sum(">{}<".format(b.Label) in text for text in symbols) == 1, b.Label
+    kept = len(doc.Objects)
+    assert len(techdraw.make_pages(lay)) == lay.SheetCount and len(doc.Objects) == kept  # replaced, not added
