@@ -64,6 +64,66 @@ std::string svgPath(const geometry::Polygon& polygon, double height)
     return "<path d=\"" + d.str() + " Z\"/>";
 }
 
+/// The OBJECTS section of an R2000 file: the root dictionary, groups and the three layouts dxflib's
+/// block records stand for. dxflib's own writeObjects leaves out the owner handles (group 330), which
+/// readers then have to repair; the handles are dxflib's fixed ones.
+void writeObjects(DL_WriterA& dw)
+{
+    auto dictionary = [&](const char* handle, const char* owner,
+                          std::initializer_list<std::pair<const char*, const char*>> entries) {
+        dw.dxfString(0, "DICTIONARY");
+        dw.dxfString(5, handle);
+        dw.dxfString(330, owner);
+        dw.dxfString(100, "AcDbDictionary");
+        dw.dxfInt(281, 1);
+        for (const auto& [name, entry] : entries) {
+            dw.dxfString(3, name);
+            dw.dxfString(350, entry);
+        }
+    };
+    auto layout = [&](const char* handle, const char* name, int tab, const char* blockRecord) {
+        dw.dxfString(0, "LAYOUT");
+        dw.dxfString(5, handle);
+        dw.dxfString(330, "1A");
+        dw.dxfString(100, "AcDbPlotSettings");
+        for (int code : {1, 2, 4, 6})
+            dw.dxfString(code, code == 2 ? "none_device" : "");
+        for (int code : {40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 140, 141})
+            dw.dxfReal(code, 0.0);
+        dw.dxfReal(142, 1.0);
+        dw.dxfReal(143, 1.0);
+        dw.dxfInt(70, 688);
+        dw.dxfInt(72, 0);
+        dw.dxfInt(73, 0);
+        dw.dxfInt(74, 5);
+        dw.dxfString(7, "");
+        dw.dxfInt(75, 16);
+        dw.dxfReal(147, 1.0);
+        dw.dxfReal(148, 0.0);
+        dw.dxfReal(149, 0.0);
+        dw.dxfString(100, "AcDbLayout");
+        dw.dxfString(1, name);
+        dw.dxfInt(70, 1);
+        dw.dxfInt(71, tab);
+        const std::pair<int, double> limits[] = {{10, 0}, {20, 0},  {11, 420}, {21, 297}, {12, 0}, {22, 0},
+                                                 {32, 0}, {14, 0},  {24, 0},   {34, 0},   {15, 0}, {25, 0},
+                                                 {35, 0}, {146, 0}, {13, 0},   {23, 0},   {33, 0}, {16, 1},
+                                                 {26, 0}, {36, 0},  {17, 0},   {27, 1},   {37, 0}};
+        for (const auto& [code, value] : limits)
+            dw.dxfReal(code, value);
+        dw.dxfInt(76, 0);
+        dw.dxfString(330, blockRecord);
+    };
+    dw.sectionObjects();
+    dictionary("C", "0", {{"ACAD_GROUP", "D"}, {"ACAD_LAYOUT", "1A"}});
+    dictionary("D", "C", {});
+    dictionary("1A", "C", {{"Layout1", "1E"}, {"Layout2", "26"}, {"Model", "22"}});
+    layout("1E", "Layout1", 1, "1B");  // *Paper_Space
+    layout("22", "Model", 0, "1F");    // *Model_Space
+    layout("26", "Layout2", 2, "23");  // *Paper_Space0
+    dw.sectionEnd();
+}
+
 }  // namespace
 
 std::string svg(const material::CutSheet& sheet, double stroke)
@@ -172,8 +232,7 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path)
                                   1, 2, label.text, "Standard", 0.0),
                       DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
     dw->sectionEnd();
-    dxf.writeObjects(*dw);
-    dxf.writeObjectsEnd(*dw);
+    writeObjects(*dw);
     dw->dxfEOF();
     dw->close();
 }

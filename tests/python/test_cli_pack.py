@@ -103,7 +103,8 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     # ezdxf reads the DXF as R2000 with no audit errors, millimetre units and one cut per part.
     doc = ezdxf.readfile(str(sheets / "sheet-1.dxf"))
     assert doc.dxfversion >= "AC1015"
-    assert not doc.audit().has_errors
+    audit = doc.audit()
+    assert not audit.has_errors and not audit.has_fixes, [f.message for f in audit.fixes]
     assert doc.header["$INSUNITS"] == 4
     entities = [(e.dxftype(), e.dxf.layer) for e in doc.modelspace()]
     parts_on_board = [p for p in layout["placements"] if p["board"] == 0]

@@ -74,7 +74,7 @@ def test_a_face_or_a_sketch_with_a_hole_becomes_a_board(doc):
     doc.recompute()
     assert from_face.Shape.Volume == pytest.approx(300 * 200 * 6)
     assert ring.Shape.Volume == pytest.approx(math.pi * (100 ** 2 - 40 ** 2) * 6, rel=1e-6)
-    part = board.as_problem_part(ring, "ring")
+    part = board.as_problem_part(ring, "ring", [0, 90, 180, 270])
     assert len(part["holes"]) == 1 and len(part["outline"]) > 100  # the circle is sampled finely
 
 
@@ -243,3 +243,25 @@ def test_techdraw_pages_draw_each_sheet_to_scale_and_are_replaced_on_rerun(doc):
         assert sum(">{}<".format(b.Label) in text for text in symbols) == 1, b.Label
     kept = len(doc.Objects)
     assert len(techdraw.make_pages(lay)) == lay.SheetCount and len(doc.Objects) == kept  # replaced, not added
+
+
+@pytest.mark.parametrize("grain, turned", [("Along width", False), ("Along height", True)])
+def test_boards_following_the_grain_keep_their_length_along_it(doc, grain, turned):
+    boards, masters = shelf_unit(doc)
+    masters[0].Grain = grain
+    for b in boards:
+        b.Rotation = "Follow grain"
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    for p in json.loads(lay.LayoutJson)["placements"]:
+        assert (p["rotation"] % 180 != 0) == turned, p
+
+
+def test_mixed_grain_directions_are_refused_by_name(doc):
+    boards, masters = shelf_unit(doc)
+    masters.append(master_board.create(doc, 1000, 1000, 18, label="Offcut"))
+    masters[1].Grain = "Along height"
+    boards[0].Rotation = "Follow grain"
+    lay = layout.create(doc, boards, masters)
+    with pytest.raises(layout.LayoutError, match="grain runs different ways"):
+        lay.Proxy.execute(lay)

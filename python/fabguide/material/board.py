@@ -9,7 +9,7 @@ import Part
 from fabguide import properties
 
 SAMPLING = 0.05  # mm: arcs and splines become polygons deviating at most this much (thesis 5.4.1)
-ROTATIONS = {"Any": [0, 90, 180, 270], "Keep grain (0/180)": [0, 180], "Fixed": [0]}
+ROTATIONS = ("Any", "Follow grain", "Fixed")  # Follow grain: the master board's Grain decides
 
 
 class BoardError(ValueError):
@@ -26,7 +26,8 @@ class Board(properties.Proxy):
             "Thickness of a board made from a sketch or face (detected for a solid)", 18)
         add(obj, "App::PropertyInteger", "Quantity", "Board", "How many to cut", 1)
         if "Rotation" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Rotation", "Board", "Turns allowed on the master board")
+            obj.addProperty("App::PropertyEnumeration", "Rotation", "Board",
+                            "Turns allowed on the master board: any, keeping its length along the grain, or none")
             obj.Rotation = list(ROTATIONS)
         add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
         add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
@@ -168,8 +169,13 @@ def as_board3(obj, part_id):
                 thickness=obj.Thickness.Value)
 
 
-def as_problem_part(obj, part_id):
+def orientations(obj, grain):
+    """Rotations allowed for the board on master boards whose grain allows `grain` rotations."""
+    return {"Any": [0, 90, 180, 270], "Follow grain": grain, "Fixed": [0]}[obj.Rotation]
+
+
+def as_problem_part(obj, part_id, grain):
     """The board as a *.pack.json part."""
     outline = outline_of(obj.Shape)
     return {"id": part_id, "outline": outline["outline"], "holes": outline["holes"],
-            "quantity": obj.Quantity, "orientations": ROTATIONS[obj.Rotation]}
+            "quantity": obj.Quantity, "orientations": orientations(obj, grain)}

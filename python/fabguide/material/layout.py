@@ -105,12 +105,17 @@ def make_problem(obj):
             if abs(b.Thickness.Value - m.Thickness.Value) > 0.01:
                 raise LayoutError("Layout '{}': board '{}' is {:g} mm thick but master board '{}' is {:g} mm"
                                   .format(obj.Label, b.Label, b.Thickness.Value, m.Label, m.Thickness.Value))
+    grains = {m.Grain for m in masters}
+    if len(grains) > 1 and any(b.Rotation == "Follow grain" for b in boards):
+        raise LayoutError("Layout '{}': boards follow the grain but the master boards' grain runs different ways ({})"
+                          .format(obj.Label, ", ".join(sorted(grains))))
+    grain = master_board.GRAIN[masters[0].Grain]
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value},
         "boards": [master_board.as_problem_board(m) for m in masters],
-        "parts": [board.as_problem_part(b, part_id) for b, part_id in zip(boards, part_ids(boards))],
+        "parts": [board.as_problem_part(b, part_id, grain) for b, part_id in zip(boards, part_ids(boards))],
     }
     return problem, boards
 

@@ -1,6 +1,9 @@
 """MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
 from fabguide import properties
 
+# Rotations that keep a board's length (its outline's x axis) along the grain.
+GRAIN = {"None": [0, 90, 180, 270], "Along width": [0, 180], "Along height": [90, 270]}
+
 
 class MasterBoard(properties.Proxy):
     TYPE = "FabGuide::MasterBoard"
@@ -12,6 +15,10 @@ class MasterBoard(properties.Proxy):
         add(obj, "App::PropertyLength", "Thickness", "Master board", "Material thickness", 18)
         add(obj, "App::PropertyInteger", "Count", "Master board", "Boards in stock; 0 = as many as needed", 1)
         add(obj, "App::PropertyString", "Material", "Master board", "Material name for the cut list", "plywood")
+        if "Grain" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyEnumeration", "Grain", "Master board",
+                            "Direction of the wood grain; boards set to Follow grain keep their length along it")
+            obj.Grain = list(GRAIN)
 
     def execute(self, obj):
         for name in ("Width", "Height", "Thickness"):
