@@ -260,20 +260,27 @@ material::JointStyle jointStyle(const std::string& name)
     throw FormatError("joint style: must be None, Fingers or Auto, got \"" + name + "\"");
 }
 
-nlohmann::json joinedToJson(const material::JoinedBoards& joined, const std::vector<material::Board3>& boards)
+nlohmann::json piecesToJson(const std::vector<material::Piece>& pieces, const material::JoinedBoards& joined,
+                            const std::vector<material::Board3>& boards)
 {
     nlohmann::json parts = nlohmann::json::array();
-    for (size_t i = 0; i < boards.size(); ++i) {
+    for (const material::Piece& piece : pieces) {
         nlohmann::json holes = nlohmann::json::array(), drills = nlohmann::json::array(),
-                       marks = nlohmann::json::array();
-        for (const geometry::Polygon& hole : joined.outlines[i].holes)
+                       marks = nlohmann::json::array(), ids = nlohmann::json::array();
+        for (const geometry::Polygon& hole : piece.outline.holes)
             holes.push_back(points(hole));
-        for (const material::Drill& d : joined.drills[i])
+        for (const material::Drill& d : piece.drills)
             drills.push_back({{"x", d.at.x}, {"y", d.at.y}, {"diameter", d.diameter}, {"depth", d.depth}});
-        for (const geometry::Polygon& mark : joined.marks[i])
+        for (const geometry::Polygon& mark : piece.marks)
             marks.push_back(points(mark));
-        parts.push_back({{"id", boards[i].id},
-                         {"outline", points(joined.outlines[i].outer)},
+        std::string id;
+        for (int b : piece.boards) {
+            ids.push_back(boards[b].id);
+            id += (id.empty() ? "" : " + ") + boards[b].id;
+        }
+        parts.push_back({{"id", id},
+                         {"boards", ids},
+                         {"outline", points(piece.outline.outer)},
                          {"holes", holes},
                          {"drills", drills},
                          {"marks", marks}});

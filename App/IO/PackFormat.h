@@ -2,7 +2,7 @@
 // OR-Datasets strip-packing instances used as benchmarks.
 #pragma once
 
-#include "Material/Connectors.h"
+#include "Material/Coplanar.h"
 #include "Material/Pack.h"
 
 #include <nlohmann/json.hpp>
@@ -39,9 +39,10 @@ std::vector<material::Board3> readBoards3(const nlohmann::json& document);
 /// "None", "Fingers" or "Auto"; FormatError otherwise.
 material::JointStyle jointStyle(const std::string& name);
 
-/// The joined boards as *.pack.json parts (outline, holes, drills, marks, in each board's frame), with
-/// the connectors made and the notes: {"parts": [...], "connectors": [...], "notes": [...]}.
-nlohmann::json joinedToJson(const material::JoinedBoards& joined,
+/// The pieces to cut as *.pack.json parts (outline, holes, drills, marks, in the frame of each piece's
+/// first board, plus "boards": the ids it is made of), with the connectors made and the notes:
+/// {"parts": [...], "connectors": [...], "notes": [...]}.
+nlohmann::json piecesToJson(const std::vector<material::Piece>& pieces, const material::JoinedBoards& joined,
                             const std::vector<material::Board3>& boards);
 
 }  // namespace fabguide::io

@@ -83,7 +83,9 @@ py::object joinBoards(const py::object& boards, const std::string& style, int fi
     settings.style = io::jointStyle(style);
     settings.fingerFactor = fingerFactor;
     settings.dowelFrom = dowelFrom;
-    return fromJson(io::joinedToJson(material::joinBoards(board3, settings), board3));
+    const material::JoinedBoards joined = material::joinBoards(board3, settings);
+    return fromJson(
+        io::piecesToJson(material::coplanarPieces(board3, joined, settings.tolerance), joined, board3));
 }
 
 std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::object& layoutDict,

@@ -265,3 +265,18 @@ def test_mixed_grain_directions_are_refused_by_name(doc):
     lay = layout.create(doc, boards, masters)
     with pytest.raises(layout.LayoutError, match="grain runs different ways"):
         lay.Proxy.execute(lay)
+
+
+def test_coplanar_boards_in_contact_are_cut_as_one_piece(doc):
+    bar = box(doc, "Bar", 300, 50, 6)
+    stem = box(doc, "Stem", 50, 200, 6, at=(125, 50, 0))
+    doc.recompute()
+    boards = [board.create(doc, p, label=p.Label + " board", thickness=6) for p in (bar, stem)]
+    lay = layout.create(doc, boards, [master_board.create(doc, 600, 400, 6)])
+    doc.recompute()
+    placements = json.loads(lay.LayoutJson)["placements"]
+    assert [p["part"] for p in placements] == ["Bar board + Stem board"]
+    assert lay.Usage < 1  # the T's notches are part of its layout rectangle
+    boards[1].Quantity = 2
+    with pytest.raises(layout.LayoutError, match="'Bar board', 'Stem board' lie in one plane and touch"):
+        lay.Proxy.execute(lay)

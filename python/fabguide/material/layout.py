@@ -51,8 +51,7 @@ class Layout(properties.Proxy):
         problem, boards = make_problem(obj)
         try:
             joined = join(obj, boards)
-            for part, joined_part in zip(problem["parts"], joined["parts"]):
-                part.update(joined_part)
+            problem["parts"] = pieces(obj, joined, problem["parts"], boards)
             result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             raise LayoutError("Layout '{}': {}".format(obj.Label, name_boards(str(error), boards)))
@@ -124,6 +123,21 @@ def join(obj, boards):
     """The boards' outlines with the connectors where they meet (thesis 5.1), from their 3-D placement."""
     boards3 = [board.as_board3(b, part_id) for b, part_id in zip(boards, part_ids(boards))]
     return fabguide_core.join_boards(boards3, style=JOINTS[obj.Joints])
+
+
+def pieces(obj, joined, parts, boards):
+    """The parts to pack: one per piece of the joined design, each with the quantity and rotations of its
+    board; coplanar boards in contact are one piece (thesis 5.3.4) and must be made once each."""
+    by_id = {part["id"]: (part, b) for part, b in zip(parts, boards)}
+    result = []
+    for piece in joined["parts"]:
+        members = [by_id[i] for i in piece.pop("boards")]
+        if len(members) > 1 and any(b.Quantity != 1 for _, b in members):
+            raise LayoutError("Layout '{}': {} lie in one plane and touch, so they are cut as one piece; set their "
+                              "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for _, b in members)))
+        first, _ = members[0]
+        result.append(dict(piece, quantity=first["quantity"], orientations=first["orientations"]))
+    return result
 
 
 def connector_text(c):
