@@ -33,7 +33,7 @@ std::vector<int> decreasingExtentOrder(const std::vector<RasterPart>& parts)
 }
 
 std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                              Criterion criterion, Bounds bounds,
+                              Criterion criterion, Bounds bounds, Preference preference,
                               std::chrono::steady_clock::time_point deadline)
 {
     // Identical parts are interchangeable: keep one queue of indices per distinct part.
@@ -58,13 +58,18 @@ std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::v
     std::vector<int> order;
     while (order.size() < parts.size()) {
         size_t chosen = kinds.size();
-        std::tuple<bool, int, int, long> best{true, 0, 0, 0};  // (needs a new sheet, sheet, y, -area)
+        std::tuple<bool, int, int, long> best{true, 0, 0, 0};  // (needs a new sheet, sheet, y, -size)
         for (size_t k = 0; k < kinds.size() && std::chrono::steady_clock::now() < deadline; ++k) {
             if (kinds[k].empty())
                 continue;
             const RasterPart& part = parts[kinds[k].back()];
             const Placed at = docker.bestPlace(part);
-            const std::tuple<bool, int, int, long> key{at.sheet < 0, at.sheet, at.y, -part.shapes[0].area()};
+            const Footprint& shape = part.shapes[std::max(0, at.shape)];
+            const long size = preference == Preference::LargestArea ? shape.area()
+                              : preference == Preference::LargestExtent
+                                  ? std::max(shape.width(), shape.height())
+                                  : shape.width();
+            const std::tuple<bool, int, int, long> key{at.sheet < 0, at.sheet, at.y, -size};
             if (chosen == kinds.size() || key < best) {
                 best = key;
                 chosen = k;
@@ -88,7 +93,9 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
     const long n = static_cast<long>(order.size());
     const long iterations = options.iterations >= 0 ? options.iterations : n * n;
 
+    const auto started = Clock::now();
     GridLayout best = dock(parts, order, stock, options.criterion, options.bounds);
+    const auto pass = Clock::now() - started;  // never start a docking pass that cannot end in time
     LayoutCost bestCost = cost(best, stock, options.bounds);
     LayoutCost currentCost = bestCost;
     // Late acceptance: a swap is kept when it is no worse than the current ordering or than the
@@ -96,7 +103,7 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
     std::vector<LayoutCost> history(std::max(1, options.memory), bestCost);
     std::mt19937_64 random(options.seed);
     std::uniform_int_distribution<long> pick(0, std::max(0L, n - 1));
-    for (long i = 0; i < iterations && n > 1 && Clock::now() < deadline; ++i) {
+    for (long i = 0; i < iterations && n > 1 && Clock::now() + pass < deadline; ++i) {
         const long a = pick(random), b = pick(random);
         if (a == b || parts[order[a]].shapes == parts[order[b]].shapes)
             continue;  // swapping identical parts changes nothing

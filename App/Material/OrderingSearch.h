@@ -40,15 +40,19 @@ struct OrderingSearchOptions {
 /// The order in which the thesis' Bottom-Left inserts parts: decreasing largest extent (5.3.1).
 std::vector<int> decreasingExtentOrder(const std::vector<RasterPart>& parts);
 
+/// Which part a best-fit order docks next among those whose best position is equally low.
+enum class Preference { LargestArea, LargestExtent, Widest };
+
 /// A starting order built greedily: at each step, of the part types left, the one whose best docking
-/// position is lowest (then largest) is docked next. Docking this order gives the same layout.
+/// position is lowest (ties by `preference`) is docked next. Docking this order gives the same layout.
 /// Past `deadline` the remaining parts follow in decreasing-extent order.
 std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                              Criterion criterion, Bounds bounds,
+                              Criterion criterion, Bounds bounds, Preference preference,
                               std::chrono::steady_clock::time_point deadline);
 
 /// Starting from `order`, repeatedly swaps two random parts, re-docks, and keeps the swap when the
-/// layout costs no more (thesis 5.4.3). Returns the best layout found.
+/// layout costs no more (thesis 5.4.3). Stops after the iterations, or before a docking pass that would
+/// end past the time limit. Returns the best layout found.
 GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<int> order,
                             const std::vector<BoardStock>& stock, const OrderingSearchOptions& options);
 

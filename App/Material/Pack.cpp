@@ -38,6 +38,46 @@ void checkSettings(const PackProblem& problem)
 
 }  // namespace
 
+namespace {
+
+/// Time left until `deadline`, in seconds.
+double secondsUntil(std::chrono::steady_clock::time_point deadline)
+{
+    return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
+}
+
+}  // namespace
+
+GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
+                            OrderingSearchOptions options)
+{
+    // Each start wins on some instances: best-fit orders preferring large extents, wide parts and large
+    // areas, and the thesis' decreasing extent (5.3.1). Building a best-fit order may take a sixth of the
+    // time each; the searches from the starts share what is left equally.
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](double s) {
+        return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+    };
+    const auto end = Clock::now() + seconds(options.timeLimit);
+    std::vector<std::vector<int>> starts;
+    for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
+        starts.push_back(bestFitOrder(parts, stock, options.criterion, options.bounds, preference,
+                                      Clock::now() + seconds(options.timeLimit / 6)));
+    starts.push_back(decreasingExtentOrder(parts));
+    GridLayout best;
+    LayoutCost bestCost;
+    for (size_t k = 0; k < starts.size(); ++k) {
+        options.timeLimit = secondsUntil(end) / static_cast<double>(starts.size() - k);
+        GridLayout layout = exploreOrderings(parts, starts[k], stock, options);
+        const LayoutCost layoutCost = cost(layout, stock, options.bounds);
+        if (k == 0 || layoutCost < bestCost) {
+            best = std::move(layout);
+            bestCost = layoutCost;
+        }
+    }
+    return best;
+}
+
 PartSpec rectangularPart(std::string id, double width, double height, int quantity,
                          std::vector<int> orientations)
 {
@@ -46,6 +86,7 @@ PartSpec rectangularPart(std::string id, double width, double height, int quanti
 
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
 {
+    const auto started = std::chrono::steady_clock::now();
     checkSettings(problem);
     const PackSettings& settings = problem.settings;
     const double clearance = settings.kerf + settings.spacing;
@@ -72,19 +113,10 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
 
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
-    // Up to half the time builds the best-fit order; the rest searches orderings from it and from
-    // the thesis' decreasing-extent order (each wins on some instances), half each.
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                      std::chrono::duration<double>(options.timeLimit / 2));
-    const std::vector<int> bestFit = bestFitOrder(parts, stock, options.criterion, options.bounds, deadline);
-    const double left = options.timeLimit - std::chrono::duration<double>(Clock::now() - start).count();
-    options.timeLimit = std::max(0.0, left / 2);
-    GridLayout grid = exploreOrderings(parts, bestFit, stock, options);
-    GridLayout other = exploreOrderings(parts, decreasingExtentOrder(parts), stock, options);
-    if (cost(other, stock, options.bounds) < cost(grid, stock, options.bounds))
-        grid = std::move(other);
+    options.timeLimit =
+        std::max(0.0, options.timeLimit -
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    const GridLayout grid = searchFromStarts(parts, stock, options);
 
     if (!grid.unplaced.empty()) {
         const std::string first = "'" + parts[grid.unplaced.front()].name + "'";

@@ -72,6 +72,11 @@ struct Layout {
     double wasteArea() const { return sheetArea - partArea; }
 };
 
+/// The ordering search of `pack`: swaps from several starting orders sharing `options.timeLimit`
+/// (best-fit orders and the thesis' decreasing extent); the best layout found.
+GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
+                            OrderingSearchOptions options);
+
 /// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
 /// order search with Docking (or Bottom-Left), convert back to mm.
 /// Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.

@@ -59,7 +59,8 @@ TEST(OrderingSearch, BestFitOrderHoldsEveryPartOnceAndStartsLow)
     const std::vector<RasterPart> parts = randomParts(30, 8, 3);
     const std::vector<BoardStock> stock{{24, 400, 1}};
     const auto far = std::chrono::steady_clock::now() + std::chrono::hours(1);
-    const std::vector<int> order = bestFitOrder(parts, stock, Criterion::Docking, Bounds::Strip, far);
+    const std::vector<int> order =
+        bestFitOrder(parts, stock, Criterion::Docking, Bounds::Strip, Preference::LargestArea, far);
     std::vector<int> sorted = order;
     std::sort(sorted.begin(), sorted.end());
     for (size_t i = 0; i < sorted.size(); ++i)
