@@ -119,6 +119,23 @@ def undo_removes_the_layout_in_one_step():
     assert all(doc.getObject(b.Name) for b in state["boards"])
 
 
+def make_board_from_a_selected_face():
+    doc = state["doc"]
+    panel = doc.addObject("Part::Box", "Panel")
+    panel.Length, panel.Width, panel.Height = 200, 100, 30
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(panel, "Face6")  # the top face
+    Gui.runCommand("FabGuide_MakeBoard")
+    made = doc.ActiveObject
+    assert made.Label == "Panel board" and "Invalid" not in made.State
+    assert abs(made.Shape.Volume - 200 * 100 * 18) < 1e-6  # as thick as the master board
+    assert abs(made.Shape.BoundBox.ZMin - 30) < 1e-9       # standing on the selected face
+    name = made.Name
+    doc.undo()
+    assert doc.getObject(name) is None
+
+
 guitest.run([
     model_and_workbench,
     boards_from_solids_makes_one_board_per_solid,
@@ -127,5 +144,6 @@ guitest.run([
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,
     techdraw_page_opens_with_the_cut_sheet,
-    undo_removes_the_layout_in_one_step,
+        undo_removes_the_layout_in_one_step,
+    make_board_from_a_selected_face,
 ])
