@@ -39,6 +39,13 @@ material::MasterBoard readBoard(const nlohmann::json& json, const std::string& p
     b.height = board.positive("height");
     b.thickness = board.number("thickness", 0.0, 0.0);
     b.count = board.integer("count", 1);
+    const std::string grain = board.text("grain", "none");
+    if (grain != "none" && grain != "width" && grain != "height")
+        throw FormatError(board.pathOf("grain") + ": must be \"none\", \"width\" or \"height\", got \"" +
+                          grain + "\"");
+    b.grain = grain == "width"    ? material::Grain::AlongWidth
+              : grain == "height" ? material::Grain::AlongHeight
+                                  : material::Grain::None;
     if (b.count == 0 || b.count < -1)
         throw FormatError(board.pathOf("count") +
                           ": must be a positive number of boards, or -1 for unlimited");
@@ -127,6 +134,11 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
         throw FormatError(part.pathOf("quantity") + ": must be at least 1, got " +
                           std::to_string(p.quantity));
     p.orientations = readOrientations(part);
+    if (part.has("follow_grain")) {
+        if (!json["follow_grain"].is_boolean())
+            throw FormatError(part.pathOf("follow_grain") + ": must be true or false");
+        p.followsGrain = json["follow_grain"].get<bool>();
+    }
     return p;
 }
 
@@ -307,7 +319,10 @@ nlohmann::json layoutToJson(const material::Layout& layout, const material::Pack
                           {"material", sheet.material},
                           {"width", sheet.width},
                           {"height", sheet.height},
-                          {"thickness", sheet.thickness}});
+                          {"thickness", sheet.thickness},
+                          {"grain", sheet.grain == material::Grain::AlongWidth    ? "width"
+                                    : sheet.grain == material::Grain::AlongHeight ? "height"
+                                                                                  : "none"}});
     nlohmann::json placements = nlohmann::json::array();
     for (const material::Placement& p : layout.placements) {
         nlohmann::json part =

@@ -56,12 +56,22 @@ namespace {
 
 bool fitsOn(const RasterPart& part, const BoardStock& board)
 {
-    return std::any_of(part.shapes.begin(), part.shapes.end(), [&](const Footprint& shape) {
-        return shape.width() <= board.width && shape.height() <= board.height;
-    });
+    for (int s = 0; s < static_cast<int>(part.shapes.size()); ++s)
+        if (allowedOn(part, s, board) && part.shapes[s].width() <= board.width &&
+            part.shapes[s].height() <= board.height)
+            return true;
+    return false;
 }
 
 }  // namespace
+
+bool allowedOn(const RasterPart& part, int shape, const BoardStock& board)
+{
+    if (!part.followsGrain || board.grain == Grain::None)
+        return true;
+    const bool turned = part.rotations[shape] % 180 != 0;
+    return turned == (board.grain == Grain::AlongHeight);
+}
 
 Docker::Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds)
     : stock_(stock), criterion_(criterion), bounds_(bounds), left_(stock.size())
@@ -77,6 +87,8 @@ Placed Docker::bestOn(int sheetIndex, const RasterPart& part) const
     Score best{std::numeric_limits<long>::max(), 0, 0, 0};
     Placed choice{0, sheetIndex, 0, 0, -1};
     for (int s = 0; s < static_cast<int>(part.shapes.size()); ++s) {
+        if (!allowedOn(part, s, stock_[layout_.stock[sheetIndex]]))
+            continue;
         const Footprint& shape = part.shapes[s];
         sheet.forEachDockingPosition(shape, [&](Sheet::Position at) {
             Score score;

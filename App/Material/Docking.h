@@ -9,11 +9,15 @@
 
 namespace fabguide::material {
 
+/// Which way a master board's wood grain runs.
+enum class Grain { None, AlongWidth, AlongHeight };
+
 /// A part to lay out: its allowed orientations rasterised, duplicates removed.
 struct RasterPart {
     std::string name;
     std::vector<Footprint> shapes;
     std::vector<int> rotations;  ///< degrees counter-clockwise, one per shape
+    bool followsGrain = false;   ///< its length (x axis at 0°) must run along the board's grain
 };
 
 /// A kind of master board, in grid cells; count < 0 means as many as needed.
@@ -21,7 +25,12 @@ struct BoardStock {
     int width = 0;
     int height = 0;
     int count = 1;
+    Grain grain = Grain::None;
 };
+
+/// Whether shape `shape` of the part may be cut from the board: any, unless the part follows the grain
+/// of a board that has one (then 0°/180° along the width, 90°/270° along the height).
+bool allowedOn(const RasterPart& part, int shape, const BoardStock& board);
 
 /// Where one part went: sheet index, lower-left cell, and which of its shapes.
 struct Placed {

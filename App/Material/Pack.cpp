@@ -11,11 +11,16 @@ namespace {
 
 RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 {
-    RasterPart part{spec.id, {}, {}};
+    RasterPart part{spec.id, {}, {}, spec.followsGrain};
     for (int rotation : spec.orientations) {
         const Footprint shape = rasterise(geometry::placed(spec.outline, rotation, 0, 0), settings.resolution,
                                           settings.kerf + settings.spacing);
-        if (std::find(part.shapes.begin(), part.shapes.end(), shape) == part.shapes.end()) {
+        // Identical shapes are one choice, unless the grain tells a turned one apart.
+        bool known = false;
+        for (size_t k = 0; k < part.shapes.size() && !known; ++k)
+            known =
+                part.shapes[k] == shape && (!spec.followsGrain || part.rotations[k] % 180 == rotation % 180);
+        if (!known) {
             part.shapes.push_back(shape);
             part.rotations.push_back(rotation);
         }
@@ -107,7 +112,7 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
                          problem.strip
                              ? static_cast<int>(stripCells)
                              : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
-                         problem.strip ? 1 : board.count});
+                         problem.strip ? 1 : board.count, board.grain});
     if (problem.strip)
         stock.resize(1);
 

@@ -18,6 +18,7 @@ struct MasterBoard {
     double height = 0;     ///< mm
     double thickness = 0;  ///< mm
     int count = 1;         ///< boards in stock; -1 means as many as needed
+    Grain grain = Grain::None;
 };
 
 /// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres, with the
@@ -29,6 +30,7 @@ struct PartSpec {
     std::vector<int> orientations{0, 90, 180, 270};  ///< allowed rotations, degrees counter-clockwise
     std::vector<Drill> drills;
     std::vector<geometry::Polygon> marks;
+    bool followsGrain = false;  ///< its length (x axis) along the grain of boards that have one
     double width() const { return geometry::bounds(outline.outer).width(); }
     double height() const { return geometry::bounds(outline.outer).height(); }
 };

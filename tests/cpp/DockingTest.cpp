@@ -120,3 +120,27 @@ TEST(Docking, PartLargerThanEveryBoardIsNamed)
             << e.what();
     }
 }
+
+TEST(Docking, PartsFollowingTheGrainTurnWithEachBoardsGrain)
+{
+    RasterPart slat = rectanglePart("slat", 8, 2);
+    slat.followsGrain = true;
+    const std::vector<RasterPart> parts{slat, slat};
+    const std::vector<BoardStock> stock{{10, 10, 1, Grain::AlongWidth}, {10, 10, 1, Grain::AlongHeight}};
+    // The first board takes one slat lying along its width; the second slat would fit beside it only
+    // turned, which that board's grain forbids, so it goes to the second board, standing up.
+    std::vector<RasterPart> big{rectanglePart("filler", 10, 7, false), slat, slat};
+    big[1].followsGrain = big[2].followsGrain = true;
+    const GridLayout layout = dock(big, {0, 1, 2}, stock, Criterion::Docking);
+    ASSERT_EQ(layout.placed.size(), 3u);
+    for (const Placed& p : layout.placed) {
+        if (p.part == 0)
+            continue;
+        const bool turned = big[p.part].rotations[p.shape] % 180 != 0;
+        EXPECT_EQ(turned, layout.stock[p.sheet] == 1) << "part " << p.part;
+    }
+    EXPECT_EQ(layout.stock, (std::vector<int>{0, 1}));
+    EXPECT_FALSE(allowedOn(slat, 1, stock[0]));
+    EXPECT_TRUE(allowedOn(slat, 1, stock[1]));
+    EXPECT_TRUE(allowedOn(rectanglePart("free", 8, 2), 1, stock[0]));
+}

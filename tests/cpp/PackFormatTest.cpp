@@ -44,6 +44,26 @@ TEST(PackFormat, ReadsEveryField)
     EXPECT_EQ(p.parts[0].orientations, (std::vector<int>{0, 180}));
     EXPECT_EQ(p.parts[1].orientations, (std::vector<int>{0, 90, 180, 270}));
     EXPECT_EQ(p.parts[1].quantity, 1);
+    EXPECT_EQ(p.boards[0].grain, material::Grain::None);
+    EXPECT_FALSE(p.parts[0].followsGrain);
+}
+
+TEST(PackFormat, ReadsGrain)
+{
+    json d = goodProblem();
+    d["boards"][0]["grain"] = "height";
+    d["parts"][1]["follow_grain"] = true;
+    const material::PackProblem p = io::readPackProblem(d);
+    EXPECT_EQ(p.boards[0].grain, material::Grain::AlongHeight);
+    EXPECT_TRUE(p.parts[1].followsGrain);
+    material::OrderingSearchOptions options;
+    options.iterations = 20;
+    const json layout = io::layoutToJson(material::pack(p, options), p, io::PartNames::Ids);
+    EXPECT_EQ(layout["boards"][0]["grain"], "height");
+    for (const json& placement : layout["placements"])
+        if (placement["part"] == "side") {
+            EXPECT_EQ(placement["rotation"].get<int>() % 180, 90);
+        }
 }
 
 TEST(PackFormat, ErrorsNameTheOffendingField)
@@ -71,6 +91,10 @@ TEST(PackFormat, ErrorsNameTheOffendingField)
     d = goodProblem();
     d["settings"]["kerf"] = -1;
     EXPECT_EQ(errorOf(d), "settings.kerf: must be at least 0, got -1");
+
+    d = goodProblem();
+    d["boards"][0]["grain"] = "diagonal";
+    EXPECT_EQ(errorOf(d), "boards[0].grain: must be \"none\", \"width\" or \"height\", got \"diagonal\"");
 
     d = goodProblem();
     d["version"] = 7;

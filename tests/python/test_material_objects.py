@@ -74,7 +74,7 @@ def test_a_face_or_a_sketch_with_a_hole_becomes_a_board(doc):
     doc.recompute()
     assert from_face.Shape.Volume == pytest.approx(300 * 200 * 6)
     assert ring.Shape.Volume == pytest.approx(math.pi * (100 ** 2 - 40 ** 2) * 6, rel=1e-6)
-    part = board.as_problem_part(ring, "ring", [0, 90, 180, 270])
+    part = board.as_problem_part(ring, "ring")
     assert len(part["holes"]) == 1 and len(part["outline"]) > 100  # the circle is sampled finely
 
 
@@ -257,14 +257,20 @@ def test_boards_following_the_grain_keep_their_length_along_it(doc, grain, turne
         assert (p["rotation"] % 180 != 0) == turned, p
 
 
-def test_mixed_grain_directions_are_refused_by_name(doc):
+def test_each_master_board_turns_grain_following_boards_its_own_way(doc):
     boards, masters = shelf_unit(doc)
-    masters.append(master_board.create(doc, 1000, 1000, 18, label="Offcut"))
+    masters[0].Width, masters[0].Height, masters[0].Count, masters[0].Grain = 1220, 610, 1, "Along width"
+    masters.append(master_board.create(doc, 610, 1220, 18, count=0, label="Offcut"))
     masters[1].Grain = "Along height"
-    boards[0].Rotation = "Follow grain"
+    for b in boards:
+        b.Rotation = "Follow grain"
     lay = layout.create(doc, boards, masters)
-    with pytest.raises(layout.LayoutError, match="grain runs different ways"):
-        lay.Proxy.execute(lay)
+    doc.recompute()
+    result = json.loads(lay.LayoutJson)
+    assert len(result["boards"]) >= 2 and {b["grain"] for b in result["boards"]} == {"width", "height"}
+    for p in result["placements"]:
+        along_height = result["boards"][p["board"]]["grain"] == "height"
+        assert (p["rotation"] % 180 != 0) == along_height, p
 
 
 def test_coplanar_boards_in_contact_are_cut_as_one_piece(doc):

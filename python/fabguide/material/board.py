@@ -169,13 +169,9 @@ def as_board3(obj, part_id):
                 thickness=obj.Thickness.Value)
 
 
-def orientations(obj, grain):
-    """Rotations allowed for the board on master boards whose grain allows `grain` rotations."""
-    return {"Any": [0, 90, 180, 270], "Follow grain": grain, "Fixed": [0]}[obj.Rotation]
-
-
-def as_problem_part(obj, part_id, grain):
-    """The board as a *.pack.json part."""
+def as_problem_part(obj, part_id):
+    """The board as a *.pack.json part; Follow grain leaves the turns to each master board's grain."""
     outline = outline_of(obj.Shape)
-    return {"id": part_id, "outline": outline["outline"], "holes": outline["holes"],
-            "quantity": obj.Quantity, "orientations": orientations(obj, grain)}
+    return {"id": part_id, "outline": outline["outline"], "holes": outline["holes"], "quantity": obj.Quantity,
+            "orientations": [0] if obj.Rotation == "Fixed" else [0, 90, 180, 270],
+            "follow_grain": obj.Rotation == "Follow grain"}

@@ -104,17 +104,12 @@ def make_problem(obj):
             if abs(b.Thickness.Value - m.Thickness.Value) > 0.01:
                 raise LayoutError("Layout '{}': board '{}' is {:g} mm thick but master board '{}' is {:g} mm"
                                   .format(obj.Label, b.Label, b.Thickness.Value, m.Label, m.Thickness.Value))
-    grains = {m.Grain for m in masters}
-    if len(grains) > 1 and any(b.Rotation == "Follow grain" for b in boards):
-        raise LayoutError("Layout '{}': boards follow the grain but the master boards' grain runs different ways ({})"
-                          .format(obj.Label, ", ".join(sorted(grains))))
-    grain = master_board.GRAIN[masters[0].Grain]
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value},
         "boards": [master_board.as_problem_board(m) for m in masters],
-        "parts": [board.as_problem_part(b, part_id, grain) for b, part_id in zip(boards, part_ids(boards))],
+        "parts": [board.as_problem_part(b, part_id) for b, part_id in zip(boards, part_ids(boards))],
     }
     return problem, boards
 
@@ -126,8 +121,8 @@ def join(obj, boards):
 
 
 def pieces(obj, joined, parts, boards):
-    """The parts to pack: one per piece of the joined design, each with the quantity and rotations of its
-    board; coplanar boards in contact are one piece (thesis 5.3.4) and must be made once each."""
+    """The parts to pack: one per piece of the joined design, each with the quantity, turns and grain of its
+    first board; coplanar boards in contact are one piece (thesis 5.3.4) and must be made once each."""
     by_id = {part["id"]: (part, b) for part, b in zip(parts, boards)}
     result = []
     for piece in joined["parts"]:
@@ -136,7 +131,7 @@ def pieces(obj, joined, parts, boards):
             raise LayoutError("Layout '{}': {} lie in one plane and touch, so they are cut as one piece; set their "
                               "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for _, b in members)))
         first, _ = members[0]
-        result.append(dict(piece, quantity=first["quantity"], orientations=first["orientations"]))
+        result.append(dict(first, **piece))  # the first board's quantity, turns and grain; the piece's shape
     return result
 
 

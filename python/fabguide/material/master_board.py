@@ -1,8 +1,8 @@
 """MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
 from fabguide import properties
 
-# Rotations that keep a board's length (its outline's x axis) along the grain.
-GRAIN = {"None": [0, 90, 180, 270], "Along width": [0, 180], "Along height": [90, 270]}
+# The grain directions, as *.pack.json names them.
+GRAIN = {"None": "none", "Along width": "width", "Along height": "height"}
 
 
 class MasterBoard(properties.Proxy):
@@ -43,4 +43,5 @@ def is_master_board(obj):
 def as_problem_board(obj):
     """The master board as a *.pack.json board."""
     return {"name": obj.Label, "material": obj.Material, "width": obj.Width.Value, "height": obj.Height.Value,
-            "thickness": obj.Thickness.Value, "count": obj.Count if obj.Count > 0 else -1}
+            "thickness": obj.Thickness.Value, "count": obj.Count if obj.Count > 0 else -1,
+            "grain": GRAIN[obj.Grain]}
