@@ -1,6 +1,7 @@
 """View providers of FabGuide's document objects: icons, colours, and the task panels they open."""
 import FreeCADGui
 
+from fabguide import properties
 from fabguide_gui import resources
 
 SHEET_COLOUR = (0.91, 0.83, 0.65)  # the master boards in a layout: raw wood
@@ -8,7 +9,7 @@ PART_COLOUR = (0.24, 0.49, 0.79)   # the parts laid out on them
 BOARD_COLOUR = (0.85, 0.70, 0.45)
 
 
-class ViewProvider:
+class ViewProvider(properties.Stateless):
     """Shows an icon; holds no state, so saving stores nothing."""
 
     ICON = "FabGuide.svg"
@@ -21,18 +22,6 @@ class ViewProvider:
 
     def getIcon(self):
         return resources.icon(self.ICON)
-
-    def __getstate__(self):  # FreeCAD 0.20
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):  # FreeCAD 0.21 and later
-        return None
-
-    def loads(self, state):
-        return None
 
 
 class ViewProviderMasterBoard(ViewProvider):

@@ -13,10 +13,26 @@ def add(obj, kind, name, group, doc, value=None, mode=0):
         obj.setEditorMode(name, mode)
 
 
-class Proxy:
-    """Base of FabGuide's FeaturePython proxies: they hold no state of their own (everything lives in
-    properties), so saving stores nothing and restoring re-adds any property a newer version defines.
-    Subclasses list their properties in `define(obj)` with `add`."""
+class Stateless:
+    """Saved with no state of its own: FreeCAD 0.20 calls __getstate__/__setstate__, 0.21+ dumps/loads.
+    Everything FabGuide keeps lives in properties, never a reference to the object."""
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class Proxy(Stateless):
+    """Base of FabGuide's FeaturePython proxies. Subclasses list their properties in `define(obj)` with
+    `add`; restoring a document calls it again, so documents saved by an older FabGuide gain new properties."""
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -24,15 +40,3 @@ class Proxy:
 
     def onDocumentRestored(self, obj):
         self.define(obj)
-
-    def __getstate__(self):  # FreeCAD 0.20
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):  # FreeCAD 0.21 and later
-        return None
-
-    def loads(self, state):
-        return None
