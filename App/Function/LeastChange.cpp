@@ -1,0 +1,121 @@
+#include "Function/LeastChange.h"
+
+#include <libalglib/optimization.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fabguide::function {
+
+namespace {
+
+/// One QP solve; (solved, x).
+std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
+                                         const std::vector<LinearConstraint>& rows,
+                                         const Eigen::VectorXd* start, double tolerance)
+{
+    const int n = static_cast<int>(target.size());
+    if (n == 0)
+        return {violation(target, rows) <= tolerance, target};
+    alglib::minqpstate state;
+    alglib::minqpcreate(n, state);
+    // Σ (x − t)² = xᵀx − 2tᵀx + const: Hessian 2I, linear term −2t (ALGLIB minimises ½xᵀAx + bᵀx).
+    alglib::sparsematrix hessian;
+    alglib::sparsecreate(n, n, n, hessian);
+    alglib::real_1d_array linear, scale, x0;
+    linear.setlength(n);
+    scale.setlength(n);
+    x0.setlength(n);
+    for (int i = 0; i < n; ++i) {
+        alglib::sparseset(hessian, i, i, 2.0);
+        linear[i] = -2 * target[i];
+        scale[i] = 1;
+        x0[i] = start ? (*start)[i] : target[i];
+    }
+    alglib::sparseconverttocrs(hessian);
+    alglib::minqpsetquadratictermsparse(state, hessian, true);
+    alglib::minqpsetlinearterm(state, linear);
+    alglib::minqpsetscale(state, scale);
+    alglib::minqpsetstartingpoint(state, x0);
+    const int k = static_cast<int>(rows.size());
+    if (k > 0) {
+        alglib::sparsematrix c;
+        alglib::sparsecreate(k, n, c);
+        alglib::real_1d_array lower, upper;
+        lower.setlength(k);
+        upper.setlength(k);
+        for (int r = 0; r < k; ++r) {
+            for (const auto& [variable, coefficient] : rows[r].terms)
+                alglib::sparseadd(c, r, variable, coefficient);
+            lower[r] = rows[r].lower;
+            upper[r] = rows[r].upper;
+        }
+        alglib::sparseconverttocrs(c);
+        alglib::minqpsetlc2(state, c, lower, upper, k);
+    }
+    // 1e-12: looser stopping tolerances can report success with errors up to 0.1 mm (DESIGN.md).
+    alglib::minqpsetalgosparseipm(state, 1e-12);
+    alglib::minqpoptimize(state);
+    alglib::real_1d_array result;
+    alglib::minqpreport report;
+    alglib::minqpresults(state, result, report);
+    Eigen::VectorXd x(n);
+    for (int i = 0; i < n; ++i)
+        x[i] = result[i];
+    return {report.terminationtype > 0 && violation(x, rows) <= tolerance, x};
+}
+
+std::vector<LinearConstraint> without(const std::vector<LinearConstraint>& rows,
+                                      const std::vector<std::string>& sources)
+{
+    std::vector<LinearConstraint> kept;
+    for (const LinearConstraint& row : rows)
+        if (std::find(sources.begin(), sources.end(), row.source) == sources.end() || row.source.empty())
+            kept.push_back(row);
+    return kept;
+}
+
+}  // namespace
+
+double violation(const Eigen::VectorXd& x, const std::vector<LinearConstraint>& constraints)
+{
+    double worst = 0;
+    for (const LinearConstraint& row : constraints) {
+        double value = 0;
+        for (const auto& [variable, coefficient] : row.terms)
+            value += coefficient * x[variable];
+        worst = std::max({worst, row.lower - value, value - row.upper});
+    }
+    return worst;
+}
+
+LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
+                                   const std::vector<LinearConstraint>& constraints,
+                                   const Eigen::VectorXd* start, double tolerance)
+{
+    LeastChangeResult result;
+    auto [solved, x] = solveQP(target, constraints, start, tolerance);
+    result.solved = solved;
+    result.x = solved ? x : target;
+    result.violation = violation(result.x, constraints);
+    if (solved)
+        return result;
+
+    // Deletion filter: drop each source in turn; if the rest still conflicts it was not needed.
+    std::vector<std::string> sources;
+    for (const LinearConstraint& row : constraints)
+        if (!row.source.empty() && std::find(sources.begin(), sources.end(), row.source) == sources.end())
+            sources.push_back(row.source);
+    std::vector<std::string> dropped;
+    for (const std::string& source : sources) {
+        dropped.push_back(source);
+        if (solveQP(target, without(constraints, dropped), nullptr, tolerance).first) {
+            dropped.pop_back();  // needed for the conflict
+            result.conflict.push_back(source);
+        }
+    }
+    return result;
+}
+
+}  // namespace fabguide::function
