@@ -13,6 +13,7 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     fabguide::cli::addVersionCommand(app);
     fabguide::cli::addPackCommand(app);
+    fabguide::cli::addSolveCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

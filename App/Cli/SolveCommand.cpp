@@ -1,0 +1,86 @@
+// `fabguide solve`: the works-like model nearest to the given one that satisfies its relationships
+// (thesis 4.4).
+#include "Cli/Commands.h"
+#include "IO/Json.h"
+#include "IO/WorkslikeFormat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace fabguide::cli {
+
+namespace {
+
+struct SolveArguments {
+    std::string input;
+    std::string output;
+};
+
+void printChanges(const function::Model& before, const function::Model& after)
+{
+    static const char* sides[] = {"left", "right", "near", "far", "bottom", "top"};
+    for (const function::Part& part : before.parts) {
+        std::string changes;
+        for (int c : part.cuboids)
+            for (int k = 0; k < 6; ++k) {
+                const double from = before.cuboids[c].coordinates[k], to = after.cuboids[c].coordinates[k];
+                if (std::abs(to - from) > 1e-6) {
+                    char text[160];
+                    std::snprintf(text, sizeof text, "  %s.%s %.6g -> %.6g", before.cuboids[c].name.c_str(),
+                                  sides[k], from, to);
+                    changes += text;
+                }
+            }
+        std::printf("part %-20s %s\n", part.name.c_str(), changes.empty() ? "unchanged" : changes.c_str());
+    }
+}
+
+int run(const SolveArguments& args)
+{
+    const function::Model model = io::readWorkslike(io::readJsonFile(args.input));
+    const function::SolveResult result = function::solve(model);
+    auto status = [&](const std::string& name) {
+        if (result.solved)
+            return "satisfied";
+        return std::find(result.conflict.begin(), result.conflict.end(), name) != result.conflict.end()
+                   ? "CONFLICT"
+                   : "-";
+    };
+    for (const function::Flush& f : model.flush)
+        std::printf("flush      %-30s %s\n", f.name.c_str(), status(f.name));
+    for (const function::Geometric& g : model.geometric)
+        std::printf("geometric  %-30s %s\n", g.name.c_str(), status(g.name));
+    if (!result.solved) {
+        std::string names;
+        for (const std::string& name : result.conflict)
+            names += (names.empty() ? "" : ", ") + ("'" + name + "'");
+        std::fprintf(stderr, "fabguide solve: these cannot hold together: %s\n", names.c_str());
+        return 1;
+    }
+    printChanges(model, result.model);
+    std::printf("largest violation %.2g mm\n", result.violation);
+    if (!args.output.empty()) {
+        io::writeJsonFile(args.output, io::workslikeToJson(result.model, &result));
+        std::printf("solved model  %s\n", args.output.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+void addSolveCommand(CLI::App& app)
+{
+    auto args = std::make_shared<SolveArguments>();
+    auto* cmd = app.add_subcommand(
+        "solve", "Size the parts of a works-like model so its relationships hold (*.workslike.json)");
+    cmd->add_option("input", args->input, "*.workslike.json")->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->output, "solved model to write");
+    cmd->callback([args] {
+        if (const int code = run(*args))
+            throw CLI::RuntimeError(code);
+    });
+}
+
+}  // namespace fabguide::cli

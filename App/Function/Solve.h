@@ -1,0 +1,33 @@
+// Solving a works-like model (thesis 4.4): its relationships as linear constraints on the cuboid
+// coordinates, solved for the least change.
+#pragma once
+
+#include "Function/LeastChange.h"
+#include "Function/Model.h"
+
+#include <string>
+#include <vector>
+
+namespace fabguide::function {
+
+/// Variable index of a cuboid coordinate: six per cuboid, in Side order.
+inline int variable(const Face& face)
+{
+    return 6 * face.cuboid + static_cast<int>(face.side);
+}
+
+/// Every constraint of the model, each named after its relationship ("lock: lid.top" for locks; minimum
+/// sizes unnamed). Throws std::invalid_argument naming a Flush whose faces are not parallel.
+std::vector<LinearConstraint> constraints(const Model& model);
+
+struct SolveResult {
+    bool solved = false;
+    Model model;                        ///< the solved model (unchanged when not solved)
+    std::vector<std::string> conflict;  ///< relationships that cannot hold together
+    double violation = 0;
+};
+
+/// The model nearest to `model` that satisfies all its relationships, locks and minimum sizes.
+SolveResult solve(const Model& model);
+
+}  // namespace fabguide::function

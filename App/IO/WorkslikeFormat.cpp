@@ -1,0 +1,218 @@
+#include "IO/WorkslikeFormat.h"
+
+#include "IO/Json.h"
+
+#include <map>
+
+namespace fabguide::io {
+
+namespace {
+
+using function::Face;
+using function::Side;
+
+const std::map<std::string, Side> kSides{{"left", Side::Left}, {"right", Side::Right},   {"near", Side::Near},
+                                         {"far", Side::Far},   {"bottom", Side::Bottom}, {"top", Side::Top}};
+const std::map<std::string, int> kSizes{{"width", 0}, {"depth", 1}, {"height", 2}};  // along x, y, z
+
+std::string at(const std::string& array, size_t i)
+{
+    return array + "[" + std::to_string(i) + "]";
+}
+
+int cuboidNamed(const function::Model& model, const std::string& name, const std::string& path)
+{
+    for (size_t c = 0; c < model.cuboids.size(); ++c)
+        if (model.cuboids[c].name == name)
+            return static_cast<int>(c);
+    throw FormatError(path + ": no cuboid named '" + name + "'");
+}
+
+/// "cuboid.side" or "cuboid.width|depth|height" as an expression (a size is right − left), times `factor`.
+function::Expression quantity(const function::Model& model, const nlohmann::json& value,
+                              const std::string& path, double factor = 1)
+{
+    if (!value.is_string())
+        throw FormatError(path + ": must be a quantity such as \"lid.top\" or \"lid.height\", got " +
+                          value.dump());
+    const std::string text = value.get<std::string>();
+    const size_t dot = text.rfind('.');
+    if (dot == std::string::npos)
+        throw FormatError(path + ": \"" + text + "\" must be cuboid.side or cuboid.size");
+    const int c = cuboidNamed(model, text.substr(0, dot), path);
+    const std::string what = text.substr(dot + 1);
+    if (auto side = kSides.find(what); side != kSides.end())
+        return {{{factor, Face{c, side->second}}}, 0};
+    if (auto size = kSizes.find(what); size != kSizes.end())
+        return {{{factor, Face{c, static_cast<Side>(2 * size->second + 1)}},
+                 {-factor, Face{c, static_cast<Side>(2 * size->second)}}},
+                0};
+    throw FormatError(path + ": \"" + what +
+                      "\" is not left, right, near, far, bottom, top, width, depth or height");
+}
+
+Face face(const function::Model& model, const nlohmann::json& value, const std::string& path)
+{
+    const function::Expression e = quantity(model, value, path);
+    if (e.terms.size() != 1)
+        throw FormatError(path + ": must name a face such as \"lid.top\", not a size");
+    return e.terms[0].second;
+}
+
+/// A side of a geometric relationship: one quantity or a list summed, each a string or {"quantity", "times"}.
+function::Expression sum(const function::Model& model, const nlohmann::json& value, const std::string& path)
+{
+    function::Expression total;
+    const nlohmann::json items = value.is_array() ? value : nlohmann::json::array({value});
+    for (size_t k = 0; k < items.size(); ++k) {
+        const std::string here = value.is_array() ? at(path, k) : path;
+        const function::Expression e =
+            items[k].is_object() ? quantity(model, items[k].value("quantity", nlohmann::json()),
+                                            here + ".quantity", Fields(items[k], here).number("times", 1.0))
+                                 : quantity(model, items[k], here);
+        total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
+    }
+    return total;
+}
+
+std::array<double, 3> point(const Fields& fields, const std::string& key)
+{
+    const nlohmann::json& p = fields.array(key);
+    if (p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+        throw FormatError(fields.pathOf(key) + ": must be [x, y, z], got " + p.dump());
+    return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
+}
+
+void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path)
+{
+    const Fields r(json, path);
+    const std::string type = r.text("type"), name = r.text("name");
+    for (const auto& existing : model.flush)
+        if (existing.name == name)
+            throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
+    for (const auto& existing : model.geometric)
+        if (existing.name == name)
+            throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
+    if (type == "flush") {
+        const nlohmann::json& faces = r.array("faces");
+        if (faces.size() != 2)
+            throw FormatError(r.pathOf("faces") + ": must name two faces");
+        model.flush.push_back({name, face(model, faces[0], at(r.pathOf("faces"), 0)),
+                               face(model, faces[1], at(r.pathOf("faces"), 1))});
+    } else if (type == "geometric") {
+        const std::string relation = r.text("relation", "equal");
+        if (relation != "equal" && relation != "at_most")
+            throw FormatError(r.pathOf("relation") + ": must be \"equal\" or \"at_most\", got \"" + relation +
+                              "\"");
+        if (!r.has("left") || !r.has("right"))
+            throw FormatError(r.pathOf(r.has("left") ? "right" : "left") + ": missing");
+        function::Geometric g{name,
+                              relation == "equal" ? function::Geometric::Relation::Equal
+                                                  : function::Geometric::Relation::AtMost,
+                              sum(model, json["left"], r.pathOf("left")),
+                              sum(model, json["right"], r.pathOf("right"))};
+        g.right.constant = r.number("offset", 0.0);
+        model.geometric.push_back(g);
+    } else {
+        throw FormatError(r.pathOf("type") + ": \"" + type +
+                          "\" is not a relationship this FabGuide knows (flush, "
+                          "geometric)");
+    }
+}
+
+}  // namespace
+
+function::Model readWorkslike(const nlohmann::json& document)
+{
+    const Fields root(document, "");
+    if (root.text("format", "fabguide.workslike") != "fabguide.workslike")
+        throw FormatError("format: expected \"fabguide.workslike\", got \"" + root.text("format") + "\"");
+    if (const int version = root.integer("version", kWorkslikeFormatVersion);
+        version != kWorkslikeFormatVersion)
+        throw FormatError("version: this FabGuide reads version " + std::to_string(kWorkslikeFormatVersion) +
+                          ", the file is version " + std::to_string(version));
+    function::Model model;
+    model.minimumSize = root.number("minimum_size", 1.0, 0.0);
+    const nlohmann::json& parts = root.array("parts");
+    for (size_t p = 0; p < parts.size(); ++p) {
+        const Fields part(parts[p], at("parts", p));
+        function::Part built{part.text("name"), {}};
+        const nlohmann::json& cuboids = part.array("cuboids");
+        if (cuboids.empty())
+            throw FormatError(part.pathOf("cuboids") + ": a part needs at least one cuboid");
+        for (size_t c = 0; c < cuboids.size(); ++c) {
+            const Fields cuboid(cuboids[c], at(part.pathOf("cuboids"), c));
+            const std::string name =
+                cuboid.text("name", built.name + (cuboids.size() > 1 ? std::to_string(c + 1) : ""));
+            for (const function::Cuboid& other : model.cuboids)
+                if (other.name == name)
+                    throw FormatError(cuboid.pathOf("name") + ": '" + name + "' is used twice");
+            const auto low = point(cuboid, "min"), high = point(cuboid, "max");
+            for (int a = 0; a < 3; ++a)
+                if (!(high[a] > low[a]))
+                    throw FormatError(cuboid.pathOf("max") + ": must exceed min along every axis");
+            built.cuboids.push_back(static_cast<int>(model.cuboids.size()));
+            model.cuboids.push_back({name, {low[0], high[0], low[1], high[1], low[2], high[2]}});
+        }
+        model.parts.push_back(built);
+    }
+    const nlohmann::json& relationships = root.array("relationships", true);
+    for (size_t r = 0; r < relationships.size(); ++r)
+        readRelationship(model, relationships[r], at("relationships", r));
+    const nlohmann::json& locks = root.array("locks", true);
+    for (size_t l = 0; l < locks.size(); ++l)
+        model.locks.push_back({face(model, locks[l], at("locks", l))});
+    return model;
+}
+
+std::string quantityName(const function::Model& model, const Face& face)
+{
+    for (const auto& [name, side] : kSides)
+        if (side == face.side)
+            return model.cuboids[face.cuboid].name + "." + name;
+    return model.cuboids[face.cuboid].name;
+}
+
+nlohmann::json workslikeToJson(const function::Model& model, const function::SolveResult* result)
+{
+    auto expression = [&](const function::Expression& e) {
+        nlohmann::json items = nlohmann::json::array();
+        for (const auto& [times, f] : e.terms)
+            items.push_back({{"quantity", quantityName(model, f)}, {"times", times}});
+        return items;
+    };
+    nlohmann::json parts = nlohmann::json::array(), relationships = nlohmann::json::array(),
+                   locks = nlohmann::json::array();
+    for (const function::Part& part : model.parts) {
+        nlohmann::json cuboids = nlohmann::json::array();
+        for (int c : part.cuboids) {
+            const auto& k = model.cuboids[c].coordinates;
+            cuboids.push_back(
+                {{"name", model.cuboids[c].name}, {"min", {k[0], k[2], k[4]}}, {"max", {k[1], k[3], k[5]}}});
+        }
+        parts.push_back({{"name", part.name}, {"cuboids", cuboids}});
+    }
+    for (const function::Flush& f : model.flush)
+        relationships.push_back({{"type", "flush"},
+                                 {"name", f.name},
+                                 {"faces", {quantityName(model, f.a), quantityName(model, f.b)}}});
+    for (const function::Geometric& g : model.geometric)
+        relationships.push_back(
+            {{"type", "geometric"},
+             {"name", g.name},
+             {"relation", g.relation == function::Geometric::Relation::Equal ? "equal" : "at_most"},
+             {"left", expression(g.left)},
+             {"right", expression(g.right)},
+             {"offset", g.right.constant}});
+    for (const function::Lock& lock : model.locks)
+        locks.push_back(quantityName(model, lock.face));
+    nlohmann::json out = {{"format", "fabguide.workslike"},    {"version", kWorkslikeFormatVersion},
+                          {"minimum_size", model.minimumSize}, {"parts", parts},
+                          {"relationships", relationships},    {"locks", locks}};
+    if (result)
+        out["report"] = {
+            {"solved", result->solved}, {"conflict", result->conflict}, {"violation", result->violation}};
+    return out;
+}
+
+}  // namespace fabguide::io

@@ -1,0 +1,125 @@
+#include "Function/Solve.h"
+#include "IO/Json.h"
+#include "IO/WorkslikeFormat.h"
+
+#include <gtest/gtest.h>
+
+using namespace fabguide;
+using function::Side;
+using nlohmann::json;
+
+namespace {
+
+json boxWithLid()
+{
+    return json::parse(R"({
+      "format": "fabguide.workslike", "version": 1,
+      "parts": [{"name": "body", "cuboids": [{"name": "body", "min": [0, 0, 0], "max": [100, 60, 40]}]},
+                {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 42], "max": [100, 60, 47]}]}],
+      "relationships": [{"type": "flush", "name": "lid on body", "faces": ["lid.bottom", "body.top"]},
+                        {"type": "geometric", "name": "lid 8 thick", "left": "lid.height", "right": [], "offset": 8}]
+    })");
+}
+
+std::string errorOf(const json& document)
+{
+    try {
+        io::readWorkslike(document);
+    } catch (const io::FormatError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(Solve, FlushSharesTheChangeBetweenBothParts)
+{
+    const function::SolveResult r = function::solve(io::readWorkslike(boxWithLid()));
+    ASSERT_TRUE(r.solved);
+    const auto& body = r.model.cuboids[0];
+    const auto& lid = r.model.cuboids[1];
+    EXPECT_NEAR(lid.at(Side::Bottom), body.at(Side::Top), 1e-6);
+    EXPECT_NEAR(lid.at(Side::Top) - lid.at(Side::Bottom), 8, 1e-6);
+    // Least change: body top t, lid bottom t, lid top t + 8 minimise (t-40)² + (t-42)² + (t+8-47)².
+    EXPECT_NEAR(body.at(Side::Top), (40.0 + 42 + 39) / 3, 1e-6);
+    EXPECT_NEAR(lid.at(Side::Top), (40.0 + 42 + 39) / 3 + 8, 1e-6);
+    EXPECT_LE(r.violation, 1e-6);
+}
+
+TEST(Solve, ALockedCoordinateStaysAndTheRestFollows)
+{
+    json d = boxWithLid();
+    d["locks"] = {"body.top"};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    EXPECT_NEAR(r.model.cuboids[0].at(Side::Top), 40, 1e-9);
+    EXPECT_NEAR(r.model.cuboids[1].at(Side::Bottom), 40, 1e-6);
+}
+
+TEST(Solve, SolvingASolvedModelChangesNothing)
+{
+    const function::SolveResult once = function::solve(io::readWorkslike(boxWithLid()));
+    const function::SolveResult twice = function::solve(once.model);
+    ASSERT_TRUE(twice.solved);
+    for (size_t c = 0; c < once.model.cuboids.size(); ++c)
+        for (int k = 0; k < 6; ++k)
+            EXPECT_NEAR(twice.model.cuboids[c].coordinates[k], once.model.cuboids[c].coordinates[k], 1e-6);
+}
+
+TEST(Solve, ContradictionsAreReportedByName)
+{
+    json d = boxWithLid();
+    d["relationships"].push_back(
+        {{"type", "flush"}, {"name", "lid top level with body top"}, {"faces", {"lid.top", "body.top"}}});
+    d["relationships"].push_back({{"type", "geometric"},
+                                  {"name", "body narrow"},
+                                  {"relation", "at_most"},
+                                  {"left", "body.width"},
+                                  {"right", json::array()},
+                                  {"offset", 200}});
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    EXPECT_FALSE(r.solved);
+    // The lid would have no height, below the (never blamed) minimum size: the two flushes are the conflict.
+    EXPECT_EQ(r.conflict, (std::vector<std::string>{"lid on body", "lid top level with body top"}));
+}
+
+TEST(Solve, FacesThatAreNotParallelCannotBeFlush)
+{
+    json d = boxWithLid();
+    d["relationships"][0]["faces"] = {"lid.left", "body.top"};
+    EXPECT_THROW(function::constraints(io::readWorkslike(d)), std::invalid_argument);
+}
+
+TEST(WorkslikeFormat, ErrorsNameTheOffendingField)
+{
+    json d = boxWithLid();
+    d["relationships"][0]["faces"][1] = "bodyy.top";
+    EXPECT_EQ(errorOf(d), "relationships[0].faces[1]: no cuboid named 'bodyy'");
+    d = boxWithLid();
+    d["relationships"][1]["left"] = "lid.thickness";
+    EXPECT_EQ(errorOf(d),
+              "relationships[1].left: \"thickness\" is not left, right, near, far, bottom, top, width, depth "
+              "or height");
+    d = boxWithLid();
+    d["parts"][1]["cuboids"][0]["max"] = {100, 60, 40};
+    EXPECT_EQ(errorOf(d), "parts[1].cuboids[0].max: must exceed min along every axis");
+    d = boxWithLid();
+    d["relationships"][0]["type"] = "cover";
+    EXPECT_EQ(
+        errorOf(d),
+        "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric)");
+    d = boxWithLid();
+    d["relationships"][1]["name"] = "lid on body";
+    EXPECT_EQ(errorOf(d), "relationships[1].name: 'lid on body' is used twice");
+}
+
+TEST(WorkslikeFormat, WritesWhatItReads)
+{
+    const function::Model model = io::readWorkslike(boxWithLid());
+    const json written = io::workslikeToJson(model);
+    const function::Model again = io::readWorkslike(written);
+    EXPECT_EQ(io::workslikeToJson(again), written);
+    EXPECT_EQ(again.flush.size(), 1u);
+    EXPECT_EQ(again.geometric[0].right.constant, 8);
+}
