@@ -1,5 +1,5 @@
-// A works-like model (thesis 4.1): parts made of axis-aligned cuboids, the functional relationships they
-// must satisfy, and the user's locked dimensions. Joints and configurations come with the next relationships.
+// A works-like model (thesis 4.1): parts made of axis-aligned cuboids, joints and the configurations they
+// take, the functional relationships the parts must satisfy, and the user's locked dimensions.
 #pragma once
 
 #include <array>
@@ -34,10 +34,29 @@ struct Expression {
     double constant = 0;
 };
 
-/// Flush (thesis 4.2.4): two faces lie in one plane.
+/// A joint that moves one part (thesis 4.1.2). A hinge turns the part about the edge where two faces of one
+/// of its cuboids meet (so the axis moves with the solved coordinates), by an angle in degrees, right-handed
+/// about the +x, +y or +z direction of the edge. A slide moves it along an axis by an offset in mm.
+struct Joint {
+    std::string name;
+    enum class Type { Hinge, Slide } type = Type::Hinge;
+    int part = 0;
+    Face edgeA, edgeB;  ///< hinge: two faces of one cuboid of the part, on different axes
+    int axis = 0;       ///< slide: 0 x, 1 y, 2 z
+};
+
+/// A configuration (thesis 4.1.2): the joints' poses in which a relationship must hold. Joints not
+/// mentioned stay as modelled (the base configuration).
+struct Configuration {
+    std::string name;
+    std::vector<std::pair<int, double>> poses;  ///< (joint, angle in degrees or offset in mm)
+};
+
+/// Flush (thesis 4.2.4): two faces lie in one plane, in a configuration (-1: as modelled).
 struct Flush {
     std::string name;
     Face a, b;
+    int configuration = -1;
 };
 
 /// Geometric (thesis 4.3.5): left = right or left <= right, e.g. equal thickness, symmetry, a sum of widths.
@@ -45,6 +64,7 @@ struct Geometric {
     std::string name;
     enum class Relation { Equal, AtMost } relation = Relation::Equal;
     Expression left, right;
+    int configuration = -1;  ///< where its quantities are measured (-1: as modelled)
 };
 
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.
@@ -55,6 +75,8 @@ struct Lock {
 struct Model {
     std::vector<Part> parts;
     std::vector<Cuboid> cuboids;
+    std::vector<Joint> joints;
+    std::vector<Configuration> configurations;
     std::vector<Flush> flush;
     std::vector<Geometric> geometric;
     std::vector<Lock> locks;

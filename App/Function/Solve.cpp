@@ -1,5 +1,7 @@
 #include "Function/Solve.h"
 
+#include "Function/Pose.h"
+
 #include <limits>
 #include <stdexcept>
 
@@ -20,16 +22,23 @@ std::string faceName(const Model& model, const Face& face)
     return model.cuboids[face.cuboid].name + "." + kSideNames[static_cast<int>(face.side)];
 }
 
-/// left − right as constraint terms and the constant that moves to the bound.
-std::pair<std::vector<std::pair<int, double>>, double> difference(const Expression& left,
-                                                                  const Expression& right)
+/// left − right measured in a configuration, as constraint terms and the constant that moves to the bound.
+std::pair<std::vector<std::pair<int, double>>, double> difference(const Model& model, const Expression& left,
+                                                                  const Expression& right, int configuration)
 {
     std::vector<std::pair<int, double>> terms;
-    for (const auto& [c, face] : left.terms)
-        terms.push_back({variable(face), c});
-    for (const auto& [c, face] : right.terms)
-        terms.push_back({variable(face), -c});
-    return {terms, right.constant - left.constant};
+    double constant = left.constant - right.constant;
+    auto add = [&](const Expression& side, double sign) {
+        for (const auto& [c, face] : side.terms) {
+            const Expression moved = posed(model, face, configuration);
+            for (const auto& [k, f] : moved.terms)
+                terms.push_back({variable(f), sign * c * k});
+            constant += sign * c * moved.constant;
+        }
+    };
+    add(left, 1);
+    add(right, -1);
+    return {terms, -constant};
 }
 
 }  // namespace
@@ -45,10 +54,11 @@ std::vector<LinearConstraint> constraints(const Model& model)
         if (axis(f.a.side) != axis(f.b.side))
             throw std::invalid_argument("flush '" + f.name + "': " + faceName(model, f.a) + " and " +
                                         faceName(model, f.b) + " are not parallel");
-        rows.push_back({{{variable(f.a), 1.0}, {variable(f.b), -1.0}}, 0, 0, f.name});
+        auto [terms, bound] = difference(model, {{{1.0, f.a}}, 0}, {{{1.0, f.b}}, 0}, f.configuration);
+        rows.push_back({terms, bound, bound, f.name});
     }
     for (const Geometric& g : model.geometric) {  // thesis 4.3.5
-        auto [terms, bound] = difference(g.left, g.right);
+        auto [terms, bound] = difference(model, g.left, g.right, g.configuration);
         rows.push_back({terms, g.relation == Geometric::Relation::Equal ? bound : -kInfinity, bound, g.name});
     }
     for (const Lock& lock : model.locks) {

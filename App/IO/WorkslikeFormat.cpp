@@ -2,6 +2,7 @@
 
 #include "IO/Json.h"
 
+#include <algorithm>
 #include <map>
 
 namespace fabguide::io {
@@ -83,10 +84,97 @@ std::array<double, 3> point(const Fields& fields, const std::string& key)
     return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
 }
 
+int partNamed(const function::Model& model, const std::string& name, const std::string& path)
+{
+    for (size_t p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].name == name)
+            return static_cast<int>(p);
+    throw FormatError(path + ": no part named '" + name + "'");
+}
+
+const char* kAxes[] = {"x", "y", "z"};
+
+void readJoint(function::Model& model, const nlohmann::json& json, const std::string& path)
+{
+    const Fields j(json, path);
+    function::Joint joint;
+    joint.name = j.text("name");
+    for (const function::Joint& other : model.joints)
+        if (other.name == joint.name)
+            throw FormatError(j.pathOf("name") + ": '" + joint.name + "' is used twice");
+    joint.part = partNamed(model, j.text("part"), j.pathOf("part"));
+    const std::string type = j.text("type");
+    if (type == "hinge") {
+        joint.type = function::Joint::Type::Hinge;
+        const nlohmann::json& edge = j.array("edge");
+        if (edge.size() != 2)
+            throw FormatError(j.pathOf("edge") + ": must name the two faces that meet at the hinge's edge");
+        joint.edgeA = face(model, edge[0], at(j.pathOf("edge"), 0));
+        joint.edgeB = face(model, edge[1], at(j.pathOf("edge"), 1));
+        const auto& cuboids = model.parts[joint.part].cuboids;
+        if (joint.edgeA.cuboid != joint.edgeB.cuboid ||
+            std::find(cuboids.begin(), cuboids.end(), joint.edgeA.cuboid) == cuboids.end())
+            throw FormatError(j.pathOf("edge") + ": both faces must belong to one cuboid of part '" +
+                              model.parts[joint.part].name + "'");
+        if (static_cast<int>(joint.edgeA.side) / 2 == static_cast<int>(joint.edgeB.side) / 2)
+            throw FormatError(j.pathOf("edge") + ": the two faces are parallel, they meet at no edge");
+    } else if (type == "slide") {
+        joint.type = function::Joint::Type::Slide;
+        const std::string axis = j.text("axis");
+        const auto found = std::find(std::begin(kAxes), std::end(kAxes), axis);
+        if (found == std::end(kAxes))
+            throw FormatError(j.pathOf("axis") + ": must be \"x\", \"y\" or \"z\", got \"" + axis + "\"");
+        joint.axis = static_cast<int>(found - std::begin(kAxes));
+    } else {
+        throw FormatError(j.pathOf("type") + ": \"" + type +
+                          "\" is not a joint this FabGuide knows (hinge, slide)");
+    }
+    model.joints.push_back(joint);
+}
+
+void readConfiguration(function::Model& model, const nlohmann::json& json, const std::string& path)
+{
+    const Fields c(json, path);
+    function::Configuration configuration{c.text("name"), {}};
+    for (const function::Configuration& other : model.configurations)
+        if (other.name == configuration.name)
+            throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
+    if (!json.contains("poses") || !json["poses"].is_object())
+        throw FormatError(c.pathOf("poses") + ": must map joint names to angles (degrees) or offsets (mm)");
+    std::vector<int> moved;
+    for (const auto& [name, value] : json["poses"].items()) {
+        const std::string here = c.pathOf("poses") + "." + name;
+        const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
+                                        [&](const function::Joint& j) { return j.name == name; });
+        if (joint == model.joints.end())
+            throw FormatError(here + ": no joint named '" + name + "'");
+        if (!value.is_number())
+            throw FormatError(here + ": must be a number, got " + value.dump());
+        if (std::find(moved.begin(), moved.end(), joint->part) != moved.end())
+            throw FormatError(here + ": part '" + model.parts[joint->part].name +
+                              "' is already moved by another joint");
+        moved.push_back(joint->part);
+        configuration.poses.push_back({static_cast<int>(joint - model.joints.begin()), value.get<double>()});
+    }
+    model.configurations.push_back(configuration);
+}
+
+int configurationNamed(const function::Model& model, const Fields& r)
+{
+    if (!r.has("configuration"))
+        return -1;
+    const std::string name = r.text("configuration");
+    for (size_t c = 0; c < model.configurations.size(); ++c)
+        if (model.configurations[c].name == name)
+            return static_cast<int>(c);
+    throw FormatError(r.pathOf("configuration") + ": no configuration named '" + name + "'");
+}
+
 void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path)
 {
     const Fields r(json, path);
     const std::string type = r.text("type"), name = r.text("name");
+    const int configuration = configurationNamed(model, r);
     for (const auto& existing : model.flush)
         if (existing.name == name)
             throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
@@ -98,7 +186,7 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         if (faces.size() != 2)
             throw FormatError(r.pathOf("faces") + ": must name two faces");
         model.flush.push_back({name, face(model, faces[0], at(r.pathOf("faces"), 0)),
-                               face(model, faces[1], at(r.pathOf("faces"), 1))});
+                               face(model, faces[1], at(r.pathOf("faces"), 1)), configuration});
     } else if (type == "geometric") {
         const std::string relation = r.text("relation", "equal");
         if (relation != "equal" && relation != "at_most")
@@ -112,6 +200,7 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
                               sum(model, json["left"], r.pathOf("left")),
                               sum(model, json["right"], r.pathOf("right"))};
         g.right.constant = r.number("offset", 0.0);
+        g.configuration = configuration;
         model.geometric.push_back(g);
     } else {
         throw FormatError(r.pathOf("type") + ": \"" + type +
@@ -156,6 +245,12 @@ function::Model readWorkslike(const nlohmann::json& document)
         }
         model.parts.push_back(built);
     }
+    const nlohmann::json& joints = root.array("joints", true);
+    for (size_t j = 0; j < joints.size(); ++j)
+        readJoint(model, joints[j], at("joints", j));
+    const nlohmann::json& configurations = root.array("configurations", true);
+    for (size_t c = 0; c < configurations.size(); ++c)
+        readConfiguration(model, configurations[c], at("configurations", c));
     const nlohmann::json& relationships = root.array("relationships", true);
     for (size_t r = 0; r < relationships.size(); ++r)
         readRelationship(model, relationships[r], at("relationships", r));
@@ -192,23 +287,54 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         }
         parts.push_back({{"name", part.name}, {"cuboids", cuboids}});
     }
+    auto inConfiguration = [&](nlohmann::json relationship, int configuration) {
+        if (configuration >= 0)
+            relationship["configuration"] = model.configurations[configuration].name;
+        return relationship;
+    };
     for (const function::Flush& f : model.flush)
-        relationships.push_back({{"type", "flush"},
-                                 {"name", f.name},
-                                 {"faces", {quantityName(model, f.a), quantityName(model, f.b)}}});
-    for (const function::Geometric& g : model.geometric)
         relationships.push_back(
+            inConfiguration({{"type", "flush"},
+                             {"name", f.name},
+                             {"faces", {quantityName(model, f.a), quantityName(model, f.b)}}},
+                            f.configuration));
+    for (const function::Geometric& g : model.geometric)
+        relationships.push_back(inConfiguration(
             {{"type", "geometric"},
              {"name", g.name},
              {"relation", g.relation == function::Geometric::Relation::Equal ? "equal" : "at_most"},
              {"left", expression(g.left)},
              {"right", expression(g.right)},
-             {"offset", g.right.constant}});
+             {"offset", g.right.constant}},
+            g.configuration));
     for (const function::Lock& lock : model.locks)
         locks.push_back(quantityName(model, lock.face));
-    nlohmann::json out = {{"format", "fabguide.workslike"},    {"version", kWorkslikeFormatVersion},
-                          {"minimum_size", model.minimumSize}, {"parts", parts},
-                          {"relationships", relationships},    {"locks", locks}};
+    nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();
+    for (const function::Joint& j : model.joints) {
+        nlohmann::json joint = {{"name", j.name}, {"part", model.parts[j.part].name}};
+        if (j.type == function::Joint::Type::Hinge) {
+            joint["type"] = "hinge";
+            joint["edge"] = {quantityName(model, j.edgeA), quantityName(model, j.edgeB)};
+        } else {
+            joint["type"] = "slide";
+            joint["axis"] = kAxes[j.axis];
+        }
+        joints.push_back(joint);
+    }
+    for (const function::Configuration& c : model.configurations) {
+        nlohmann::json poses = nlohmann::json::object();
+        for (const auto& [j, pose] : c.poses)
+            poses[model.joints[j].name] = pose;
+        configurations.push_back({{"name", c.name}, {"poses", poses}});
+    }
+    nlohmann::json out = {{"format", "fabguide.workslike"},
+                          {"version", kWorkslikeFormatVersion},
+                          {"minimum_size", model.minimumSize},
+                          {"parts", parts},
+                          {"joints", joints},
+                          {"configurations", configurations},
+                          {"relationships", relationships},
+                          {"locks", locks}};
     if (result)
         out["report"] = {
             {"solved", result->solved}, {"conflict", result->conflict}, {"violation", result->violation}};

@@ -1,0 +1,131 @@
+#include "Function/Pose.h"
+#include "Function/Solve.h"
+#include "IO/Json.h"
+#include "IO/WorkslikeFormat.h"
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+using namespace fabguide;
+using function::Face;
+using function::Side;
+using nlohmann::json;
+
+namespace {
+
+/// A body and a lid hinged on the edge where two of its faces meet; configuration "turned" poses the hinge.
+json hingedLid(const std::string& edgeA, const std::string& edgeB, double angle)
+{
+    return {
+        {"parts",
+         {{{"name", "body"}, {"cuboids", {{{"name", "body"}, {"min", {0, 0, 0}}, {"max", {100, 60, 40}}}}}},
+          {{"name", "lid"}, {"cuboids", {{{"name", "lid"}, {"min", {5, 10, 40}}, {"max", {95, 60, 47}}}}}}}},
+        {"joints", {{{"name", "hinge"}, {"type", "hinge"}, {"part", "lid"}, {"edge", {edgeA, edgeB}}}}},
+        {"configurations", {{{"name", "turned"}, {"poses", {{"hinge", angle}}}}}}};
+}
+
+/// The lid's bounding box in the configuration, by turning its eight corners about the hinge's edge.
+std::array<double, 6> bruteForce(const function::Model& m, double degrees)
+{
+    const function::Joint& j = m.joints[0];
+    const auto& lid = m.cuboids[1];
+    const int a = 3 - static_cast<int>(j.edgeA.side) / 2 - static_cast<int>(j.edgeB.side) / 2;
+    Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+    pivot[static_cast<int>(j.edgeA.side) / 2] = lid.at(j.edgeA.side);
+    pivot[static_cast<int>(j.edgeB.side) / 2] = lid.at(j.edgeB.side);
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(degrees * M_PI / 180, Eigen::Vector3d::Unit(a)).toRotationMatrix();
+    std::array<double, 6> box{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p(lid.coordinates[corner & 1], lid.coordinates[2 + ((corner >> 1) & 1)],
+                                lid.coordinates[4 + ((corner >> 2) & 1)]);
+        const Eigen::Vector3d q = pivot + turn * (p - pivot);
+        for (int axis = 0; axis < 3; ++axis) {
+            box[2 * axis] = std::min(box[2 * axis], q[axis]);
+            box[2 * axis + 1] = std::max(box[2 * axis + 1], q[axis]);
+        }
+    }
+    return box;
+}
+
+}  // namespace
+
+TEST(Pose, HingedBoundingBoxesAreTheTurnedCornersForAnyAngleAndAxis)
+{
+    const std::pair<const char*, const char*> edges[] = {
+        {"lid.far", "lid.bottom"}, {"lid.left", "lid.bottom"}, {"lid.right", "lid.far"}};  // axes x, y, z
+    for (const auto& [edgeA, edgeB] : edges)
+        for (double angle : {30.0, 90.0, 120.0, -45.0, 200.0, -170.0}) {
+            const function::Model m = io::readWorkslike(hingedLid(edgeA, edgeB, angle));
+            const std::array<double, 6> expected = bruteForce(m, angle);
+            for (int k = 0; k < 6; ++k)
+                EXPECT_NEAR(function::evaluate(m, function::posed(m, Face{1, static_cast<Side>(k)}, 0)),
+                            expected[k], 1e-9)
+                    << edgeA << "/" << edgeB << " at " << angle << " side " << k;
+        }
+}
+
+TEST(Pose, PartsWithoutAPosedJointStayPut)
+{
+    const function::Model m = io::readWorkslike(hingedLid("lid.far", "lid.bottom", 90));
+    EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{0, Side::Top}, 0)), 40);
+    EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{1, Side::Top}, -1)), 47);
+}
+
+TEST(Pose, SlidesMoveAlongTheirAxis)
+{
+    json d = hingedLid("lid.far", "lid.bottom", 0);
+    d["joints"] = {{{"name", "drawer"}, {"type", "slide"}, {"part", "lid"}, {"axis", "y"}}};
+    d["configurations"] = {{{"name", "open"}, {"poses", {{"drawer", -45}}}}};
+    const function::Model m = io::readWorkslike(d);
+    EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{1, Side::Near}, 0)), 10 - 45);
+    EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{1, Side::Left}, 0)), 5);
+}
+
+TEST(Pose, RelationshipsHoldInTheirConfigurationAfterTheSolve)
+{
+    // Opened to -90° about its back-bottom edge the lid stands up behind the body, sticking out by its
+    // thickness (7 mm); asking that it stick out at most 3 mm makes the solve thin the lid.
+    json d = hingedLid("lid.far", "lid.bottom", -90);
+    d["relationships"] = {
+        {{"type", "geometric"},
+         {"name", "open lid close to the back"},
+         {"relation", "at_most"},
+         {"configuration", "turned"},
+         {"left", "lid.far"},
+         {"right", "body.far"},
+         {"offset", 3}},
+        {{"type", "flush"}, {"name", "lid on the body"}, {"faces", {"lid.bottom", "body.top"}}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    const std::array<double, 6> open = bruteForce(r.model, -90);
+    EXPECT_LE(open[3], r.model.cuboids[0].at(Side::Far) + 3 + 1e-6);
+    EXPECT_NEAR(r.model.cuboids[1].at(Side::Bottom), r.model.cuboids[0].at(Side::Top), 1e-6);
+    EXPECT_LT(r.model.cuboids[1].at(Side::Top) - r.model.cuboids[1].at(Side::Bottom), 7);
+}
+
+TEST(Pose, JointAndConfigurationErrorsNameTheField)
+{
+    auto errorOf = [](const json& d) {
+        try {
+            io::readWorkslike(d);
+        } catch (const io::FormatError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(errorOf(hingedLid("lid.top", "lid.bottom", 0)),
+              "joints[0].edge: the two faces are parallel, they meet at no edge");
+    EXPECT_EQ(errorOf(hingedLid("body.far", "body.top", 0)),
+              "joints[0].edge: both faces must belong to one cuboid of part 'lid'");
+    json d = hingedLid("lid.far", "lid.bottom", 0);
+    d["configurations"][0]["poses"] = {{"latch", 10}};
+    EXPECT_EQ(errorOf(d), "configurations[0].poses.latch: no joint named 'latch'");
+    d = hingedLid("lid.far", "lid.bottom", 0);
+    d["relationships"] = {
+        {{"type", "flush"}, {"name", "f"}, {"faces", {"lid.top", "body.top"}}, {"configuration", "shut"}}};
+    EXPECT_EQ(errorOf(d), "relationships[0].configuration: no configuration named 'shut'");
+    d = hingedLid("lid.far", "lid.bottom", 0);
+    EXPECT_EQ(io::workslikeToJson(io::readWorkslike(io::workslikeToJson(io::readWorkslike(d)))),
+              io::workslikeToJson(io::readWorkslike(d)));
+}
