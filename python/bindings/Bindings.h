@@ -6,5 +6,6 @@
 namespace fabguide::bindings {
 
 void bindMaterial(pybind11::module_& m);
+void bindFunction(pybind11::module_& m);
 
 }  // namespace fabguide::bindings

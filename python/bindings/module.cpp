@@ -14,4 +14,5 @@ PYBIND11_MODULE(fabguide_core, m)
     m.def("dependency_versions", &fabguide::dependencyVersions,
           "List of (library, version) compiled into the core.");
     fabguide::bindings::bindMaterial(m);
+    fabguide::bindings::bindFunction(m);
 }

@@ -61,5 +61,3 @@ void DockingPassStrip(benchmark::State& state)
 BENCHMARK(DockingPassStrip)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

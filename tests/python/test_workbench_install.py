@@ -59,3 +59,22 @@ def test_about_report_names_every_version():
 
 def test_workbench_icon_is_installed():
     assert os.path.isfile(resources.icon("FabGuide.svg"))
+
+
+def test_core_solves_a_works_like_model_from_python(source_dir):
+    import json
+
+    model = json.load(open(os.path.join(source_dir, "examples", "box-with-lid.workslike.json")))
+    solved = fabguide_core.solve(model)
+    assert solved["report"]["solved"] and solved["report"]["violation"] < 1e-6
+    model["locks"].append("lid.top")
+    model["relationships"].append({"type": "flush", "name": "lid top level with body top",
+                                   "faces": ["lid.top", "body.top"]})
+    report = fabguide_core.solve(model)["report"]
+    assert not report["solved"] and "lid top level with body top" in report["conflict"]
+    try:
+        fabguide_core.solve({"parts": [{"name": "a", "cuboids": []}]})
+    except ValueError as error:  # FormatError
+        assert "parts[0].cuboids: a part needs at least one cuboid" in str(error)
+    else:
+        raise AssertionError("malformed model accepted")

@@ -1,0 +1,37 @@
+// Bindings of the works-like solve (thesis ch. 4): models are *.workslike.json dicts.
+#include "Bindings.h"
+#include "IO/Json.h"
+#include "IO/WorkslikeFormat.h"
+#include "Json.h"
+
+namespace py = pybind11;
+
+namespace fabguide::bindings {
+
+namespace {
+
+/// The solved model (same format) with "report": {"solved", "conflict", "violation"}; raises FormatError
+/// (a ValueError) naming a bad field.
+py::object solve(const py::object& model)
+{
+    const function::Model read = io::readWorkslike(toJson(model));
+    function::SolveResult result;
+    {
+        py::gil_scoped_release release;
+        result = function::solve(read);
+    }
+    return fromJson(io::workslikeToJson(result.model, &result));
+}
+
+}  // namespace
+
+void bindFunction(py::module_& m)
+{
+    m.def(
+        "solve", &solve, py::arg("model"),
+        "Solve a works-like model (a *.workslike.json dict) for the least change that satisfies its "
+        "relationships;\n"
+        "returns the solved model with 'report': {'solved', 'conflict': [relationship names], 'violation'}.");
+}
+
+}  // namespace fabguide::bindings
