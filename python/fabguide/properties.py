@@ -3,7 +3,8 @@ properties when they are opened (call `add` again from onDocumentRestored)."""
 
 
 def add(obj, kind, name, group, doc, value=None, mode=0):
-    """Adds property `name` if missing and sets `value` on creation; mode 1 = read-only, 2 = hidden."""
+    """Adds property `name` if missing and sets `value` on creation (for an enumeration, the list of choices);
+    mode 1 = read-only, 2 = hidden."""
     if name in obj.PropertiesList:
         return
     obj.addProperty(kind, name, group, doc)
@@ -40,3 +41,9 @@ class Proxy(Stateless):
 
     def onDocumentRestored(self, obj):
         self.define(obj)
+
+
+def is_a(obj, proxy_class):
+    """Whether `obj` is a FabGuide object made by `proxy_class` (matched by its TYPE, not by identity, so
+    objects restored from a file count too)."""
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == proxy_class.TYPE

@@ -25,10 +25,8 @@ class Board(properties.Proxy):
         add(obj, "App::PropertyLength", "Thickness", "Board",
             "Thickness of a board made from a sketch or face (detected for a solid)", 18)
         add(obj, "App::PropertyInteger", "Quantity", "Board", "How many to cut", 1)
-        if "Rotation" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Rotation", "Board",
-                            "Turns allowed on the master board: any, keeping its length along the grain, or none")
-            obj.Rotation = list(ROTATIONS)
+        add(obj, "App::PropertyEnumeration", "Rotation", "Board",
+            "Turns allowed on the master board: any, keeping its length along the grain, or none", list(ROTATIONS))
         add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
         add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
 
@@ -57,7 +55,7 @@ def create(doc, source, subelement=None, thickness=18, label="Board"):
 
 
 def is_board(obj):
-    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == Board.TYPE
+    return properties.is_a(obj, Board)
 
 
 def element_name(name):

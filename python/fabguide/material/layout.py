@@ -29,11 +29,9 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
         add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
         add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
-        if "Joints" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Joints", "Cutting",
-                            "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm "
-                            "or more under Auto")
-            obj.Joints = list(JOINTS)
+        add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
+            "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
+            "Auto", list(JOINTS))
         add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
         add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
         add(obj, "App::PropertyInteger", "Iterations", "Search",
@@ -80,7 +78,7 @@ def create(doc, boards, master_boards, label="Layout"):
 
 
 def is_layout(obj):
-    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == Layout.TYPE
+    return properties.is_a(obj, Layout)
 
 
 def part_ids(boards):

@@ -15,10 +15,8 @@ class MasterBoard(properties.Proxy):
         add(obj, "App::PropertyLength", "Thickness", "Master board", "Material thickness", 18)
         add(obj, "App::PropertyInteger", "Count", "Master board", "Boards in stock; 0 = as many as needed", 1)
         add(obj, "App::PropertyString", "Material", "Master board", "Material name for the cut list", "plywood")
-        if "Grain" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Grain", "Master board",
-                            "Direction of the wood grain; boards set to Follow grain keep their length along it")
-            obj.Grain = list(GRAIN)
+        add(obj, "App::PropertyEnumeration", "Grain", "Master board",
+            "Direction of the wood grain; boards set to Follow grain keep their length along it", list(GRAIN))
 
     def execute(self, obj):
         for name in ("Width", "Height", "Thickness"):
@@ -37,7 +35,7 @@ def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywoo
 
 
 def is_master_board(obj):
-    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == MasterBoard.TYPE
+    return properties.is_a(obj, MasterBoard)
 
 
 def as_problem_board(obj):
