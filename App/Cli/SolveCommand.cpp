@@ -52,6 +52,8 @@ int run(const SolveArguments& args)
         std::printf("flush      %-30s %s\n", f.name.c_str(), status(f.name));
     for (const function::Geometric& g : model.geometric)
         std::printf("geometric  %-30s %s\n", g.name.c_str(), status(g.name));
+    for (const function::Support& s : model.support)
+        std::printf("support    %-30s %s\n", s.name.c_str(), status(s.name));
     if (!result.solved) {
         std::string names;
         for (const std::string& name : result.conflict)

@@ -67,6 +67,15 @@ struct Geometric {
     int configuration = -1;  ///< where its quantities are measured (-1: as modelled)
 };
 
+/// Support (thesis 4.2.3): each pair (a, b) of the corresponding-faces graph puts the bottom of cuboid b on
+/// the top of cuboid a, overlapping in the supporting plane; parts that only support stand on one ground.
+struct Support {
+    std::string name;
+    std::vector<int> supporting, supported;  ///< parts
+    std::vector<std::pair<int, int>> pairs;  ///< (supporting cuboid, supported cuboid)
+    int configuration = -1;
+};
+
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.
 struct Lock {
     Face face;
@@ -79,8 +88,10 @@ struct Model {
     std::vector<Configuration> configurations;
     std::vector<Flush> flush;
     std::vector<Geometric> geometric;
+    std::vector<Support> support;
     std::vector<Lock> locks;
-    double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis
+    double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
+                             ///< of supporting faces
 };
 
 }  // namespace fabguide::function

@@ -2,6 +2,7 @@
 
 #include "Function/Pose.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -60,6 +61,40 @@ std::vector<LinearConstraint> constraints(const Model& model)
     for (const Geometric& g : model.geometric) {  // thesis 4.3.5
         auto [terms, bound] = difference(model, g.left, g.right, g.configuration);
         rows.push_back({terms, g.relation == Geometric::Relation::Equal ? bound : -kInfinity, bound, g.name});
+    }
+    for (const Support& s : model.support) {  // thesis 4.2.3, eq. 4.5
+        const double overlap = model.minimumSize;
+        auto faceAt = [&](int cuboid, Side side) { return Expression{{{1.0, Face{cuboid, side}}}, 0}; };
+        auto atMost = [&](const Expression& left, const Expression& right, double offset) {
+            Expression shifted = right;
+            shifted.constant += offset;
+            auto [terms, bound] = difference(model, left, shifted, s.configuration);
+            rows.push_back({terms, -kInfinity, bound, s.name});
+        };
+        for (const auto& [a, b] : s.pairs) {
+            for (const auto& [low, high] :
+                 {std::pair{Side::Left, Side::Right}, std::pair{Side::Near, Side::Far}}) {
+                atMost(faceAt(a, low), faceAt(b, high),
+                       -overlap);  // the faces overlap in the supporting plane
+                atMost(faceAt(b, low), faceAt(a, high), -overlap);
+            }
+            auto [terms, bound] =
+                difference(model, faceAt(a, Side::Top), faceAt(b, Side::Bottom), s.configuration);
+            rows.push_back({terms, bound, bound, s.name});  // at the same height
+        }
+        // Parts that only support stand on one ground plane: their lowest cuboids' bottoms are equal.
+        std::vector<int> grounded;
+        for (int p : s.supporting)
+            if (std::find(s.supported.begin(), s.supported.end(), p) == s.supported.end())
+                grounded.push_back(*std::min_element(
+                    model.parts[p].cuboids.begin(), model.parts[p].cuboids.end(), [&](int x, int y) {
+                        return model.cuboids[x].at(Side::Bottom) < model.cuboids[y].at(Side::Bottom);
+                    }));
+        for (size_t k = 1; k < grounded.size(); ++k) {
+            auto [terms, bound] = difference(model, faceAt(grounded[0], Side::Bottom),
+                                             faceAt(grounded[k], Side::Bottom), s.configuration);
+            rows.push_back({terms, bound, bound, s.name});
+        }
     }
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);

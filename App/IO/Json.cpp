@@ -6,17 +6,12 @@
 
 namespace fabguide::io {
 
-namespace {
-
-/// A number as people write it: 0, -3, 0.25.
 std::string show(double x)
 {
     std::ostringstream out;
     out << x;
     return out.str();
 }
-
-}  // namespace
 
 nlohmann::json readJsonFile(const std::string& path)
 {

@@ -14,6 +14,9 @@ struct FormatError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// A number as people write it in messages: 0, -3, 0.25.
+std::string show(double x);
+
 nlohmann::json readJsonFile(const std::string& path);
 void writeJsonFile(const std::string& path, const nlohmann::json& value);
 

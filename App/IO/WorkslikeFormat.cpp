@@ -1,5 +1,6 @@
 #include "IO/WorkslikeFormat.h"
 
+#include "Function/Support.h"
 #include "IO/Json.h"
 
 #include <algorithm>
@@ -159,6 +160,48 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
     model.configurations.push_back(configuration);
 }
 
+std::vector<int> partList(const function::Model& model, const Fields& r, const std::string& key)
+{
+    const nlohmann::json& names = r.array(key);
+    if (names.empty())
+        throw FormatError(r.pathOf(key) + ": name at least one part");
+    std::vector<int> parts;
+    for (size_t k = 0; k < names.size(); ++k) {
+        if (!names[k].is_string())
+            throw FormatError(at(r.pathOf(key), k) + ": must be a part name, got " + names[k].dump());
+        parts.push_back(partNamed(model, names[k].get<std::string>(), at(r.pathOf(key), k)));
+    }
+    return parts;
+}
+
+/// Support (thesis 4.2.3): "pairs" [["leg.top", "top.bottom"], …] as given, or inferred (4.3.3) when absent.
+function::Support readSupport(const function::Model& model, const Fields& r, const std::string& name,
+                              int configuration)
+{
+    function::Support s{
+        name, partList(model, r, "supporting"), partList(model, r, "supported"), {}, configuration};
+    if (!r.has("pairs")) {
+        const double distance = r.number("distance", 100.0, 0.0);
+        s.pairs = function::inferSupportPairs(model, s.supporting, s.supported, configuration, distance);
+        if (s.pairs.empty())
+            throw FormatError(r.pathOf("supported") + ": no supported bottom face within " + show(distance) +
+                              " mm above a supporting top face");
+        return s;
+    }
+    const nlohmann::json& pairs = r.array("pairs");
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        const std::string here = at(r.pathOf("pairs"), k);
+        if (!pairs[k].is_array() || pairs[k].size() != 2)
+            throw FormatError(here + ": must be [\"supporting.top\", \"supported.bottom\"]");
+        const Face top = face(model, pairs[k][0], here + "[0]"),
+                   bottom = face(model, pairs[k][1], here + "[1]");
+        if (top.side != Side::Top || bottom.side != Side::Bottom)
+            throw FormatError(here + ": a supporting top face rests under a supported bottom face");
+        s.pairs.push_back({top.cuboid, bottom.cuboid});
+    }
+    return s;
+}
+
 int configurationNamed(const function::Model& model, const Fields& r)
 {
     if (!r.has("configuration"))
@@ -175,12 +218,12 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     const Fields r(json, path);
     const std::string type = r.text("type"), name = r.text("name");
     const int configuration = configurationNamed(model, r);
-    for (const auto& existing : model.flush)
-        if (existing.name == name)
-            throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
-    for (const auto& existing : model.geometric)
-        if (existing.name == name)
-            throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
+    const auto named = [&](const auto& list) {
+        return std::any_of(list.begin(), list.end(),
+                           [&](const auto& relationship) { return relationship.name == name; });
+    };
+    if (named(model.flush) || named(model.geometric) || named(model.support))
+        throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
     if (type == "flush") {
         const nlohmann::json& faces = r.array("faces");
         if (faces.size() != 2)
@@ -202,10 +245,12 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         g.right.constant = r.number("offset", 0.0);
         g.configuration = configuration;
         model.geometric.push_back(g);
+    } else if (type == "support") {
+        model.support.push_back(readSupport(model, r, name, configuration));
     } else {
         throw FormatError(r.pathOf("type") + ": \"" + type +
                           "\" is not a relationship this FabGuide knows (flush, "
-                          "geometric)");
+                          "geometric, support)");
     }
 }
 
@@ -307,6 +352,22 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
              {"right", expression(g.right)},
              {"offset", g.right.constant}},
             g.configuration));
+    for (const function::Support& s : model.support) {
+        nlohmann::json supporting = nlohmann::json::array(), supported = nlohmann::json::array(),
+                       pairs = nlohmann::json::array();
+        for (int p : s.supporting)
+            supporting.push_back(model.parts[p].name);
+        for (int p : s.supported)
+            supported.push_back(model.parts[p].name);
+        for (const auto& [a, b] : s.pairs)
+            pairs.push_back({quantityName(model, {a, Side::Top}), quantityName(model, {b, Side::Bottom})});
+        relationships.push_back(inConfiguration({{"type", "support"},
+                                                 {"name", s.name},
+                                                 {"supporting", supporting},
+                                                 {"supported", supported},
+                                                 {"pairs", pairs}},
+                                                s.configuration));
+    }
     for (const function::Lock& lock : model.locks)
         locks.push_back(quantityName(model, lock.face));
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();

@@ -106,9 +106,9 @@ TEST(WorkslikeFormat, ErrorsNameTheOffendingField)
     EXPECT_EQ(errorOf(d), "parts[1].cuboids[0].max: must exceed min along every axis");
     d = boxWithLid();
     d["relationships"][0]["type"] = "cover";
-    EXPECT_EQ(
-        errorOf(d),
-        "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric)");
+    EXPECT_EQ(errorOf(d),
+              "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric, "
+              "support)");
     d = boxWithLid();
     d["relationships"][1]["name"] = "lid on body";
     EXPECT_EQ(errorOf(d), "relationships[1].name: 'lid on body' is used twice");
