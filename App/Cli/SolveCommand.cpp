@@ -54,6 +54,8 @@ int run(const SolveArguments& args)
         std::printf("geometric  %-30s %s\n", g.name.c_str(), status(g.name));
     for (const function::Support& s : model.support)
         std::printf("support    %-30s %s\n", s.name.c_str(), status(s.name));
+    for (const function::FitInside& f : model.fitInside)
+        std::printf("fit inside %-30s %s\n", f.name.c_str(), status(f.name));
     if (!result.solved) {
         std::string names;
         for (const std::string& name : result.conflict)

@@ -76,6 +76,21 @@ struct Support {
     int configuration = -1;
 };
 
+/// Fit inside (thesis 4.2.2, eq. 4.3–4.4): in the configuration, every cuboid of the inner parts lies inside
+/// the enclosing part's box, the inner parts do not overlap (each `apart` pair: a's high side at most b's
+/// low side along `axis`), and `just` pairs of faces coincide ("just fits" along an axis).
+struct FitInside {
+    std::string name;
+    std::vector<int> inner;  ///< parts
+    int enclosing = 0;       ///< part
+    struct Apart {
+        int a = 0, b = 0, axis = 0;  ///< cuboids
+    };
+    std::vector<Apart> apart;
+    std::vector<std::pair<Face, Face>> just;  ///< (inner face, enclosing face)
+    int configuration = -1;
+};
+
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.
 struct Lock {
     Face face;
@@ -89,6 +104,7 @@ struct Model {
     std::vector<Flush> flush;
     std::vector<Geometric> geometric;
     std::vector<Support> support;
+    std::vector<FitInside> fitInside;
     std::vector<Lock> locks;
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces

@@ -1,5 +1,6 @@
 #include "Function/Solve.h"
 
+#include "Function/FitInside.h"
 #include "Function/Pose.h"
 
 #include <algorithm>
@@ -61,6 +62,27 @@ std::vector<LinearConstraint> constraints(const Model& model)
     for (const Geometric& g : model.geometric) {  // thesis 4.3.5
         auto [terms, bound] = difference(model, g.left, g.right, g.configuration);
         rows.push_back({terms, g.relation == Geometric::Relation::Equal ? bound : -kInfinity, bound, g.name});
+    }
+    for (const FitInside& f : model.fitInside) {                          // thesis 4.2.2, eq. 4.3–4.4
+        auto rule = [&](const Face& low, const Face& high, bool equal) {  // low <= high (or =)
+            auto [terms, bound] = difference(model, {{{1.0, low}}, 0}, {{{1.0, high}}, 0}, f.configuration);
+            rows.push_back({terms, equal ? bound : -kInfinity, bound, f.name});
+        };
+        for (int part : f.inner)
+            for (int c : model.parts[part].cuboids)
+                for (int k = 0; k < 6; ++k) {  // inside the enclosing part's box
+                    const Side side = static_cast<Side>(k);
+                    const Face wall = extremeFace(model, f.enclosing, side, f.configuration);
+                    if (k % 2)
+                        rule(Face{c, side}, wall, false);
+                    else
+                        rule(wall, Face{c, side}, false);
+                }
+        for (const FitInside::Apart& a : f.apart)  // the inner parts do not overlap
+            rule(Face{a.a, static_cast<Side>(2 * a.axis + 1)}, Face{a.b, static_cast<Side>(2 * a.axis)},
+                 false);
+        for (const auto& [inner, wall] : f.just)  // just fits
+            rule(inner, wall, true);
     }
     for (const Support& s : model.support) {  // thesis 4.2.3, eq. 4.5
         const double overlap = model.minimumSize;

@@ -1,5 +1,6 @@
 #include "IO/WorkslikeFormat.h"
 
+#include "Function/FitInside.h"
 #include "Function/Support.h"
 #include "IO/Json.h"
 
@@ -202,6 +203,56 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
     return s;
 }
 
+/// Fit inside (thesis 4.2.2): "apart" [["drawer 1", "z", "drawer 2"], …] (cuboids in that order along the
+/// axis) and "just" as axes ["x", …] or face pairs [["drawer 1.left", "chest.left"], …]; inferred when absent
+/// (4.3.2).
+function::FitInside readFitInside(const function::Model& model, const Fields& r, const std::string& name,
+                                  int configuration)
+{
+    function::FitInside f{name,
+                          partList(model, r, "inner"),
+                          partNamed(model, r.text("enclosing"), r.pathOf("enclosing")),
+                          {},
+                          {},
+                          configuration};
+    if (std::find(f.inner.begin(), f.inner.end(), f.enclosing) != f.inner.end())
+        throw FormatError(r.pathOf("enclosing") + ": a part cannot fit inside itself");
+    if (!r.has("apart")) {
+        f.apart = function::inferApart(model, f.inner, configuration);
+    } else {
+        const nlohmann::json& apart = r.array("apart");
+        for (size_t k = 0; k < apart.size(); ++k) {
+            const std::string here = at(r.pathOf("apart"), k);
+            if (!apart[k].is_array() || apart[k].size() != 3 || !apart[k][1].is_string())
+                throw FormatError(here + ": must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
+            const auto axis = std::find(std::begin(kAxes), std::end(kAxes), apart[k][1].get<std::string>());
+            if (axis == std::end(kAxes) || !apart[k][0].is_string() || !apart[k][2].is_string())
+                throw FormatError(here + ": must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
+            f.apart.push_back({cuboidNamed(model, apart[k][0].get<std::string>(), here + "[0]"),
+                               cuboidNamed(model, apart[k][2].get<std::string>(), here + "[2]"),
+                               static_cast<int>(axis - std::begin(kAxes))});
+        }
+    }
+    const nlohmann::json& just = r.array("just", true);
+    std::vector<int> axes;
+    for (size_t k = 0; k < just.size(); ++k) {
+        const std::string here = at(r.pathOf("just"), k);
+        if (just[k].is_string()) {
+            const auto axis = std::find(std::begin(kAxes), std::end(kAxes), just[k].get<std::string>());
+            if (axis == std::end(kAxes))
+                throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
+            axes.push_back(static_cast<int>(axis - std::begin(kAxes)));
+        } else if (just[k].is_array() && just[k].size() == 2) {
+            f.just.push_back({face(model, just[k][0], here + "[0]"), face(model, just[k][1], here + "[1]")});
+        } else {
+            throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
+        }
+    }
+    const auto inferred = function::inferJust(model, f.inner, f.enclosing, axes, configuration);
+    f.just.insert(f.just.end(), inferred.begin(), inferred.end());
+    return f;
+}
+
 int configurationNamed(const function::Model& model, const Fields& r)
 {
     if (!r.has("configuration"))
@@ -222,7 +273,7 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         return std::any_of(list.begin(), list.end(),
                            [&](const auto& relationship) { return relationship.name == name; });
     };
-    if (named(model.flush) || named(model.geometric) || named(model.support))
+    if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside))
         throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
     if (type == "flush") {
         const nlohmann::json& faces = r.array("faces");
@@ -245,12 +296,14 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         g.right.constant = r.number("offset", 0.0);
         g.configuration = configuration;
         model.geometric.push_back(g);
+    } else if (type == "fit_inside") {
+        model.fitInside.push_back(readFitInside(model, r, name, configuration));
     } else if (type == "support") {
         model.support.push_back(readSupport(model, r, name, configuration));
     } else {
         throw FormatError(r.pathOf("type") + ": \"" + type +
                           "\" is not a relationship this FabGuide knows (flush, "
-                          "geometric, support)");
+                          "geometric, support, fit_inside)");
     }
 }
 
@@ -367,6 +420,23 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                                                  {"supported", supported},
                                                  {"pairs", pairs}},
                                                 s.configuration));
+    }
+    for (const function::FitInside& f : model.fitInside) {
+        nlohmann::json inner = nlohmann::json::array(), apart = nlohmann::json::array(),
+                       just = nlohmann::json::array();
+        for (int p : f.inner)
+            inner.push_back(model.parts[p].name);
+        for (const function::FitInside::Apart& a : f.apart)
+            apart.push_back({model.cuboids[a.a].name, kAxes[a.axis], model.cuboids[a.b].name});
+        for (const auto& [in, wall] : f.just)
+            just.push_back({quantityName(model, in), quantityName(model, wall)});
+        relationships.push_back(inConfiguration({{"type", "fit_inside"},
+                                                 {"name", f.name},
+                                                 {"inner", inner},
+                                                 {"enclosing", model.parts[f.enclosing].name},
+                                                 {"apart", apart},
+                                                 {"just", just}},
+                                                f.configuration));
     }
     for (const function::Lock& lock : model.locks)
         locks.push_back(quantityName(model, lock.face));

@@ -1,0 +1,83 @@
+#include "Function/FitInside.h"
+
+#include "Function/Pose.h"
+
+#include <limits>
+
+namespace fabguide::function {
+
+namespace {
+
+double at(const Model& model, const Face& face, int configuration)
+{
+    return evaluate(model, posed(model, face, configuration));
+}
+
+bool isHigh(Side side)
+{
+    return static_cast<int>(side) % 2 == 1;
+}
+
+}  // namespace
+
+Face extremeFace(const Model& model, int part, Side side, int configuration)
+{
+    Face best{model.parts[part].cuboids.front(), side};
+    for (int c : model.parts[part].cuboids) {
+        const Face face{c, side};
+        const double value = at(model, face, configuration), current = at(model, best, configuration);
+        if (isHigh(side) ? value > current : value < current)
+            best = face;
+    }
+    return best;
+}
+
+std::vector<FitInside::Apart> inferApart(const Model& model, const std::vector<int>& inner, int configuration)
+{
+    std::vector<FitInside::Apart> apart;
+    for (size_t i = 0; i < inner.size(); ++i)
+        for (size_t j = i + 1; j < inner.size(); ++j)
+            for (int a : model.parts[inner[i]].cuboids)
+                for (int b : model.parts[inner[j]].cuboids) {
+                    FitInside::Apart best;
+                    double widest = -std::numeric_limits<double>::max();
+                    for (int axis = 0; axis < 3; ++axis) {
+                        const Side low = static_cast<Side>(2 * axis), high = static_cast<Side>(2 * axis + 1);
+                        const double aBelow =
+                            at(model, {b, low}, configuration) - at(model, {a, high}, configuration);
+                        const double bBelow =
+                            at(model, {a, low}, configuration) - at(model, {b, high}, configuration);
+                        if (aBelow > widest) {
+                            widest = aBelow;
+                            best = {a, b, axis};
+                        }
+                        if (bBelow > widest) {
+                            widest = bBelow;
+                            best = {b, a, axis};
+                        }
+                    }
+                    apart.push_back(best);
+                }
+    return apart;
+}
+
+std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vector<int>& inner, int enclosing,
+                                             const std::vector<int>& axes, int configuration)
+{
+    std::vector<std::pair<Face, Face>> just;
+    for (int axis : axes)
+        for (Side side : {static_cast<Side>(2 * axis), static_cast<Side>(2 * axis + 1)}) {
+            Face extreme = extremeFace(model, inner.front(), side, configuration);
+            for (int part : inner) {
+                const Face face = extremeFace(model, part, side, configuration);
+                const double value = at(model, face, configuration),
+                             current = at(model, extreme, configuration);
+                if (isHigh(side) ? value > current : value < current)
+                    extreme = face;
+            }
+            just.push_back({extreme, extremeFace(model, enclosing, side, configuration)});
+        }
+    return just;
+}
+
+}  // namespace fabguide::function

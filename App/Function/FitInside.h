@@ -1,0 +1,24 @@
+// Inferring how the inner parts of a fit-inside relationship stay apart and where they just fit
+// (thesis 4.3.2).
+#pragma once
+
+#include "Function/Model.h"
+
+#include <vector>
+
+namespace fabguide::function {
+
+/// The side of a part's bounding box in a configuration, as the face of the cuboid that is extreme there now.
+Face extremeFace(const Model& model, int part, Side side, int configuration);
+
+/// For each pair of cuboids of different inner parts, the axis and order along which they are farthest
+/// apart in the configuration (their least overlap when they overlap): keeping that order keeps them apart.
+std::vector<FitInside::Apart> inferApart(const Model& model, const std::vector<int>& inner,
+                                         int configuration);
+
+/// "Just fits" along each axis in `axes` (0 x, 1 y, 2 z): on both sides, the inner parts' extreme face on
+/// that side against the enclosing part's.
+std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vector<int>& inner, int enclosing,
+                                             const std::vector<int>& axes, int configuration);
+
+}  // namespace fabguide::function
