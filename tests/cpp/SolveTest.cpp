@@ -108,7 +108,7 @@ TEST(WorkslikeFormat, ErrorsNameTheOffendingField)
     d["relationships"][0]["type"] = "cover";
     EXPECT_EQ(errorOf(d),
               "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric, "
-              "support)");
+              "support, fit_inside)");
     d = boxWithLid();
     d["relationships"][1]["name"] = "lid on body";
     EXPECT_EQ(errorOf(d), "relationships[1].name: 'lid on body' is used twice");
