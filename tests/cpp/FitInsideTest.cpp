@@ -3,6 +3,8 @@
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
+#include "WorkslikeTestSupport.h"
+
 #include <gtest/gtest.h>
 
 using namespace fabguide;
@@ -34,16 +36,6 @@ json chest()
 double at(const function::Model& m, int c, Side s)
 {
     return m.cuboids[c].at(s);
-}
-
-std::string errorOf(const json& d)
-{
-    try {
-        io::readWorkslike(d);
-    } catch (const io::FormatError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace
@@ -93,13 +85,15 @@ TEST(FitInside, ErrorsNameTheFieldAndTheFormatRoundTrips)
 {
     json d = chest();
     d["relationships"][0]["enclosing"] = "low drawer";
-    EXPECT_EQ(errorOf(d), "relationships[0].enclosing: a part cannot fit inside itself");
+    EXPECT_EQ(testsupport::workslikeError(d), "relationships[0].enclosing: a part cannot fit inside itself");
     d = chest();
     d["relationships"][0]["just"] = {"w"};
-    EXPECT_EQ(errorOf(d), "relationships[0].just[0]: must be \"x\", \"y\", \"z\" or a pair of faces");
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].just[0]: must be \"x\", \"y\", \"z\" or a pair of faces");
     d = chest();
     d["relationships"][0]["apart"] = json::array({json::array({"low drawer", "q", "high drawer"})});
-    EXPECT_EQ(errorOf(d), "relationships[0].apart[0]: must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].apart[0]: must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
     const json written = io::workslikeToJson(io::readWorkslike(chest()));
     EXPECT_EQ(io::workslikeToJson(io::readWorkslike(written)), written);
     EXPECT_EQ(written["relationships"][0]["apart"][0], json::array({"low drawer", "z", "high drawer"}));

@@ -3,6 +3,8 @@
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
+#include "WorkslikeTestSupport.h"
+
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
@@ -106,25 +108,18 @@ TEST(Pose, RelationshipsHoldInTheirConfigurationAfterTheSolve)
 
 TEST(Pose, JointAndConfigurationErrorsNameTheField)
 {
-    auto errorOf = [](const json& d) {
-        try {
-            io::readWorkslike(d);
-        } catch (const io::FormatError& e) {
-            return std::string(e.what());
-        }
-        return std::string();
-    };
-    EXPECT_EQ(errorOf(hingedLid("lid.top", "lid.bottom", 0)),
+    EXPECT_EQ(testsupport::workslikeError(hingedLid("lid.top", "lid.bottom", 0)),
               "joints[0].edge: the two faces are parallel, they meet at no edge");
-    EXPECT_EQ(errorOf(hingedLid("body.far", "body.top", 0)),
+    EXPECT_EQ(testsupport::workslikeError(hingedLid("body.far", "body.top", 0)),
               "joints[0].edge: both faces must belong to one cuboid of part 'lid'");
     json d = hingedLid("lid.far", "lid.bottom", 0);
     d["configurations"][0]["poses"] = {{"latch", 10}};
-    EXPECT_EQ(errorOf(d), "configurations[0].poses.latch: no joint named 'latch'");
+    EXPECT_EQ(testsupport::workslikeError(d), "configurations[0].poses.latch: no joint named 'latch'");
     d = hingedLid("lid.far", "lid.bottom", 0);
     d["relationships"] = {
         {{"type", "flush"}, {"name", "f"}, {"faces", {"lid.top", "body.top"}}, {"configuration", "shut"}}};
-    EXPECT_EQ(errorOf(d), "relationships[0].configuration: no configuration named 'shut'");
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].configuration: no configuration named 'shut'");
     d = hingedLid("lid.far", "lid.bottom", 0);
     EXPECT_EQ(io::workslikeToJson(io::readWorkslike(io::workslikeToJson(io::readWorkslike(d)))),
               io::workslikeToJson(io::readWorkslike(d)));

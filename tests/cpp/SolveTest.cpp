@@ -2,6 +2,8 @@
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
+#include "WorkslikeTestSupport.h"
+
 #include <gtest/gtest.h>
 
 using namespace fabguide;
@@ -19,16 +21,6 @@ json boxWithLid()
       "relationships": [{"type": "flush", "name": "lid on body", "faces": ["lid.bottom", "body.top"]},
                         {"type": "geometric", "name": "lid 8 thick", "left": "lid.height", "right": [], "offset": 8}]
     })");
-}
-
-std::string errorOf(const json& document)
-{
-    try {
-        io::readWorkslike(document);
-    } catch (const io::FormatError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace
@@ -95,23 +87,23 @@ TEST(WorkslikeFormat, ErrorsNameTheOffendingField)
 {
     json d = boxWithLid();
     d["relationships"][0]["faces"][1] = "bodyy.top";
-    EXPECT_EQ(errorOf(d), "relationships[0].faces[1]: no cuboid named 'bodyy'");
+    EXPECT_EQ(testsupport::workslikeError(d), "relationships[0].faces[1]: no cuboid named 'bodyy'");
     d = boxWithLid();
     d["relationships"][1]["left"] = "lid.thickness";
-    EXPECT_EQ(errorOf(d),
+    EXPECT_EQ(testsupport::workslikeError(d),
               "relationships[1].left: \"thickness\" is not left, right, near, far, bottom, top, width, depth "
               "or height");
     d = boxWithLid();
     d["parts"][1]["cuboids"][0]["max"] = {100, 60, 40};
-    EXPECT_EQ(errorOf(d), "parts[1].cuboids[0].max: must exceed min along every axis");
+    EXPECT_EQ(testsupport::workslikeError(d), "parts[1].cuboids[0].max: must exceed min along every axis");
     d = boxWithLid();
     d["relationships"][0]["type"] = "cover";
-    EXPECT_EQ(errorOf(d),
+    EXPECT_EQ(testsupport::workslikeError(d),
               "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric, "
               "support, fit_inside)");
     d = boxWithLid();
     d["relationships"][1]["name"] = "lid on body";
-    EXPECT_EQ(errorOf(d), "relationships[1].name: 'lid on body' is used twice");
+    EXPECT_EQ(testsupport::workslikeError(d), "relationships[1].name: 'lid on body' is used twice");
 }
 
 TEST(WorkslikeFormat, WritesWhatItReads)

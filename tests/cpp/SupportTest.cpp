@@ -3,6 +3,8 @@
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
+#include "WorkslikeTestSupport.h"
+
 #include <gtest/gtest.h>
 
 using namespace fabguide;
@@ -65,27 +67,20 @@ TEST(Support, PairsCanBeGivenAndAreWrittenBack)
 
 TEST(Support, ErrorsNameTheField)
 {
-    auto errorOf = [](const json& d) {
-        try {
-            io::readWorkslike(d);
-        } catch (const io::FormatError& e) {
-            return std::string(e.what());
-        }
-        return std::string();
-    };
     json d = table();
     d["relationships"][0]["supported"] = {"tabletop"};
-    EXPECT_EQ(errorOf(d), "relationships[0].supported[0]: no part named 'tabletop'");
+    EXPECT_EQ(testsupport::workslikeError(d), "relationships[0].supported[0]: no part named 'tabletop'");
     d = table();
     d["relationships"][0]["distance"] = 1;
     d["parts"][0]["cuboids"][0]["min"][2] = 750;  // the top lifted 50 mm off its legs
     d["parts"][0]["cuboids"][0]["max"][2] = 770;
-    EXPECT_EQ(errorOf(d),
+    EXPECT_EQ(testsupport::workslikeError(d),
               "relationships[0].supported: no supported bottom face within 1 mm above a supporting top face");
     d = table();
     d["relationships"][0]["pairs"] = json::array({json::array({"top.bottom", "leg1.top"})});
-    EXPECT_EQ(errorOf(d),
+    EXPECT_EQ(testsupport::workslikeError(d),
               "relationships[0].pairs[0]: a supporting top face rests under a supported bottom face");
     d["relationships"][0]["pairs"] = {{"leg1.top", "top.bottom"}};  // an object, not a list of pairs
-    EXPECT_EQ(errorOf(d), "relationships[0].pairs: must be an array, got {\"leg1.top\":\"top.bottom\"}");
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].pairs: must be an array, got {\"leg1.top\":\"top.bottom\"}");
 }
