@@ -20,7 +20,6 @@ struct SolveArguments {
 
 void printChanges(const function::Model& before, const function::Model& after)
 {
-    static const char* sides[] = {"left", "right", "near", "far", "bottom", "top"};
     for (const function::Part& part : before.parts) {
         std::string changes;
         for (int c : part.cuboids)
@@ -28,8 +27,9 @@ void printChanges(const function::Model& before, const function::Model& after)
                 const double from = before.cuboids[c].coordinates[k], to = after.cuboids[c].coordinates[k];
                 if (std::abs(to - from) > 1e-6) {
                     char text[160];
-                    std::snprintf(text, sizeof text, "  %s.%s %.6g -> %.6g", before.cuboids[c].name.c_str(),
-                                  sides[k], from, to);
+                    std::snprintf(text, sizeof text, "  %s %.6g -> %.6g",
+                                  function::faceName(before, {c, static_cast<function::Side>(k)}).c_str(),
+                                  from, to);
                     changes += text;
                 }
             }

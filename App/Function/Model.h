@@ -11,6 +11,13 @@ namespace fabguide::function {
 /// The six coordinates of a cuboid (thesis 4.1.1): x left→right, y near→far, z bottom→top (FreeCAD's z up).
 enum class Side { Left, Right, Near, Far, Bottom, Top };
 
+/// "left", "right", "near", "far", "bottom" or "top".
+inline const char* sideName(Side side)
+{
+    static const char* names[] = {"left", "right", "near", "far", "bottom", "top"};
+    return names[static_cast<int>(side)];
+}
+
 struct Cuboid {
     std::string name;                     ///< unique in the model
     std::array<double, 6> coordinates{};  ///< indexed by Side
@@ -109,5 +116,8 @@ struct Model {
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces
 };
+
+/// "lid.top": how a face is named in files and messages.
+std::string faceName(const Model& model, const Face& face);
 
 }  // namespace fabguide::function

@@ -12,16 +12,10 @@ namespace fabguide::function {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-const char* kSideNames[] = {"left", "right", "near", "far", "bottom", "top"};
 
 int axis(Side side)
 {
     return static_cast<int>(side) / 2;
-}
-
-std::string faceName(const Model& model, const Face& face)
-{
-    return model.cuboids[face.cuboid].name + "." + kSideNames[static_cast<int>(face.side)];
 }
 
 /// left − right measured in a configuration, as constraint terms and the constant that moves to the bound.
@@ -44,6 +38,11 @@ std::pair<std::vector<std::pair<int, double>>, double> difference(const Model& m
 }
 
 }  // namespace
+
+std::string faceName(const Model& model, const Face& face)
+{
+    return model.cuboids[face.cuboid].name + "." + sideName(face.side);
+}
 
 std::vector<LinearConstraint> constraints(const Model& model)
 {

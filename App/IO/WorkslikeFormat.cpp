@@ -14,8 +14,6 @@ namespace {
 using function::Face;
 using function::Side;
 
-const std::map<std::string, Side> kSides{{"left", Side::Left}, {"right", Side::Right},   {"near", Side::Near},
-                                         {"far", Side::Far},   {"bottom", Side::Bottom}, {"top", Side::Top}};
 const std::map<std::string, int> kSizes{{"width", 0}, {"depth", 1}, {"height", 2}};  // along x, y, z
 
 std::string at(const std::string& array, size_t i)
@@ -44,8 +42,9 @@ function::Expression quantity(const function::Model& model, const nlohmann::json
         throw FormatError(path + ": \"" + text + "\" must be cuboid.side or cuboid.size");
     const int c = cuboidNamed(model, text.substr(0, dot), path);
     const std::string what = text.substr(dot + 1);
-    if (auto side = kSides.find(what); side != kSides.end())
-        return {{{factor, Face{c, side->second}}}, 0};
+    for (int k = 0; k < 6; ++k)
+        if (what == function::sideName(static_cast<Side>(k)))
+            return {{{factor, Face{c, static_cast<Side>(k)}}}, 0};
     if (auto size = kSizes.find(what); size != kSizes.end())
         return {{{factor, Face{c, static_cast<Side>(2 * size->second + 1)}},
                  {-factor, Face{c, static_cast<Side>(2 * size->second)}}},
@@ -358,20 +357,12 @@ function::Model readWorkslike(const nlohmann::json& document)
     return model;
 }
 
-std::string quantityName(const function::Model& model, const Face& face)
-{
-    for (const auto& [name, side] : kSides)
-        if (side == face.side)
-            return model.cuboids[face.cuboid].name + "." + name;
-    return model.cuboids[face.cuboid].name;
-}
-
 nlohmann::json workslikeToJson(const function::Model& model, const function::SolveResult* result)
 {
     auto expression = [&](const function::Expression& e) {
         nlohmann::json items = nlohmann::json::array();
         for (const auto& [times, f] : e.terms)
-            items.push_back({{"quantity", quantityName(model, f)}, {"times", times}});
+            items.push_back({{"quantity", function::faceName(model, f)}, {"times", times}});
         return items;
     };
     nlohmann::json parts = nlohmann::json::array(), relationships = nlohmann::json::array(),
@@ -394,7 +385,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         relationships.push_back(
             inConfiguration({{"type", "flush"},
                              {"name", f.name},
-                             {"faces", {quantityName(model, f.a), quantityName(model, f.b)}}},
+                             {"faces", {function::faceName(model, f.a), function::faceName(model, f.b)}}},
                             f.configuration));
     for (const function::Geometric& g : model.geometric)
         relationships.push_back(inConfiguration(
@@ -413,7 +404,8 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         for (int p : s.supported)
             supported.push_back(model.parts[p].name);
         for (const auto& [a, b] : s.pairs)
-            pairs.push_back({quantityName(model, {a, Side::Top}), quantityName(model, {b, Side::Bottom})});
+            pairs.push_back(
+                {function::faceName(model, {a, Side::Top}), function::faceName(model, {b, Side::Bottom})});
         relationships.push_back(inConfiguration({{"type", "support"},
                                                  {"name", s.name},
                                                  {"supporting", supporting},
@@ -429,7 +421,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         for (const function::FitInside::Apart& a : f.apart)
             apart.push_back({model.cuboids[a.a].name, kAxes[a.axis], model.cuboids[a.b].name});
         for (const auto& [in, wall] : f.just)
-            just.push_back({quantityName(model, in), quantityName(model, wall)});
+            just.push_back({function::faceName(model, in), function::faceName(model, wall)});
         relationships.push_back(inConfiguration({{"type", "fit_inside"},
                                                  {"name", f.name},
                                                  {"inner", inner},
@@ -439,13 +431,13 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                                                 f.configuration));
     }
     for (const function::Lock& lock : model.locks)
-        locks.push_back(quantityName(model, lock.face));
+        locks.push_back(function::faceName(model, lock.face));
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();
     for (const function::Joint& j : model.joints) {
         nlohmann::json joint = {{"name", j.name}, {"part", model.parts[j.part].name}};
         if (j.type == function::Joint::Type::Hinge) {
             joint["type"] = "hinge";
-            joint["edge"] = {quantityName(model, j.edgeA), quantityName(model, j.edgeB)};
+            joint["edge"] = {function::faceName(model, j.edgeA), function::faceName(model, j.edgeB)};
         } else {
             joint["type"] = "slide";
             joint["axis"] = kAxes[j.axis];

@@ -16,7 +16,4 @@ function::Model readWorkslike(const nlohmann::json& document);
 /// "violation"}.
 nlohmann::json workslikeToJson(const function::Model& model, const function::SolveResult* result = nullptr);
 
-/// "lid.top", "lid.width" … : the names the format uses for cuboid coordinates and sizes.
-std::string quantityName(const function::Model& model, const function::Face& face);
-
 }  // namespace fabguide::io
