@@ -22,23 +22,6 @@ struct PackArguments {
     material::OrderingSearchOptions search;
 };
 
-void writeCutSheets(const PackArguments& args, const material::Layout& layout,
-                    const material::PackProblem& problem)
-{
-    if (args.svgFolder.empty() && args.dxfFolder.empty() && args.csvFile.empty())
-        return;
-    const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
-    for (const auto& [folder, extension] :
-         {std::pair{args.svgFolder, "svg"}, std::pair{args.dxfFolder, "dxf"}})
-        if (!folder.empty())
-            for (const std::string& path : io::writeSheets(sheets, folder, extension))
-                std::printf("cut sheet     %s\n", path.c_str());
-    if (!args.csvFile.empty()) {
-        io::writeCutList(material::cutList(layout, problem), args.csvFile);
-        std::printf("cut list      %s\n", args.csvFile.c_str());
-    }
-}
-
 void run(const PackArguments& args)
 {
     const nlohmann::json document = io::readJsonFile(args.input);
@@ -58,7 +41,9 @@ void run(const PackArguments& args)
     std::printf("utilisation   %.4f  (part area / boards used)\n", layout.sheetUtilisation());
     std::printf("waste area    %.6g mm^2\n", layout.wasteArea());
     std::printf("layout        %s\n", args.output.c_str());
-    writeCutSheets(args, layout, problem);
+    for (const std::string& path :
+         io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder, args.csvFile))
+        std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
 }
 
 }  // namespace

@@ -267,4 +267,23 @@ std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& shee
     return paths;
 }
 
+std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
+                                        const std::string& svgFolder, const std::string& dxfFolder,
+                                        const std::string& csvFile)
+{
+    std::vector<std::string> written;
+    if (!svgFolder.empty() || !dxfFolder.empty()) {
+        const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
+        for (const auto& [folder, extension] : {std::pair{svgFolder, "svg"}, std::pair{dxfFolder, "dxf"}})
+            if (!folder.empty())
+                for (const std::string& path : writeSheets(sheets, folder, extension))
+                    written.push_back(path);
+    }
+    if (!csvFile.empty()) {
+        writeCutList(material::cutList(layout, problem), csvFile);
+        written.push_back(csvFile);
+    }
+    return written;
+}
+
 }  // namespace fabguide::io

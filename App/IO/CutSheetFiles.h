@@ -23,6 +23,12 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path);
 /// CSV cut list with header part,quantity,width,height,thickness,material,board (board numbered from 1).
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path);
 
+/// The cut sheets of a layout: SVG files into `svgFolder`, DXF files into `dxfFolder`, the cut list into
+/// `csvFile`, each skipped when empty; returns the paths written.
+std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
+                                        const std::string& svgFolder, const std::string& dxfFolder,
+                                        const std::string& csvFile);
+
 /// Writes sheet-1.svg / sheet-1.dxf ... into `folder` (created if missing); returns the paths written.
 std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
                                      const std::string& extension);

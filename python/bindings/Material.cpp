@@ -30,29 +30,26 @@ py::object pack(const py::object& problemDict, long iterations, double timeLimit
     return fromJson(io::layoutToJson(layout, problem, io::PartNames::Ids));
 }
 
+/// A problem dict and a layout dict of it, read.
+std::pair<material::PackProblem, material::Layout> readLayout(const py::object& problemDict,
+                                                              const py::object& layoutDict)
+{
+    material::PackProblem problem = io::readPackProblem(toJson(problemDict));
+    material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    return {std::move(problem), std::move(layout)};
+}
+
 std::vector<std::string> writeCutSheets(const py::object& problemDict, const py::object& layoutDict,
                                         const std::string& svgFolder, const std::string& dxfFolder,
                                         const std::string& csvFile)
 {
-    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
-    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
-    const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
-    std::vector<std::string> written;
-    for (const auto& [folder, extension] : {std::pair{svgFolder, "svg"}, std::pair{dxfFolder, "dxf"}})
-        if (!folder.empty())
-            for (const std::string& path : io::writeSheets(sheets, folder, extension))
-                written.push_back(path);
-    if (!csvFile.empty()) {
-        io::writeCutList(material::cutList(layout, problem), csvFile);
-        written.push_back(csvFile);
-    }
-    return written;
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
+    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile);
 }
 
 py::list placedOutlines(const py::object& problemDict, const py::object& layoutDict)
 {
-    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
-    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
     auto points = [](const geometry::Polygon& polygon) {
         py::list list;
         for (const geometry::Point2& p : polygon)
@@ -91,8 +88,7 @@ py::object joinBoards(const py::object& boards, const std::string& style, int fi
 std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::object& layoutDict,
                                       double stroke)
 {
-    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
-    const material::Layout layout = io::readLayout(toJson(layoutDict), problem, io::PartNames::Ids);
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
     std::vector<std::string> texts;
     for (const material::CutSheet& sheet : material::cutSheets(layout, problem))
         texts.push_back(io::svg(sheet, stroke));
