@@ -74,7 +74,7 @@ def test_a_face_or_a_sketch_with_a_hole_becomes_a_board(doc):
     doc.recompute()
     assert from_face.Shape.Volume == pytest.approx(300 * 200 * 6)
     assert ring.Shape.Volume == pytest.approx(math.pi * (100 ** 2 - 40 ** 2) * 6, rel=1e-6)
-    part = board.as_problem_part(ring, "ring")
+    part = board.as_board3(ring, "ring")
     assert len(part["holes"]) == 1 and len(part["outline"]) > 100  # the circle is sampled finely
 
 

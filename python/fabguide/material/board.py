@@ -147,7 +147,8 @@ def frame_of(slab):
 
 
 def outline_of(slab):
-    """The slab's outline in its frame (frame_of): {'outline': [[x, y]...], 'holes': [...]} in mm."""
+    """The slab's outline in its frame (frame_of), with the frame: {'outline': [[x, y]...], 'holes': [...],
+    'origin', 'u', 'v'} in mm."""
     face, origin, u, v = frame_of(slab)
 
     def polygon(wire):
@@ -157,19 +158,16 @@ def outline_of(slab):
         return [[(p - origin).dot(u), (p - origin).dot(v)] for p in points]
 
     holes = [polygon(w) for w in face.Wires if not w.isSame(face.OuterWire)]
-    return {"outline": polygon(face.OuterWire), "holes": holes}
+    return {"outline": polygon(face.OuterWire), "holes": holes, "origin": list(origin), "u": list(u), "v": list(v)}
 
 
 def as_board3(obj, part_id):
     """The board in 3-D for the connectors: outline in its frame, the frame, its thickness."""
-    _, origin, u, v = frame_of(obj.Shape)
-    return dict(outline_of(obj.Shape), id=part_id, origin=list(origin), u=list(u), v=list(v),
-                thickness=obj.Thickness.Value)
+    return dict(outline_of(obj.Shape), id=part_id, thickness=obj.Thickness.Value)
 
 
-def as_problem_part(obj, part_id):
-    """The board as a *.pack.json part; Follow grain leaves the turns to each master board's grain."""
-    outline = outline_of(obj.Shape)
-    return {"id": part_id, "outline": outline["outline"], "holes": outline["holes"], "quantity": obj.Quantity,
-            "orientations": [0] if obj.Rotation == "Fixed" else [0, 90, 180, 270],
+def packing_of(obj):
+    """How the board is packed, as *.pack.json part fields (its shape comes from the connectors' pieces);
+    Follow grain leaves the turns to each master board's grain."""
+    return {"quantity": obj.Quantity, "orientations": [0] if obj.Rotation == "Fixed" else [0, 90, 180, 270],
             "follow_grain": obj.Rotation == "Follow grain"}

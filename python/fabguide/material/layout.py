@@ -49,7 +49,7 @@ class Layout(properties.Proxy):
         problem, boards = make_problem(obj)
         try:
             joined = join(obj, boards)
-            problem["parts"] = pieces(obj, joined, problem["parts"], boards)
+            problem["parts"] = pieces(obj, joined, boards)
             result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             raise LayoutError("Layout '{}': {}".format(obj.Label, name_boards(str(error), boards)))
@@ -88,7 +88,8 @@ def part_ids(boards):
 
 
 def make_problem(obj):
-    """(the *.pack.json problem of the layout, its boards in part order), or LayoutError naming the fault."""
+    """(the *.pack.json problem of the layout without its parts, which come from the joined pieces, and its
+    boards), or LayoutError naming the fault."""
     boards = [b for b in obj.Boards if board.is_board(b)]
     masters = [m for m in obj.MasterBoards if master_board.is_master_board(m)]
     if not boards:
@@ -107,7 +108,6 @@ def make_problem(obj):
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value},
         "boards": [master_board.as_problem_board(m) for m in masters],
-        "parts": [board.as_problem_part(b, part_id) for b, part_id in zip(boards, part_ids(boards))],
     }
     return problem, boards
 
@@ -118,18 +118,17 @@ def join(obj, boards):
     return fabguide_core.join_boards(boards3, style=JOINTS[obj.Joints])
 
 
-def pieces(obj, joined, parts, boards):
+def pieces(obj, joined, boards):
     """The parts to pack: one per piece of the joined design, each with the quantity, turns and grain of its
     first board; coplanar boards in contact are one piece (thesis 5.3.4) and must be made once each."""
-    by_id = {part["id"]: (part, b) for part, b in zip(parts, boards)}
+    by_id = dict(zip(part_ids(boards), boards))
     result = []
     for piece in joined["parts"]:
         members = [by_id[i] for i in piece.pop("boards")]
-        if len(members) > 1 and any(b.Quantity != 1 for _, b in members):
+        if len(members) > 1 and any(b.Quantity != 1 for b in members):
             raise LayoutError("Layout '{}': {} lie in one plane and touch, so they are cut as one piece; set their "
-                              "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for _, b in members)))
-        first, _ = members[0]
-        result.append(dict(first, **piece))  # the first board's quantity, turns and grain; the piece's shape
+                              "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for b in members)))
+        result.append(dict(piece, **board.packing_of(members[0])))  # the first board's quantity, turns, grain
     return result
 
 
