@@ -286,3 +286,9 @@ def test_coplanar_boards_in_contact_are_cut_as_one_piece(doc):
     boards[1].Quantity = 2
     with pytest.raises(layout.LayoutError, match="'Bar board', 'Stem board' lie in one plane and touch"):
         lay.Proxy.execute(lay)
+
+
+def test_core_errors_about_a_part_name_the_piece_it_is(doc):
+    assert layout.name_parts("parts[1].outline: encloses no area",
+                             [{"id": "Bar board + Stem board"}, {"id": "Leg board"}]) == \
+        "board 'Leg board'.outline: encloses no area"

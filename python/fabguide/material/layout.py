@@ -52,7 +52,7 @@ class Layout(properties.Proxy):
             problem["parts"] = pieces(obj, joined, boards)
             result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
-            raise LayoutError("Layout '{}': {}".format(obj.Label, name_boards(str(error), boards)))
+            raise LayoutError("Layout '{}': {}".format(obj.Label, name_parts(str(error), problem.get("parts", []))))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
         obj.Usage = result["usage"]
@@ -138,9 +138,9 @@ def connector_text(c):
     return "{} into {}: {} {}".format(c["a"], c["b"], c["count"], what)
 
 
-def name_boards(message, boards):
-    """The core names parts as parts[i]: say which board that is."""
-    return re.sub(r"parts\[(\d+)\]", lambda m: "board '{}'".format(boards[int(m.group(1))].Label), message)
+def name_parts(message, parts):
+    """The core names parts as parts[i]: say which board (or coplanar piece of boards) that is."""
+    return re.sub(r"parts\[(\d+)\]", lambda m: "board '{}'".format(parts[int(m.group(1))]["id"]), message)
 
 
 def beside(boards):
