@@ -41,22 +41,34 @@ struct Expression {
     double constant = 0;
 };
 
-/// A joint that moves one part (thesis 4.1.2). A hinge turns the part about the edge where two faces of one
-/// of its cuboids meet (so the axis moves with the solved coordinates), by an angle in degrees, right-handed
-/// about the +x, +y or +z direction of the edge. A slide moves it along an axis by an offset in mm.
+/// A joint that moves one part relative to its base (thesis 4.1.2). A hinge turns the part about the edge
+/// where two faces of one of its cuboids meet (so the axis moves with the solved coordinates), by an angle in
+/// degrees, right-handed about the +x, +y or +z direction of the edge. A slide moves it along an axis by an
+/// offset in mm. A sliding hinge does both: the hinge's edge slides along the axis. A part is moved by at
+/// most one joint; when its base moves, it is carried along (a chain of joints).
 struct Joint {
     std::string name;
-    enum class Type { Hinge, Slide } type = Type::Hinge;
+    enum class Type { Hinge, Slide, SlidingHinge } type = Type::Hinge;
     int part = 0;
-    Face edgeA, edgeB;  ///< hinge: two faces of one cuboid of the part, on different axes
-    int axis = 0;       ///< slide: 0 x, 1 y, 2 z
+    int base = -1;      ///< the part it hangs on (-1: the ground)
+    Face edgeA, edgeB;  ///< hinges: two faces of one cuboid of the part, on different axes
+    int axis = 0;       ///< slides: 0 x, 1 y, 2 z
+    bool turns() const { return type != Type::Slide; }
+    bool slides() const { return type != Type::Hinge; }
+};
+
+/// How a configuration poses one joint: the angle (degrees) of a hinge, the offset (mm) of a slide, both for
+/// a sliding hinge.
+struct JointPose {
+    int joint = 0;
+    double angle = 0, offset = 0;
 };
 
 /// A configuration (thesis 4.1.2): the joints' poses in which a relationship must hold. Joints not
 /// mentioned stay as modelled (the base configuration).
 struct Configuration {
     std::string name;
-    std::vector<std::pair<int, double>> poses;  ///< (joint, angle in degrees or offset in mm)
+    std::vector<JointPose> poses;
 };
 
 /// Flush (thesis 4.2.4): two faces lie in one plane, in a configuration (-1: as modelled).

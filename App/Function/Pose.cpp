@@ -8,22 +8,57 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Side low(int axis)
-{
-    return static_cast<Side>(2 * axis);
-}
-Side high(int axis)
-{
-    return static_cast<Side>(2 * axis + 1);
-}
+/// The six sides of a moved cuboid's bounding box, indexed by Side.
+using Box = std::array<Expression, 6>;
+
 int axisOf(Side side)
 {
     return static_cast<int>(side) / 2;
 }
-bool isHigh(Side side)
+
+Expression sum(std::initializer_list<std::pair<double, const Expression*>> parts)
 {
-    return static_cast<int>(side) % 2 == 1;
+    Expression total;
+    for (const auto& [times, e] : parts) {
+        for (const auto& [c, face] : e->terms)
+            total.terms.push_back({times * c, face});
+        total.constant += times * e->constant;
+    }
+    return total;
 }
+
+/// Turning about the hinge's axis a, the plane's axes (u, w) follow a cyclically: x → (y, z), y → (z, x),
+/// z → (x, y). A point (u, w) goes to (pu + (u−pu)c − (w−pw)s, pw + (u−pu)s + (w−pw)c) about the pivot
+/// (pu, pw), the edge as modelled. A low side is the least over the box's corners, a high side the
+/// greatest: each corner coordinate is picked by the sign of its coefficient.
+Box hinged(const Joint& joint, double degrees, const Box& box)
+{
+    const int a = 3 - axisOf(joint.edgeA.side) - axisOf(joint.edgeB.side);
+    const int u = (a + 1) % 3, w = (a + 2) % 3;
+    const Face& fu = axisOf(joint.edgeA.side) == u ? joint.edgeA : joint.edgeB;
+    const Face& fw = axisOf(joint.edgeA.side) == w ? joint.edgeA : joint.edgeB;
+    const Expression pu{{{1.0, fu}}, 0}, pw{{{1.0, fw}}, 0};
+    const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+    Box turned = box;
+    for (bool high : {false, true}) {
+        auto corner = [&](int axis, double coefficient) {
+            return &box[2 * axis + ((coefficient >= 0) == high ? 1 : 0)];
+        };
+        turned[2 * u + high] = sum({{1 - c, &pu}, {s, &pw}, {c, corner(u, c)}, {-s, corner(w, -s)}});
+        turned[2 * w + high] = sum({{1 - c, &pw}, {-s, &pu}, {s, corner(u, s)}, {c, corner(w, c)}});
+    }
+    return turned;
+}
+
+const Joint* jointMoving(const Model& model, int part)
+{
+    for (const Joint& joint : model.joints)
+        if (joint.part == part)
+            return &joint;
+    return nullptr;
+}
+
+}  // namespace
 
 int partOf(const Model& model, int cuboid)
 {
@@ -34,47 +69,29 @@ int partOf(const Model& model, int cuboid)
     return -1;
 }
 
-/// Turning about an axis a, the plane's axes (u, w) follow a cyclically: x → (y, z), y → (z, x), z → (x, y).
-/// A point (u, w) goes to (pu + (u−pu)c − (w−pw)s, pw + (u−pu)s + (w−pw)c) about the pivot (pu, pw).
-Expression hinged(const Joint& joint, double degrees, const Face& face)
-{
-    const int a = 3 - axisOf(joint.edgeA.side) - axisOf(joint.edgeB.side);
-    const int u = (a + 1) % 3, w = (a + 2) % 3;
-    if (axisOf(face.side) == a)
-        return {{{1.0, face}}, 0};
-    const Face pu = axisOf(joint.edgeA.side) == u ? joint.edgeA : joint.edgeB;
-    const Face pw = axisOf(joint.edgeA.side) == w ? joint.edgeA : joint.edgeB;
-    const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
-    const int c0 = face.cuboid;
-    // The side wanted is a min (low side) or a max over the four corners: pick each corner coordinate
-    // by the sign of its coefficient.
-    const bool wantMax = isHigh(face.side);
-    auto corner = [&](int axis, double coefficient) {
-        const bool takeHigh = (coefficient >= 0) == wantMax;
-        return Face{c0, takeHigh ? high(axis) : low(axis)};
-    };
-    if (axisOf(face.side) == u)  // u' = pu(1−c) + pw·s + u·c − w·s
-        return {{{1 - c, pu}, {s, pw}, {c, corner(u, c)}, {-s, corner(w, -s)}}, 0};
-    // w' = pw(1−c) − pu·s + u·s + w·c
-    return {{{1 - c, pw}, {-s, pu}, {s, corner(u, s)}, {c, corner(w, c)}}, 0};
-}
-
-}  // namespace
-
 Expression posed(const Model& model, const Face& face, int configuration)
 {
+    Box box;
+    for (int k = 0; k < 6; ++k)
+        box[k] = {{{1.0, Face{face.cuboid, static_cast<Side>(k)}}}, 0};
     if (configuration < 0)
-        return {{{1.0, face}}, 0};
-    const int part = partOf(model, face.cuboid);
-    for (const auto& [j, pose] : model.configurations[configuration].poses) {
-        const Joint& joint = model.joints[j];
-        if (joint.part != part)
-            continue;
-        if (joint.type == Joint::Type::Slide)
-            return {{{1.0, face}}, axisOf(face.side) == joint.axis ? pose : 0.0};
-        return hinged(joint, pose, face);
+        return box[static_cast<int>(face.side)];
+    // The part's own joint first, then its base's, out to the ground (thesis 4.1.2, J(Θ)).
+    for (const Joint* joint = jointMoving(model, partOf(model, face.cuboid)); joint;
+         joint = joint->base < 0 ? nullptr : jointMoving(model, joint->base)) {
+        const int j = static_cast<int>(joint - model.joints.data());
+        for (const JointPose& pose : model.configurations[configuration].poses) {
+            if (pose.joint != j)
+                continue;
+            if (joint->turns())
+                box = hinged(*joint, pose.angle, box);
+            if (joint->slides()) {
+                box[2 * joint->axis].constant += pose.offset;
+                box[2 * joint->axis + 1].constant += pose.offset;
+            }
+        }
     }
-    return {{{1.0, face}}, 0};
+    return box[static_cast<int>(face.side)];
 }
 
 double evaluate(const Model& model, const Expression& expression)

@@ -7,8 +7,12 @@
 namespace fabguide::function {
 
 /// The side `face.side` of the bounding box of cuboid `face.cuboid` in configuration `configuration`
-/// (-1: as modelled), as Σ coefficient × coordinate + constant. A part moves by the joints that name it.
+/// (-1: as modelled), as Σ coefficient × coordinate + constant. A part moves by its joint and its base's.
+/// After a turn by other than a multiple of 90°, a further turn bounds the first turn's box: conservative.
 Expression posed(const Model& model, const Face& face, int configuration);
+
+/// The part a cuboid belongs to.
+int partOf(const Model& model, int cuboid);
 
 /// The value of an expression for the model's current coordinates.
 double evaluate(const Model& model, const Expression& expression);

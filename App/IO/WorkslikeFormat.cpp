@@ -104,9 +104,26 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
         if (other.name == joint.name)
             throw FormatError(j.pathOf("name") + ": '" + joint.name + "' is used twice");
     joint.part = partNamed(model, j.text("part"), j.pathOf("part"));
+    for (const function::Joint& other : model.joints)
+        if (other.part == joint.part)
+            throw FormatError(j.pathOf("part") + ": '" + model.parts[joint.part].name +
+                              "' is already moved by joint '" + other.name + "'");
+    if (j.has("base")) {
+        joint.base = partNamed(model, j.text("base"), j.pathOf("base"));
+        if (joint.base == joint.part)
+            throw FormatError(j.pathOf("base") + ": a part cannot hang on itself");
+    }
     const std::string type = j.text("type");
-    if (type == "hinge") {
-        joint.type = function::Joint::Type::Hinge;
+    const std::map<std::string, function::Joint::Type> types{
+        {"hinge", function::Joint::Type::Hinge},
+        {"slide", function::Joint::Type::Slide},
+        {"sliding_hinge", function::Joint::Type::SlidingHinge}};
+    const auto known = types.find(type);
+    if (known == types.end())
+        throw FormatError(j.pathOf("type") + ": \"" + type +
+                          "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge)");
+    joint.type = known->second;
+    if (joint.turns()) {
         const nlohmann::json& edge = j.array("edge");
         if (edge.size() != 2)
             throw FormatError(j.pathOf("edge") + ": must name the two faces that meet at the hinge's edge");
@@ -119,16 +136,13 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
                               model.parts[joint.part].name + "'");
         if (static_cast<int>(joint.edgeA.side) / 2 == static_cast<int>(joint.edgeB.side) / 2)
             throw FormatError(j.pathOf("edge") + ": the two faces are parallel, they meet at no edge");
-    } else if (type == "slide") {
-        joint.type = function::Joint::Type::Slide;
+    }
+    if (joint.slides()) {
         const std::string axis = j.text("axis");
         const auto found = std::find(std::begin(kAxes), std::end(kAxes), axis);
         if (found == std::end(kAxes))
             throw FormatError(j.pathOf("axis") + ": must be \"x\", \"y\" or \"z\", got \"" + axis + "\"");
         joint.axis = static_cast<int>(found - std::begin(kAxes));
-    } else {
-        throw FormatError(j.pathOf("type") + ": \"" + type +
-                          "\" is not a joint this FabGuide knows (hinge, slide)");
     }
     model.joints.push_back(joint);
 }
@@ -142,20 +156,23 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
     if (!json.contains("poses") || !json["poses"].is_object())
         throw FormatError(c.pathOf("poses") + ": must map joint names to angles (degrees) or offsets (mm)");
-    std::vector<int> moved;
     for (const auto& [name, value] : json["poses"].items()) {
         const std::string here = c.pathOf("poses") + "." + name;
         const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
                                         [&](const function::Joint& j) { return j.name == name; });
         if (joint == model.joints.end())
             throw FormatError(here + ": no joint named '" + name + "'");
-        if (!value.is_number())
+        function::JointPose pose{static_cast<int>(joint - model.joints.begin())};
+        if (joint->type == function::Joint::Type::SlidingHinge) {
+            const Fields both(value, here);
+            pose.angle = both.number("angle");
+            pose.offset = both.number("offset");
+        } else if (!value.is_number()) {
             throw FormatError(here + ": must be a number, got " + value.dump());
-        if (std::find(moved.begin(), moved.end(), joint->part) != moved.end())
-            throw FormatError(here + ": part '" + model.parts[joint->part].name +
-                              "' is already moved by another joint");
-        moved.push_back(joint->part);
-        configuration.poses.push_back({static_cast<int>(joint - model.joints.begin()), value.get<double>()});
+        } else {
+            (joint->turns() ? pose.angle : pose.offset) = value.get<double>();
+        }
+        configuration.poses.push_back(pose);
     }
     model.configurations.push_back(configuration);
 }
@@ -345,6 +362,17 @@ function::Model readWorkslike(const nlohmann::json& document)
     const nlohmann::json& joints = root.array("joints", true);
     for (size_t j = 0; j < joints.size(); ++j)
         readJoint(model, joints[j], at("joints", j));
+    for (size_t j = 0; j < model.joints.size(); ++j) {  // every chain of joints ends on the ground
+        int base = model.joints[j].base;
+        for (size_t step = 0; base >= 0; ++step) {
+            if (step == model.joints.size())
+                throw FormatError(at("joints", j) + ".base: the joints' bases go round in a circle");
+            const auto carrier = std::find_if(model.joints.begin(), model.joints.end(),
+                                              [&](const function::Joint& k) { return k.part == base; });
+            base = carrier == model.joints.end() ? -1 : carrier->base;
+        }
+    }
+
     const nlohmann::json& configurations = root.array("configurations", true);
     for (size_t c = 0; c < configurations.size(); ++c)
         readConfiguration(model, configurations[c], at("configurations", c));
@@ -435,19 +463,25 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();
     for (const function::Joint& j : model.joints) {
         nlohmann::json joint = {{"name", j.name}, {"part", model.parts[j.part].name}};
-        if (j.type == function::Joint::Type::Hinge) {
-            joint["type"] = "hinge";
+        joint["type"] = j.type == function::Joint::Type::Hinge   ? "hinge"
+                        : j.type == function::Joint::Type::Slide ? "slide"
+                                                                 : "sliding_hinge";
+        if (j.base >= 0)
+            joint["base"] = model.parts[j.base].name;
+        if (j.turns())
             joint["edge"] = {function::faceName(model, j.edgeA), function::faceName(model, j.edgeB)};
-        } else {
-            joint["type"] = "slide";
+        if (j.slides())
             joint["axis"] = kAxes[j.axis];
-        }
         joints.push_back(joint);
     }
     for (const function::Configuration& c : model.configurations) {
         nlohmann::json poses = nlohmann::json::object();
-        for (const auto& [j, pose] : c.poses)
-            poses[model.joints[j].name] = pose;
+        for (const function::JointPose& pose : c.poses) {
+            const function::Joint& j = model.joints[pose.joint];
+            poses[j.name] = j.type == function::Joint::Type::SlidingHinge
+                                ? nlohmann::json{{"angle", pose.angle}, {"offset", pose.offset}}
+                                : nlohmann::json(j.turns() ? pose.angle : pose.offset);
+        }
         configurations.push_back({{"name", c.name}, {"poses", poses}});
     }
     nlohmann::json out = {{"format", "fabguide.workslike"},

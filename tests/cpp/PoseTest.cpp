@@ -26,28 +26,47 @@ json hingedLid(const std::string& edgeA, const std::string& edgeB, double angle)
         {"configurations", {{{"name", "turned"}, {"poses", {{"hinge", angle}}}}}}};
 }
 
-/// The lid's bounding box in the configuration, by turning its eight corners about the hinge's edge.
-std::array<double, 6> bruteForce(const function::Model& m, double degrees)
+/// Turning about joint j's edge (as modelled) by `degrees`.
+Eigen::Isometry3d turning(const function::Model& m, const function::Joint& j, double degrees)
 {
-    const function::Joint& j = m.joints[0];
-    const auto& lid = m.cuboids[1];
+    const auto& cuboid = m.cuboids[j.edgeA.cuboid];
     const int a = 3 - static_cast<int>(j.edgeA.side) / 2 - static_cast<int>(j.edgeB.side) / 2;
     Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
-    pivot[static_cast<int>(j.edgeA.side) / 2] = lid.at(j.edgeA.side);
-    pivot[static_cast<int>(j.edgeB.side) / 2] = lid.at(j.edgeB.side);
-    const Eigen::Matrix3d turn =
-        Eigen::AngleAxisd(degrees * M_PI / 180, Eigen::Vector3d::Unit(a)).toRotationMatrix();
+    pivot[static_cast<int>(j.edgeA.side) / 2] = cuboid.at(j.edgeA.side);
+    pivot[static_cast<int>(j.edgeB.side) / 2] = cuboid.at(j.edgeB.side);
+    return Eigen::Translation3d(pivot) * Eigen::AngleAxisd(degrees * M_PI / 180, Eigen::Vector3d::Unit(a)) *
+           Eigen::Translation3d(-pivot);
+}
+
+/// The bounding box of cuboid c's eight corners moved by `motion`.
+std::array<double, 6> movedBox(const function::Model& m, int c, const Eigen::Isometry3d& motion)
+{
+    const auto& cuboid = m.cuboids[c];
     std::array<double, 6> box{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
     for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d p(lid.coordinates[corner & 1], lid.coordinates[2 + ((corner >> 1) & 1)],
-                                lid.coordinates[4 + ((corner >> 2) & 1)]);
-        const Eigen::Vector3d q = pivot + turn * (p - pivot);
+        const Eigen::Vector3d p(cuboid.coordinates[corner & 1], cuboid.coordinates[2 + ((corner >> 1) & 1)],
+                                cuboid.coordinates[4 + ((corner >> 2) & 1)]);
+        const Eigen::Vector3d q = motion * p;
         for (int axis = 0; axis < 3; ++axis) {
             box[2 * axis] = std::min(box[2 * axis], q[axis]);
             box[2 * axis + 1] = std::max(box[2 * axis + 1], q[axis]);
         }
     }
     return box;
+}
+
+/// The lid's bounding box in the configuration, by turning its eight corners about the hinge's edge.
+std::array<double, 6> bruteForce(const function::Model& m, double degrees)
+{
+    return movedBox(m, 1, turning(m, m.joints[0], degrees));
+}
+
+void expectPosedBox(const function::Model& m, int c, const std::array<double, 6>& expected)
+{
+    for (int k = 0; k < 6; ++k)
+        EXPECT_NEAR(function::evaluate(m, function::posed(m, Face{c, static_cast<Side>(k)}, 0)), expected[k],
+                    1e-9)
+            << m.cuboids[c].name << " side " << k;
 }
 
 }  // namespace
@@ -82,6 +101,45 @@ TEST(Pose, SlidesMoveAlongTheirAxis)
     const function::Model m = io::readWorkslike(d);
     EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{1, Side::Near}, 0)), 10 - 45);
     EXPECT_DOUBLE_EQ(function::evaluate(m, function::posed(m, Face{1, Side::Left}, 0)), 5);
+}
+
+TEST(Pose, SlidingHingesTurnAboutTheirEdgeAndSlideAlongTheirAxis)
+{
+    json d = hingedLid("lid.far", "lid.bottom", 0);
+    d["joints"][0]["type"] = "sliding_hinge";
+    d["joints"][0]["axis"] = "y";
+    for (double angle : {-90.0, 35.0})
+        for (double offset : {-40.0, 25.0}) {
+            d["configurations"][0]["poses"]["hinge"] = {{"angle", angle}, {"offset", offset}};
+            const function::Model m = io::readWorkslike(d);
+            expectPosedBox(
+                m, 1, movedBox(m, 1, Eigen::Translation3d(0, offset, 0) * turning(m, m.joints[0], angle)));
+        }
+    d["configurations"][0]["poses"]["hinge"] = 30;
+    EXPECT_EQ(testsupport::workslikeError(d), "configurations[0].poses.hinge: must be a JSON object");
+}
+
+TEST(Pose, AJointCarriesThePartsHangingOnItsPart)
+{
+    // A flap hinged on the lid's front edge; the lid hinged on the body's back edge carries it.
+    json d = hingedLid("lid.far", "lid.bottom", 0);
+    d["parts"].push_back(
+        {{"name", "flap"}, {"cuboids", {{{"name", "flap"}, {"min", {5, 0, 40}}, {"max", {95, 10, 47}}}}}});
+    d["joints"].push_back({{"name", "flap hinge"},
+                           {"type", "hinge"},
+                           {"part", "flap"},
+                           {"base", "lid"},
+                           {"edge", {"flap.far", "flap.top"}}});
+    d["configurations"][0]["poses"] = {{"hinge", -90}, {"flap hinge", 90}};
+    const function::Model m = io::readWorkslike(d);
+    expectPosedBox(m, 2, movedBox(m, 2, turning(m, m.joints[0], -90) * turning(m, m.joints[1], 90)));
+    expectPosedBox(m, 1, bruteForce(m, -90));
+
+    d["joints"][0]["base"] = "flap";
+    EXPECT_EQ(testsupport::workslikeError(d), "joints[0].base: the joints' bases go round in a circle");
+    d["joints"][0].erase("base");
+    d["joints"][1]["part"] = "lid";
+    EXPECT_EQ(testsupport::workslikeError(d), "joints[1].part: 'lid' is already moved by joint 'hinge'");
 }
 
 TEST(Pose, RelationshipsHoldInTheirConfigurationAfterTheSolve)
