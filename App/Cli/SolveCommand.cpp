@@ -48,14 +48,15 @@ int run(const SolveArguments& args)
                    ? "CONFLICT"
                    : "-";
     };
-    for (const function::Flush& f : model.flush)
-        std::printf("flush      %-30s %s\n", f.name.c_str(), status(f.name));
-    for (const function::Geometric& g : model.geometric)
-        std::printf("geometric  %-30s %s\n", g.name.c_str(), status(g.name));
-    for (const function::Support& s : model.support)
-        std::printf("support    %-30s %s\n", s.name.c_str(), status(s.name));
-    for (const function::FitInside& f : model.fitInside)
-        std::printf("fit inside %-30s %s\n", f.name.c_str(), status(f.name));
+    auto report = [&](const char* kind, const auto& relationships) {
+        for (const auto& r : relationships)
+            std::printf("%-10s %-30s %s\n", kind, r.name.c_str(), status(r.name));
+    };
+    report("cover", model.cover);
+    report("fit inside", model.fitInside);
+    report("support", model.support);
+    report("flush", model.flush);
+    report("geometric", model.geometric);
     if (!result.solved) {
         std::string names;
         for (const std::string& name : result.conflict)

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fabguide::function {
@@ -33,6 +34,11 @@ struct Part {
 struct Face {
     int cuboid = 0;
     Side side = Side::Top;
+    bool operator==(const Face& other) const { return cuboid == other.cuboid && side == other.side; }
+    bool operator<(const Face& other) const
+    {
+        return std::pair{cuboid, side} < std::pair{other.cuboid, other.side};
+    }
 };
 
 /// Σ coefficient × quantity + constant, quantities being cuboid coordinates (a size is right − left).
@@ -110,6 +116,18 @@ struct FitInside {
     int configuration = -1;
 };
 
+/// Cover (thesis 4.2.1, eq. 4.1): in the configuration, each connected component of the corresponding-faces
+/// graph lies in one plane, its covering faces packed without gaps or overlaps (and likewise its covered
+/// faces), the covering faces' box containing the covered faces' box; "just" makes the two boxes equal.
+/// Faces are sides of the cuboids' boxes in the configuration.
+struct Cover {
+    std::string name;
+    std::vector<int> covering, covered;        ///< parts
+    std::vector<std::pair<Face, Face>> pairs;  ///< the graph M: (covering face, covered face)
+    bool just = false;
+    int configuration = -1;
+};
+
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.
 struct Lock {
     Face face;
@@ -124,6 +142,7 @@ struct Model {
     std::vector<Geometric> geometric;
     std::vector<Support> support;
     std::vector<FitInside> fitInside;
+    std::vector<Cover> cover;
     std::vector<Lock> locks;
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces

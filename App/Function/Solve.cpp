@@ -1,5 +1,6 @@
 #include "Function/Solve.h"
 
+#include "Function/Cover.h"
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
 
@@ -37,6 +38,52 @@ std::pair<std::vector<std::pair<int, double>>, double> difference(const Model& m
     return {terms, -constant};
 }
 
+/// Face `low` at most (or exactly) at face `high`, measured in a configuration.
+void order(std::vector<LinearConstraint>& rows, const Model& model, const std::string& name,
+           int configuration, const Face& low, const Face& high, bool equal)
+{
+    if (low == high)
+        return;
+    auto [terms, bound] = difference(model, {{{1.0, low}}, 0}, {{{1.0, high}}, 0}, configuration);
+    rows.push_back({terms, equal ? bound : -kInfinity, bound, name});
+}
+
+/// Cover (thesis 4.2.1, eq. 4.1; packing 4.3.1): per component of M, one plane, each face set packed, the
+/// covering box around (or, just, equal to) the covered box.
+void coverConstraints(std::vector<LinearConstraint>& rows, const Model& model, const Cover& c)
+{
+    auto rule = [&](const Face& low, const Face& high, bool equal) {
+        order(rows, model, c.name, c.configuration, low, high, equal);
+    };
+    for (const CoverComponent& component : components(c.pairs)) {
+        const Face plane = component.covering.front();
+        for (const auto* faces : {&component.covering, &component.covered})
+            for (const Face& f : *faces)
+                rule(f, plane, true);
+        const Packing covering = packing(model, component.covering, c.configuration),
+                      covered = packing(model, component.covered, c.configuration);
+        for (const Packing* p : {&covering, &covered}) {
+            for (const Packing::Neighbours& n : p->neighbours)  // no gap, no overlap
+                rule(Face{n.a.cuboid, static_cast<Side>(2 * n.axis + 1)},
+                     Face{n.b.cuboid, static_cast<Side>(2 * n.axis)}, true);
+            for (int k = 0; k < 6; ++k)  // the outermost faces aligned
+                for (const Face& f : p->ends[k])
+                    rule(Face{f.cuboid, static_cast<Side>(k)},
+                         Face{p->ends[k].front().cuboid, static_cast<Side>(k)}, true);
+        }
+        for (int k = 0; k < 6; ++k) {
+            if (covering.ends[k].empty())
+                continue;  // the plane's normal
+            const Face a{covering.ends[k].front().cuboid, static_cast<Side>(k)},
+                b{covered.ends[k].front().cuboid, static_cast<Side>(k)};
+            if (k % 2)
+                rule(b, a, c.just);
+            else
+                rule(a, b, c.just);
+        }
+    }
+}
+
 }  // namespace
 
 std::string faceName(const Model& model, const Face& face)
@@ -55,17 +102,15 @@ std::vector<LinearConstraint> constraints(const Model& model)
         if (axis(f.a.side) != axis(f.b.side))
             throw std::invalid_argument("flush '" + f.name + "': " + faceName(model, f.a) + " and " +
                                         faceName(model, f.b) + " are not parallel");
-        auto [terms, bound] = difference(model, {{{1.0, f.a}}, 0}, {{{1.0, f.b}}, 0}, f.configuration);
-        rows.push_back({terms, bound, bound, f.name});
+        order(rows, model, f.name, f.configuration, f.a, f.b, true);
     }
     for (const Geometric& g : model.geometric) {  // thesis 4.3.5
         auto [terms, bound] = difference(model, g.left, g.right, g.configuration);
         rows.push_back({terms, g.relation == Geometric::Relation::Equal ? bound : -kInfinity, bound, g.name});
     }
-    for (const FitInside& f : model.fitInside) {                          // thesis 4.2.2, eq. 4.3–4.4
-        auto rule = [&](const Face& low, const Face& high, bool equal) {  // low <= high (or =)
-            auto [terms, bound] = difference(model, {{{1.0, low}}, 0}, {{{1.0, high}}, 0}, f.configuration);
-            rows.push_back({terms, equal ? bound : -kInfinity, bound, f.name});
+    for (const FitInside& f : model.fitInside) {  // thesis 4.2.2, eq. 4.3–4.4
+        auto rule = [&](const Face& low, const Face& high, bool equal) {
+            order(rows, model, f.name, f.configuration, low, high, equal);
         };
         for (int part : f.inner)
             for (int c : model.parts[part].cuboids)
@@ -117,6 +162,8 @@ std::vector<LinearConstraint> constraints(const Model& model)
             rows.push_back({terms, bound, bound, s.name});
         }
     }
+    for (const Cover& c : model.cover)
+        coverConstraints(rows, model, c);
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);
         rows.push_back({{{variable(lock.face), 1.0}}, value, value, "lock: " + faceName(model, lock.face)});

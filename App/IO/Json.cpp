@@ -96,6 +96,14 @@ std::string Fields::text(const std::string& key, std::optional<std::string> fall
     return value->get<std::string>();
 }
 
+bool Fields::flag(const std::string& key, bool fallback) const
+{
+    const nlohmann::json* value = find(key);
+    if (value && !value->is_boolean())
+        throw FormatError(pathOf(key) + ": must be true or false, got " + value->dump());
+    return value ? value->get<bool>() : fallback;
+}
+
 const nlohmann::json& Fields::array(const std::string& key, bool optional) const
 {
     static const nlohmann::json empty = nlohmann::json::array();

@@ -32,6 +32,8 @@ public:
     double positive(const std::string& key) const;
     int integer(const std::string& key, std::optional<int> fallback = std::nullopt) const;
     std::string text(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
+    /// true or false; `fallback` when absent.
+    bool flag(const std::string& key, bool fallback) const;
     /// The array at key (required unless `optional`, then empty when absent).
     const nlohmann::json& array(const std::string& key, bool optional = false) const;
     std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }

@@ -134,11 +134,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
         throw FormatError(part.pathOf("quantity") + ": must be at least 1, got " +
                           std::to_string(p.quantity));
     p.orientations = readOrientations(part);
-    if (part.has("follow_grain")) {
-        if (!json["follow_grain"].is_boolean())
-            throw FormatError(part.pathOf("follow_grain") + ": must be true or false");
-        p.followsGrain = json["follow_grain"].get<bool>();
-    }
+    p.followsGrain = part.flag("follow_grain", p.followsGrain);
     return p;
 }
 

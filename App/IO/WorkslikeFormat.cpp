@@ -1,5 +1,6 @@
 #include "IO/WorkslikeFormat.h"
 
+#include "Function/Cover.h"
 #include "Function/FitInside.h"
 #include "Function/Support.h"
 #include "IO/Json.h"
@@ -269,6 +270,38 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
     return f;
 }
 
+/// Cover (thesis 4.2.1): "pairs" [["lid.bottom", "body.top"], …] (covering face, covered face) as given, or
+/// inferred (4.3.1) when absent; faces of one component of the graph must be parallel.
+function::Cover readCover(const function::Model& model, const Fields& r, const std::string& name,
+                          int configuration)
+{
+    function::Cover c{name, partList(model, r, "covering"), partList(model, r, "covered"),
+                      {},   r.flag("just", false),          configuration};
+    if (!r.has("pairs")) {
+        const double distance = r.number("distance", 5.0, 0.0);
+        c.pairs = function::inferCoverPairs(model, c.covering, c.covered, configuration, distance);
+        if (c.pairs.empty())
+            throw FormatError(r.pathOf("covered") + ": no covered face faces a covering face within " +
+                              show(distance) + " mm, overlapping it by half");
+        return c;
+    }
+    const nlohmann::json& pairs = r.array("pairs");
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        const std::string here = at(r.pathOf("pairs"), k);
+        if (!pairs[k].is_array() || pairs[k].size() != 2)
+            throw FormatError(here + ": must be [\"covering face\", \"covered face\"]");
+        c.pairs.push_back({face(model, pairs[k][0], here + "[0]"), face(model, pairs[k][1], here + "[1]")});
+    }
+    for (const function::CoverComponent& component : function::components(c.pairs))
+        for (const auto* faces : {&component.covering, &component.covered})
+            for (const Face& f : *faces)
+                if (static_cast<int>(f.side) / 2 != static_cast<int>(component.covering.front().side) / 2)
+                    throw FormatError(r.pathOf("pairs") + ": " + function::faceName(model, f) + " and " +
+                                      function::faceName(model, component.covering.front()) +
+                                      " are linked but not parallel");
+    return c;
+}
+
 int configurationNamed(const function::Model& model, const Fields& r)
 {
     if (!r.has("configuration"))
@@ -289,7 +322,8 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         return std::any_of(list.begin(), list.end(),
                            [&](const auto& relationship) { return relationship.name == name; });
     };
-    if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside))
+    if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside) ||
+        named(model.cover))
         throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
     if (type == "flush") {
         const nlohmann::json& faces = r.array("faces");
@@ -316,11 +350,21 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
         model.fitInside.push_back(readFitInside(model, r, name, configuration));
     } else if (type == "support") {
         model.support.push_back(readSupport(model, r, name, configuration));
+    } else if (type == "cover") {
+        model.cover.push_back(readCover(model, r, name, configuration));
     } else {
-        throw FormatError(r.pathOf("type") + ": \"" + type +
-                          "\" is not a relationship this FabGuide knows (flush, "
-                          "geometric, support, fit_inside)");
+        throw FormatError(
+            r.pathOf("type") + ": \"" + type +
+            "\" is not a relationship this FabGuide knows (cover, fit_inside, support, flush, geometric)");
     }
+}
+
+nlohmann::json partNames(const function::Model& model, const std::vector<int>& parts)
+{
+    nlohmann::json names = nlohmann::json::array();
+    for (int p : parts)
+        names.push_back(model.parts[p].name);
+    return names;
 }
 
 }  // namespace
@@ -425,38 +469,43 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
              {"offset", g.right.constant}},
             g.configuration));
     for (const function::Support& s : model.support) {
-        nlohmann::json supporting = nlohmann::json::array(), supported = nlohmann::json::array(),
-                       pairs = nlohmann::json::array();
-        for (int p : s.supporting)
-            supporting.push_back(model.parts[p].name);
-        for (int p : s.supported)
-            supported.push_back(model.parts[p].name);
+        nlohmann::json pairs = nlohmann::json::array();
         for (const auto& [a, b] : s.pairs)
             pairs.push_back(
                 {function::faceName(model, {a, Side::Top}), function::faceName(model, {b, Side::Bottom})});
         relationships.push_back(inConfiguration({{"type", "support"},
                                                  {"name", s.name},
-                                                 {"supporting", supporting},
-                                                 {"supported", supported},
+                                                 {"supporting", partNames(model, s.supporting)},
+                                                 {"supported", partNames(model, s.supported)},
                                                  {"pairs", pairs}},
                                                 s.configuration));
     }
     for (const function::FitInside& f : model.fitInside) {
-        nlohmann::json inner = nlohmann::json::array(), apart = nlohmann::json::array(),
-                       just = nlohmann::json::array();
-        for (int p : f.inner)
-            inner.push_back(model.parts[p].name);
+        nlohmann::json apart = nlohmann::json::array(), just = nlohmann::json::array();
+
         for (const function::FitInside::Apart& a : f.apart)
             apart.push_back({model.cuboids[a.a].name, kAxes[a.axis], model.cuboids[a.b].name});
         for (const auto& [in, wall] : f.just)
             just.push_back({function::faceName(model, in), function::faceName(model, wall)});
         relationships.push_back(inConfiguration({{"type", "fit_inside"},
                                                  {"name", f.name},
-                                                 {"inner", inner},
+                                                 {"inner", partNames(model, f.inner)},
                                                  {"enclosing", model.parts[f.enclosing].name},
                                                  {"apart", apart},
                                                  {"just", just}},
                                                 f.configuration));
+    }
+    for (const function::Cover& c : model.cover) {
+        nlohmann::json pairs = nlohmann::json::array();
+        for (const auto& [a, b] : c.pairs)
+            pairs.push_back({function::faceName(model, a), function::faceName(model, b)});
+        relationships.push_back(inConfiguration({{"type", "cover"},
+                                                 {"name", c.name},
+                                                 {"covering", partNames(model, c.covering)},
+                                                 {"covered", partNames(model, c.covered)},
+                                                 {"pairs", pairs},
+                                                 {"just", c.just}},
+                                                c.configuration));
     }
     for (const function::Lock& lock : model.locks)
         locks.push_back(function::faceName(model, lock.face));

@@ -97,10 +97,11 @@ TEST(WorkslikeFormat, ErrorsNameTheOffendingField)
     d["parts"][1]["cuboids"][0]["max"] = {100, 60, 40};
     EXPECT_EQ(testsupport::workslikeError(d), "parts[1].cuboids[0].max: must exceed min along every axis");
     d = boxWithLid();
-    d["relationships"][0]["type"] = "cover";
-    EXPECT_EQ(testsupport::workslikeError(d),
-              "relationships[0].type: \"cover\" is not a relationship this FabGuide knows (flush, geometric, "
-              "support, fit_inside)");
+    d["relationships"][0]["type"] = "covers";
+    EXPECT_EQ(
+        testsupport::workslikeError(d),
+        "relationships[0].type: \"covers\" is not a relationship this FabGuide knows (cover, fit_inside, "
+        "support, flush, geometric)");
     d = boxWithLid();
     d["relationships"][1]["name"] = "lid on body";
     EXPECT_EQ(testsupport::workslikeError(d), "relationships[1].name: 'lid on body' is used twice");
