@@ -95,6 +95,11 @@ LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
                                    const Eigen::VectorXd* start, double tolerance)
 {
     LeastChangeResult result;
+    if (result.violation = violation(target, constraints); result.violation <= tolerance) {
+        result.solved = true;  // nothing to change: re-solving a solved design leaves it exactly as it is
+        result.x = target;
+        return result;
+    }
     auto [solved, x] = solveQP(target, constraints, start, tolerance);
     result.solved = solved;
     result.x = solved ? x : target;

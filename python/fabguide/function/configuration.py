@@ -1,0 +1,54 @@
+"""A configuration (thesis 4.1.2): named poses of joints, in which relationships must hold."""
+from fabguide import properties
+from fabguide.function import joints
+
+
+class Configuration(properties.Proxy):
+    TYPE = "FabGuide::Configuration"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkList", "Joints", "Configuration", "The joints it moves")
+        add(obj, "App::PropertyFloatList", "Angles", "Configuration",
+            "Per joint: the hinge angle in degrees (right-handed about the edge's +x/+y/+z direction)")
+        add(obj, "App::PropertyFloatList", "Offsets", "Configuration", "Per joint: the slide offset in mm")
+
+    def execute(self, obj):
+        as_dict(obj)
+
+
+def create(doc, label, poses):
+    """poses: [(joint, angle, offset)]."""
+    obj = doc.addObject("App::FeaturePython", "Configuration")
+    Configuration(obj)
+    obj.Label = label
+    set_poses(obj, poses)
+    return obj
+
+
+def set_poses(obj, poses):
+    obj.Joints = [j for j, _, _ in poses]
+    obj.Angles = [float(a) for _, a, _ in poses]
+    obj.Offsets = [float(o) for _, _, o in poses]
+
+
+def poses(obj):
+    """[(joint, angle, offset)], missing list entries read as 0."""
+    angles, offsets = list(obj.Angles), list(obj.Offsets)
+    return [(j, angles[k] if k < len(angles) else 0.0, offsets[k] if k < len(offsets) else 0.0)
+            for k, j in enumerate(obj.Joints)]
+
+
+def is_configuration(obj):
+    return properties.is_a(obj, Configuration)
+
+
+def as_dict(obj):
+    out = {}
+    for joint, angle, offset in poses(obj):
+        if not joints.is_joint(joint):
+            raise ValueError("Configuration '{}': '{}' is not a joint".format(obj.Label, joint.Label))
+        kind = joints.kind(joint)
+        out[joint.Label] = ({"angle": angle, "offset": offset} if kind == "sliding_hinge"
+                            else angle if kind == "hinge" else offset)
+    return {"name": obj.Label, "poses": out}

@@ -1,0 +1,122 @@
+"""Mechanism: a group of parts, joints, configurations and relationships. Its recompute gathers them into a
+*.workslike.json model, solves it once in the core (thesis 4.4) and writes the boxes' sizes and places back.
+The user's latest edits are kept: a box coordinate changed since the last solve is locked for this one."""
+import json
+
+import FreeCAD
+
+import fabguide_core
+from fabguide import properties
+from fabguide.function import configuration, cuboids, joints, parts, relationships
+
+SATISFIED = "Satisfied"
+
+
+
+
+class MechanismError(ValueError):
+    """A mechanism that cannot be solved as modelled; the message names the mechanism and the field."""
+
+
+class Mechanism(properties.Proxy):
+    TYPE = "FabGuide::Mechanism"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLength", "MinimumSize", "Mechanism", "Smallest size of a box along any axis", 1)
+        add(obj, "App::PropertyStringList", "Locks", "Mechanism",
+            "Coordinates that keep their value, e.g. 'Body.top' (box label . side)")
+        add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
+            "Box coordinates you changed since the last solve keep their new value while the rest adapts", True)
+        add(obj, "App::PropertyString", "Status", "Result", "Solved, or the relationships in conflict", mode=1)
+        add(obj, "App::PropertyFloat", "Violation", "Result", "Largest constraint violation after the solve, mm",
+            mode=1)
+        add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
+
+    def execute(self, obj):
+        solve(obj)
+
+
+def create(doc, label="Mechanism"):
+    obj = doc.addObject("App::DocumentObjectGroupPython", "Mechanism")
+    Mechanism(obj)
+    obj.Label = label
+    return obj
+
+
+def is_mechanism(obj):
+    return properties.is_a(obj, Mechanism)
+
+
+def members(obj, test):
+    return [o for o in obj.Group if test(o)]
+
+
+def boxes(obj):
+    return [box for part in members(obj, parts.is_part) for box in part.Cuboids if cuboids.is_box(box)]
+
+
+def edits(obj):
+    """Box coordinates changed since the last solve, as lock names ("Lid.top")."""
+    if not obj.KeepEdits or not obj.Solved:
+        return []
+    before = json.loads(obj.Solved)
+    return ["{}.{}".format(box.Label, side) for box in boxes(obj) if box.Name in before
+            for side, was, now in zip(cuboids.SIDES, before[box.Name], cuboids.coordinates(box))
+            if abs(was - now) > 1e-7]
+
+
+def model(obj, locks=()):
+    """The mechanism as a *.workslike.json dict."""
+    try:
+        return {
+            "format": "fabguide.workslike", "version": 1, "minimum_size": obj.MinimumSize.Value,
+            "parts": [parts.as_dict(p) for p in members(obj, parts.is_part)],
+            "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
+            "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
+            "relationships": [relationships.as_dict(r) for r in members(obj, relationships.is_relationship)],
+            "locks": list(dict.fromkeys(list(obj.Locks) + list(locks))),
+        }
+    except ValueError as error:
+        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+
+
+def solve(obj):
+    """Solve once; write back the boxes and each relationship's Status. A conflict leaves the boxes as the
+    user has them and names the relationships (and edits) that cannot hold together."""
+    data = model(obj, edits(obj))
+    try:
+        solved = fabguide_core.solve(data)
+    except fabguide_core.FormatError as error:
+        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+    report = solved["report"]
+    conflict = report["conflict"]
+    by_name = {r["name"]: r for r in solved["relationships"]}
+    for rel in members(obj, relationships.is_relationship):
+        status = (SATISFIED if report["solved"] else
+                  "Conflict: " + ", ".join(n for n in conflict if n != rel.Label) if rel.Label in conflict else "")
+        if rel.Status != status:
+            rel.Status = status
+        relationships.keep_pairs(rel, by_name.get(rel.Label, {}))
+    obj.Violation = report["violation"]
+    if not report["solved"]:
+        obj.Status = "Conflict: " + ", ".join(conflict)
+        FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
+        return solved
+    write_back(obj, solved)
+    obj.Status = "Solved"
+    return solved
+
+
+def write_back(obj, solved):
+    """Sizes and places the boxes as solved; remembers them to tell the user's next edits apart."""
+    by_label = {c["name"]: c for p in solved["parts"] for c in p["cuboids"]}
+    after = {}
+    for box in boxes(obj):
+        c = by_label[box.Label]
+        values = [round(v, 7) for a in range(3) for v in (c["min"][a], c["max"][a])]  # IPM noise off
+        if cuboids.set_coordinates(box, values):
+            box.recompute()  # its shape now, within this recompute
+            box.purgeTouched()
+        after[box.Name] = values
+    obj.Solved = json.dumps(after)

@@ -1,0 +1,44 @@
+"""A works-like part (thesis 4.1.1): one or more native Part::Box objects moving together."""
+from fabguide import properties
+from fabguide.function import cuboids
+
+
+class FunctionalPart(properties.Proxy):
+    TYPE = "FabGuide::Part"
+
+    def define(self, obj):
+        properties.add(obj, "App::PropertyLinkList", "Cuboids", "Part",
+                       "The axis-aligned boxes (Part::Box) the part is made of")
+
+    def execute(self, obj):
+        as_dict(obj)  # says which box is unusable
+
+
+def create(doc, boxes, label=None):
+    obj = doc.addObject("App::FeaturePython", "FunctionalPart")
+    FunctionalPart(obj)
+    obj.Cuboids = list(boxes)
+    obj.Label = label or boxes[0].Label
+    return obj
+
+
+def is_part(obj):
+    return properties.is_a(obj, FunctionalPart)
+
+
+def as_dict(obj):
+    """The part as *.workslike.json names it: cuboids named by their boxes' labels."""
+    if not obj.Cuboids:
+        raise cuboids.CuboidError("Part '{}' has no boxes: add a Part::Box to its Cuboids".format(obj.Label))
+    out = []
+    for box in obj.Cuboids:
+        if not cuboids.is_box(box):
+            raise cuboids.CuboidError("Part '{}': '{}' is not a Part::Box".format(obj.Label, box.Label))
+        c = cuboids.coordinates(box)
+        out.append({"name": box.Label, "min": c[0::2], "max": c[1::2]})
+    return {"name": obj.Label, "cuboids": out}
+
+
+def part_of(doc_objects, box):
+    """The FabGuide part among `doc_objects` that holds `box`, if any."""
+    return next((p for p in doc_objects if is_part(p) and box in p.Cuboids), None)

@@ -1,0 +1,107 @@
+"""*.workslike.json ↔ FreeCAD: import builds boxes, parts, joints, configurations and relationships in a new
+Mechanism; export writes the mechanism as the core reads it (docs/formats.md)."""
+import json
+
+import FreeCAD
+
+from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships
+
+
+def import_model(doc, data, label="Mechanism"):
+    """A Mechanism (not yet recomputed) built from a *.workslike.json dict."""
+    mech = mechanism.create(doc, label)
+    mech.MinimumSize = data.get("minimum_size", 1)
+    boxes, made_parts, made_joints, made_configurations, members = {}, {}, {}, {}, []
+    for p in data.get("parts", []):
+        for c in p["cuboids"]:
+            box = doc.addObject("Part::Box", "Box")
+            box.Label = c["name"]  # FreeCAD may make it unique: files are rewritten through `rename`
+            cuboids.set_coordinates(box, [v for a in range(3) for v in (c["min"][a], c["max"][a])])
+            boxes[c["name"]] = box
+    for p in data.get("parts", []):  # FreeCAD labels are unique: a part named like its box is "… part"
+        taken = doc.getObjectsByLabel(p["name"])
+        made_parts[p["name"]] = parts.create(doc, [boxes[c["name"]] for c in p["cuboids"]],
+                                             label=p["name"] + " part" if taken else p["name"])
+        members.append(made_parts[p["name"]])
+    doc.recompute()  # the boxes' shapes, to find their edges
+
+    def rename(face):
+        """"lid.top" in the file → the face of the box made for cuboid "lid"."""
+        cuboid, side = face.rsplit(".", 1)
+        return boxes[cuboid].Label + "." + side
+
+    for j in data.get("joints", []):
+        edge = None
+        if "edge" in j:
+            box = boxes[j["edge"][0].rsplit(".", 1)[0]]
+            edge = (box, [cuboids.edge_element(box, [f.rsplit(".", 1)[1] for f in j["edge"]])])
+        made_joints[j["name"]] = joints.create(doc, j["type"], made_parts[j["part"]], edge=edge, axis=j.get("axis"),
+                                               base=made_parts.get(j.get("base")), label=j["name"])
+        members.append(made_joints[j["name"]])
+    for c in data.get("configurations", []):
+        poses = []
+        for name, pose in c["poses"].items():
+            angle, offset = (pose["angle"], pose["offset"]) if isinstance(pose, dict) else (
+                (pose, 0) if joints.turns(made_joints[name]) else (0, pose))
+            poses.append((made_joints[name], angle, offset))
+        made_configurations[c["name"]] = configuration.create(doc, c["name"], poses)
+        members.append(made_configurations[c["name"]])
+    for r in data.get("relationships", []):
+        members.append(relationships.create(doc, r["type"], r["name"], made_configurations.get(r.get("configuration")),
+                                            **relationship_fields(r, made_parts, boxes, rename)))
+    mech.Locks = [rename(f) for f in data.get("locks", [])]
+    mech.Group = members
+    return mech
+
+
+def relationship_fields(r, made_parts, boxes, rename):
+    """The relationship object's properties from its *.workslike.json entry."""
+    def faces(names):
+        return [(boxes[n.rsplit(".", 1)[0]], "Face{}".format(cuboids.SIDES.index(n.rsplit(".", 1)[1]) + 1))
+                for n in names]
+
+    def pairs(r):
+        return {"Pairs": [rename(a) + relationships.ARROW + rename(b) for a, b in r["pairs"]]} if "pairs" in r else {}
+
+    def quantities(side):
+        items = side if isinstance(side, list) else [side]
+        out = []
+        for item in items:
+            times = item.get("times", 1) if isinstance(item, dict) else 1
+            name = rename(item["quantity"] if isinstance(item, dict) else item)
+            out.append(name if times == 1 else "-" + name if times == -1 else "{:g}*{}".format(times, name))
+        return out
+
+    kind = r["type"]
+    if kind == "cover":
+        return dict(Covering=[made_parts[n] for n in r["covering"]], Covered=[made_parts[n] for n in r["covered"]],
+                    Just=r.get("just", False), **pairs(r))
+    if kind == "support":
+        return dict(Supporting=[made_parts[n] for n in r["supporting"]],
+                    Supported=[made_parts[n] for n in r["supported"]], **pairs(r))
+    if kind == "fit_inside":
+        axes = {a if isinstance(a, str) else "xyz"[cuboids.SIDES.index(a[0].rsplit(".", 1)[1]) // 2]
+                for a in r.get("just", [])}
+        return dict(Inner=[made_parts[n] for n in r["inner"]], Enclosing=made_parts[r["enclosing"]],
+                    **{"Just" + a.upper(): True for a in axes})
+    if kind == "flush":
+        return dict(Faces=faces(r["faces"]))
+    return dict(Left=quantities(r["left"]), Right=quantities(r["right"]), Offset=r.get("offset", 0),
+                Relation="Equal" if r.get("relation", "equal") == "equal" else "AtMost")
+
+
+def read(doc, path):
+    with open(path) as f:
+        return import_model(doc, json.load(f), label=label_of(path))
+
+
+def write(mech, path):
+    with open(path, "w") as f:
+        json.dump(mechanism.model(mech), f, indent=2)
+
+
+def label_of(path):
+    import os
+
+    name = os.path.basename(path)
+    return name[:-len(".workslike.json")] if name.endswith(".workslike.json") else os.path.splitext(name)[0]

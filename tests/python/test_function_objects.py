@@ -1,0 +1,158 @@
+"""Works-like document objects, headless: a Mechanism gathers parts (native boxes), joints, configurations
+and relationships, solves on recompute, writes the boxes back, keeps the user's edits, names conflicts and
+bad input, and survives save/reload, undo and *.workslike.json round trips."""
+import json
+import os
+
+import FreeCAD
+import pytest
+
+import fabguide_core
+from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships, workslike_file
+
+
+@pytest.fixture
+def doc():
+    document = FreeCAD.newDocument("function")
+    name = document.Name
+    yield document
+    if name in FreeCAD.listDocuments():
+        FreeCAD.closeDocument(name)
+
+
+def box(doc, label, low, high):
+    b = doc.addObject("Part::Box", "Box")
+    b.Label = label
+    cuboids.set_coordinates(b, [v for a in range(3) for v in (low[a], high[a])])
+    return b
+
+
+def clamshell(doc, just=True):
+    """A lid modelled open behind the body, hinged on its near-top edge; closed (180°) it must cover the body."""
+    body, lid = box(doc, "Body", (0, 0, 0), (60, 120, 10)), box(doc, "Lid", (3, 122, 0), (57, 230, 7))
+    doc.recompute()
+    mech = mechanism.create(doc)
+    body_part, lid_part = parts.create(doc, [body], "Base"), parts.create(doc, [lid], "Top")
+    hinge = joints.create(doc, "hinge", lid_part, edge=(lid, [cuboids.edge_element(lid, ("near", "top"))]))
+    closed = configuration.create(doc, "Closed", [(hinge, 180, 0)])
+    cover = relationships.create(doc, "cover", "Top covers base", closed, Covering=[lid_part], Covered=[body_part],
+                                 Just=just)
+    mech.Group = [body_part, lid_part, hinge, closed, cover]
+    doc.recompute()
+    return mech, body, lid, cover
+
+
+def touched(doc):
+    return [o.Label for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State]
+
+
+def test_the_mechanism_solves_on_recompute_and_writes_the_boxes_back(doc):
+    mech, body, lid, cover = clamshell(doc)
+    assert mech.Status == "Solved" and cover.Status == "Satisfied"
+    assert cover.Pairs == ["Lid.bottom -> Body.top"]  # the inferred graph is kept
+    b, l = cuboids.coordinates(body), cuboids.coordinates(lid)
+    # Closed, the lid turns about y = lid.near, z = lid.top: its box lands exactly on the body's top.
+    assert l[1] - l[0] == pytest.approx(b[1] - b[0], abs=1e-6) and l[0] == pytest.approx(b[0], abs=1e-6)
+    assert l[3] - l[2] == pytest.approx(b[3] - b[2], abs=1e-6)
+    assert 2 * l[2] - l[3] == pytest.approx(b[2], abs=1e-6)
+    assert l[5] == pytest.approx(b[5], abs=1e-6)
+    assert lid.Shape.BoundBox.XMax == pytest.approx(l[1])  # shapes are up to date
+    assert touched(doc) == []
+    before = cuboids.coordinates(lid)
+    doc.recompute()
+    assert cuboids.coordinates(lid) == before  # solving a solved design changes nothing
+
+
+def test_an_edit_is_kept_and_the_rest_adapts(doc):
+    mech, body, lid, cover = clamshell(doc)
+    body.Length = 80
+    doc.recompute()
+    assert cuboids.coordinates(body)[1] - cuboids.coordinates(body)[0] == pytest.approx(80)
+    assert lid.Length.Value == pytest.approx(80, abs=1e-6)  # the lid follows to keep covering
+    assert mech.Status == "Solved" and touched(doc) == []
+
+
+def test_conflicts_are_named_and_leave_the_boxes_alone(doc):
+    mech, body, lid, cover = clamshell(doc)
+    narrow = relationships.create(doc, "geometric", "Top 40 wide", Left=["Lid.width"], Offset=40)
+    mech.Group = mech.Group + [narrow]
+    mech.Locks = ["Body.left", "Body.right"]
+    kept = cuboids.coordinates(body), cuboids.coordinates(lid)
+    doc.recompute()
+    assert mech.Status == "Conflict: Top 40 wide, Top covers base, lock: Body.left, lock: Body.right"
+    assert cover.Status == "Conflict: Top 40 wide, lock: Body.left, lock: Body.right"
+    assert (cuboids.coordinates(body), cuboids.coordinates(lid)) == kept
+
+
+@pytest.mark.parametrize("spoil, message", [
+    (lambda d, m: setattr(d.getObjectsByLabel("Lid")[0], "Placement",
+                          FreeCAD.Placement(FreeCAD.Vector(), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 10))),
+     "'Lid' is rotated"),
+    (lambda d, m: setattr(d.getObjectsByLabel("Lid hinge")[0], "Edge", None), "Joint 'Lid hinge': choose the Edge"),
+    (lambda d, m: setattr(d.getObjectsByLabel("Top covers base")[0], "Pairs", ["Lid.bottom Body.top"]),
+     "pair 'Lid.bottom Body.top' must read"),
+    (lambda d, m: setattr(d.getObjectsByLabel("Top covers base")[0], "Pairs", ["Lid.bottom -> Body.near"]),
+     "Body.near and Lid.bottom are linked but not parallel"),
+])
+def test_bad_input_is_an_error_naming_the_object(doc, spoil, message):
+    mech, body, lid, cover = clamshell(doc)
+    doc.getObjectsByLabel("Top hinge")[0].Label = "Lid hinge"
+    spoil(doc, mech)
+    with pytest.raises(ValueError, match=message):
+        mechanism.solve(mech)
+
+
+def test_save_reload_recompute_reproduces_the_geometry(doc, tmp_path):
+    mech, body, lid, cover = clamshell(doc)
+    body.Width = 150
+    doc.recompute()
+    solved = {b.Label: cuboids.coordinates(b) for b in (body, lid)}
+    path = str(tmp_path / "clamshell.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    again = FreeCAD.openDocument(path)
+    try:
+        for obj in again.Objects:
+            obj.touch()
+        again.recompute()
+        mech = again.getObjectsByLabel("Mechanism")[0]
+        assert mech.Status == "Solved"
+        for label, coordinates in solved.items():
+            assert cuboids.coordinates(again.getObjectsByLabel(label)[0]) == pytest.approx(coordinates, abs=1e-6)
+    finally:
+        FreeCAD.closeDocument(again.Name)
+
+
+def test_an_edit_and_its_solve_undo_as_one_step(doc):
+    doc.UndoMode = 1
+    mech, body, lid, cover = clamshell(doc)
+    before = cuboids.coordinates(body), cuboids.coordinates(lid)
+    doc.openTransaction("Edit")
+    body.Length = 90
+    doc.recompute()
+    doc.commitTransaction()
+    assert lid.Length.Value == pytest.approx(90, abs=1e-6)
+    doc.undo()
+    doc.recompute()
+    assert (cuboids.coordinates(body), cuboids.coordinates(lid)) == pytest.approx(before, abs=1e-6)
+
+
+def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source_dir, tmp_path):
+    path = os.path.join(source_dir, "examples", "box-with-lid.workslike.json")
+    mech = workslike_file.read(doc, path)
+    doc.recompute()
+    assert mech.Label == "box-with-lid" and mech.Status == "Solved", mech.Status
+    statuses = {r.Label: r.Status for r in mech.Group if relationships.is_relationship(r)}
+    assert len(statuses) == 9 and set(statuses.values()) == {"Satisfied"}
+    with open(path) as f:
+        expected = fabguide_core.solve(json.load(f))
+    out = str(tmp_path / "out.workslike.json")
+    workslike_file.write(mech, out)
+    with open(out) as f:
+        exported = json.load(f)
+    assert fabguide_core.solve(exported)["report"]["solved"]
+    solved = {c["name"]: c for p in expected["parts"] for c in p["cuboids"]}
+    for p in exported["parts"]:
+        for c in p["cuboids"]:
+            assert c["min"] + c["max"] == pytest.approx(solved[c["name"]]["min"] + solved[c["name"]]["max"], abs=1e-5)
+    assert touched(doc) == []
