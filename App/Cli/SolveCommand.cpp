@@ -25,7 +25,7 @@ void printChanges(const function::Model& before, const function::Model& after)
         for (int c : part.cuboids)
             for (int k = 0; k < 6; ++k) {
                 const double from = before.cuboids[c].coordinates[k], to = after.cuboids[c].coordinates[k];
-                if (std::abs(to - from) > 1e-6) {
+                if (std::abs(to - from) > 1e-4) {  // smaller is solver noise
                     char text[160];
                     std::snprintf(text, sizeof text, "  %s %.6g -> %.6g",
                                   function::faceName(before, {c, static_cast<function::Side>(k)}).c_str(),

@@ -48,22 +48,28 @@ std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std
     std::vector<std::pair<Face, Face>> pairs;
     for (int p : covering)
         for (int a : model.parts[p].cuboids)
-            for (int sa = 0; sa < 6; ++sa)
-                for (int q : covered)
-                    for (int b : model.parts[q].cuboids) {
-                        const Face fa{a, static_cast<Side>(sa)}, fb{b, static_cast<Side>(sa ^ 1)};  // facing
-                        const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
+            for (int sa = 0; sa < 6 && !model.cuboids[a].cavity(); ++sa)
+                for (bool cavities : {true, false})  // an opening first: then not the wall around it
+                    for (int q : covered)
+                        for (int b : model.parts[q].cuboids) {
+                            if (model.cuboids[b].cavity() != cavities ||
+                                (!cavities && !pairs.empty() &&
+                                 pairs.back().first == Face{a, static_cast<Side>(sa)}))
+                                continue;
+                            const Face fa{a, static_cast<Side>(sa)},
+                                fb{b, static_cast<Side>(sa ^ 1)};  // facing
+                            const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
 
-                        const double gap =
-                            std::abs(at(model, a, sa, configuration) - at(model, b, sa ^ 1, configuration));
-                        const double ou = overlap(model, fa, fb, u, configuration),
-                                     ov = overlap(model, fa, fb, v, configuration);
-                        const double smaller = std::min(
-                            extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
-                            extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
-                        if (gap <= distance && ou > 0 && ov > 0 && ou * ov > smaller / 2)
-                            pairs.push_back({fa, fb});
-                    }
+                            const double gap = std::abs(at(model, a, sa, configuration) -
+                                                        at(model, b, sa ^ 1, configuration));
+                            const double ou = overlap(model, fa, fb, u, configuration),
+                                         ov = overlap(model, fa, fb, v, configuration);
+                            const double smaller = std::min(
+                                extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
+                                extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
+                            if (gap <= distance && ou > 0 && ov > 0 && ou * ov > smaller / 2)
+                                pairs.push_back({fa, fb});
+                        }
     return pairs;
 }
 

@@ -22,8 +22,10 @@ bool isHigh(Side side)
 
 Face extremeFace(const Model& model, int part, Side side, int configuration)
 {
-    Face best{model.parts[part].cuboids.front(), side};
+    Face best{model.parts[part].cuboids.front(), side};  // the reader puts a solid cuboid first
     for (int c : model.parts[part].cuboids) {
+        if (model.cuboids[c].cavity())
+            continue;
         const Face face{c, side};
         const double value = at(model, face, configuration), current = at(model, best, configuration);
         if (isHigh(side) ? value > current : value < current)
@@ -39,6 +41,8 @@ std::vector<FitInside::Apart> inferApart(const Model& model, const std::vector<i
         for (size_t j = i + 1; j < inner.size(); ++j)
             for (int a : model.parts[inner[i]].cuboids)
                 for (int b : model.parts[inner[j]].cuboids) {
+                    if (model.cuboids[a].cavity() || model.cuboids[b].cavity())
+                        continue;
                     FitInside::Apart best;
                     double widest = -std::numeric_limits<double>::max();
                     for (int axis = 0; axis < 3; ++axis) {
@@ -61,8 +65,13 @@ std::vector<FitInside::Apart> inferApart(const Model& model, const std::vector<i
     return apart;
 }
 
+Face wall(const Model& model, int enclosing, int cavity, Side side, int configuration)
+{
+    return cavity >= 0 ? Face{cavity, side} : extremeFace(model, enclosing, side, configuration);
+}
+
 std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vector<int>& inner, int enclosing,
-                                             const std::vector<int>& axes, int configuration)
+                                             int cavity, const std::vector<int>& axes, int configuration)
 {
     std::vector<std::pair<Face, Face>> just;
     for (int axis : axes)
@@ -75,7 +84,7 @@ std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vect
                 if (isHigh(side) ? value > current : value < current)
                     extreme = face;
             }
-            just.push_back({extreme, extremeFace(model, enclosing, side, configuration)});
+            just.push_back({extreme, wall(model, enclosing, cavity, side, configuration)});
         }
     return just;
 }

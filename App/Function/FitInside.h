@@ -8,7 +8,8 @@
 
 namespace fabguide::function {
 
-/// The side of a part's bounding box in a configuration, as the face of the cuboid that is extreme there now.
+/// The side of a part's bounding box in a configuration, as the face of the solid cuboid that is extreme
+/// there now.
 Face extremeFace(const Model& model, int part, Side side, int configuration);
 
 /// For each pair of cuboids of different inner parts, the axis and order along which they are farthest
@@ -16,9 +17,13 @@ Face extremeFace(const Model& model, int part, Side side, int configuration);
 std::vector<FitInside::Apart> inferApart(const Model& model, const std::vector<int>& inner,
                                          int configuration);
 
+/// The face inner parts fit against on a side: the cavity's (if >= 0), else the enclosing part's extreme
+/// face.
+Face wall(const Model& model, int enclosing, int cavity, Side side, int configuration);
+
 /// "Just fits" along each axis in `axes` (0 x, 1 y, 2 z): on both sides, the inner parts' extreme face on
-/// that side against the enclosing part's.
+/// that side against the wall.
 std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vector<int>& inner, int enclosing,
-                                             const std::vector<int>& axes, int configuration);
+                                             int cavity, const std::vector<int>& axes, int configuration);
 
 }  // namespace fabguide::function

@@ -19,10 +19,14 @@ inline const char* sideName(Side side)
     return names[static_cast<int>(side)];
 }
 
+/// A cuboid of a part, or a cavity cut out of one of its solid cuboids (thesis 4.1.1): a drawer's opening,
+/// a compartment. A cavity's faces can be covered (an opening behind a door) and enclose parts.
 struct Cuboid {
     std::string name;                     ///< unique in the model
     std::array<double, 6> coordinates{};  ///< indexed by Side
+    int within = -1;                      ///< a cavity: the solid cuboid it is cut from; -1: solid
     double at(Side side) const { return coordinates[static_cast<int>(side)]; }
+    bool cavity() const { return within >= 0; }
 };
 
 struct Part {
@@ -101,13 +105,16 @@ struct Support {
     int configuration = -1;
 };
 
-/// Fit inside (thesis 4.2.2, eq. 4.3–4.4): in the configuration, every cuboid of the inner parts lies inside
-/// the enclosing part's box, the inner parts do not overlap (each `apart` pair: a's high side at most b's
-/// low side along `axis`), and `just` pairs of faces coincide ("just fits" along an axis).
+/// Fit inside (thesis 4.2.2, eq. 4.3–4.4): in the configuration, every solid cuboid of the inner parts lies
+/// inside the enclosing part's box (or one of its cavities), the inner parts do not overlap (each `apart`
+/// pair: a's high side at most b's low side along `axis`), and `just` pairs of faces coincide ("just fits"
+/// along an axis).
 struct FitInside {
     std::string name;
-    std::vector<int> inner;  ///< parts
-    int enclosing = 0;       ///< part
+    std::vector<int> inner;    ///< parts
+    int enclosing = 0;         ///< part
+    int cavity = -1;           ///< a cavity of the enclosing part to fit in, else its box
+    std::vector<int> portion;  ///< partial fit (4.2.2): the inner cuboids that must fit; empty: all
     struct Apart {
         int a = 0, b = 0, axis = 0;  ///< cuboids
     };

@@ -48,6 +48,13 @@ void order(std::vector<LinearConstraint>& rows, const Model& model, const std::s
     rows.push_back({terms, equal ? bound : -kInfinity, bound, name});
 }
 
+/// Whether cuboid c of an inner part must lie inside (a partial fit names the portion that must).
+bool fits(const Model& model, const FitInside& f, int c)
+{
+    return !model.cuboids[c].cavity() &&
+           (f.portion.empty() || std::find(f.portion.begin(), f.portion.end(), c) != f.portion.end());
+}
+
 /// Cover (thesis 4.2.1, eq. 4.1; packing 4.3.1): per component of M, one plane, each face set packed, the
 /// covering box around (or, just, equal to) the covered box.
 void coverConstraints(std::vector<LinearConstraint>& rows, const Model& model, const Cover& c)
@@ -94,10 +101,17 @@ std::string faceName(const Model& model, const Face& face)
 std::vector<LinearConstraint> constraints(const Model& model)
 {
     std::vector<LinearConstraint> rows;
-    for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c)
+    for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c) {
         for (int a = 0; a < 3; ++a)  // right − left >= minimum size, along each axis
             rows.push_back(
                 {{{6 * c + 2 * a + 1, 1.0}, {6 * c + 2 * a, -1.0}}, model.minimumSize, kInfinity, ""});
+        if (const int solid = model.cuboids[c].within; solid >= 0)
+            for (int a = 0; a < 3; ++a) {  // a cavity stays within its solid cuboid (thesis 4.1.1)
+                rows.push_back({{{6 * solid + 2 * a, 1.0}, {6 * c + 2 * a, -1.0}}, -kInfinity, 0, ""});
+                rows.push_back(
+                    {{{6 * c + 2 * a + 1, 1.0}, {6 * solid + 2 * a + 1, -1.0}}, -kInfinity, 0, ""});
+            }
+    }
     for (const Flush& f : model.flush) {  // thesis 4.2.4: the two faces coplanar
         if (axis(f.a.side) != axis(f.b.side))
             throw std::invalid_argument("flush '" + f.name + "': " + faceName(model, f.a) + " and " +
@@ -114,13 +128,13 @@ std::vector<LinearConstraint> constraints(const Model& model)
         };
         for (int part : f.inner)
             for (int c : model.parts[part].cuboids)
-                for (int k = 0; k < 6; ++k) {  // inside the enclosing part's box
+                for (int k = 0; k < 6 && fits(model, f, c); ++k) {  // inside the box or cavity
                     const Side side = static_cast<Side>(k);
-                    const Face wall = extremeFace(model, f.enclosing, side, f.configuration);
+                    const Face w = wall(model, f.enclosing, f.cavity, side, f.configuration);
                     if (k % 2)
-                        rule(Face{c, side}, wall, false);
+                        rule(Face{c, side}, w, false);
                     else
-                        rule(wall, Face{c, side}, false);
+                        rule(w, Face{c, side}, false);
                 }
         for (const FitInside::Apart& a : f.apart)  // the inner parts do not overlap
             rule(Face{a.a, static_cast<Side>(2 * a.axis + 1)}, Face{a.b, static_cast<Side>(2 * a.axis)},
@@ -152,10 +166,7 @@ std::vector<LinearConstraint> constraints(const Model& model)
         std::vector<int> grounded;
         for (int p : s.supporting)
             if (std::find(s.supported.begin(), s.supported.end(), p) == s.supported.end())
-                grounded.push_back(*std::min_element(
-                    model.parts[p].cuboids.begin(), model.parts[p].cuboids.end(), [&](int x, int y) {
-                        return model.cuboids[x].at(Side::Bottom) < model.cuboids[y].at(Side::Bottom);
-                    }));
+                grounded.push_back(extremeFace(model, p, Side::Bottom, s.configuration).cuboid);
         for (size_t k = 1; k < grounded.size(); ++k) {
             auto [terms, bound] = difference(model, faceAt(grounded[0], Side::Bottom),
                                              faceAt(grounded[k], Side::Bottom), s.configuration);

@@ -39,11 +39,15 @@ std::vector<std::pair<int, int>> inferSupportPairs(const Model& model, const std
     std::vector<std::pair<int, int>> pairs;
     for (int p : supporting)
         for (int a : model.parts[p].cuboids) {
+            if (model.cuboids[a].cavity())
+                continue;
             const double top = at(model, a, Side::Top, configuration);
             std::tuple<double, double> best{std::numeric_limits<double>::max(), 0};
             int chosen = -1;
             for (int q : supported)
                 for (int b : model.parts[q].cuboids) {
+                    if (model.cuboids[b].cavity())
+                        continue;
                     const double rise = at(model, b, Side::Bottom, configuration) - top;
                     if (rise < -hair || rise > distance)
                         continue;

@@ -226,14 +226,33 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
 function::FitInside readFitInside(const function::Model& model, const Fields& r, const std::string& name,
                                   int configuration)
 {
-    function::FitInside f{name,
-                          partList(model, r, "inner"),
-                          partNamed(model, r.text("enclosing"), r.pathOf("enclosing")),
-                          {},
-                          {},
-                          configuration};
+    function::FitInside f;
+    f.name = name;
+    f.inner = partList(model, r, "inner");
+    f.enclosing = partNamed(model, r.text("enclosing"), r.pathOf("enclosing"));
+    f.configuration = configuration;
     if (std::find(f.inner.begin(), f.inner.end(), f.enclosing) != f.inner.end())
         throw FormatError(r.pathOf("enclosing") + ": a part cannot fit inside itself");
+    if (r.has("cavity")) {
+        f.cavity = cuboidNamed(model, r.text("cavity"), r.pathOf("cavity"));
+        const auto& own = model.parts[f.enclosing].cuboids;
+        if (!model.cuboids[f.cavity].cavity() || std::find(own.begin(), own.end(), f.cavity) == own.end())
+            throw FormatError(r.pathOf("cavity") + ": '" + r.text("cavity") + "' is not a cavity of part '" +
+                              model.parts[f.enclosing].name + "'");
+    }
+    const nlohmann::json& portion = r.array("portion", true);
+    for (size_t k = 0; k < portion.size(); ++k) {
+        const std::string here = at(r.pathOf("portion"), k);
+        if (!portion[k].is_string())
+            throw FormatError(here + ": must name a cuboid of an inner part");
+        const int c = cuboidNamed(model, portion[k].get<std::string>(), here);
+        if (std::none_of(f.inner.begin(), f.inner.end(), [&](int p) {
+                return std::find(model.parts[p].cuboids.begin(), model.parts[p].cuboids.end(), c) !=
+                       model.parts[p].cuboids.end();
+            }))
+            throw FormatError(here + ": '" + model.cuboids[c].name + "' is not a cuboid of an inner part");
+        f.portion.push_back(c);
+    }
     if (!r.has("apart")) {
         f.apart = function::inferApart(model, f.inner, configuration);
     } else {
@@ -265,7 +284,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
             throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
         }
     }
-    const auto inferred = function::inferJust(model, f.inner, f.enclosing, axes, configuration);
+    const auto inferred = function::inferJust(model, f.inner, f.enclosing, f.cavity, axes, configuration);
     f.just.insert(f.just.end(), inferred.begin(), inferred.end());
     return f;
 }
@@ -359,6 +378,31 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     }
 }
 
+/// The solid cuboid of the part that a cavity overlaps most (thesis 4.1.1: cavities are cut from solids).
+int solidAround(const function::Model& model, const function::Part& part, const function::Cuboid& cavity,
+                const std::string& path)
+{
+    int best = -1;
+    double most = 0;
+    for (int s : part.cuboids) {
+        const function::Cuboid& solid = model.cuboids[s];
+        if (solid.cavity() || &solid == &cavity)
+            continue;
+        double volume = 1;
+        for (int a = 0; a < 3; ++a)
+            volume *= std::max(0.0, std::min(solid.coordinates[2 * a + 1], cavity.coordinates[2 * a + 1]) -
+                                        std::max(solid.coordinates[2 * a], cavity.coordinates[2 * a]));
+        if (volume > most) {
+            most = volume;
+            best = s;
+        }
+    }
+    if (best < 0)
+        throw FormatError(path + ": cavity '" + cavity.name + "' lies outside every solid cuboid of part '" +
+                          part.name + "'");
+    return best;
+}
+
 nlohmann::json partNames(const function::Model& model, const std::vector<int>& parts)
 {
     nlohmann::json names = nlohmann::json::array();
@@ -400,6 +444,13 @@ function::Model readWorkslike(const nlohmann::json& document)
                     throw FormatError(cuboid.pathOf("max") + ": must exceed min along every axis");
             built.cuboids.push_back(static_cast<int>(model.cuboids.size()));
             model.cuboids.push_back({name, {low[0], high[0], low[1], high[1], low[2], high[2]}});
+            if (cuboid.flag("cavity", false)) {
+                if (c == 0)
+                    throw FormatError(cuboid.pathOf("cavity") +
+                                      ": a part's first cuboid is solid (cavities are cut from solids)");
+                model.cuboids.back().within =
+                    solidAround(model, built, model.cuboids.back(), cuboid.pathOf("min"));
+            }
         }
         model.parts.push_back(built);
     }
@@ -443,8 +494,11 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         nlohmann::json cuboids = nlohmann::json::array();
         for (int c : part.cuboids) {
             const auto& k = model.cuboids[c].coordinates;
-            cuboids.push_back(
-                {{"name", model.cuboids[c].name}, {"min", {k[0], k[2], k[4]}}, {"max", {k[1], k[3], k[5]}}});
+            nlohmann::json cuboid = {
+                {"name", model.cuboids[c].name}, {"min", {k[0], k[2], k[4]}}, {"max", {k[1], k[3], k[5]}}};
+            if (model.cuboids[c].cavity())
+                cuboid["cavity"] = true;
+            cuboids.push_back(cuboid);
         }
         parts.push_back({{"name", part.name}, {"cuboids", cuboids}});
     }
@@ -487,13 +541,20 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
             apart.push_back({model.cuboids[a.a].name, kAxes[a.axis], model.cuboids[a.b].name});
         for (const auto& [in, wall] : f.just)
             just.push_back({function::faceName(model, in), function::faceName(model, wall)});
-        relationships.push_back(inConfiguration({{"type", "fit_inside"},
-                                                 {"name", f.name},
-                                                 {"inner", partNames(model, f.inner)},
-                                                 {"enclosing", model.parts[f.enclosing].name},
-                                                 {"apart", apart},
-                                                 {"just", just}},
-                                                f.configuration));
+        nlohmann::json fit = {{"type", "fit_inside"},
+                              {"name", f.name},
+                              {"inner", partNames(model, f.inner)},
+                              {"enclosing", model.parts[f.enclosing].name},
+                              {"apart", apart},
+                              {"just", just}};
+        if (f.cavity >= 0)
+            fit["cavity"] = model.cuboids[f.cavity].name;
+        if (!f.portion.empty()) {
+            fit["portion"] = nlohmann::json::array();
+            for (int c : f.portion)
+                fit["portion"].push_back(model.cuboids[c].name);
+        }
+        relationships.push_back(inConfiguration(fit, f.configuration));
     }
     for (const function::Cover& c : model.cover) {
         nlohmann::json pairs = nlohmann::json::array();

@@ -98,3 +98,58 @@ TEST(FitInside, ErrorsNameTheFieldAndTheFormatRoundTrips)
     EXPECT_EQ(io::workslikeToJson(io::readWorkslike(written)), written);
     EXPECT_EQ(written["relationships"][0]["apart"][0], json::array({"low drawer", "z", "high drawer"}));
 }
+
+TEST(FitInside, APortionOfAPartFitsACavityAndTheCavityStaysInItsSolid)
+{
+    // A drawer whose front stays outside: only its box must fit the chest's opening, a cavity.
+    json d = chest();
+    d["parts"] = {
+        {{"name", "chest"},
+         {"cuboids",
+          {{{"name", "chest"}, {"min", {0, 0, 0}}, {"max", {400, 300, 500}}},
+           {{"name", "opening"}, {"min", {20, 0, 20}}, {"max", {380, 280, 250}}, {"cavity", true}}}}},
+        {{"name", "drawer"},
+         {"cuboids",
+          {{{"name", "front"}, {"min", {10, -20, 10}}, {"max", {390, 0, 260}}},
+           {{"name", "tray"}, {"min", {10, 0, 30}}, {"max", {390, 290, 240}}}}}}};
+    d["relationships"] = {{{"type", "fit_inside"},
+                           {"name", "tray in the opening"},
+                           {"inner", {"drawer"}},
+                           {"enclosing", "chest"},
+                           {"cavity", "opening"},
+                           {"portion", {"tray"}}}};
+    d["locks"] = {"chest.left", "chest.right"};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    const function::Model& m = r.model;  // cuboids: chest 0, opening 1, front 2, tray 3
+    for (Side low : {Side::Left, Side::Near, Side::Bottom}) {
+        const Side high = static_cast<Side>(static_cast<int>(low) + 1);
+        EXPECT_LE(at(m, 1, low), at(m, 3, low) + 1e-6);  // the tray in the opening
+        EXPECT_GE(at(m, 1, high), at(m, 3, high) - 1e-6);
+        EXPECT_LE(at(m, 0, low), at(m, 1, low) + 1e-6);  // the opening in the chest
+        EXPECT_GE(at(m, 0, high), at(m, 1, high) - 1e-6);
+    }
+    EXPECT_LT(at(m, 2, Side::Near), at(m, 1, Side::Near));  // the front may stay outside
+    EXPECT_NEAR(at(m, 3, Side::Far), 285, 1e-6);  // least change: the tray 5 shorter, the opening 5 deeper
+}
+
+TEST(FitInside, CavityAndPortionErrorsNameTheField)
+{
+    json d = chest();
+    d["parts"][0]["cuboids"].push_back(
+        {{"name", "hole"}, {"min", {500, 0, 0}}, {"max", {600, 10, 10}}, {"cavity", true}});
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "parts[0].cuboids[1].min: cavity 'hole' lies outside every solid cuboid of part 'chest'");
+    d = chest();
+    d["parts"][0]["cuboids"][0]["cavity"] = true;
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "parts[0].cuboids[0].cavity: a part's first cuboid is solid (cavities are cut from solids)");
+    d = chest();
+    d["relationships"][0]["cavity"] = "low drawer";
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].cavity: 'low drawer' is not a cavity of part 'chest'");
+    d = chest();
+    d["relationships"][0]["portion"] = {"chest"};
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].portion[0]: 'chest' is not a cuboid of an inner part");
+}

@@ -156,3 +156,20 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
         for c in p["cuboids"]:
             assert c["min"] + c["max"] == pytest.approx(solved[c["name"]]["min"] + solved[c["name"]]["max"], abs=1e-5)
     assert touched(doc) == []
+
+
+def test_the_cabinet_imports_with_cavities_and_an_edit_widens_both_doors(doc, source_dir):
+    mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "cabinet.workslike.json"))
+    doc.recompute()
+    assert mech.Status == "Solved", mech.Status
+    carcass = doc.getObjectsByLabel("carcass part")[0]
+    assert [b.Label for b in carcass.Cavities] == ["upper compartment", "middle compartment", "lower compartment",
+                                                   "top well"]
+    left, right = doc.getObjectsByLabel("left door")[0], doc.getObjectsByLabel("right door")[0]
+    assert left.Shape.BoundBox.XMin == pytest.approx(18) and right.Shape.BoundBox.XMax == pytest.approx(582)
+    compartment = doc.getObjectsByLabel("upper compartment")[0]
+    compartment.Length = compartment.Length.Value + 40  # the user widens it
+    doc.recompute()
+    assert mech.Status == "Solved", mech.Status
+    assert left.Length.Value == pytest.approx(302, abs=1e-5) and right.Length.Value == pytest.approx(302, abs=1e-5)
+    assert cuboids.coordinates(right)[1] == pytest.approx(622, abs=1e-5)

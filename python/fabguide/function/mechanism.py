@@ -53,7 +53,7 @@ def members(obj, test):
 
 
 def boxes(obj):
-    return [box for part in members(obj, parts.is_part) for box in part.Cuboids if cuboids.is_box(box)]
+    return [box for part in members(obj, parts.is_part) for box in parts.boxes(part) if cuboids.is_box(box)]
 
 
 def edits(obj):

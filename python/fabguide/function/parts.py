@@ -9,15 +9,18 @@ class FunctionalPart(properties.Proxy):
     def define(self, obj):
         properties.add(obj, "App::PropertyLinkList", "Cuboids", "Part",
                        "The axis-aligned boxes (Part::Box) the part is made of")
+        properties.add(obj, "App::PropertyLinkList", "Cavities", "Part",
+                       "Boxes cut out of it: openings and compartments that can be covered or fitted into")
 
     def execute(self, obj):
         as_dict(obj)  # says which box is unusable
 
 
-def create(doc, boxes, label=None):
+def create(doc, boxes, label=None, cavities=()):
     obj = doc.addObject("App::FeaturePython", "FunctionalPart")
     FunctionalPart(obj)
     obj.Cuboids = list(boxes)
+    obj.Cavities = list(cavities)
     obj.Label = label or boxes[0].Label
     return obj
 
@@ -31,14 +34,20 @@ def as_dict(obj):
     if not obj.Cuboids:
         raise cuboids.CuboidError("Part '{}' has no boxes: add a Part::Box to its Cuboids".format(obj.Label))
     out = []
-    for box in obj.Cuboids:
+    for box in list(obj.Cuboids) + list(obj.Cavities):
         if not cuboids.is_box(box):
             raise cuboids.CuboidError("Part '{}': '{}' is not a Part::Box".format(obj.Label, box.Label))
         c = cuboids.coordinates(box)
         out.append({"name": box.Label, "min": c[0::2], "max": c[1::2]})
+        if box in obj.Cavities:
+            out[-1]["cavity"] = True
     return {"name": obj.Label, "cuboids": out}
+
+
+def boxes(obj):
+    return list(obj.Cuboids) + list(obj.Cavities)
 
 
 def part_of(doc_objects, box):
     """The FabGuide part among `doc_objects` that holds `box`, if any."""
-    return next((p for p in doc_objects if is_part(p) and box in p.Cuboids), None)
+    return next((p for p in doc_objects if is_part(p) and box in boxes(p)), None)

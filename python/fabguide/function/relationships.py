@@ -39,14 +39,22 @@ class FitInside(Relationship):
     def define_fields(self, obj, add):
         add(obj, "App::PropertyLinkList", "Inner", "Fit inside", "Parts that must fit inside")
         add(obj, "App::PropertyLink", "Enclosing", "Fit inside", "The part they fit inside")
+        add(obj, "App::PropertyLink", "Cavity", "Fit inside", "A cavity of the enclosing part to fit in; empty: its box")
+        add(obj, "App::PropertyLinkList", "Portion", "Fit inside",
+            "Partial fit: the boxes of the inner parts that must fit (a drawer's tray, not its front); empty: all")
         for axis, size in zip("XYZ", ("width", "depth", "height")):
             add(obj, "App::PropertyBool", "Just" + axis, "Fit inside", "Just fits in {} (along {})".format(size, axis))
 
     def fields(self, obj):
         if obj.Enclosing is None:
             raise ValueError("Fit inside '{}': choose the Enclosing part".format(obj.Label))
-        return {"inner": labels(obj.Inner), "enclosing": obj.Enclosing.Label,
-                "just": [a.lower() for a in "XYZ" if getattr(obj, "Just" + a)]}
+        out = {"inner": labels(obj.Inner), "enclosing": obj.Enclosing.Label,
+               "just": [a.lower() for a in "XYZ" if getattr(obj, "Just" + a)]}
+        if obj.Cavity is not None:
+            out["cavity"] = obj.Cavity.Label
+        if obj.Portion:
+            out["portion"] = labels(obj.Portion)
+        return out
 
 
 class Support(Relationship):

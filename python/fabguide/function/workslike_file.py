@@ -20,8 +20,10 @@ def import_model(doc, data, label="Mechanism"):
             boxes[c["name"]] = box
     for p in data.get("parts", []):  # FreeCAD labels are unique: a part named like its box is "… part"
         taken = doc.getObjectsByLabel(p["name"])
-        made_parts[p["name"]] = parts.create(doc, [boxes[c["name"]] for c in p["cuboids"]],
-                                             label=p["name"] + " part" if taken else p["name"])
+        made_parts[p["name"]] = parts.create(
+            doc, [boxes[c["name"]] for c in p["cuboids"] if not c.get("cavity")],
+            label=p["name"] + " part" if taken else p["name"],
+            cavities=[boxes[c["name"]] for c in p["cuboids"] if c.get("cavity")])
         members.append(made_parts[p["name"]])
     doc.recompute()  # the boxes' shapes, to find their edges
 
@@ -83,6 +85,7 @@ def relationship_fields(r, made_parts, boxes, rename):
         axes = {a if isinstance(a, str) else "xyz"[cuboids.SIDES.index(a[0].rsplit(".", 1)[1]) // 2]
                 for a in r.get("just", [])}
         return dict(Inner=[made_parts[n] for n in r["inner"]], Enclosing=made_parts[r["enclosing"]],
+                    Cavity=boxes.get(r.get("cavity")), Portion=[boxes[n] for n in r.get("portion", [])],
                     **{"Just" + a.upper(): True for a in axes})
     if kind == "flush":
         return dict(Faces=faces(r["faces"]))
