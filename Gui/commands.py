@@ -1,16 +1,16 @@
 """FabGuide's GUI commands and where the workbench shows them."""
 import FreeCADGui as Gui
 
-from fabguide_gui import about, material_commands
+from fabguide_gui import about, function_commands, material_commands
 
 # Toolbar and menu contents: Function (thesis ch. 4), Material (ch. 5).
 TOOLBARS = {
-    "Function": [],
+    "Function": list(function_commands.COMMANDS),
     "Material": list(material_commands.COMMANDS),
 }
 HELP = ["FabGuide_About"]
 
-COMMANDS = dict(material_commands.COMMANDS, FabGuide_About=about.AboutCommand())
+COMMANDS = dict(function_commands.COMMANDS, **material_commands.COMMANDS, FabGuide_About=about.AboutCommand())
 
 
 def register():

@@ -1,59 +1,18 @@
 """Material toolbar (thesis ch. 5): master boards, boards, layout, cut sheets. Each command is one undo
 step; the work itself is done by the document objects in fabguide.material."""
-import contextlib
 import os
 
 import FreeCAD
 import FreeCADGui
 
 from fabguide.material import board, layout, master_board, techdraw
-from fabguide_gui import resources, viewproviders
-
-
-@contextlib.contextmanager
-def transaction(doc, name):
-    """One undo step, or none if the command fails."""
-    doc.openTransaction(name)
-    try:
-        yield
-    except Exception:
-        doc.abortTransaction()
-        raise
-    doc.commitTransaction()
-
-
-def tell(message):
-    """A user mistake: said in the report view and in a message box."""
-    from PySide import QtGui
-
-    FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
-    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "FabGuide", message)
-
-
-def selected(test):
-    return [s.Object for s in FreeCADGui.Selection.getSelectionEx() if test(s.Object)]
-
-
-def all_in(doc, test):
-    return [o for o in doc.Objects if test(o)]
+from fabguide_gui import viewproviders
+from fabguide_gui.command_base import Command, all_in, selected, tell, transaction
 
 
 def first_thickness(doc):
     boards = selected(board.is_board) or all_in(doc, board.is_board)
     return boards[0].Thickness.Value if boards else 18
-
-
-class Command:
-    """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
-
-    def GetResources(self):
-        return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
-
-    def Activated(self):
-        self.run(FreeCAD.ActiveDocument)
 
 
 class NewMasterBoard(Command):

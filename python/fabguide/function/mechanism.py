@@ -28,6 +28,8 @@ class Mechanism(properties.Proxy):
             "Coordinates that keep their value, e.g. 'Body.top' (box label . side)")
         add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
             "Box coordinates you changed since the last solve keep their new value while the rest adapts", True)
+        add(obj, "App::PropertyLink", "ShownConfiguration", "Mechanism",
+            "The configuration the Configurations panel last showed; new relationships hold in it")
         add(obj, "App::PropertyString", "Status", "Result", "Solved, or the relationships in conflict", mode=1)
         add(obj, "App::PropertyFloat", "Violation", "Result", "Largest constraint violation after the solve, mm",
             mode=1)

@@ -1,0 +1,49 @@
+"""What every FabGuide command shares: one undo step per command, telling the user about mistakes, reading
+the selection."""
+import contextlib
+
+import FreeCAD
+import FreeCADGui
+
+from fabguide_gui import resources
+
+
+@contextlib.contextmanager
+def transaction(doc, name):
+    """One undo step, or none if the command fails."""
+    doc.openTransaction(name)
+    try:
+        yield
+    except Exception:
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+
+
+def tell(message):
+    """A user mistake: said in the report view and in a message box."""
+    from PySide import QtGui
+
+    FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
+    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "FabGuide", message)
+
+
+def selected(test):
+    return [s.Object for s in FreeCADGui.Selection.getSelectionEx() if test(s.Object)]
+
+
+def all_in(doc, test):
+    return [o for o in doc.Objects if test(o)]
+
+
+class Command:
+    """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
+
+    def GetResources(self):
+        return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        self.run(FreeCAD.ActiveDocument)

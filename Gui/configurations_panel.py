@@ -1,0 +1,158 @@
+"""Configurations task panel (thesis 4.1.2): name a configuration, pose its joints, and move the mechanism
+between the base pose and that configuration with a slider; OK stores it (one undo step) and makes it the one
+new relationships hold in."""
+import FreeCAD
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+from fabguide.function import configuration, joints, mechanism
+from fabguide_gui import function_viewproviders as vp
+from fabguide_gui.posing import Poser
+
+NEW = "New configuration"
+
+
+def close_panel():
+    """Leaves edit mode if the panel came from there (its unsetEdit closes the dialog), else closes it."""
+    if FreeCADGui.ActiveDocument and FreeCADGui.ActiveDocument.getInEdit():
+        FreeCADGui.ActiveDocument.resetEdit()
+    else:
+        FreeCADGui.Control.closeDialog()
+
+
+
+class ConfigurationsPanel:
+    def __init__(self, mech, shown=None):
+        self.mech = mech
+        self.joints = mechanism.members(mech, joints.is_joint)
+        self.configurations = mechanism.members(mech, configuration.is_configuration)
+        self.poser = Poser(mech)
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle("Configurations")
+        layout = QtGui.QVBoxLayout(self.form)
+        self.choice = QtGui.QComboBox()
+        self.choice.addItems([c.Label for c in self.configurations] + [NEW])
+        self.name = QtGui.QLineEdit()
+        form = QtGui.QFormLayout()
+        form.addRow("Configuration", self.choice)
+        form.addRow("Name", self.name)
+        layout.addLayout(form)
+        self.table = QtGui.QTableWidget(len(self.joints), 4)
+        self.table.setHorizontalHeaderLabels(["Joint", "Moves", "Angle (°)", "Offset (mm)"])
+        self.table.verticalHeader().setVisible(False)
+        self.moves, self.angles, self.offsets = [], [], []
+        for row, joint in enumerate(self.joints):
+            self.table.setItem(row, 0, QtGui.QTableWidgetItem(joint.Label))
+            self.table.item(row, 0).setFlags(QtCore.Qt.ItemIsEnabled)
+            moves = QtGui.QCheckBox()
+            angle, offset = QtGui.QDoubleSpinBox(), QtGui.QDoubleSpinBox()
+            angle.setRange(-360, 360)
+            offset.setRange(-1e5, 1e5)
+            angle.setEnabled(joints.turns(joint))
+            offset.setEnabled(joints.slides(joint))
+            for column, widget in ((1, moves), (2, angle), (3, offset)):
+                self.table.setCellWidget(row, column, widget)
+            moves.toggled.connect(self.preview)
+            angle.valueChanged.connect(self.preview)
+            offset.valueChanged.connect(self.preview)
+            self.moves.append(moves)
+            self.angles.append(angle)
+            self.offsets.append(offset)
+        self.table.resizeColumnsToContents()
+        layout.addWidget(self.table)
+        slide = QtGui.QHBoxLayout()
+        slide.addWidget(QtGui.QLabel("Base"))
+        self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
+        self.slider.setRange(0, 100)
+        self.slider.setValue(100)
+        self.slider.valueChanged.connect(self.preview)
+        slide.addWidget(self.slider)
+        slide.addWidget(QtGui.QLabel("Configuration"))
+        self.play = QtGui.QPushButton("Play")
+        self.play.clicked.connect(self.animate)
+        slide.addWidget(self.play)
+        layout.addLayout(slide)
+        self.status = QtGui.QLabel()
+        self.status.setWordWrap(True)
+        layout.addWidget(self.status)
+        self.timer = QtCore.QTimer()
+        self.timer.timeout.connect(self.step)
+        self.direction = -4
+        self.choice.currentIndexChanged.connect(self.load)
+        start = self.configurations.index(shown) if shown in self.configurations else (
+            self.configurations.index(mech.ShownConfiguration) if mech.ShownConfiguration in self.configurations else 0)
+        self.choice.setCurrentIndex(start)
+        self.load(start)
+
+    def load(self, index):
+        chosen = self.configurations[index] if index < len(self.configurations) else None
+        poses = {j.Name: (a, o) for j, a, o in configuration.poses(chosen)} if chosen else {}
+        self.name.setText(chosen.Label if chosen else "Configuration {}".format(len(self.configurations) + 1))
+        for row, joint in enumerate(self.joints):
+            angle, offset = poses.get(joint.Name, (0.0, 0.0))
+            for widget, value in ((self.moves[row], joint.Name in poses), (self.angles[row], angle),
+                                  (self.offsets[row], offset)):
+                widget.blockSignals(True)
+                (widget.setChecked if isinstance(widget, QtGui.QCheckBox) else widget.setValue)(value)
+                widget.blockSignals(False)
+        self.preview()
+
+    def poses(self, fraction=1.0):
+        """{joint name: (angle, offset)} of the checked joints, a fraction of the way from the base pose."""
+        return {j.Name: (fraction * self.angles[r].value(), fraction * self.offsets[r].value())
+                for r, j in enumerate(self.joints) if self.moves[r].isChecked()}
+
+    def preview(self, *args):
+        self.poser.show(self.poses(self.slider.value() / 100.0))
+        moved = ", ".join(self.joints[r].Label for r in range(len(self.joints)) if self.moves[r].isChecked())
+        self.status.setText("Moves: " + (moved or "nothing yet: tick the joints this configuration poses"))
+        FreeCADGui.updateGui()
+
+    def animate(self):
+        if self.timer.isActive():
+            self.timer.stop()
+            self.play.setText("Play")
+        else:
+            self.timer.start(30)
+            self.play.setText("Stop")
+
+    def step(self):
+        value = self.slider.value() + self.direction
+        if not 0 <= value <= 100:
+            self.direction = -self.direction
+            value = max(0, min(100, value))
+        self.slider.setValue(value)
+
+    def accept(self):
+        self.close()
+        doc = self.mech.Document
+        doc.openTransaction("Configuration")
+        index = self.choice.currentIndex()
+        chosen = self.configurations[index] if index < len(self.configurations) else None
+        if chosen is None:
+            chosen = vp.attach(configuration.create(doc, self.name.text(), []))
+            self.mech.Group = self.mech.Group + [chosen]
+        chosen.Label = self.name.text() or chosen.Label
+        configuration.set_poses(chosen, [(j, self.angles[r].value(), self.offsets[r].value())
+                                         for r, j in enumerate(self.joints) if self.moves[r].isChecked()])
+        self.mech.ShownConfiguration = chosen
+        doc.recompute()
+        doc.commitTransaction()
+        FreeCAD.Console.PrintMessage("{}: {} ({})\n".format(self.mech.Label, chosen.Label, self.mech.Status))
+        return True
+
+    def reject(self):
+        self.close()
+        return True
+
+    def close(self):
+        self.cleanup()
+        close_panel()
+
+    def cleanup(self):
+        """Stops the animation and removes the preview from the 3-D view (idempotent)."""
+        self.timer.stop()
+        self.poser.clear()
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)

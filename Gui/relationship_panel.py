@@ -1,0 +1,133 @@
+"""Relationship task panel: its status (conflicts in red), and for cover and support the corresponding faces
+(thesis 4.3.1, 4.3.3), which the user can correct; while it is open the faces are coloured, covering or
+supporting in blue, covered or supported in red."""
+import FreeCAD
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+from fabguide.function import cuboids, mechanism, parts, relationships
+from fabguide_gui.configurations_panel import close_panel
+
+BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
+
+
+class RelationshipPanel:
+    def __init__(self, rel):
+        self.rel, self.coloured = rel, set()
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle(rel.Label)
+        layout = QtGui.QVBoxLayout(self.form)
+        self.status = QtGui.QLabel()
+        self.status.setWordWrap(True)
+        layout.addWidget(self.status)
+        self.pairs = None
+        if "Pairs" in rel.PropertiesList:
+            layout.addWidget(QtGui.QLabel("Corresponding faces (first -> second); edit to correct:"))
+            self.pairs = QtGui.QListWidget()
+            layout.addWidget(self.pairs)
+            buttons = QtGui.QHBoxLayout()
+            for text, slot in (("Add pair", self.add_pair), ("Remove", self.remove_pair), ("Infer again", self.infer)):
+                button = QtGui.QPushButton(text)
+                button.clicked.connect(slot)
+                buttons.addWidget(button)
+            layout.addLayout(buttons)
+            self.pairs.itemChanged.connect(self.colour)
+        rel.Document.openTransaction("Edit " + rel.Label)
+        self.fill()
+
+    def fill(self):
+        status = self.rel.Status or "Not solved yet"
+        colour = "#b22222" if status.startswith("Conflict") else "#2e7d32"
+        self.status.setText("<b style='color:{}'>{}</b>".format(colour, status))
+        if self.pairs is not None:
+            self.pairs.blockSignals(True)
+            self.pairs.clear()
+            for text in self.rel.Pairs:
+                item = QtGui.QListWidgetItem(text)
+                item.setFlags(item.flags() | QtCore.Qt.ItemIsEditable)
+                self.pairs.addItem(item)
+            self.pairs.blockSignals(False)
+        self.colour()
+
+    def texts(self):
+        return [self.pairs.item(i).text() for i in range(self.pairs.count())]
+
+    def add_pair(self):
+        item = QtGui.QListWidgetItem("Box.side" + relationships.ARROW + "Box.side")
+        item.setFlags(item.flags() | QtCore.Qt.ItemIsEditable)
+        self.pairs.addItem(item)
+        self.pairs.editItem(item)
+
+    def remove_pair(self):
+        for item in self.pairs.selectedItems():
+            self.pairs.takeItem(self.pairs.row(item))
+        self.colour()
+
+    def infer(self):
+        self.rel.Pairs = []
+        self.solve()
+
+    def solve(self):
+        for m in self.rel.InList:
+            if mechanism.is_mechanism(m):
+                m.touch()
+        self.rel.Document.recompute()
+        self.fill()
+
+    def colour(self, *args):
+        """The faces of the pairs (or the parts of the relationship) in blue and red."""
+        self.uncolour()
+        by_label = {b.Label: b for b in self.rel.Document.Objects if cuboids.is_box(b)}
+        faces = []
+        if self.pairs is not None:
+            for text in self.texts():
+                ends = [t.strip() for t in text.split(relationships.ARROW.strip())]
+                faces += [(end, colour) for end, colour in zip(ends, (BLUE, RED))]
+        elif "Faces" in self.rel.PropertiesList:
+            faces = [(cuboids.face_name(b, e), c) for (b, es), c in zip(self.rel.Faces, (BLUE, RED)) for e in es]
+        for name, colour in faces:
+            label, _, side = name.rpartition(".")
+            box = by_label.get(label)
+            if box is None or side not in cuboids.SIDES or box.ViewObject is None:
+                continue
+            colours = list(box.ViewObject.DiffuseColor)
+            if len(colours) != 6:
+                colours = [box.ViewObject.ShapeColor] * 6
+            colours[cuboids.SIDES.index(side)] = colour
+            box.ViewObject.DiffuseColor = colours
+            self.coloured.add(box)
+        for name, colour in (("Inner", RED), ("Enclosing", BLUE)):
+            value = getattr(self.rel, name, None)
+            for part in value if isinstance(value, list) else [value]:
+                for box in parts.boxes(part) if part is not None else []:
+                    if box.ViewObject is not None:
+                        box.ViewObject.DiffuseColor = [colour] * 6
+                        self.coloured.add(box)
+
+    def uncolour(self):
+        for box in self.coloured:
+            try:
+                box.ViewObject.DiffuseColor = [box.ViewObject.ShapeColor] * 6
+            except (ReferenceError, AttributeError):
+                pass
+        self.coloured = set()
+
+    def accept(self):
+        if self.pairs is not None and self.texts() != list(self.rel.Pairs):
+            self.rel.Pairs = self.texts()
+            self.solve()
+        self.uncolour()
+        self.rel.Document.commitTransaction()
+        close_panel()
+        FreeCAD.Console.PrintMessage("{}: {}\n".format(self.rel.Label, self.rel.Status))
+        return True
+
+    def reject(self):
+        self.uncolour()
+        self.rel.Document.abortTransaction()
+        self.rel.Document.recompute()
+        close_panel()
+        return True
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)

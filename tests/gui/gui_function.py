@@ -1,0 +1,166 @@
+"""Function toolbar in the real FreeCAD GUI: the Cabinet imported and shown in a configuration; a clamshell
+made from plain boxes with the commands (mechanism, hinge, configuration panel, cover), its faces coloured in
+the relationship panel, a conflict shown in red, undo, and export; screenshots of the 3-D view and panels."""
+import json
+import os
+import tempfile
+
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtGui
+
+import fabguide_core
+import guitest
+from fabguide.function import cuboids, joints, mechanism, relationships
+
+state = {}
+SOURCE = os.environ["FABGUIDE_SOURCE_DIR"]
+
+
+def with_file_dialog(name, path, command):
+    original = getattr(QtGui.QFileDialog, name)
+    setattr(QtGui.QFileDialog, name, staticmethod(lambda *args, **kwargs: (path, "")))
+    try:
+        Gui.runCommand(command)
+    finally:
+        setattr(QtGui.QFileDialog, name, original)
+
+
+def import_the_cabinet():
+    Gui.activateWorkbench("FabGuideWorkbench")
+    doc = FreeCAD.newDocument("Cabinet")
+    state["cabinet"] = doc
+    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cabinet.workslike.json"),
+                     "FabGuide_ImportWorkslike")
+    mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
+    assert mech.Status == "Solved", mech.Status
+    rels = [o for o in mech.Group if relationships.is_relationship(o)]
+    assert len(rels) == 8 and {r.Status for r in rels} == {"Satisfied"}
+    hinge = doc.getObjectsByLabel("left door hinge")[0]
+    assert hinge.ViewObject.Proxy.coordinates.point.getNum() == 4  # its edge and its slide axis drawn
+    assert doc.getObjectsByLabel("upper compartment")[0].ViewObject.Transparency == 75
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("function_cabinet"))
+    state["mech"] = mech
+
+
+def the_configurations_panel_shows_the_doors_stowed():
+    mech = state["mech"]
+    door = state["cabinet"].getObjectsByLabel("left door")[0]
+    children = door.ViewObject.RootNode.getNumChildren()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_Configurations")
+    QtGui.QApplication.processEvents()
+    panel = mech.ViewObject.Proxy.panel
+    assert panel.choice.count() == 5, "4 configurations and 'New configuration'"
+    panel.choice.setCurrentIndex(0)  # doors stowed
+    QtGui.QApplication.processEvents()
+    node = door.ViewObject.RootNode.getChild(0)
+    assert abs(node.rotation.getValue().getValue()[3]) < 0.99, "the door is shown turned"
+    Gui.SendMsgToActiveView("ViewFit")
+    print("screenshot: " + guitest.screenshot("function_configurations_panel"))
+    print("3-D view: " + guitest.view_image("function_cabinet_doors_stowed"))
+    Gui.ActiveDocument.resetEdit()
+    QtGui.QApplication.processEvents()
+    assert door.ViewObject.RootNode.getNumChildren() == children, "the preview's transforms are gone"
+
+
+def a_clamshell_from_plain_boxes_with_the_commands():
+    doc = FreeCAD.newDocument("Clamshell")
+    state["doc"] = doc
+    doc.UndoMode = 1
+    body, lid = doc.addObject("Part::Box", "Body"), doc.addObject("Part::Box", "Lid")
+    cuboids.set_coordinates(body, [0, 60, 0, 120, 0, 10])
+    cuboids.set_coordinates(lid, [3, 57, 122, 230, 0, 7])
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(body)
+    Gui.Selection.addSelection(lid)
+    Gui.runCommand("FabGuide_NewMechanism")
+    mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
+    assert len(mech.Group) == 2 and mech.Status == "Solved"
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(lid, cuboids.edge_element(lid, ("near", "top")))
+    Gui.runCommand("FabGuide_AddHinge")
+    hinge = [o for o in mech.Group if joints.is_joint(o)][0]
+    assert joints.as_dict(hinge)["edge"] == ["Lid.near", "Lid.top"]
+    # The configurations panel: a new configuration with the hinge at 180°.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_Configurations")
+    QtGui.QApplication.processEvents()
+    panel = mech.ViewObject.Proxy.panel
+    assert Gui.Control.activeDialog() and panel.choice.currentText() == "New configuration"
+    panel.moves[0].setChecked(True)
+    panel.angles[0].setValue(180)
+    panel.name.setText("Closed")
+    assert not panel.offsets[0].isEnabled(), "a hinge has no offset"
+    [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton) if b.text() in ("OK", "&OK")][0].click()
+    QtGui.QApplication.processEvents()
+    closed = doc.getObjectsByLabel("Closed")[0]
+    assert mech.ShownConfiguration == closed and list(closed.Angles) == [180.0]
+    # Cover: pick the lid, then the body (picked last: covered); it holds in the shown configuration.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(lid)
+    Gui.Selection.addSelection(body)
+    Gui.runCommand("FabGuide_AddCover")
+    cover = [o for o in mech.Group if relationships.is_relationship(o)][0]
+    assert cover.Configuration == closed and cover.Status == "Satisfied", cover.Status
+    assert lid.Length.Value == body.Length.Value, "just cover: as wide as the body"
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("function_clamshell"))
+    state.update(mech=mech, cover=cover, body=body, lid=lid)
+
+
+def the_relationship_panel_colours_the_faces():
+    cover, lid, body = state["cover"], state["lid"], state["body"]
+    cover.ViewObject.doubleClicked()
+    QtGui.QApplication.processEvents()
+    lists = [w for w in Gui.getMainWindow().findChildren(QtGui.QListWidget) if w.isVisible()]
+    assert [lists[0].item(i).text() for i in range(lists[0].count())] == ["Lid.bottom -> Body.top"]
+    assert lid.ViewObject.DiffuseColor[4][:3] != lid.ViewObject.DiffuseColor[5][:3], "the covering face coloured"
+    print("screenshot: " + guitest.screenshot("function_relationship_panel"))
+    Gui.Control.activeDialog() and [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton)
+                                    if b.text() in ("Cancel", "&Cancel")][0].click()
+    QtGui.QApplication.processEvents()
+    assert len({c[:3] for c in lid.ViewObject.DiffuseColor}) == 1, "colours restored"
+
+
+def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
+    doc, mech, lid = state["doc"], state["mech"], state["lid"]
+    doc.openTransaction("Narrow lid")
+    narrow = relationships.create(doc, "geometric", "Lid 40 wide", Left=["Lid.width"], Offset=40)
+    mech.Group = mech.Group + [narrow]
+    mech.Locks = ["Body.left", "Body.right"]
+    doc.recompute()
+    doc.commitTransaction()
+    assert mech.Status.startswith("Conflict: Lid 40 wide"), mech.Status
+    red = lid.ViewObject.DiffuseColor[0]
+    assert abs(red[0] - 0.85) < 0.01 and red[1] < 0.25, red
+    print("3-D view: " + guitest.view_image("function_conflict"))
+    name = narrow.Name
+    doc.undo()
+    doc.recompute()
+    assert doc.getObject(name) is None and mech.Status == "Solved", mech.Status
+
+
+def export_writes_a_model_the_core_solves():
+    path = os.path.join(tempfile.mkdtemp(), "clamshell.workslike.json")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(state["mech"])
+    with_file_dialog("getSaveFileName", path, "FabGuide_ExportWorkslike")
+    with open(path) as f:
+        assert fabguide_core.solve(json.load(f))["report"]["solved"]
+
+
+guitest.run([
+    import_the_cabinet,
+    the_configurations_panel_shows_the_doors_stowed,
+    a_clamshell_from_plain_boxes_with_the_commands,
+    the_relationship_panel_colours_the_faces,
+    a_conflict_turns_the_parts_red_and_undo_takes_it_back,
+    export_writes_a_model_the_core_solves,
+])
