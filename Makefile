@@ -25,7 +25,8 @@ install: all
 	@echo "FabGuide installed into $$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' $(BUILD)/CMakeCache.txt)$(if $(MOD_DIR), (here: $(MOD_DIR)))"
 
 demo: install
-	freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
+		freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
+	QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a -s "-screen 0 1280x1024x24" freecad tools/demo_view.py 2>&1 | grep "^wrote"
 
 bench: all
 	python3 tests/bench/benchmarks.py

@@ -1,5 +1,7 @@
 """`make demo`, run by freecadcmd: proves FreeCAD loads the installed workbench, then runs the
-bundled examples through it: the bookshelf is laid out on its master boards and cut sheets are written."""
+bundled examples through it: the Cabinet (thesis Table 4.1) is built as a FreeCAD document from its
+works-like model, solved and saved; the bookshelf is laid out on its master boards and cut sheets are
+written. tools/demo_view.py then renders the saved cabinet in FreeCAD's GUI."""
 import os
 import sys
 
@@ -14,7 +16,33 @@ assert os.path.isfile(os.path.join(mod_dir, "InitGui.py")), "fabguide_core is no
 print("FabGuide {} loaded by FreeCAD {} from {}".format(
     fabguide_core.__version__, ".".join(FreeCAD.Version()[:3]), mod_dir))
 
-from fabguide.material import layout  # noqa: E402  (needs the workbench found above)
+from fabguide.function import joints, mechanism, parts, relationships, workslike_file  # noqa: E402
+from fabguide.material import layout  # noqa: E402
+
+# Function: the Cabinet as parts, joints, configurations and relationships; solved on recompute (thesis ch. 4).
+os.makedirs(os.path.join(OUT, "cabinet"), exist_ok=True)
+doc = FreeCAD.newDocument("Cabinet")
+cabinet = workslike_file.read(doc, os.path.join(ROOT, "examples", "cabinet.workslike.json"))
+modelled = {b.Label: b.Shape.BoundBox for b in mechanism.boxes(cabinet)}
+doc.recompute()
+print("Cabinet: {} parts, {} joints, {} relationships: {}".format(
+    len(mechanism.members(cabinet, parts.is_part)), len(mechanism.members(cabinet, joints.is_joint)),
+    len(mechanism.members(cabinet, relationships.is_relationship)), cabinet.Status))
+for rel in mechanism.members(cabinet, relationships.is_relationship):
+    print("  {:<11} {:<44} {}".format(rel.Proxy.KIND.replace("_", " "), rel.Label, rel.Status))
+for box in mechanism.boxes(cabinet):
+    was, now = modelled[box.Label], box.Shape.BoundBox
+    corners = (was.XMin, was.YMin, was.ZMin, was.XMax, was.YMax, was.ZMax), (
+        now.XMin, now.YMin, now.ZMin, now.XMax, now.YMax, now.ZMax)
+    if max(abs(a - b) for a, b in zip(*corners)) > 1e-4:
+        print("  {:<20} {:.0f} x {:.0f} x {:.0f} -> {:.0f} x {:.0f} x {:.0f} mm".format(
+            box.Label, was.XLength, was.YLength, was.ZLength, now.XLength, now.YLength, now.ZLength))
+if cabinet.Status != "Solved":
+    sys.exit("the cabinet did not solve: " + cabinet.Status)
+doc.saveAs(os.path.join(OUT, "cabinet", "cabinet.FCStd"))
+print("  wrote " + os.path.relpath(doc.FileName, ROOT))
+FreeCAD.closeDocument(doc.Name)
+
 
 # Material: lay the bookshelf out on its master boards and write its cut sheets (thesis ch. 5).
 doc = FreeCAD.openDocument(os.path.join(ROOT, "examples", "bookshelf.FCStd"))

@@ -1,0 +1,54 @@
+"""`make demo`, second half, run by FreeCAD's GUI under Xvfb: renders the solved cabinet saved by tools/demo.py,
+as modelled and with its doors and flap stowed and its drawer open (thesis Fig. 4.16), into PNGs."""
+import os
+import traceback
+
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtCore
+
+ROOT = os.getcwd()  # make runs it from the source folder
+OUT = os.path.join(ROOT, "build", "demo", "cabinet")
+
+
+def render():
+    from fabguide.function import configuration, mechanism, parts
+    from fabguide_gui import function_viewproviders
+    from fabguide_gui.posing import Poser
+
+    doc = FreeCAD.openDocument(os.path.join(OUT, "cabinet.FCStd"))
+    mech = next(o for o in doc.Objects if mechanism.is_mechanism(o))
+    cavities = [b for p in mechanism.members(mech, parts.is_part) for b in p.Cavities]
+    for box in mechanism.boxes(mech):  # saved by freecadcmd, without view data: FreeCAD opens them hidden
+        box.ViewObject.Visibility = box not in cavities
+    carcass = doc.getObjectsByLabel("carcass")[0].ViewObject
+    function_viewproviders.show_conflicts(mech)
+    Gui.updateGui()
+    view = Gui.getDocument(doc.Name).activeView()
+    view.viewIsometric()
+    view.fitAll()
+    view.saveImage(os.path.join(OUT, "cabinet.png"), 1200, 900, "White")
+    poses = {j.Name: (a, o) for c in mechanism.members(mech, configuration.is_configuration)
+             if c.Label != "lid open" for j, a, o in configuration.poses(c)}
+    poser = Poser(mech)
+    poser.show(poses)
+    carcass.DisplayMode = "Wireframe"  # to see the doors and the flap stowed inside
+    carcass.LineWidth = 2
+    view.fitAll()
+    Gui.updateGui()
+    view.saveImage(os.path.join(OUT, "cabinet-stowed.png"), 1200, 900, "White")
+    poser.clear()
+    print("wrote build/demo/cabinet/cabinet.png and cabinet-stowed.png")
+
+
+def main():
+    status = 0
+    try:
+        render()
+    except BaseException:
+        traceback.print_exc()
+        status = 1
+    os._exit(status)
+
+
+QtCore.QTimer.singleShot(0, main)
