@@ -3,6 +3,7 @@
 #include "Function/Pose.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace fabguide::function {
@@ -39,6 +40,13 @@ double centre(const Model& model, const Face& f, int axis, int configuration)
            2;
 }
 
+/// Whether a cavity's side lies on its solid's same side: an opening, which can be covered.
+bool opening(const Model& model, int cavity, int side)
+{
+    const Cuboid& c = model.cuboids[cavity];
+    return std::abs(c.coordinates[side] - model.cuboids[c.within].coordinates[side]) < 1e-6;
+}
+
 }  // namespace
 
 std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std::vector<int>& covering,
@@ -53,6 +61,7 @@ std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std
                     for (int q : covered)
                         for (int b : model.parts[q].cuboids) {
                             if (model.cuboids[b].cavity() != cavities ||
+                                (cavities && !opening(model, b, sa ^ 1)) ||
                                 (!cavities && !pairs.empty() &&
                                  pairs.back().first == Face{a, static_cast<Side>(sa)}))
                                 continue;

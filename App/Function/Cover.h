@@ -13,7 +13,7 @@ namespace fabguide::function {
 /// The corresponding-faces graph M (4.3.1): each covering face is linked to every covered face that faces it,
 /// parallel, at most `distance` away, overlapping it by more than half the smaller face's area in their
 /// plane. Unlike the thesis' greedy pass a covered face may take several covering faces (two doors, one
-/// opening).
+/// opening). Of a cavity only an opening can be covered: a side that lies on its solid's side.
 std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std::vector<int>& covering,
                                                    const std::vector<int>& covered, int configuration,
                                                    double distance);

@@ -1,6 +1,8 @@
 #include "Function/LeastChange.h"
 
 #include <libalglib/optimization.h>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +11,38 @@
 namespace fabguide::function {
 
 namespace {
+
+/// The interior-point solution is optimal only to ~1e-5 mm. Polishing: project the target exactly onto the
+/// constraints active at x (A x = b), x* = x + v − Aᵀλ with v = target − x and λ = argmin ‖Aᵀλ − v‖ by
+/// conjugate gradients on the least-squares problem (indifferent to the redundant constraints that are
+/// common; sparse QR took 2.6 s at 1000 cuboids); kept only if no constraint gets worse.
+Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
+                         const Eigen::VectorXd& x, double tolerance)
+{
+    std::vector<Eigen::Triplet<double>> entries;
+    int active = 0;
+    for (const LinearConstraint& row : rows) {
+        double value = 0;
+        for (const auto& [variable, coefficient] : row.terms)
+            value += coefficient * x[variable];
+        if (std::abs(value - row.lower) > tolerance && std::abs(value - row.upper) > tolerance)
+            continue;
+        for (const auto& [variable, coefficient] : row.terms)
+            entries.emplace_back(variable, active, coefficient);  // Aᵀ: variables × active rows
+        ++active;
+    }
+    if (active == 0)
+        return target;
+    Eigen::SparseMatrix<double> transposed(x.size(), active);
+    transposed.setFromTriplets(entries.begin(), entries.end());
+    transposed.makeCompressed();
+    Eigen::LeastSquaresConjugateGradient<Eigen::SparseMatrix<double>> cgls(transposed);
+    cgls.setTolerance(1e-14);
+    const Eigen::VectorXd v = target - x;
+    const Eigen::VectorXd lambda = cgls.solve(v);
+    Eigen::VectorXd candidate = x + v - transposed * lambda;
+    return violation(candidate, rows) <= violation(x, rows) + 1e-9 ? candidate : x;
+}
 
 /// One QP solve; (solved, x).
 std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
@@ -63,7 +97,9 @@ std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
     Eigen::VectorXd x(n);
     for (int i = 0; i < n; ++i)
         x[i] = result[i];
-    return {report.terminationtype > 0 && violation(x, rows) <= tolerance, x};
+    if (report.terminationtype <= 0 || violation(x, rows) > tolerance)
+        return {false, x};
+    return {true, polished(target, rows, x, tolerance)};
 }
 
 std::vector<LinearConstraint> without(const std::vector<LinearConstraint>& rows,
