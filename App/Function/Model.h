@@ -56,22 +56,32 @@ struct Expression {
 /// degrees, right-handed about the +x, +y or +z direction of the edge. A slide moves it along an axis by an
 /// offset in mm. A sliding hinge does both: the hinge's edge slides along the axis. A part is moved by at
 /// most one joint; when its base moves, it is carried along (a chain of joints).
+///
+/// A double pivot (4.1.2, 4.3.6) links a pivot on a face of the part to a pivot on a coplanar face of its
+/// base by a rigid link. Its configurations place the part by a turn about the faces' normal (through a pole,
+/// any planar motion but a pure shift being such a turn); stage 2 of the solve moves the pivots along their
+/// cuboids' longest in-plane axis so the link can take the part there.
 struct Joint {
     std::string name;
-    enum class Type { Hinge, Slide, SlidingHinge } type = Type::Hinge;
+    enum class Type { Hinge, Slide, SlidingHinge, DoublePivot } type = Type::Hinge;
     int part = 0;
     int base = -1;      ///< the part it hangs on (-1: the ground)
     Face edgeA, edgeB;  ///< hinges: two faces of one cuboid of the part, on different axes
     int axis = 0;       ///< slides: 0 x, 1 y, 2 z
-    bool turns() const { return type != Type::Slide; }
-    bool slides() const { return type != Type::Hinge; }
+    /// Double pivots: the coplanar faces of the part and the base that carry the pivots, and each pivot's
+    /// in-plane offsets from its cuboid's low corner (along the two axes after the normal, cyclically).
+    Face pivotFace, basePivotFace;
+    std::array<double, 2> pivot{}, basePivot{};
+    bool turns() const { return type == Type::Hinge || type == Type::SlidingHinge; }
+    bool slides() const { return type == Type::Slide || type == Type::SlidingHinge; }
 };
 
 /// How a configuration poses one joint: the angle (degrees) of a hinge, the offset (mm) of a slide, both for
-/// a sliding hinge.
+/// a sliding hinge; a double pivot's turn (angle) about its pole.
 struct JointPose {
     int joint = 0;
     double angle = 0, offset = 0;
+    std::array<double, 3> pole{};
 };
 
 /// A configuration (thesis 4.1.2): the joints' poses in which a relationship must hold. Joints not

@@ -1,6 +1,7 @@
 #include "Function/Solve.h"
 
 #include "Function/Cover.h"
+#include "Function/DoublePivot.h"
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
 
@@ -175,6 +176,9 @@ std::vector<LinearConstraint> constraints(const Model& model)
     }
     for (const Cover& c : model.cover)
         coverConstraints(rows, model, c);
+    for (const Joint& j : model.joints)  // a double pivot's faces stay in one plane (thesis 4.1.2)
+        if (j.type == Joint::Type::DoublePivot)
+            order(rows, model, j.name, -1, j.pivotFace, Face{j.basePivotFace.cuboid, j.pivotFace.side}, true);
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);
         rows.push_back({{{variable(lock.face), 1.0}}, value, value, "lock: " + faceName(model, lock.face)});
@@ -193,6 +197,11 @@ SolveResult solve(const Model& model)
     for (size_t c = 0; c < model.cuboids.size() && r.solved; ++c)
         for (int k = 0; k < 6; ++k)
             result.model.cuboids[c].coordinates[k] = r.x[6 * c + k];
+    if (!r.solved)
+        return result;
+    // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
+    if (const std::vector<std::string> unplaced = placePivots(result.model); !unplaced.empty())
+        return {false, model, unplaced, r.violation};
     return result;
 }
 

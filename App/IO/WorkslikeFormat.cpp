@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace fabguide::io {
 
@@ -96,6 +97,64 @@ int partNamed(const function::Model& model, const std::string& name, const std::
 
 const char* kAxes[] = {"x", "y", "z"};
 
+const std::map<std::string, function::Joint::Type> kJointTypes{
+    {"hinge", function::Joint::Type::Hinge},
+    {"slide", function::Joint::Type::Slide},
+    {"sliding_hinge", function::Joint::Type::SlidingHinge},
+    {"double_pivot", function::Joint::Type::DoublePivot}};
+
+/// A double pivot's pivot: ["cuboid.side", [x, y, z]], a point on that face of a cuboid of `part`; returns
+/// the face and the point's in-plane offsets from the cuboid's low corner.
+std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, const Fields& j,
+                                                 const std::string& key, int part)
+{
+    const nlohmann::json& pivot = j.array(key);
+    const std::string path = j.pathOf(key);
+    if (pivot.size() != 2 || !pivot[1].is_array() || pivot[1].size() != 3)
+        throw FormatError(path + ": must be [\"cuboid.side\", [x, y, z]], a point on that face");
+    const Face f = face(model, pivot[0], path + "[0]");
+    const auto& cuboids = model.parts[part].cuboids;
+    if (std::find(cuboids.begin(), cuboids.end(), f.cuboid) == cuboids.end())
+        throw FormatError(path + "[0]: '" + function::faceName(model, f) + "' is not a face of part '" +
+                          model.parts[part].name + "'");
+    const int n = static_cast<int>(f.side) / 2;
+    std::array<double, 2> offsets{};
+    for (int k = 0; k < 2; ++k) {
+        const int a = (n + 1 + k) % 3;
+        if (!pivot[1][a].is_number())
+            throw FormatError(path + "[1]: must be [x, y, z]");
+        const auto& c = model.cuboids[f.cuboid].coordinates;
+        offsets[k] = pivot[1][a].get<double>() - c[2 * a];
+        if (offsets[k] < -1e-6 || offsets[k] > c[2 * a + 1] - c[2 * a] + 1e-6)
+            throw FormatError(path + "[1]: the point lies off " + function::faceName(model, f));
+    }
+    return {f, offsets};
+}
+
+void readPivots(const function::Model& model, const Fields& j, function::Joint& joint)
+{
+    if (joint.base < 0)
+        throw FormatError(j.pathOf("base") + ": a double pivot links its part to a base part");
+    std::tie(joint.pivotFace, joint.pivot) = readPivot(model, j, "pivot", joint.part);
+    std::tie(joint.basePivotFace, joint.basePivot) = readPivot(model, j, "base_pivot", joint.base);
+    if (static_cast<int>(joint.pivotFace.side) / 2 != static_cast<int>(joint.basePivotFace.side) / 2)
+        throw FormatError(j.pathOf("base_pivot") + ": the pivots' faces must be parallel (coplanar)");
+}
+
+/// A pivot as written: [face, [x, y, z]] at the solved coordinates.
+nlohmann::json pivotJson(const function::Model& model, const Face& f, const std::array<double, 2>& offsets)
+{
+    const auto& c = model.cuboids[f.cuboid].coordinates;
+    const int n = static_cast<int>(f.side) / 2;
+    std::array<double, 3> point{};
+    point[n] = c[static_cast<int>(f.side)];
+    for (int k = 0; k < 2; ++k) {
+        const int a = (n + 1 + k) % 3;
+        point[a] = c[2 * a] + offsets[k];
+    }
+    return {function::faceName(model, f), point};
+}
+
 void readJoint(function::Model& model, const nlohmann::json& json, const std::string& path)
 {
     const Fields j(json, path);
@@ -105,8 +164,10 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
         if (other.name == joint.name)
             throw FormatError(j.pathOf("name") + ": '" + joint.name + "' is used twice");
     joint.part = partNamed(model, j.text("part"), j.pathOf("part"));
-    for (const function::Joint& other : model.joints)
-        if (other.part == joint.part)
+    const std::string type = j.text("type");
+    for (const function::Joint& other : model.joints)  // parallel links: double pivots posed alike
+        if (other.part == joint.part &&
+            !(type == "double_pivot" && other.type == function::Joint::Type::DoublePivot))
             throw FormatError(j.pathOf("part") + ": '" + model.parts[joint.part].name +
                               "' is already moved by joint '" + other.name + "'");
     if (j.has("base")) {
@@ -114,16 +175,14 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
         if (joint.base == joint.part)
             throw FormatError(j.pathOf("base") + ": a part cannot hang on itself");
     }
-    const std::string type = j.text("type");
-    const std::map<std::string, function::Joint::Type> types{
-        {"hinge", function::Joint::Type::Hinge},
-        {"slide", function::Joint::Type::Slide},
-        {"sliding_hinge", function::Joint::Type::SlidingHinge}};
-    const auto known = types.find(type);
-    if (known == types.end())
-        throw FormatError(j.pathOf("type") + ": \"" + type +
-                          "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge)");
+    const auto known = kJointTypes.find(type);
+    if (known == kJointTypes.end())
+        throw FormatError(
+            j.pathOf("type") + ": \"" + type +
+            "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot)");
     joint.type = known->second;
+    if (joint.type == function::Joint::Type::DoublePivot)
+        readPivots(model, j, joint);
     if (joint.turns()) {
         const nlohmann::json& edge = j.array("edge");
         if (edge.size() != 2)
@@ -168,6 +227,10 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             const Fields both(value, here);
             pose.angle = both.number("angle");
             pose.offset = both.number("offset");
+        } else if (joint->type == function::Joint::Type::DoublePivot) {
+            const Fields turn(value, here);
+            pose.angle = turn.number("angle");
+            pose.pole = point(turn, "pole");
         } else if (!value.is_number()) {
             throw FormatError(here + ": must be a number, got " + value.dump());
         } else {
@@ -175,6 +238,19 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         }
         configuration.poses.push_back(pose);
     }
+    // Double pivots that move one part (parallel links) take it to one place.
+    for (const function::JointPose& a : configuration.poses)
+        for (size_t j = 0; j < model.joints.size(); ++j) {
+            const function::Joint &first = model.joints[a.joint], &other = model.joints[j];
+            if (static_cast<int>(j) == a.joint || other.part != first.part ||
+                other.type != function::Joint::Type::DoublePivot)
+                continue;
+            const auto b = std::find_if(configuration.poses.begin(), configuration.poses.end(),
+                                        [&](const function::JointPose& p) { return p.joint == static_cast<int>(j); });
+            if (b == configuration.poses.end() || b->angle != a.angle || b->pole != a.pole)
+                throw FormatError(c.pathOf("poses") + ": '" + first.name + "' and '" + other.name +
+                                  "' move one part and must be posed alike");
+        }
     model.configurations.push_back(configuration);
 }
 
@@ -573,15 +649,19 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();
     for (const function::Joint& j : model.joints) {
         nlohmann::json joint = {{"name", j.name}, {"part", model.parts[j.part].name}};
-        joint["type"] = j.type == function::Joint::Type::Hinge   ? "hinge"
-                        : j.type == function::Joint::Type::Slide ? "slide"
-                                                                 : "sliding_hinge";
+        for (const auto& [name, type] : kJointTypes)
+            if (type == j.type)
+                joint["type"] = name;
         if (j.base >= 0)
             joint["base"] = model.parts[j.base].name;
         if (j.turns())
             joint["edge"] = {function::faceName(model, j.edgeA), function::faceName(model, j.edgeB)};
         if (j.slides())
             joint["axis"] = kAxes[j.axis];
+        if (j.type == function::Joint::Type::DoublePivot) {
+            joint["pivot"] = pivotJson(model, j.pivotFace, j.pivot);
+            joint["base_pivot"] = pivotJson(model, j.basePivotFace, j.basePivot);
+        }
         joints.push_back(joint);
     }
     for (const function::Configuration& c : model.configurations) {
@@ -590,6 +670,8 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
             const function::Joint& j = model.joints[pose.joint];
             poses[j.name] = j.type == function::Joint::Type::SlidingHinge
                                 ? nlohmann::json{{"angle", pose.angle}, {"offset", pose.offset}}
+                            : j.type == function::Joint::Type::DoublePivot
+                                ? nlohmann::json{{"angle", pose.angle}, {"pole", pose.pole}}
                                 : nlohmann::json(j.turns() ? pose.angle : pose.offset);
         }
         configurations.push_back({{"name", c.name}, {"poses", poses}});

@@ -88,5 +88,11 @@ void SolveFixture(benchmark::State& state, const char* file)
 }
 BENCHMARK_CAPTURE(SolveFixture, cabinet, "cabinet.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, box_with_lid, "box-with-lid.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, cellphone, "cellphone.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, crate_bar, "crate-bar.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, crate_bed, "crate-bed.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, printer, "printer.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, tablet, "tablet.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, toolbox, "toolbox.workslike.json")->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Table41, Fixture,
                          testing::Values("cabinet.workslike.json", "cellphone.workslike.json",
                                          "tablet.workslike.json", "toolbox.workslike.json",
                                          "printer.workslike.json", "crate-bar.workslike.json",
-                                         "box-with-lid.workslike.json"),
+                                         "box-with-lid.workslike.json", "crate-bed.workslike.json"),
                          [](const auto& info) {
                              std::string name = info.param;
                              name = name.substr(0, name.find('.'));

@@ -1,0 +1,310 @@
+#include "Function/DoublePivot.h"
+
+#include <libalglib/optimization.h>
+
+#include <cmath>
+#include <optional>
+
+namespace fabguide::function {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+using Point = std::array<double, 2>;
+
+Point turn(const Point& p, const Point& centre, double degrees)
+{
+    const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+    const double du = p[0] - centre[0], dw = p[1] - centre[1];
+    return {centre[0] + du * c - dw * s, centre[1] + du * s + dw * c};
+}
+
+double squared(const Point& a, const Point& b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+}
+
+/// The in-plane axis (0: u, 1: w) along which a cuboid is longest: where its pivot may move (thesis 4.3.6).
+int longest(const Cuboid& c, const PivotPlane& plane)
+{
+    const double eu = c.at(static_cast<Side>(2 * plane.u + 1)) - c.at(static_cast<Side>(2 * plane.u));
+    const double ew = c.at(static_cast<Side>(2 * plane.w + 1)) - c.at(static_cast<Side>(2 * plane.w));
+    return eu >= ew ? 0 : 1;
+}
+
+/// One double pivot's stage-2 problem: offsets (a, b) of the part's and the base's pivots along their axes.
+struct Placement {
+    const Model& model;
+    const Joint& joint;
+    PivotPlane plane;
+    int axisA = 0, axisB = 0;
+    std::vector<JointPose> poses;
+
+    Point pivotA(double a) const
+    {
+        Point p = plane.pivot;
+        p[axisA] += a;
+        return p;
+    }
+    Point pivotB(double b) const
+    {
+        Point p = plane.basePivot;
+        p[axisB] += b;
+        return p;
+    }
+    Point pole(const JointPose& pose) const { return {pose.pole[plane.u], pose.pole[plane.w]}; }
+    /// Position constraint (4.3.6.1) for one pose: the link keeps its length, |x_k^A − x^B|² − |x^A − x^B|².
+    double position(const JointPose& pose, double a, double b) const
+    {
+        return squared(turn(pivotA(a), pole(pose), pose.angle), pivotB(b)) - squared(pivotA(a), pivotB(b));
+    }
+    /// How far each pivot can move along its axis and stay on its face.
+    std::pair<double, double> range(const Face& f, int axis, const Point& at) const
+    {
+        const int a = axis == 0 ? plane.u : plane.w;
+        const Cuboid& c = model.cuboids[f.cuboid];
+        return {c.at(static_cast<Side>(2 * a)) - at[axis], c.at(static_cast<Side>(2 * a + 1)) - at[axis]};
+    }
+};
+
+void evaluate(const alglib::real_1d_array& x, alglib::real_1d_array& f, alglib::real_2d_array& jacobian,
+              void* data)
+{
+    const Placement& p = *static_cast<const Placement*>(data);
+    f[0] = x[0] * x[0] + x[1] * x[1];  // least change of the offsets (eq. 4.6, second term)
+    jacobian[0][0] = 2 * x[0];
+    jacobian[0][1] = 2 * x[1];
+    const double h = 1e-6;  // the constraints are quadratic: central differences are exact up to rounding
+    for (size_t k = 0; k < p.poses.size(); ++k) {
+        f[k + 1] = p.position(p.poses[k], x[0], x[1]);
+        jacobian[k + 1][0] =
+            (p.position(p.poses[k], x[0] + h, x[1]) - p.position(p.poses[k], x[0] - h, x[1])) / (2 * h);
+        jacobian[k + 1][1] =
+            (p.position(p.poses[k], x[0], x[1] + h) - p.position(p.poses[k], x[0], x[1] - h)) / (2 * h);
+    }
+}
+
+/// Each solid cuboid of a part in the pivot plane: (low u, low w, high u, high w, low, high along the
+/// normal).
+std::vector<std::array<double, 6>> rectangles(const Model& model, int part, const PivotPlane& plane)
+{
+    std::vector<std::array<double, 6>> out;
+    for (int c : model.parts[part].cuboids)
+        if (!model.cuboids[c].cavity()) {
+            const Cuboid& k = model.cuboids[c];
+            auto at = [&](int axis, int high) { return k.at(static_cast<Side>(2 * axis + high)); };
+            out.push_back({at(plane.u, 0), at(plane.w, 0), at(plane.u, 1), at(plane.w, 1),
+                           at(plane.normal, 0), at(plane.normal, 1)});
+        }
+    return out;
+}
+
+/// Whether a turned rectangle (corners) and an axis-aligned one overlap by more than `slack`, by separating
+/// axes.
+bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& box, double slack)
+{
+    const std::array<Point, 4> corners{Point{box[0], box[1]}, Point{box[2], box[1]}, Point{box[2], box[3]},
+                                       Point{box[0], box[3]}};
+    std::vector<Point> axes{{1, 0}, {0, 1}};
+    for (int e = 0; e < 2; ++e)
+        axes.push_back({turned[e + 1][0] - turned[e][0], turned[e + 1][1] - turned[e][1]});
+    for (Point axis : axes) {
+        const double length = std::hypot(axis[0], axis[1]);
+        axis = {axis[0] / length, axis[1] / length};
+        auto extent = [&](const std::array<Point, 4>& points) {
+            double low = 1e300, high = -1e300;
+            for (const Point& q : points) {
+                const double t = q[0] * axis[0] + q[1] * axis[1];
+                low = std::min(low, t);
+                high = std::max(high, t);
+            }
+            return std::pair{low, high};
+        };
+        const auto [a0, a1] = extent(turned);
+        const auto [b0, b1] = extent(corners);
+        if (std::min(a1, b1) - std::max(a0, b0) <= slack)
+            return false;  // a separating axis
+    }
+    return true;
+}
+
+/// The link's turn about the base pivot and the part's turn about its own pivot that take pivot `a` to its
+/// place in the pose (the shorter way round).
+std::array<double, 2> angles(const Point& a, const Point& b, const Point& pole, double degrees)
+{
+    const Point to = turn(a, pole, degrees);
+    const double link = std::remainder(
+        (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
+    return {link, degrees - link};
+}
+
+/// Whether the part hits its base at one of 32 poses along the four-bar motion to each pose, with the pivots
+/// moved by (a, b): both parts' solid cuboids, in the pivot plane, where they share depth along the normal.
+bool collides(const Placement& p, double a, double b)
+{
+    const Point pivot = p.pivotA(a), base = p.pivotB(b);
+    const auto moving = rectangles(p.model, p.joint.part, p.plane),
+               fixed = rectangles(p.model, p.joint.base, p.plane);
+    for (const JointPose& pose : p.poses) {
+        const auto [link, part] = angles(pivot, base, p.pole(pose), pose.angle);
+        for (int step = 1; step <= 32; ++step) {
+            const double t = step / 32.0;
+            for (const auto& r : moving) {
+                std::array<Point, 4> corners{Point{r[0], r[1]}, Point{r[2], r[1]}, Point{r[2], r[3]},
+                                             Point{r[0], r[3]}};
+                for (Point& q : corners)  // about the part's pivot, then carried round by the link
+                    q = turn(turn(q, pivot, t * part), base, t * link);
+                for (const auto& box : fixed)
+                    if (std::min(r[5], box[5]) - std::max(r[4], box[4]) > 1e-6 && overlap(corners, box, 1e-6))
+                        return true;
+            }
+        }
+    }
+    return false;
+}
+
+/// Whether pivots moved by (a, b) keep the link's length in every pose, within 1e-6 mm.
+bool keepsLength(const Placement& p, double a, double b)
+{
+    const Point pa = p.pivotA(a), pb = p.pivotB(b);
+    for (const JointPose& pose : p.poses)
+        if (std::abs(std::sqrt(squared(turn(pa, p.pole(pose), pose.angle), pb)) -
+                     std::sqrt(squared(pa, pb))) > 1e-6)
+            return false;
+    return true;
+}
+
+struct Range {
+    double lowA, highA, lowB, highB;
+};
+
+/// The least change (a, b) under the position constraints, by ALGLIB's SLP; nullopt when it finds none.
+std::optional<std::pair<double, double>> leastChange(Placement& p, const Range& range)
+{
+    alglib::real_1d_array x0, lower, upper, result;
+    x0.setlength(2);
+    lower.setlength(2);
+    upper.setlength(2);
+    x0[0] = x0[1] = 0;
+    lower[0] = range.lowA;
+    upper[0] = range.highA;
+    lower[1] = range.lowB;
+    upper[1] = range.highB;
+    alglib::minnlcstate state;
+    alglib::minnlccreate(2, x0, state);
+    alglib::minnlcsetbc(state, lower, upper);
+    alglib::minnlcsetnlc(state, static_cast<int>(p.poses.size()), 0);
+    alglib::minnlcsetcond(state, 1e-10, 200);
+    alglib::minnlcsetalgoslp(state);  // 3x faster than SQP on these two-variable problems
+    alglib::minnlcoptimize(state, evaluate, nullptr, &p);
+    alglib::minnlcreport report;
+    alglib::minnlcresults(state, result, report);
+    if (report.terminationtype <= 0 || !keepsLength(p, result[0], result[1]))
+        return std::nullopt;
+    return std::pair{result[0], result[1]};
+}
+
+/// The motion constraint (4.3.6.2) by search: along the part's pivot axis, each a fixes b through the first
+/// pose's position constraint (linear in b: |x_k^A|² − |x^A|² = 2 (x_k^A − x^A) · x^B); the least change
+/// among placements that keep the link's length in every pose and move without interference. The thesis
+/// bounds the link's length from below by linear terms for the box corners it may pass; checking the motion
+/// itself is exact where those bounds are conservative.
+std::optional<std::pair<double, double>> clearPlacement(const Placement& p, const Range& range)
+{
+    auto placement = [&](double a) -> std::optional<std::pair<double, double>> {
+        const Point x0 = p.pivotA(a), xk = turn(x0, p.pole(p.poses[0]), p.poses[0].angle);
+        const Point d{xk[0] - x0[0], xk[1] - x0[1]}, base = p.pivotB(0);
+        const double along = 2 * d[p.axisB];
+        if (std::abs(along) < 1e-12)
+            return std::nullopt;
+        const double b = (xk[0] * xk[0] + xk[1] * xk[1] - x0[0] * x0[0] - x0[1] * x0[1] -
+                          2 * (d[0] * base[0] + d[1] * base[1])) /
+                         along;
+        if (b < range.lowB || b > range.highB || !keepsLength(p, a, b) || collides(p, a, b))
+            return std::nullopt;
+        return std::pair{a, b};
+    };
+    auto cost = [](const std::pair<double, double>& x) { return x.first * x.first + x.second * x.second; };
+    // A coarse sweep, then bisection towards the nearest blocked samples: the least change lies on the edge
+    // of a clear stretch (the SQP's optimum, inside one, collided).
+    const int steps = 200;  // 5 mm on a 1 m board: clear stretches are often a few cm wide
+    auto at = [&](double i) { return range.lowA + (range.highA - range.lowA) * i / steps; };
+    std::optional<std::pair<double, double>> best;
+    int bestStep = -1;
+    for (int i = 0; i <= steps; ++i)
+        if (const auto x = placement(at(i)); x && (!best || cost(*x) < cost(*best))) {
+            best = x;
+            bestStep = i;
+        }
+    for (int side : {-1, 1}) {
+        if (!best || bestStep + side < 0 || bestStep + side > steps || placement(at(bestStep + side)))
+            continue;
+        double clear = bestStep, blocked = bestStep + side;
+        for (int k = 0; k < 30; ++k) {
+            const double middle = (clear + blocked) / 2;
+            (placement(at(middle)) ? clear : blocked) = middle;
+        }
+        if (const auto x = placement(at(clear)); x && cost(*x) < cost(*best))
+            best = x;
+    }
+    return best;
+}
+
+}  // namespace
+
+PivotPlane pivotPlane(const Model& model, const Joint& joint)
+{
+    PivotPlane plane;
+    plane.normal = static_cast<int>(joint.pivotFace.side) / 2;
+    plane.u = (plane.normal + 1) % 3;
+    plane.w = (plane.normal + 2) % 3;
+    const Cuboid& a = model.cuboids[joint.pivotFace.cuboid];
+    const Cuboid& b = model.cuboids[joint.basePivotFace.cuboid];
+    for (int k = 0; k < 2; ++k) {
+        const int axis = k == 0 ? plane.u : plane.w;
+        plane.pivot[k] = a.at(static_cast<Side>(2 * axis)) + joint.pivot[k];
+        plane.basePivot[k] = b.at(static_cast<Side>(2 * axis)) + joint.basePivot[k];
+    }
+    return plane;
+}
+
+std::array<double, 2> linkAngles(const Model& model, const Joint& joint, const JointPose& pose)
+{
+    const PivotPlane plane = pivotPlane(model, joint);
+    return angles(plane.pivot, plane.basePivot, {pose.pole[plane.u], pose.pole[plane.w]}, pose.angle);
+}
+
+std::vector<std::string> placePivots(Model& model)
+{
+    std::vector<std::string> failed;
+    for (Joint& joint : model.joints) {
+        if (joint.type != Joint::Type::DoublePivot)
+            continue;
+        Placement p{model, joint, pivotPlane(model, joint), 0, 0, {}};
+        p.axisA = longest(model.cuboids[joint.pivotFace.cuboid], p.plane);
+        p.axisB = longest(model.cuboids[joint.basePivotFace.cuboid], p.plane);
+        const int j = static_cast<int>(&joint - model.joints.data());
+        for (const Configuration& c : model.configurations)
+            for (const JointPose& pose : c.poses)
+                if (pose.joint == j)
+                    p.poses.push_back(pose);
+        if (p.poses.empty())
+            continue;
+        const auto [lowA, highA] = p.range(joint.pivotFace, p.axisA, p.plane.pivot);
+        const auto [lowB, highB] = p.range(joint.basePivotFace, p.axisB, p.plane.basePivot);
+        const Range range{lowA, highA, lowB, highB};
+        auto placed = leastChange(p, range);
+        if (!placed || collides(p, placed->first, placed->second))
+            placed = clearPlacement(p, range);
+        if (!placed) {
+            failed.push_back(joint.name);
+            continue;
+        }
+        joint.pivot[p.axisA] += placed->first;
+        joint.basePivot[p.axisB] += placed->second;
+    }
+    return failed;
+}
+
+}  // namespace fabguide::function
