@@ -48,7 +48,7 @@ class ConfigurationsPanel:
             angle, offset = QtGui.QDoubleSpinBox(), QtGui.QDoubleSpinBox()
             angle.setRange(-360, 360)
             offset.setRange(-1e5, 1e5)
-            angle.setEnabled(joints.turns(joint))
+            angle.setEnabled(joints.kind(joint) != "slide")
             offset.setEnabled(joints.slides(joint))
             for column, widget in ((1, moves), (2, angle), (3, offset)):
                 self.table.setCellWidget(row, column, widget)
@@ -97,13 +97,20 @@ class ConfigurationsPanel:
                 widget.blockSignals(False)
         self.preview()
 
-    def poses(self, fraction=1.0):
-        """{joint name: (angle, offset)} of the checked joints, a fraction of the way from the base pose."""
-        return {j.Name: (fraction * self.angles[r].value(), fraction * self.offsets[r].value())
+    def poses(self):
+        """{joint name: (angle, offset, pole)} of the checked joints."""
+        chosen = self.chosen()
+        return {j.Name: (self.angles[r].value(), self.offsets[r].value(),
+                         configuration.pole(chosen, j) if chosen else j.BasePivot if joints.kind(j) == "double_pivot"
+                         else FreeCAD.Vector())
                 for r, j in enumerate(self.joints) if self.moves[r].isChecked()}
 
+    def chosen(self):
+        index = self.choice.currentIndex()
+        return self.configurations[index] if index < len(self.configurations) else None
+
     def preview(self, *args):
-        self.poser.show(self.poses(self.slider.value() / 100.0))
+        self.poser.show(self.poses(), self.slider.value() / 100.0)
         moved = ", ".join(self.joints[r].Label for r in range(len(self.joints)) if self.moves[r].isChecked())
         self.status.setText("Moves: " + (moved or "nothing yet: tick the joints this configuration poses"))
         FreeCADGui.updateGui()
@@ -133,8 +140,10 @@ class ConfigurationsPanel:
             chosen = vp.attach(configuration.create(doc, self.name.text(), []))
             self.mech.Group = self.mech.Group + [chosen]
         chosen.Label = self.name.text() or chosen.Label
+        poses = self.poses()
         configuration.set_poses(chosen, [(j, self.angles[r].value(), self.offsets[r].value())
-                                         for r, j in enumerate(self.joints) if self.moves[r].isChecked()])
+                                         for r, j in enumerate(self.joints) if self.moves[r].isChecked()],
+                                [poses[j.Name][2] for r, j in enumerate(self.joints) if self.moves[r].isChecked()])
         self.mech.ShownConfiguration = chosen
         doc.recompute()
         doc.commitTransaction()

@@ -154,6 +154,25 @@ class AddSlidingHinge(AddJoint):
     TIP = "Pick an edge and a face of a box: its part turns about the edge, which slides along the face's normal"
 
 
+class AddDoublePivot(Command):
+    ICON, MENU = "FabGuide_DoublePivot.svg", "Add Double Pivot"
+    TIP = ("Pick a point on a face of the moving part's box, then one on the face of the part it links to, in the "
+           "same plane: a rigid link joins them (the solve places both pivots)")
+
+    def run(self, doc):
+        points = [(s.Object, sub, point) for s in FreeCADGui.Selection.getSelectionEx() if cuboids.is_box(s.Object)
+                  for sub, point in zip(s.SubElementNames, s.PickedPoints) if sub.startswith("Face")]
+        if len(points) != 2 or points[0][0] is points[1][0]:
+            return tell("Pick a point on a face of the moving part's box, then one on the face of the part it "
+                        "links to.")
+        with transaction(doc, self.MENU):
+            part, base = part_of(doc, points[0][0]), part_of(doc, points[1][0])
+            joint = vp.attach(joints.create(doc, "double_pivot", part, base=base, pivots=points))
+            mech = mechanism_for(doc, [part])
+            add_to(mech, joint)
+            finish(doc, joint, mech)
+
+
 class AddRelationship(Command):
     """Pick boxes of the parts in order; the last picked is the covered / enclosing / supported part. The
     relationship holds in the configuration the mechanism shows (see Configurations)."""
@@ -325,6 +344,7 @@ COMMANDS = {
     "FabGuide_AddHinge": AddHinge(),
     "FabGuide_AddSlide": AddSlide(),
     "FabGuide_AddSlidingHinge": AddSlidingHinge(),
+    "FabGuide_AddDoublePivot": AddDoublePivot(),
     "FabGuide_AddCover": AddCover(),
     "FabGuide_AddFitInside": AddFitInside(),
     "FabGuide_AddSupport": AddSupport(),

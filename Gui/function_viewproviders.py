@@ -62,9 +62,10 @@ class ViewProviderConfiguration(ViewProvider):
 
 
 class ViewProviderJoint(ViewProvider):
-    """Draws the joint's axis: a hinge's edge, a slide's direction through its part, in orange."""
+    """Draws the joint in orange: a hinge's edge, a slide's direction through its part, a double pivot's link."""
 
-    ICONS = {"hinge": "FabGuide_Hinge.svg", "slide": "FabGuide_Slide.svg", "sliding_hinge": "FabGuide_SlidingHinge.svg"}
+    ICONS = {"hinge": "FabGuide_Hinge.svg", "slide": "FabGuide_Slide.svg", "sliding_hinge": "FabGuide_SlidingHinge.svg",
+             "double_pivot": "FabGuide_DoublePivot.svg"}
 
     def getIcon(self):
         from fabguide_gui import resources
@@ -125,7 +126,8 @@ class ViewProviderRelationship(ViewProvider):
 
 
 def axis_points(joint):
-    """Pairs of points of the lines that show a joint: the hinge's edge, the slide's axis through its part."""
+    """Pairs of points of the lines that show a joint: the hinge's edge, the slide's axis through its part, the
+    double pivot's link."""
     import FreeCAD
 
     points = []
@@ -138,6 +140,8 @@ def axis_points(joint):
             direction = FreeCAD.Vector(*[1 if joint.Axis == a else 0 for a in "xyz"])
             half = direction * (0.75 * max(box.XLength, box.YLength, box.ZLength))
             points += [box.Center - half, box.Center + half]
+        if joints.kind(joint) == "double_pivot":
+            points += [joint.Pivot, joint.BasePivot]
     except (AttributeError, IndexError, ValueError, ReferenceError):  # half-made or deleted input
         return []
     return points

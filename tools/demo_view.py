@@ -28,7 +28,7 @@ def render():
     view.viewIsometric()
     view.fitAll()
     view.saveImage(os.path.join(OUT, "cabinet.png"), 1200, 900, "White")
-    poses = {j.Name: (a, o) for c in mechanism.members(mech, configuration.is_configuration)
+    poses = {j.Name: (a, o, configuration.pole(c, j)) for c in mechanism.members(mech, configuration.is_configuration)
              if c.Label != "lid open" for j, a, o in configuration.poses(c)}
     poser = Poser(mech)
     poser.show(poses)

@@ -1,6 +1,7 @@
 // `fabguide solve`: the works-like model nearest to the given one that satisfies its relationships
 // (thesis 4.4).
 #include "Cli/Commands.h"
+#include "Function/Pose.h"
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
@@ -16,7 +17,27 @@ namespace {
 struct SolveArguments {
     std::string input;
     std::string output;
+    bool poses = false;
 };
+
+/// Where each solid cuboid's box is in each configuration (thesis 4.1.2), after the solve.
+void printPoses(const function::Model& model)
+{
+    for (size_t k = 0; k < model.configurations.size(); ++k) {
+        std::printf("in configuration '%s':\n", model.configurations[k].name.c_str());
+        for (size_t c = 0; c < model.cuboids.size(); ++c) {
+            if (model.cuboids[c].cavity())
+                continue;
+            double at[6];
+            for (int s = 0; s < 6; ++s)
+                at[s] = function::evaluate(
+                    model, function::posed(model, {static_cast<int>(c), static_cast<function::Side>(s)},
+                                           static_cast<int>(k)));
+            std::printf("  %-20s x %.6g .. %.6g  y %.6g .. %.6g  z %.6g .. %.6g\n",
+                        model.cuboids[c].name.c_str(), at[0], at[1], at[2], at[3], at[4], at[5]);
+        }
+    }
+}
 
 void printChanges(const function::Model& before, const function::Model& after)
 {
@@ -62,9 +83,13 @@ int run(const SolveArguments& args)
         for (const std::string& name : result.conflict)
             names += (names.empty() ? "" : ", ") + ("'" + name + "'");
         std::fprintf(stderr, "fabguide solve: these cannot hold together: %s\n", names.c_str());
+        for (const std::string& note : result.notes)
+            std::fprintf(stderr, "  %s\n", note.c_str());
         return 1;
     }
     printChanges(model, result.model);
+    if (args.poses)
+        printPoses(result.model);
     std::printf("largest violation %.2g mm\n", result.violation);
     if (!args.output.empty()) {
         io::writeJsonFile(args.output, io::workslikeToJson(result.model, &result));
@@ -82,6 +107,7 @@ void addSolveCommand(CLI::App& app)
         "solve", "Size the parts of a works-like model so its relationships hold (*.workslike.json)");
     cmd->add_option("input", args->input, "*.workslike.json")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "solved model to write");
+    cmd->add_flag("--poses", args->poses, "print where each cuboid is in each configuration");
     cmd->callback([args] {
         if (const int code = run(*args))
             throw CLI::RuntimeError(code);

@@ -129,16 +129,6 @@ bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& bo
     return true;
 }
 
-/// The link's turn about the base pivot and the part's turn about its own pivot that take pivot `a` to its
-/// place in the pose (the shorter way round).
-std::array<double, 2> angles(const Point& a, const Point& b, const Point& pole, double degrees)
-{
-    const Point to = turn(a, pole, degrees);
-    const double link = std::remainder(
-        (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
-    return {link, degrees - link};
-}
-
 /// Whether the part hits its base at one of 32 poses along the four-bar motion to each pose, with the pivots
 /// moved by (a, b): both parts' solid cuboids, in the pivot plane, where they share depth along the normal.
 bool collides(const Placement& p, double a, double b)
@@ -147,7 +137,7 @@ bool collides(const Placement& p, double a, double b)
     const auto moving = rectangles(p.model, p.joint.part, p.plane),
                fixed = rectangles(p.model, p.joint.base, p.plane);
     for (const JointPose& pose : p.poses) {
-        const auto [link, part] = angles(pivot, base, p.pole(pose), pose.angle);
+        const auto [link, part] = fourBarAngles(pivot, base, p.pole(pose), pose.angle);
         for (int step = 1; step <= 32; ++step) {
             const double t = step / 32.0;
             for (const auto& r : moving) {
@@ -253,6 +243,14 @@ std::optional<std::pair<double, double>> clearPlacement(const Placement& p, cons
 
 }  // namespace
 
+std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point& pole, double degrees)
+{
+    const Point to = turn(a, pole, degrees);  // the link turns the shorter way round
+    const double link = std::remainder(
+        (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
+    return {link, degrees - link};
+}
+
 PivotPlane pivotPlane(const Model& model, const Joint& joint)
 {
     PivotPlane plane;
@@ -272,12 +270,12 @@ PivotPlane pivotPlane(const Model& model, const Joint& joint)
 std::array<double, 2> linkAngles(const Model& model, const Joint& joint, const JointPose& pose)
 {
     const PivotPlane plane = pivotPlane(model, joint);
-    return angles(plane.pivot, plane.basePivot, {pose.pole[plane.u], pose.pole[plane.w]}, pose.angle);
+    return fourBarAngles(plane.pivot, plane.basePivot, {pose.pole[plane.u], pose.pole[plane.w]}, pose.angle);
 }
 
-std::vector<std::string> placePivots(Model& model)
+std::vector<Unplaced> placePivots(Model& model)
 {
-    std::vector<std::string> failed;
+    std::vector<Unplaced> failed;
     for (Joint& joint : model.joints) {
         if (joint.type != Joint::Type::DoublePivot)
             continue;
@@ -294,11 +292,16 @@ std::vector<std::string> placePivots(Model& model)
         const auto [lowA, highA] = p.range(joint.pivotFace, p.axisA, p.plane.pivot);
         const auto [lowB, highB] = p.range(joint.basePivotFace, p.axisB, p.plane.basePivot);
         const Range range{lowA, highA, lowB, highB};
-        auto placed = leastChange(p, range);
+        const auto reachable = leastChange(p, range);
+        auto placed = reachable;
         if (!placed || collides(p, placed->first, placed->second))
             placed = clearPlacement(p, range);
         if (!placed) {
-            failed.push_back(joint.name);
+            failed.push_back({joint.name, reachable
+                                              ? "its part would hit '" + model.parts[joint.base].name +
+                                                    "' on the way, wherever its pivots sit on their faces"
+                                              : "no pivot positions on their faces keep the link's length "
+                                                "in every configuration"});
             continue;
         }
         joint.pivot[p.axisA] += placed->first;

@@ -22,9 +22,19 @@ PivotPlane pivotPlane(const Model& model, const Joint& joint);
 /// to a configuration's pose (for animating the four-bar motion).
 std::array<double, 2> linkAngles(const Model& model, const Joint& joint, const JointPose& pose);
 
-/// Moves every double pivot's pivots (stage 2). Returns the names of the joints that cannot be placed (the
-/// position constraint has no solution on the faces) or whose parts would collide on the way (checked at 32
-/// poses along the motion); empty when all are placed.
-std::vector<std::string> placePivots(Model& model);
+/// The same for pivots at `pivot` (on the part) and `base` (on the base) and a turn by `degrees` about
+/// `pole`, all in the pivot plane: turning the part about its pivot, then the link about the base pivot.
+std::array<double, 2> fourBarAngles(const std::array<double, 2>& pivot, const std::array<double, 2>& base,
+                                    const std::array<double, 2>& pole, double degrees);
+
+/// A double pivot that cannot be placed, and why.
+struct Unplaced {
+    std::string joint, reason;
+};
+
+/// Moves every double pivot's pivots (stage 2). Returns the joints that cannot be placed: the position
+/// constraint has no solution on the faces, or the parts would collide on the way (checked at 32 poses along
+/// the motion); empty when all are placed.
+std::vector<Unplaced> placePivots(Model& model);
 
 }  // namespace fabguide::function

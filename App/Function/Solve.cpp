@@ -178,7 +178,7 @@ std::vector<LinearConstraint> constraints(const Model& model)
         coverConstraints(rows, model, c);
     for (const Joint& j : model.joints)  // a double pivot's faces stay in one plane (thesis 4.1.2)
         if (j.type == Joint::Type::DoublePivot)
-            order(rows, model, j.name, -1, j.pivotFace, Face{j.basePivotFace.cuboid, j.pivotFace.side}, true);
+            order(rows, model, j.name, -1, j.pivotFace, j.basePivotFace, true);
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);
         rows.push_back({{{variable(lock.face), 1.0}}, value, value, "lock: " + faceName(model, lock.face)});
@@ -193,16 +193,22 @@ SolveResult solve(const Model& model)
         for (int k = 0; k < 6; ++k)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
     const LeastChangeResult r = solveLeastChange(target, constraints(model));
-    SolveResult result{r.solved, model, r.conflict, r.violation};
+    SolveResult result{r.solved, model, r.conflict, r.violation, {}};
     for (size_t c = 0; c < model.cuboids.size() && r.solved; ++c)
         for (int k = 0; k < 6; ++k)
             result.model.cuboids[c].coordinates[k] = r.x[6 * c + k];
     if (!r.solved)
         return result;
     // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
-    if (const std::vector<std::string> unplaced = placePivots(result.model); !unplaced.empty())
-        return {false, model, unplaced, r.violation};
-    return result;
+    const std::vector<Unplaced> unplaced = placePivots(result.model);
+    if (unplaced.empty())
+        return result;
+    SolveResult failed{false, model, {}, r.violation, {}};
+    for (const Unplaced& u : unplaced) {
+        failed.conflict.push_back(u.joint);
+        failed.notes.push_back(u.joint + ": " + u.reason);
+    }
+    return failed;
 }
 
 }  // namespace fabguide::function

@@ -23,8 +23,9 @@ std::vector<LinearConstraint> constraints(const Model& model);
 struct SolveResult {
     bool solved = false;
     Model model;                        ///< the solved model (unchanged when not solved)
-    std::vector<std::string> conflict;  ///< relationships that cannot hold together
+    std::vector<std::string> conflict;  ///< relationships (or double pivots) that cannot hold together
     double violation = 0;
+    std::vector<std::string> notes;  ///< why, where the names alone do not say
 };
 
 /// The model nearest to `model` that satisfies all its relationships, locks and minimum sizes.

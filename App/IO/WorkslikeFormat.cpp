@@ -245,8 +245,9 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             if (static_cast<int>(j) == a.joint || other.part != first.part ||
                 other.type != function::Joint::Type::DoublePivot)
                 continue;
-            const auto b = std::find_if(configuration.poses.begin(), configuration.poses.end(),
-                                        [&](const function::JointPose& p) { return p.joint == static_cast<int>(j); });
+            const auto b =
+                std::find_if(configuration.poses.begin(), configuration.poses.end(),
+                             [&](const function::JointPose& p) { return p.joint == static_cast<int>(j); });
             if (b == configuration.poses.end() || b->angle != a.angle || b->pole != a.pole)
                 throw FormatError(c.pathOf("poses") + ": '" + first.name + "' and '" + other.name +
                                   "' move one part and must be posed alike");
@@ -685,8 +686,10 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                           {"relationships", relationships},
                           {"locks", locks}};
     if (result)
-        out["report"] = {
-            {"solved", result->solved}, {"conflict", result->conflict}, {"violation", result->violation}};
+        out["report"] = {{"solved", result->solved},
+                         {"conflict", result->conflict},
+                         {"violation", result->violation},
+                         {"notes", result->notes}};
     return out;
 }
 

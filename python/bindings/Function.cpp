@@ -1,8 +1,11 @@
 // Bindings of the works-like solve (thesis ch. 4): models are *.workslike.json dicts.
 #include "Bindings.h"
+#include "Function/DoublePivot.h"
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 #include "Json.h"
+
+#include <pybind11/stl.h>
 
 namespace py = pybind11;
 
@@ -27,6 +30,11 @@ py::object solve(const py::object& model)
 
 void bindFunction(py::module_& m)
 {
+    m.def("four_bar_angles", &function::fourBarAngles, py::arg("pivot"), py::arg("base_pivot"),
+          py::arg("pole"), py::arg("degrees"),
+          "A double pivot's motion to a pose (thesis 4.3.6): (link turn about the base pivot, part turn "
+          "about its\n"
+          "own pivot) in degrees, for pivots and pole given as (u, w) in the pivot plane.");
     m.def(
         "solve", &solve, py::arg("model"),
         "Solve a works-like model (a *.workslike.json dict) for the least change that satisfies its "

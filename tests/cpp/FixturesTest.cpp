@@ -81,7 +81,8 @@ INSTANTIATE_TEST_SUITE_P(Table41, Fixture,
                          testing::Values("cabinet.workslike.json", "cellphone.workslike.json",
                                          "tablet.workslike.json", "toolbox.workslike.json",
                                          "printer.workslike.json", "crate-bar.workslike.json",
-                                         "box-with-lid.workslike.json", "crate-bed.workslike.json"),
+                                         "box-with-lid.workslike.json", "crate-bed.workslike.json",
+                                         "sofa-bunk.workslike.json"),
                          [](const auto& info) {
                              std::string name = info.param;
                              name = name.substr(0, name.find('.'));
@@ -182,4 +183,47 @@ TEST(Printer, TheFoldedPaperStopRidesInWithItsTray)
     EXPECT_NEAR(closed(Side::Bottom), at(m, "output tray", Side::Top), 1e-6);  // lying on the tray
     EXPECT_NEAR(closed(Side::Top) - closed(Side::Bottom), 5, 1e-6);            // folded flat
     EXPECT_GE(closed(Side::Near), at(m, "bay", Side::Near) - 1e-6);            // inside the bay
+}
+
+TEST(SofaBunk, RaisingTheHeadrestRaisesTheBunkInTheBedAndMovesItInTheSofa)
+{
+    // Thesis 4.6: "raising the headrest moves the bunk".
+    const function::Model before = function::solve(example("sofa-bunk.workslike.json")).model;
+    const function::Model m = edited("sofa-bunk.workslike.json", "headrest", Side::Top, 100);
+    int bunk = 0;
+    while (m.cuboids[bunk].name != "bunk")
+        ++bunk;
+    const double bed = function::evaluate(m, function::posed(m, function::Face{bunk, Side::Bottom}, 0));
+    EXPECT_NEAR(bed, at(m, "headrest", Side::Top), 1e-6);  // still resting on the headrest, now 100 higher
+    EXPECT_NEAR(bed, at(before, "headrest", Side::Top) + 100, 1e-6);
+    EXPECT_GT(std::abs(at(m, "bunk", Side::Near) - at(before, "bunk", Side::Near)),
+              1);  // the sofa's back moved
+}
+
+TEST(Table41, TheFixturesHaveTheThesisJointAndRelationshipCounts)
+{
+    struct Row {
+        const char* file;
+        int hinges, slides, slidingHinges, doublePivots, functional, geometric;
+    };
+    const Row table[] = {{"cabinet", 1, 1, 3, 0, 7, 1},   {"crate-bar", 2, 5, 0, 0, 2, 1},
+                         {"crate-bed", 0, 0, 0, 4, 3, 1}, {"sofa-bunk", 2, 0, 0, 2, 5, 1},
+                         {"printer", 2, 3, 0, 0, 2, 0},   {"cellphone", 1, 1, 0, 0, 2, 1},
+                         {"tablet", 1, 1, 0, 0, 2, 1},    {"toolbox", 1, 1, 0, 0, 2, 0}};
+    using Type = function::Joint::Type;
+    for (const Row& row : table) {
+        const function::Model m = example(std::string(row.file) + ".workslike.json");
+        auto joints = [&](Type type) {
+            return std::count_if(m.joints.begin(), m.joints.end(),
+                                 [&](const auto& j) { return j.type == type; });
+        };
+        EXPECT_EQ(joints(Type::Hinge), row.hinges) << row.file;
+        EXPECT_EQ(joints(Type::Slide), row.slides) << row.file;
+        EXPECT_EQ(joints(Type::SlidingHinge), row.slidingHinges) << row.file;
+        EXPECT_EQ(joints(Type::DoublePivot), row.doublePivots) << row.file;
+        EXPECT_EQ(m.cover.size() + m.fitInside.size() + m.support.size() + m.flush.size(),
+                  static_cast<size_t>(row.functional))
+            << row.file;
+        EXPECT_EQ(m.geometric.size(), static_cast<size_t>(row.geometric)) << row.file;
+    }
 }

@@ -147,6 +147,44 @@ def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
     assert doc.getObject(name) is None and mech.Status == "Solved", mech.Status
 
 
+def the_crate_bed_folds_along_its_four_bar_motion():
+    doc = FreeCAD.newDocument("CrateBed")
+    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "crate-bed.workslike.json"),
+                     "FabGuide_ImportWorkslike")
+    mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
+    assert mech.Status == "Solved", mech.Status
+    pivot = doc.getObjectsByLabel("head pivot left")[0]
+    assert pivot.ViewObject.Proxy.coordinates.point.getNum() == 2, "the link is drawn"
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_Configurations")
+    QtGui.QApplication.processEvents()
+    panel = mech.ViewObject.Proxy.panel
+    panel.slider.setValue(50)  # half way: the headboard is lifted over the bed's end, turned less than 90°
+    head = doc.getObjectsByLabel("headboard")[0]
+    q = head.ViewObject.RootNode.getChild(0).rotation.getValue().getValue()
+    assert 0.2 < abs(q[0]) < 0.6, q
+    Gui.activeDocument().activeView().viewRight()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("function_crate_bed_half_folded"))
+    Gui.ActiveDocument.resetEdit()
+
+
+def a_double_pivot_from_two_picked_points():
+    doc = state["doc"]
+    arm, post = doc.addObject("Part::Box", "Arm"), doc.addObject("Part::Box", "Post")
+    cuboids.set_coordinates(arm, [0, 10, 0, 100, 200, 220])
+    cuboids.set_coordinates(post, [0, 10, 0, 20, 0, 200])
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, arm.Name, "Face1", 0, 80, 210)  # on the arm's left face
+    Gui.Selection.addSelection(doc.Name, post.Name, "Face1", 0, 10, 150)  # on the post's left face
+    Gui.runCommand("FabGuide_AddDoublePivot")
+    joint = [o for o in doc.Objects if joints.is_joint(o) and joints.kind(o) == "double_pivot"][0]
+    assert joint.Part.Cuboids == [arm] and joint.Base.Cuboids == [post]
+    assert joints.as_dict(joint)["pivot"] == ["Arm.left", [0.0, 80.0, 210.0]]
+
+
 def export_writes_a_model_the_core_solves():
     path = os.path.join(tempfile.mkdtemp(), "clamshell.workslike.json")
     Gui.Selection.clearSelection()
@@ -162,5 +200,7 @@ guitest.run([
     a_clamshell_from_plain_boxes_with_the_commands,
     the_relationship_panel_colours_the_faces,
     a_conflict_turns_the_parts_red_and_undo_takes_it_back,
+    a_double_pivot_from_two_picked_points,
     export_writes_a_model_the_core_solves,
+    the_crate_bed_folds_along_its_four_bar_motion,
 ])

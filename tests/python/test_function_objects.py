@@ -175,7 +175,8 @@ def test_the_cabinet_imports_with_cavities_and_an_edit_widens_both_doors(doc, so
     assert cuboids.coordinates(right)[1] == pytest.approx(622, abs=1e-5)
 
 
-@pytest.mark.parametrize("name", ["box-with-lid", "cabinet", "cellphone", "crate-bar", "printer", "tablet", "toolbox"])
+@pytest.mark.parametrize("name", ["box-with-lid", "cabinet", "cellphone", "crate-bar", "crate-bed", "printer", "sofa-bunk",
+                                  "tablet", "toolbox"])
 def test_every_example_imports_solves_and_round_trips(doc, source_dir, tmp_path, name):
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", name + ".workslike.json"))
     doc.recompute()

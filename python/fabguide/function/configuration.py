@@ -1,4 +1,6 @@
 """A configuration (thesis 4.1.2): named poses of joints, in which relationships must hold."""
+import FreeCAD
+
 from fabguide import properties
 from fabguide.function import joints
 
@@ -12,24 +14,29 @@ class Configuration(properties.Proxy):
         add(obj, "App::PropertyFloatList", "Angles", "Configuration",
             "Per joint: the hinge angle in degrees (right-handed about the edge's +x/+y/+z direction)")
         add(obj, "App::PropertyFloatList", "Offsets", "Configuration", "Per joint: the slide offset in mm")
+        add(obj, "App::PropertyVectorList", "Poles", "Configuration",
+            "Per joint: for a double pivot, the point its part turns about (with Angles) to get here")
 
     def execute(self, obj):
         as_dict(obj)
 
 
-def create(doc, label, poses):
-    """poses: [(joint, angle, offset)]."""
+def create(doc, label, poses, poles=None):
+    """poses: [(joint, angle, offset)]; poles: a Vector per pose (used by double pivots)."""
     obj = doc.addObject("App::FeaturePython", "Configuration")
     Configuration(obj)
     obj.Label = label
-    set_poses(obj, poses)
+    set_poses(obj, poses, poles)
     return obj
 
 
-def set_poses(obj, poses):
+def set_poses(obj, poses, poles=None):
+    """poses: [(joint, angle, offset)]; poles: a Vector per pose (double pivots), else kept where they were."""
+    kept = dict(zip([j.Name for j in obj.Joints], obj.Poles))
     obj.Joints = [j for j, _, _ in poses]
     obj.Angles = [float(a) for _, a, _ in poses]
     obj.Offsets = [float(o) for _, _, o in poses]
+    obj.Poles = list(poles) if poles is not None else [kept.get(j.Name, FreeCAD.Vector()) for j, _, _ in poses]
 
 
 def poses(obj):
@@ -37,6 +44,14 @@ def poses(obj):
     angles, offsets = list(obj.Angles), list(obj.Offsets)
     return [(j, angles[k] if k < len(angles) else 0.0, offsets[k] if k < len(offsets) else 0.0)
             for k, j in enumerate(obj.Joints)]
+
+
+def pole(obj, joint):
+    """The pole a configuration turns a double pivot's part about."""
+    names = [j.Name for j in obj.Joints]
+    poles = list(obj.Poles)
+    k = names.index(joint.Name) if joint.Name in names else len(poles)
+    return poles[k] if k < len(poles) else FreeCAD.Vector()
 
 
 def is_configuration(obj):
@@ -50,5 +65,6 @@ def as_dict(obj):
             raise ValueError("Configuration '{}': '{}' is not a joint".format(obj.Label, joint.Label))
         kind = joints.kind(joint)
         out[joint.Label] = ({"angle": angle, "offset": offset} if kind == "sliding_hinge"
+                            else {"angle": angle, "pole": list(pole(obj, joint))} if kind == "double_pivot"
                             else angle if kind == "hinge" else offset)
     return {"name": obj.Label, "poses": out}

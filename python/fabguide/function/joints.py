@@ -1,5 +1,7 @@
 """Joints (thesis 4.1.2): a hinge turns its part about an edge of one of its boxes, a slide moves it along an
-axis, a sliding hinge does both. A joint may hang on another moving part (its Base), which carries it."""
+axis, a sliding hinge does both; a double pivot links a point on a face of the part to a point on a coplanar face
+of its Base by a rigid link (the solve places both pivots, 4.3.6). A joint may hang on another moving part (its
+Base), which carries it."""
 from fabguide import properties
 from fabguide.function import cuboids
 
@@ -14,10 +16,16 @@ class Joint(properties.Proxy):
         add(obj, "App::PropertyLink", "Part", "Joint", "The part the joint moves")
         add(obj, "App::PropertyLink", "Base", "Joint",
             "The part it hangs on, which carries it along when it moves; empty: the ground")
-        if self.KIND != "slide":
+        if self.KIND in ("hinge", "sliding_hinge"):
             add(obj, "App::PropertyLinkSub", "Edge", "Joint", "The edge of one of the part's boxes it turns about")
-        if self.KIND != "hinge":
+        if self.KIND in ("slide", "sliding_hinge"):
             add(obj, "App::PropertyEnumeration", "Axis", "Joint", "The direction it slides along", AXES)
+        if self.KIND == "double_pivot":
+            add(obj, "App::PropertyLinkSub", "PivotFace", "Double pivot", "The face of the part's box with the pivot")
+            add(obj, "App::PropertyVector", "Pivot", "Double pivot", "The pivot on the part (placed by the solve)")
+            add(obj, "App::PropertyLinkSub", "BasePivotFace", "Double pivot",
+                "The face of the base's box, in the same plane, with the other pivot")
+            add(obj, "App::PropertyVector", "BasePivot", "Double pivot", "The pivot on the base (placed by the solve)")
 
     def execute(self, obj):
         as_dict(obj)
@@ -35,15 +43,20 @@ class SlidingHinge(Joint):
     TYPE, KIND = "FabGuide::SlidingHinge", "sliding_hinge"
 
 
-KINDS = {cls.KIND: cls for cls in (Hinge, Slide, SlidingHinge)}
+class DoublePivot(Joint):
+    TYPE, KIND = "FabGuide::DoublePivot", "double_pivot"
+
+
+KINDS = {cls.KIND: cls for cls in (Hinge, Slide, SlidingHinge, DoublePivot)}
 
 
 class JointError(ValueError):
     """A joint that names nothing it can move; the message names the joint."""
 
 
-def create(doc, kind, part, edge=None, axis=None, base=None, label=None):
-    """kind: "hinge", "slide" or "sliding_hinge"; edge: (box, "EdgeN"); axis: "x", "y" or "z"."""
+def create(doc, kind, part, edge=None, axis=None, base=None, label=None, pivots=None):
+    """kind: "hinge", "slide", "sliding_hinge" or "double_pivot"; edge: (box, "EdgeN"); axis: "x", "y" or "z";
+    pivots: ((box, "FaceN", Vector) on the part, (box, "FaceN", Vector) on the base)."""
     cls = KINDS[kind]
     obj = doc.addObject("App::FeaturePython", cls.__name__)
     cls(obj)
@@ -53,6 +66,9 @@ def create(doc, kind, part, edge=None, axis=None, base=None, label=None):
         obj.Edge = edge
     if axis is not None:
         obj.Axis = axis
+    if pivots is not None:
+        (obj.PivotFace, obj.Pivot), (obj.BasePivotFace, obj.BasePivot) = [((box, [face]), point)
+                                                                         for box, face, point in pivots]
     return obj
 
 
@@ -65,11 +81,12 @@ def kind(obj):
 
 
 def turns(obj):
-    return kind(obj) != "slide"
+    """Turns about an edge (hinges)."""
+    return kind(obj) in ("hinge", "sliding_hinge")
 
 
 def slides(obj):
-    return kind(obj) != "hinge"
+    return kind(obj) in ("slide", "sliding_hinge")
 
 
 def as_dict(obj):
@@ -88,4 +105,13 @@ def as_dict(obj):
         out["edge"] = ["{}.{}".format(box.Label, side) for side in cuboids.edge_sides(box, elements[0])]
     if slides(obj):
         out["axis"] = obj.Axis
+    if kind(obj) == "double_pivot":
+        if obj.Base is None:
+            raise JointError("Double pivot '{}': choose the Base part it links to".format(obj.Label))
+        for key, face, point, part in (("pivot", obj.PivotFace, obj.Pivot, obj.Part),
+                                       ("base_pivot", obj.BasePivotFace, obj.BasePivot, obj.Base)):
+            if face is None or not face[1] or face[0] not in part.Cuboids:
+                raise JointError("Double pivot '{}': choose a face of a box of '{}' for its {}".format(
+                    obj.Label, part.Label, key.replace("_", " ")))
+            out[key] = [cuboids.face_name(face[0], face[1][0]), list(point)]
     return out

@@ -104,10 +104,25 @@ def solve(obj):
     if not report["solved"]:
         obj.Status = "Conflict: " + ", ".join(conflict)
         FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
+        for note in report.get("notes", []):
+            FreeCAD.Console.PrintWarning("  {}\n".format(note))
         return solved
     write_back(obj, solved)
+    place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
+
+
+def place_pivots(obj, solved):
+    """The double pivots' pivots where stage 2 of the solve put them."""
+    by_name = {j["name"]: j for j in solved["joints"]}
+    for joint in members(obj, joints.is_joint):
+        if joints.kind(joint) != "double_pivot":
+            continue
+        for key, prop in (("pivot", "Pivot"), ("base_pivot", "BasePivot")):
+            point = FreeCAD.Vector(*by_name[joint.Label][key][1])
+            if (getattr(joint, prop) - point).Length > 1e-9:
+                setattr(joint, prop, point)
 
 
 def write_back(obj, solved):

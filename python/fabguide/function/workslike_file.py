@@ -37,16 +37,23 @@ def import_model(doc, data, label="Mechanism"):
         if "edge" in j:
             box = boxes[j["edge"][0].rsplit(".", 1)[0]]
             edge = (box, [cuboids.edge_element(box, [f.rsplit(".", 1)[1] for f in j["edge"]])])
+        pivots = None
+        if j["type"] == "double_pivot":
+            pivots = [(boxes[j[key][0].rsplit(".", 1)[0]],
+                       "Face{}".format(cuboids.SIDES.index(j[key][0].rsplit(".", 1)[1]) + 1),
+                       FreeCAD.Vector(*j[key][1])) for key in ("pivot", "base_pivot")]
         made_joints[j["name"]] = joints.create(doc, j["type"], made_parts[j["part"]], edge=edge, axis=j.get("axis"),
-                                               base=made_parts.get(j.get("base")), label=j["name"])
+                                               base=made_parts.get(j.get("base")), label=j["name"], pivots=pivots)
         members.append(made_joints[j["name"]])
     for c in data.get("configurations", []):
-        poses = []
+        poses, poles = [], []
         for name, pose in c["poses"].items():
-            angle, offset = (pose["angle"], pose["offset"]) if isinstance(pose, dict) else (
+            angle, offset = (pose["angle"], pose.get("offset", 0)) if isinstance(pose, dict) else (
                 (pose, 0) if joints.turns(made_joints[name]) else (0, pose))
             poses.append((made_joints[name], angle, offset))
-        made_configurations[c["name"]] = configuration.create(doc, c["name"], poses)
+            poles.append(FreeCAD.Vector(*pose["pole"]) if isinstance(pose, dict) and "pole" in pose
+                         else FreeCAD.Vector())
+        made_configurations[c["name"]] = configuration.create(doc, c["name"], poses, poles)
         members.append(made_configurations[c["name"]])
     for r in data.get("relationships", []):
         members.append(relationships.create(doc, r["type"], r["name"], made_configurations.get(r.get("configuration")),
