@@ -92,6 +92,7 @@ BENCHMARK_CAPTURE(SolveFixture, cellphone, "cellphone.workslike.json")->Unit(ben
 BENCHMARK_CAPTURE(SolveFixture, crate_bar, "crate-bar.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, crate_bed, "crate-bed.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, printer, "printer.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, sofa_bunk, "sofa-bunk.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, tablet, "tablet.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, toolbox, "toolbox.workslike.json")->Unit(benchmark::kMillisecond);
 
