@@ -3,13 +3,13 @@ in the 3-D view, conflicting parts shown in red, and the task panels opened by d
 import FreeCADGui
 
 from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships
-from fabguide_gui.viewproviders import ViewProvider
+from fabguide_gui.viewproviders import EditedByDoubleClick, ViewProvider
 
 CONFLICT_COLOUR = (0.85, 0.2, 0.2)
 AXIS_COLOUR = (1.0, 0.6, 0.1)
 
 
-class ViewProviderMechanism(ViewProvider):
+class ViewProviderMechanism(EditedByDoubleClick, ViewProvider):
     """Double-click: the configurations panel. After a solve, parts in conflict turn red."""
 
     ICON = "FabGuide_Mechanism.svg"
@@ -33,10 +33,6 @@ class ViewProviderMechanism(ViewProvider):
             self.panel.cleanup()  # also when edit mode ends without OK or Cancel
             self.panel = None
         FreeCADGui.Control.closeDialog()
-        return True
-
-    def doubleClicked(self, vobj):
-        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name)
         return True
 
 

@@ -24,6 +24,15 @@ class ViewProvider(properties.Stateless):
         return resources.icon(self.ICON)
 
 
+class EditedByDoubleClick:
+    """Mixin for view providers whose setEdit opens a task panel."""
+
+    def doubleClicked(self, vobj):
+        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name)
+        return True
+
+
+
 class ViewProviderMasterBoard(ViewProvider):
     ICON = "FabGuide_MasterBoard.svg"
 
@@ -36,7 +45,7 @@ class ViewProviderBoard(ViewProvider):
         vobj.ShapeColor = BOARD_COLOUR
 
 
-class ViewProviderLayout(ViewProvider):
+class ViewProviderLayout(EditedByDoubleClick, ViewProvider):
     """Sheets in wood colour, parts in blue; double-click opens the layout's task panel."""
 
     ICON = "FabGuide_Layout.svg"
@@ -57,10 +66,6 @@ class ViewProviderLayout(ViewProvider):
 
     def unsetEdit(self, vobj, mode=0):
         FreeCADGui.Control.closeDialog()
-        return True
-
-    def doubleClicked(self, vobj):
-        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name)
         return True
 
 

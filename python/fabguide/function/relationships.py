@@ -24,9 +24,8 @@ class Cover(Relationship):
         add(obj, "App::PropertyLinkList", "Covering", "Cover", "Parts whose faces cover")
         add(obj, "App::PropertyLinkList", "Covered", "Cover", "Parts whose faces are covered")
         add(obj, "App::PropertyBool", "Just", "Cover", "Just cover: the covering faces no larger than the covered")
-        add(obj, "App::PropertyStringList", "Pairs", "Cover",
-            "Corresponding faces 'covering -> covered' (thesis 4.3.1); empty: inferred on the next solve")
-        add(obj, "App::PropertyLength", "Distance", "Cover", "How far apart faces may be to correspond", 5)
+        define_pairs(obj, add, "Cover", "'covering -> covered' (thesis 4.3.1)",
+                     "How far apart faces may be to correspond", 5)
 
     def fields(self, obj):
         return dict({"covering": labels(obj.Covering), "covered": labels(obj.Covered), "just": obj.Just},
@@ -63,9 +62,8 @@ class Support(Relationship):
     def define_fields(self, obj, add):
         add(obj, "App::PropertyLinkList", "Supporting", "Support", "Parts that support (legs, frames)")
         add(obj, "App::PropertyLinkList", "Supported", "Support", "Parts resting on them")
-        add(obj, "App::PropertyStringList", "Pairs", "Support",
-            "Corresponding faces 'supporting top -> supported bottom' (thesis 4.3.3); empty: inferred")
-        add(obj, "App::PropertyLength", "Distance", "Support", "How far above a top face a bottom face may be", 100)
+        define_pairs(obj, add, "Support", "'supporting top -> supported bottom' (thesis 4.3.3)",
+                     "How far above a top face a bottom face may be", 100)
 
     def fields(self, obj):
         return dict({"supporting": labels(obj.Supporting), "supported": labels(obj.Supported)},
@@ -118,6 +116,13 @@ def terms(obj, texts):
             raise ValueError("Geometric '{}': '{}' must read 'Box.side', 'Box.width' or 'factor*Box.width'"
                              .format(obj.Label, text))
     return out
+
+
+def define_pairs(obj, add, group, pairs, distance, default):
+    """The corresponding-faces graph a cover or support infers, which the user may correct."""
+    add(obj, "App::PropertyStringList", "Pairs", group,
+        "Corresponding faces " + pairs + "; empty: inferred on the next solve")
+    add(obj, "App::PropertyLength", "Distance", group, distance + " when inferring the pairs", default)
 
 
 def labels(objs):
