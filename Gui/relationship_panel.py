@@ -22,11 +22,14 @@ class RelationshipPanel:
         layout.addWidget(self.status)
         self.pairs = None
         if "Pairs" in rel.PropertiesList:
-            layout.addWidget(QtGui.QLabel("Corresponding faces (first -> second); edit to correct:"))
+            explain = QtGui.QLabel("Corresponding faces, first -> second (blue -> red in the 3-D view). Double-click one "
+                                   "to correct it.")
+            explain.setWordWrap(True)
+            layout.addWidget(explain)
             self.pairs = QtGui.QListWidget()
             layout.addWidget(self.pairs)
             buttons = QtGui.QHBoxLayout()
-            for text, slot in (("Add pair", self.add_pair), ("Remove", self.remove_pair), ("Infer again", self.infer)):
+            for text, slot in (("Add", self.add_pair), ("Remove", self.remove_pair), ("Re-infer", self.infer)):
                 button = QtGui.QPushButton(text)
                 button.clicked.connect(slot)
                 buttons.addWidget(button)
