@@ -238,6 +238,25 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         }
         configuration.poses.push_back(pose);
     }
+    // A double pivot's base stands still where it is posed (stage 2 places pivots against a fixed base).
+    auto posed = [&](int j) {
+        return std::any_of(configuration.poses.begin(), configuration.poses.end(),
+                           [&](const function::JointPose& p) { return p.joint == j; });
+    };
+    for (const function::JointPose& a : configuration.poses) {
+        const function::Joint& pivot = model.joints[a.joint];
+        for (int part = pivot.base; pivot.type == function::Joint::Type::DoublePivot && part >= 0;) {
+            const auto carrier = std::find_if(model.joints.begin(), model.joints.end(),
+                                              [&](const function::Joint& k) { return k.part == part; });
+            if (carrier == model.joints.end())
+                break;
+            if (posed(static_cast<int>(carrier - model.joints.begin())))
+                throw FormatError(c.pathOf("poses") + ": '" + pivot.name + "' needs its base '" +
+                                  model.parts[pivot.base].name + "' to stand still, but '" + carrier->name +
+                                  "' moves it");
+            part = carrier->base;
+        }
+    }
     // Double pivots that move one part (parallel links) take it to one place.
     for (const function::JointPose& a : configuration.poses)
         for (size_t j = 0; j < model.joints.size(); ++j) {

@@ -111,3 +111,16 @@ TEST(DoublePivot, ErrorsNameTheField)
               "configurations[0].poses: 'head pivot left' and 'head pivot right' move one part and must be "
               "posed alike");
 }
+
+TEST(DoublePivot, ItsBaseMustStandStillWhereItIsPosed)
+{
+    json d = crateBed();
+    d["parts"].push_back(
+        {{"name", "floor"},
+         {"cuboids", {{{"name", "floor"}, {"min", {0, 0, -20}}, {"max", {1000, 2000, 0}}}}}});
+    d["joints"].push_back({{"name", "castor"}, {"type", "slide"}, {"part", "bed"}, {"axis", "y"}});
+    d["configurations"][0]["poses"]["castor"] = 100;
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "configurations[0].poses: 'foot pivot left' needs its base 'bed' to stand still, but 'castor' "
+              "moves it");
+}
