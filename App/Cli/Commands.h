@@ -8,5 +8,6 @@ namespace fabguide::cli {
 void addVersionCommand(CLI::App& app);
 void addPackCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
+void addPrintableCommand(CLI::App& app);
 
 }  // namespace fabguide::cli

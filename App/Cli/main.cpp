@@ -3,6 +3,8 @@
 #include "Cli/Commands.h"
 #include "Core/Version.h"
 
+#include <Standard_Failure.hxx>
+
 #include <exception>
 #include <iostream>
 
@@ -14,12 +16,17 @@ int main(int argc, char** argv)
     fabguide::cli::addVersionCommand(app);
     fabguide::cli::addPackCommand(app);
     fabguide::cli::addSolveCommand(app);
+    fabguide::cli::addPrintableCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const std::exception& e) {
         std::cerr << "fabguide: error: " << e.what() << "\n";
+        return 1;
+    } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+        std::cerr << "fabguide: geometry error: " << e.GetMessageString() << " (" << e.DynamicType()->Name()
+                  << ")\n";
         return 1;
     }
     return 0;

@@ -1,0 +1,176 @@
+#include "IO/PrintFiles.h"
+
+#include <zip.h>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <Poly_Triangulation.hxx>
+#include <STEPControl_Writer.hxx>
+#include <StlAPI_Writer.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+namespace fabguide::io {
+
+namespace {
+
+/// Triangles finer than a slicer's resolution: 0.02 mm chordal deviation, 0.2 rad.
+TopoDS_Shape meshed(const std::vector<printable::Body>& bodies)
+{
+    BRep_Builder builder;
+    TopoDS_Compound all;
+    builder.MakeCompound(all);
+    for (const printable::Body& b : bodies)
+        builder.Add(all, b.shape);
+    BRepMesh_IncrementalMesh(all, 0.02, false, 0.2, true);
+    return all;
+}
+
+/// One body's triangles with shared vertices (adjacent faces share their edges' nodes), outward-facing.
+void meshXml(const printable::Body& body, int id, std::ostringstream& xml)
+{
+    std::map<std::tuple<double, double, double>, int> index;
+    std::ostringstream vertices, triangles;
+    for (TopExp_Explorer e(body.shape, TopAbs_FACE); e.More(); e.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(e.Current());
+        TopLoc_Location location;
+        const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(face, location);
+        if (mesh.IsNull())
+            continue;
+        std::vector<int> ids(mesh->NbNodes() + 1);
+        for (int n = 1; n <= mesh->NbNodes(); ++n) {
+            const gp_Pnt p = mesh->Node(n).Transformed(location.Transformation());
+            const auto key = std::make_tuple(p.X(), p.Y(), p.Z());
+            auto [it, added] = index.emplace(key, static_cast<int>(index.size()));
+            if (added) {
+                char text[120];
+                std::snprintf(text, sizeof text, "<vertex x=\"%.6f\" y=\"%.6f\" z=\"%.6f\"/>", p.X(), p.Y(),
+                              p.Z());
+                vertices << text;
+            }
+            ids[n] = it->second;
+        }
+        for (int t = 1; t <= mesh->NbTriangles(); ++t) {
+            int a, b, c;
+            mesh->Triangle(t).Get(a, b, c);
+            if (face.Orientation() == TopAbs_REVERSED)
+                std::swap(b, c);
+            triangles << "<triangle v1=\"" << ids[a] << "\" v2=\"" << ids[b] << "\" v3=\"" << ids[c]
+                      << "\"/>";
+        }
+    }
+    xml << "<object id=\"" << id << "\" name=\"" << body.name << "\" type=\"model\"><mesh><vertices>"
+        << vertices.str() << "</vertices><triangles>" << triangles.str() << "</triangles></mesh></object>";
+}
+
+std::string fileName(const std::string& name)
+{
+    std::string out;
+    for (char c : name)
+        out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+    return out;
+}
+
+}  // namespace
+
+void writeStl(const std::vector<printable::Body>& bodies, const std::string& path)
+{
+    StlAPI_Writer writer;
+    writer.ASCIIMode() = false;
+    if (!writer.Write(meshed(bodies), path.c_str()))
+        throw std::runtime_error("cannot write " + path);
+}
+
+void write3mf(const std::vector<printable::Body>& bodies, const std::string& path)
+{
+    meshed(bodies);
+    std::ostringstream model;
+    model << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" "
+             "xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"><resources>";
+    for (size_t b = 0; b < bodies.size(); ++b)
+        meshXml(bodies[b], static_cast<int>(b) + 1, model);
+    model << "</resources><build>";
+    for (size_t b = 0; b < bodies.size(); ++b)
+        model << "<item objectid=\"" << b + 1 << "\"/>";
+    model << "</build></model>\n";
+    const std::string files[][2] = {
+        {"[Content_Types].xml",
+         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Types "
+         "xmlns=\"http://schemas.openxmlformats.org/package/2006/content-types\"><Default Extension=\"rels\" "
+         "ContentType=\"application/vnd.openxmlformats-package.relationships+xml\"/><Default "
+         "Extension=\"model\" "
+         "ContentType=\"application/vnd.ms-package.3dmanufacturing-3dmodel+xml\"/></Types>\n"},
+        {"_rels/.rels",
+         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Relationships "
+         "xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\"><Relationship "
+         "Target=\"/3D/3dmodel.model\" Id=\"rel0\" "
+         "Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/></Relationships>\n"},
+        {"3D/3dmodel.model", model.str()}};
+    int error = 0;
+    zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    if (!zip)
+        throw std::runtime_error("cannot write " + path);
+    for (const auto& [name, text] : files) {
+        zip_source_t* source = zip_source_buffer(zip, text.data(), text.size(), 0);
+        if (!source || zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE) < 0) {
+            zip_source_free(source);
+            zip_discard(zip);
+            throw std::runtime_error("cannot write " + path);
+        }
+    }
+    if (zip_close(zip) < 0)
+        throw std::runtime_error("cannot write " + path);
+}
+
+void writeStep(const std::vector<printable::Body>& bodies, const std::string& path)
+{
+    BRep_Builder builder;
+    TopoDS_Compound all;
+    builder.MakeCompound(all);
+    for (const printable::Body& b : bodies)
+        builder.Add(all, b.shape);
+    Message::DefaultMessenger()->RemovePrinters(
+        STANDARD_TYPE(Message_PrinterOStream));  // no transfer statistics
+    STEPControl_Writer writer;
+    if (writer.Transfer(all, STEPControl_AsIs) != IFSelect_RetDone ||
+        writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<std::string> writePrintFiles(const printable::Printable& printable, const std::string& folder)
+{
+    std::filesystem::create_directories(folder);
+    std::vector<std::string> written;
+    auto write = [&](const std::vector<printable::Body>& bodies, const std::string& stem) {
+        for (const char* extension : {".stl", ".3mf", ".step"}) {
+            const std::string path = (std::filesystem::path(folder) / (stem + extension)).string();
+            const std::string e = extension;
+            if (e == ".stl")
+                writeStl(bodies, path);
+            else if (e == ".3mf")
+                write3mf(bodies, path);
+            else
+                writeStep(bodies, path);
+            written.push_back(path);
+        }
+    };
+    write(printable.bodies, "assembly");
+    for (const printable::Body& b : printable.bodies)
+        write({b}, fileName(b.name));
+    return written;
+}
+
+}  // namespace fabguide::io

@@ -1,0 +1,76 @@
+#include "Printable/Checks.h"
+
+#include "Printable/Motion.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <Bnd_Box.hxx>
+
+#include <cmath>
+
+namespace fabguide::printable {
+
+namespace {
+
+gp_Trsf motion(const function::Model& m, const Body& b, int k, double t)
+{
+    return b.part >= 0 ? partMotion(m, b.part, k, t) : linkMotion(m, b.joint, k, t);
+}
+
+struct Placed {
+    TopoDS_Shape shape;
+    Bnd_Box bounds;
+};
+
+Placed place(const Body& b, const gp_Trsf& t)
+{
+    Placed p{BRepBuilderAPI_Transform(b.shape, t, true).Shape(), {}};
+    BRepBndLib::Add(p.shape, p.bounds);
+    return p;
+}
+
+/// The distance between two solids, 0 when they intersect or one holds the other.
+double distance(const Placed& a, const Placed& b)
+{
+    BRepExtrema_DistShapeShape d(a.shape, b.shape);
+    if (!d.IsDone())
+        return 0;
+    return d.InnerSolution() ? 0 : d.Value();
+}
+
+}  // namespace
+
+Check check(const function::Model& m, const Printable& printable, double enough, int samples)
+{
+    Check out;
+    for (const Body& b : printable.bodies)
+        if (!BRepCheck_Analyzer(b.shape).IsValid())
+            out.invalid.push_back(b.name);
+    auto measure = [&](int k, double t, const std::string& when) {
+        std::vector<Placed> placed;
+        for (const Body& b : printable.bodies)
+            placed.push_back(place(b, motion(m, b, k, t)));
+        for (size_t a = 0; a < placed.size(); ++a)
+            for (size_t b = a + 1; b < placed.size(); ++b) {
+                Bnd_Box grown = placed[a].bounds;
+                grown.Enlarge(enough);
+                if (grown.IsOut(placed[b].bounds))
+                    continue;
+                const double d = distance(placed[a], placed[b]);
+                if (d < out.clearance) {
+                    out.clearance = d;
+                    out.where = printable.bodies[a].name + " and " + printable.bodies[b].name + " " + when;
+                }
+            }
+    };
+    measure(-1, 0, "as printed");
+    for (size_t k = 0; k < m.configurations.size(); ++k)
+        for (int s = 1; s <= samples; ++s)
+            measure(static_cast<int>(k), static_cast<double>(s) / samples,
+                    "in '" + m.configurations[k].name + "' at " + std::to_string(100 * s / samples) + "%");
+    return out;
+}
+
+}  // namespace fabguide::printable

@@ -1,0 +1,34 @@
+// The rigid motions of a works-like model's parts (thesis 4.1.2) as OpenCASCADE transformations: where a part
+// is a fraction t of the way from its modelled pose to a configuration, for sweeping cavities and checking
+// motion.
+#pragma once
+
+#include "Function/Model.h"
+
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+namespace fabguide::printable {
+
+/// Joint j's motion `t` (0..1) of the way to its pose in configuration k (identity when k does not pose it).
+/// Everything that turns does so in the first half, everything that slides in the second: doors swing open
+/// before drawers come out, a pocket door (sliding hinge) swings open, then slides in; a double pivot follows
+/// its four-bar motion.
+gp_Trsf jointMotion(const function::Model& model, int j, int configuration, double t);
+
+/// Part p's motion: its joint's, then its base's, out to the ground.
+gp_Trsf partMotion(const function::Model& model, int part, int configuration, double t);
+
+/// A double pivot's link: turned about the base pivot (and carried by whatever carries the base).
+gp_Trsf linkMotion(const function::Model& model, int j, int configuration, double t);
+
+/// The first joint that moves part p, or -1.
+int jointMoving(const function::Model& model, int part);
+
+/// How configuration k poses joint j, or nullptr.
+const function::JointPose* poseOf(const function::Model& model, int j, int configuration);
+
+/// A hinge's (or sliding hinge's) axis: its edge, directed along +x, +y or +z.
+gp_Ax1 hingeAxis(const function::Model& model, const function::Joint& joint);
+
+}  // namespace fabguide::printable

@@ -1,0 +1,455 @@
+#include "Printable/PrintInPlace.h"
+
+#include "Function/DoublePivot.h"
+#include "Function/Pose.h"
+#include "Printable/Motion.h"
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Ax2.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace fabguide::printable {
+
+namespace {
+
+using function::Cuboid;
+using function::Joint;
+using function::Model;
+using function::Side;
+using Coordinates = std::array<double, 6>;
+
+constexpr double kPi = 3.14159265358979323846;
+
+TopoDS_Shape box(const Coordinates& c)
+{
+    return BRepPrimAPI_MakeBox(gp_Pnt(c[0], c[2], c[4]), gp_Pnt(c[1], c[3], c[5])).Shape();
+}
+
+/// A Boolean operation's result, or an error: OpenCASCADE reports failures by flags, not exceptions.
+template <typename Operation>
+TopoDS_Shape boolean(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* what)
+{
+    Operation operation(a, b);
+    if (operation.HasErrors()) {
+        std::ostringstream report;
+        operation.DumpErrors(report);
+        throw std::runtime_error(std::string("geometry: a ") + what + " failed: " + report.str());
+    }
+    return operation.Shape();
+}
+
+TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>(a, b, "union");
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    return b.IsNull() ? a : boolean<BRepAlgoAPI_Cut>(a, b, "cut");
+}
+
+TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
+{
+    return BRepBuilderAPI_Transform(s, t, true).Shape();
+}
+
+/// A cylinder of radius r around the axis `axis` through `at`, from `from` to `to` along it.
+TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r)
+{
+    gp_Pnt start = at;
+    start.SetCoord(axis + 1, from);
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(start, gp_Dir(axis == 0, axis == 1, axis == 2)), r, to - from)
+        .Shape();
+}
+
+bool movedByJoint(const Model& m, int part)
+{
+    return jointMoving(m, part) >= 0;
+}
+
+/// The modelled side of cuboid c that configuration k turns onto side `side` of its posed box, or -1 (a turn
+/// by other than a multiple of 90° leaves no face there).
+int modelledSide(const Model& m, int part, int c, int k, int side)
+{
+    const gp_Trsf motion = partMotion(m, part, k, 1);
+    const auto& x = m.cuboids[c].coordinates;
+    const double at = function::evaluate(m, function::posed(m, {c, static_cast<Side>(side)}, k));
+    for (int s = 0; s < 6; ++s) {
+        gp_Pnt centre((x[0] + x[1]) / 2, (x[2] + x[3]) / 2, (x[4] + x[5]) / 2);
+        centre.SetCoord(s / 2 + 1, x[s]);
+        centre.Transform(motion);
+        if (std::abs(centre.Coord(side / 2 + 1) - at) < 1e-6) {
+            gp_Vec normal(0, 0, 0);
+            normal.SetCoord(s / 2 + 1, s % 2 ? 1 : -1);
+            normal.Transform(motion);
+            if (std::abs(normal.Coord(side / 2 + 1) - (side % 2 ? 1 : -1)) < 1e-9)
+                return s;
+        }
+    }
+    return -1;
+}
+
+/// Gaps (4.5.3): where cuboids of two parts touch, as modelled or in any configuration, the face of the one
+/// that moves (or the later one) steps back by the gap; so does a solid's face lying on its cavity's wall.
+std::vector<Coordinates> gapped(const Model& m, double gap)
+{
+    std::vector<int> partOf(m.cuboids.size());
+    for (size_t p = 0; p < m.parts.size(); ++p)
+        for (int c : m.parts[p].cuboids)
+            partOf[c] = static_cast<int>(p);
+    std::vector<std::array<bool, 6>> steps(m.cuboids.size(), std::array<bool, 6>{});
+    const double hair = 1e-6;
+    for (int k = -1; k < static_cast<int>(m.configurations.size()); ++k) {
+        std::vector<Coordinates> posed(m.cuboids.size());
+        for (size_t c = 0; c < m.cuboids.size(); ++c)
+            for (int s = 0; s < 6; ++s)
+                posed[c][s] =
+                    function::evaluate(m, function::posed(m, {static_cast<int>(c), static_cast<Side>(s)}, k));
+        for (size_t a = 0; a < m.cuboids.size(); ++a)
+            for (size_t b = 0; b < m.cuboids.size(); ++b) {
+                if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity())
+                    continue;
+                const Coordinates &ca = posed[a], &cb = posed[b];
+                const bool aSteps =
+                    m.cuboids[b].cavity() ||
+                    (movedByJoint(m, partOf[a]) != movedByJoint(m, partOf[b]) ? movedByJoint(m, partOf[a])
+                                                                              : a > b);
+                if (!aSteps)
+                    continue;
+                for (int axis = 0; axis < 3; ++axis) {
+                    bool overlaps = true;  // across the other two axes
+                    for (int o = 0; o < 3; ++o)
+                        if (o != axis)
+                            overlaps = overlaps && std::min(ca[2 * o + 1], cb[2 * o + 1]) -
+                                                           std::max(ca[2 * o], cb[2 * o]) >
+                                                       hair;
+                    if (!overlaps)
+                        continue;
+                    for (int high : {0, 1}) {
+                        const int side = 2 * axis + high;
+                        // Against another solid: a's side on b's opposite side; against a cavity: on its same
+                        // side.
+                        const int facing = m.cuboids[b].cavity() ? side : side ^ 1;
+                        if (std::abs(ca[side] - cb[facing]) < hair)
+                            if (const int s = modelledSide(m, partOf[a], static_cast<int>(a), k, side);
+                                s >= 0)
+                                steps[a][s] = true;
+                    }
+                }
+            }
+    }
+    std::vector<Coordinates> out;
+    for (size_t c = 0; c < m.cuboids.size(); ++c) {
+        Coordinates x = m.cuboids[c].coordinates;
+        for (int s = 0; s < 6; ++s)
+            if (steps[c][s])
+                x[s] += s % 2 ? -gap : gap;
+        out.push_back(x);
+    }
+    return out;
+}
+
+TopoDS_Shape solid(const Model& m, int part, const std::vector<Coordinates>& at, double grow = 0)
+{
+    TopoDS_Shape s;
+    for (int c : m.parts[part].cuboids)
+        if (!m.cuboids[c].cavity()) {
+            Coordinates k = at[c];
+            for (int i = 0; i < 6; ++i)
+                k[i] += i % 2 ? grow : -grow;
+            s = fuse(s, box(k));
+        }
+    return s;
+}
+
+/// A solid swept by a motion: the solid and what each of its faces sweeps (OpenCASCADE sweeps faces into
+/// solids, not solids; faces that sweep no volume are left out).
+template <typename Sweep>
+TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
+{
+    TopoDS_Shape result = shape;
+    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+        TopoDS_Shape s;
+        try {
+            s = sweepFace(TopoDS::Face(e.Current()));
+        } catch (const Standard_Failure&) {  // a face across a hinge's axis turns in its own plane: no volume
+            continue;
+        }
+        GProp_GProps volume;
+        BRepGProp::VolumeProperties(s, volume);
+        if (std::abs(volume.Mass()) > 1e-9)  // faces along the motion sweep nothing
+            result = fuse(result, s);
+    }
+    return result;
+}
+
+/// The volume a shape sweeps as part p moves from its modelled pose to configuration k (4.5.1): exact for
+/// a part moved by one hinge (a revolution), one slide (a prism) or one sliding hinge (both); otherwise
+/// the shape at 48 poses along the motion, united.
+TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
+{
+    const int j = jointMoving(m, part);
+    if (j < 0)
+        return shape;
+    const Joint& joint = m.joints[j];
+    const function::JointPose* pose = poseOf(m, j, k);
+    const bool alone =
+        joint.base < 0 || jointMoving(m, joint.base) < 0 || !poseOf(m, jointMoving(m, joint.base), k);
+    if (pose && alone && joint.type != Joint::Type::DoublePivot) {
+        TopoDS_Shape result = shape, turned = shape;
+        if (joint.turns() && std::abs(pose->angle) > 1e-9) {
+            const gp_Ax1 axis = hingeAxis(m, joint);
+            result = swept(shape, [&](const TopoDS_Face& f) {
+                return BRepPrimAPI_MakeRevol(f, axis, pose->angle * kPi / 180).Shape();
+            });
+            turned = moved(shape, jointMotion(m, j, k, joint.slides() ? 0.5 : 1));
+        }
+        if (joint.slides() && std::abs(pose->offset) > 1e-9) {
+            gp_Vec by(0, 0, 0);
+            by.SetCoord(joint.axis + 1, pose->offset);
+            result = fuse(result, swept(turned, [&](const TopoDS_Face& f) {
+                              return BRepPrimAPI_MakePrism(f, by).Shape();
+                          }));
+        }
+        return result;
+    }
+    TopoDS_Shape result;
+    for (int step = 0; step <= 48; ++step)
+        result = fuse(result, moved(shape, partMotion(m, part, k, step / 48.0)));
+    return result;
+}
+
+/// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
+/// it with the gap and a wall around it.
+struct Radii {
+    double outer, pin;
+};
+
+Radii radii(const Model& m, const std::string& joint, std::initializer_list<int> cuboids, double g)
+{
+    double thinnest = 1e300;
+    for (int c : cuboids)
+        for (int a = 0; a < 3; ++a)
+            thinnest = std::min(thinnest, m.cuboids[c].at(static_cast<Side>(2 * a + 1)) -
+                                              m.cuboids[c].at(static_cast<Side>(2 * a)));
+    const double outer = thinnest / 2, pin = outer - g - std::max(0.8, 0.3 * outer);
+    if (pin < 0.4)
+        throw std::invalid_argument("joint '" + joint + "': its parts are too thin (" +
+                                    std::to_string(thinnest) + " mm) for a pin and its yokes with a " +
+                                    std::to_string(g) + " mm gap");
+    return {outer, pin};
+}
+
+/// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
+/// yokes hang on), or -1.
+int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
+{
+    int best = -1;
+    double longest = 0;
+    const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base))
+            continue;
+        for (int c : m.parts[p].cuboids) {
+            if (m.cuboids[c].cavity())
+                continue;
+            double d2 = 0, shared = 0;  // the axis' distance from the box, and how long they run together
+            for (int a = 0; a < 3; ++a) {
+                const double low = m.cuboids[c].at(static_cast<Side>(2 * a)),
+                             high = m.cuboids[c].at(static_cast<Side>(2 * a + 1));
+                if (std::abs(axis.Direction().Coord(a + 1)) > 0.5) {
+                    shared = std::min(high, own.at(static_cast<Side>(2 * a + 1))) -
+                             std::max(low, own.at(static_cast<Side>(2 * a)));
+                    continue;
+                }
+                const double x = axis.Location().Coord(a + 1);
+                const double out = std::max({0.0, low - x, x - high});
+                d2 += out * out;
+            }
+            if (std::sqrt(d2) <= 1e-3 && shared > longest) {
+                longest = shared;
+                best = c;
+            }
+        }
+    }
+    return best;
+}
+
+/// A rod along a hinge's axis, made a slot over a sliding hinge's travel (its offsets in every configuration)
+/// by the rod at both ends of the travel and the box between: slotted yokes and their clearances.
+TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
+{
+    const Joint& joint = m.joints[j];
+    double low = 0, high = 0;
+    for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
+            low = std::min(low, pose->offset);
+            high = std::max(high, pose->offset);
+        }
+    if (high - low < 1e-9)
+        return rod(at, along, from, to, r);
+    auto shifted = [&](double by) {
+        return at.Translated(gp_Vec(joint.axis == 0, joint.axis == 1, joint.axis == 2) * by);
+    };
+    Coordinates span{};
+    for (int a = 0; a < 3; ++a) {
+        const double centre = at.Coord(a + 1);
+        span[2 * a] = a == along ? from : a == joint.axis ? centre + low : centre - r;
+        span[2 * a + 1] = a == along ? to : a == joint.axis ? centre + high : centre + r;
+    }
+    return fuse(fuse(rod(shifted(low), along, from, to, r), rod(shifted(high), along, from, to, r)),
+                box(span));
+}
+
+/// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
+/// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
+/// each cleared of the other by the gap.
+void addHinge(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const gp_Ax1 axis = hingeAxis(m, joint);
+    const int along = std::abs(axis.Direction().X()) > 0.5 ? 0 : std::abs(axis.Direction().Y()) > 0.5 ? 1 : 2;
+    const int onEdge = cuboidAtEdge(m, joint, axis);
+    if (onEdge < 0) {
+        out.notes.push_back(joint.name + ": no other part along its edge to hold the yokes; no hinge made");
+        return;
+    }
+    const int base = function::partOf(m, onEdge);
+    const Radii r = radii(m, joint.name, {joint.edgeA.cuboid, onEdge}, g);
+    const Cuboid& c = m.cuboids[joint.edgeA.cuboid];
+    const double lo = c.at(static_cast<Side>(2 * along)), hi = c.at(static_cast<Side>(2 * along + 1));
+    const double yoke = (hi - lo) / 4;
+    const gp_Pnt at = axis.Location();
+    TopoDS_Shape& part = shapes[joint.part];
+    TopoDS_Shape& other = shapes[base];
+    // The moving part gives way around the yokes, the other part around the knuckle.
+    part = cut(part, fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
+                          slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g)));
+    other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
+    const TopoDS_Shape hole = slotted(m, j, at, along, lo - 1, hi + 1, r.pin + g);
+    other = cut(fuse(other, fuse(slotted(m, j, at, along, lo, lo + yoke, r.outer),
+                                 slotted(m, j, at, along, hi - yoke, hi, r.outer))),
+                hole);
+    part = fuse(part,
+                fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
+}
+
+/// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
+/// rigid link between them, outside the faces, with a hole round each pin.
+void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const function::PivotPlane plane = function::pivotPlane(m, joint);
+    const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
+    const int n = plane.normal;
+    const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
+    const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
+    const double link = r.outer, head = std::max(1.0, r.outer / 3);
+    auto point = [&](const std::array<double, 2>& uw) {
+        gp_Pnt p;
+        p.SetCoord(n + 1, face);
+        p.SetCoord(plane.u + 1, uw[0]);
+        p.SetCoord(plane.w + 1, uw[1]);
+        return p;
+    };
+    // Along the normal, from the face outwards: [a, b] as a rod's from/to whatever the side.
+    auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        const double a = face + outward * from, b = face + outward * to;
+        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+    };
+    const gp_Pnt pivot = point(plane.pivot), base = point(plane.basePivot);
+    for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})
+        shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
+                                               span(p, 2 * g + link, 2 * g + link + head, r.outer)));
+    // The link: a bar with round ends between the pivots, the gap off the faces.
+    gp_Vec along(pivot, base);
+    const double length = along.Magnitude();
+    gp_Dir normal(n == 0, n == 1, n == 2);
+    const gp_Dir x(along), y = normal.Crossed(x);
+    gp_Pnt corner = pivot.Translated(gp_Vec(y) * -r.outer);
+    corner.SetCoord(n + 1, face + outward * (outward > 0 ? g : g + link));
+    TopoDS_Shape bar = BRepPrimAPI_MakeBox(gp_Ax2(corner, normal, x), length, 2 * r.outer, link).Shape();
+    bar = fuse(bar, fuse(span(pivot, g, g + link, r.outer), span(base, g, g + link, r.outer)));
+    bar = cut(bar, fuse(span(pivot, 0, 3 * g + link, r.pin + g), span(base, 0, 3 * g + link, r.pin + g)));
+    out.bodies.push_back({joint.name + " link", -1, j, bar});
+}
+
+}  // namespace
+
+Printable makePrintable(const Model& m, const Printer& printer)
+{
+    Printable out;
+    const double g = printer.gap;
+    const std::vector<Coordinates> at = gapped(m, g);
+    std::vector<TopoDS_Shape> shapes;
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        TopoDS_Shape s = solid(m, static_cast<int>(p), at);
+        for (int c : m.parts[p].cuboids)
+            if (m.cuboids[c].cavity())
+                s = cut(s, box(m.cuboids[c].coordinates));
+        shapes.push_back(s);
+    }
+    // Cavities (4.5.1): what each inner part sweeps, with its clearance, leaves the enclosing part.
+    for (const function::FitInside& f : m.fitInside) {
+        if (f.configuration < 0)
+            continue;
+        for (int p : f.inner) {
+            const TopoDS_Shape swept = sweep(m, p, f.configuration, solid(m, p, at, g));
+            out.sweeps.push_back(swept);
+            shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
+        }
+    }
+    // Likewise a part turning on a hinge clears the part its yokes sit on: a thick lid's edge below the axis
+    // sweeps a quarter round into the body.
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+        const Joint& joint = m.joints[j];
+        const int other = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
+        for (size_t k = 0; k < m.configurations.size() && other >= 0; ++k)
+            if (poseOf(m, static_cast<int>(j), static_cast<int>(k)))
+                shapes[function::partOf(m, other)] =
+                    cut(shapes[function::partOf(m, other)],
+                        sweep(m, joint.part, static_cast<int>(k), solid(m, joint.part, at, g)));
+    }
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+        const Joint& joint = m.joints[j];
+        if (joint.turns())
+            addHinge(m, static_cast<int>(j), g, shapes, out);
+        else if (joint.type == Joint::Type::DoublePivot)
+            addDoublePivot(m, static_cast<int>(j), g, shapes, out);
+        else if (std::none_of(m.fitInside.begin(), m.fitInside.end(), [&](const function::FitInside& f) {
+                     return f.cavity >= 0 &&
+                            std::find(f.inner.begin(), f.inner.end(), joint.part) != f.inner.end();
+                 }))
+            out.notes.push_back(joint.name +
+                                ": slides free (no cavity guides it and rails are not made yet)");
+    }
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);
+        unify.Build();
+        out.bodies.insert(out.bodies.begin() + static_cast<long>(p),
+                          {m.parts[p].name, static_cast<int>(p), -1, unify.Shape()});
+    }
+    return out;
+}
+
+}  // namespace fabguide::printable

@@ -1,0 +1,38 @@
+// Print-in-place geometry (thesis 4.5): the solved cuboid model turned into separate solids that can be
+// printed assembled and move as designed: gaps around touching faces (4.5.3), cavities swept by inner parts
+// along their motion (4.5.1), and joint geometry: hinge pins and yokes, slotted yokes for sliding hinges,
+// pins and a link for double pivots (4.5.2).
+#pragma once
+
+#include "Function/Model.h"
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+namespace fabguide::printable {
+
+/// What the printer needs: the clearance between parts that must not fuse (FDM 0.4 mm, resin 0.2 mm).
+struct Printer {
+    double gap = 0.4;
+};
+
+/// One printed body: a part, or a double pivot's link (part -1, joint set).
+struct Body {
+    std::string name;
+    int part = -1, joint = -1;
+    TopoDS_Shape shape;
+};
+
+struct Printable {
+    std::vector<Body> bodies;
+    std::vector<TopoDS_Shape> sweeps;  ///< the volumes the fit-inside cavities were cut with (for display)
+    std::vector<std::string> notes;    ///< joints left without geometry, and why
+};
+
+/// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too
+/// thin for its geometry at this gap.
+Printable makePrintable(const function::Model& solved, const Printer& printer);
+
+}  // namespace fabguide::printable
