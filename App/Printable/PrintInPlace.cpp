@@ -6,6 +6,7 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -13,10 +14,12 @@
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
@@ -61,6 +64,24 @@ TopoDS_Shape boolean(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* w
 TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
     return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>(a, b, "union");
+}
+
+/// The union of many shapes in one Boolean operation (much faster than one at a time).
+TopoDS_Shape fuseAll(const std::vector<TopoDS_Shape>& shapes)
+{
+    if (shapes.size() < 2)
+        return shapes.empty() ? TopoDS_Shape() : shapes.front();
+    TopTools_ListOfShape first, rest;
+    first.Append(shapes.front());
+    for (size_t i = 1; i < shapes.size(); ++i)
+        rest.Append(shapes[i]);
+    BRepAlgoAPI_Fuse operation;
+    operation.SetArguments(first);
+    operation.SetTools(rest);
+    operation.Build();
+    if (operation.HasErrors())
+        throw std::runtime_error("geometry: a union of swept poses failed");
+    return operation.Shape();
 }
 
 TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
@@ -203,39 +224,65 @@ TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
     return result;
 }
 
-/// The volume a shape sweeps as part p moves from its modelled pose to configuration k (4.5.1): exact for
-/// a part moved by one hinge (a revolution), one slide (a prism) or one sliding hinge (both); otherwise
-/// the shape at 48 poses along the motion, united.
+/// The volume a shape sweeps as part p moves from its modelled pose to configuration k (4.5.1). Motions turn
+/// first, then slide (Motion.h), so with at most one hinge turning in p's chain the sweep is exact: that
+/// hinge's revolution, then a prism along the slides' common displacement; otherwise (double pivots, turns
+/// upon turns) the shape at 48 poses along the motion, united.
 TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
 {
-    const int j = jointMoving(m, part);
-    if (j < 0)
-        return shape;
-    const Joint& joint = m.joints[j];
-    const function::JointPose* pose = poseOf(m, j, k);
-    const bool alone =
-        joint.base < 0 || jointMoving(m, joint.base) < 0 || !poseOf(m, jointMoving(m, joint.base), k);
-    if (pose && alone && joint.type != Joint::Type::DoublePivot) {
-        TopoDS_Shape result = shape, turned = shape;
-        if (joint.turns() && std::abs(pose->angle) > 1e-9) {
-            const gp_Ax1 axis = hingeAxis(m, joint);
-            result = swept(shape, [&](const TopoDS_Face& f) {
-                return BRepPrimAPI_MakeRevol(f, axis, pose->angle * kPi / 180).Shape();
-            });
-            turned = moved(shape, jointMotion(m, j, k, joint.slides() ? 0.5 : 1));
+    int turning = -1, turns = 0;
+    bool pivots = false;
+    for (int j = jointMoving(m, part); j >= 0;
+         j = m.joints[j].base >= 0 ? jointMoving(m, m.joints[j].base) : -1) {
+        const function::JointPose* pose = poseOf(m, j, k);
+        if (!pose)
+            continue;
+        pivots = pivots || m.joints[j].type == Joint::Type::DoublePivot;
+        if (m.joints[j].turns() && std::abs(pose->angle) > 1e-9) {
+            turning = j;
+            ++turns;
         }
-        if (joint.slides() && std::abs(pose->offset) > 1e-9) {
-            gp_Vec by(0, 0, 0);
-            by.SetCoord(joint.axis + 1, pose->offset);
-            result = fuse(result, swept(turned, [&](const TopoDS_Face& f) {
+    }
+    if (!pivots && turns <= 1) {
+        TopoDS_Shape result = shape;
+        if (turning >= 0) {
+            const double radians = poseOf(m, turning, k)->angle * kPi / 180;
+            const gp_Ax1 axis = hingeAxis(m, m.joints[turning]);
+            result = swept(
+                shape, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
+        }
+        const gp_Trsf half = partMotion(m, part, k, 0.5), whole = partMotion(m, part, k, 1);
+        const gp_Vec by((whole * half.Inverted()).TranslationPart());
+        if (by.Magnitude() > 1e-9)
+            result = fuse(result, swept(moved(shape, half), [&](const TopoDS_Face& f) {
                               return BRepPrimAPI_MakePrism(f, by).Shape();
                           }));
-        }
         return result;
     }
-    TopoDS_Shape result;
+    std::vector<TopoDS_Shape> poses;
     for (int step = 0; step <= 48; ++step)
-        result = fuse(result, moved(shape, partMotion(m, part, k, step / 48.0)));
+        poses.push_back(moved(shape, partMotion(m, part, k, step / 48.0)));
+    return fuseAll(poses);
+}
+
+/// What a part sweeps by its own hinge (or sliding hinge) alone, in the frame of the part it turns on: the
+/// revolution about the edge, then the prism along the slide.
+TopoDS_Shape hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
+                        const TopoDS_Shape& shape)
+{
+    const gp_Ax1 axis = hingeAxis(m, joint);
+    const double radians = pose.angle * kPi / 180;
+    TopoDS_Shape result =
+        swept(shape, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
+    if (joint.slides() && std::abs(pose.offset) > 1e-9) {
+        gp_Trsf turn;
+        turn.SetRotation(axis, radians);
+        gp_Vec by(0, 0, 0);
+        by.SetCoord(joint.axis + 1, pose.offset);
+        result = fuse(result, swept(moved(shape, turn), [&](const TopoDS_Face& f) {
+                          return BRepPrimAPI_MakePrism(f, by).Shape();
+                      }));
+    }
     return result;
 }
 
@@ -343,8 +390,28 @@ void addHinge(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes
     TopoDS_Shape& part = shapes[joint.part];
     TopoDS_Shape& other = shapes[base];
     // The moving part gives way around the yokes, the other part around the knuckle.
-    part = cut(part, fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
-                          slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g)));
+    // A sliding hinge's slotted yokes stay put while the part turns and slides past them: it gives way
+    // around them as they stand in its own frame along the way.
+    const TopoDS_Shape yokes = fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
+                                    slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g));
+    // In its frame they turn back about the axis, then (turned back) slide back: a revolution and a prism.
+    TopoDS_Shape around = yokes;
+    for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
+            gp_Vec back(0, 0, 0);
+            back.SetCoord(joint.axis + 1, -pose->offset);
+            gp_Trsf turnBack;
+            turnBack.SetRotation(axis, -pose->angle * kPi / 180);
+            around = fuse(around, swept(yokes, [&](const TopoDS_Face& f) {
+                              return BRepPrimAPI_MakeRevol(f, axis, -pose->angle * kPi / 180).Shape();
+                          }));
+            around = fuse(
+                around,
+                moved(swept(yokes,
+                            [&](const TopoDS_Face& f) { return BRepPrimAPI_MakePrism(f, back).Shape(); }),
+                      turnBack));
+        }
+    part = cut(part, around);
     other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
     const TopoDS_Shape hole = slotted(m, j, at, along, lo - 1, hi + 1, r.pin + g);
     other = cut(fuse(other, fuse(slotted(m, j, at, along, lo, lo + yoke, r.outer),
@@ -359,6 +426,12 @@ void addHinge(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes
 void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const Joint& joint = m.joints[j];
+    if (joint.pivotFace.side != joint.basePivotFace.side) {
+        out.notes.push_back(joint.name +
+                            ": its pivot faces face each other, so the link would need a recess; no "
+                            "pins or link made");
+        return;
+    }
     const function::PivotPlane plane = function::pivotPlane(m, joint);
     const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
     const int n = plane.normal;
@@ -394,6 +467,41 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     out.bodies.push_back({joint.name + " link", -1, j, bar});
 }
 
+/// In configuration k, for two parts that lie within the gap of each other as printed and both turn, each is
+/// cut by the other's path relative to it (its solid with the gap, at 40 poses in the other's frame): a
+/// door's edge turning towards its neighbour bevels the neighbour's edge.
+void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, double g,
+                     std::vector<TopoDS_Shape>& shapes)
+{
+    const int parts = static_cast<int>(m.parts.size());
+    auto turns = [&](int p) {  // its own joint turns in k (carried parts turn with their carrier)
+        const int j = jointMoving(m, p);
+        const function::JointPose* pose = j >= 0 ? poseOf(m, j, k) : nullptr;
+        return pose && std::abs(pose->angle) > 1e-9 && m.joints[j].type != Joint::Type::Slide;
+    };
+    for (int a = 0; a < parts; ++a)
+        for (int b = 0; b < parts; ++b) {
+            if (a == b || !turns(a) || !turns(b))
+                continue;
+            const gp_Trsf relative = partMotion(m, b, k, 1).Inverted() * partMotion(m, a, k, 1);
+            if (relative.Form() == gp_Identity || relative.Form() == gp_Translation)
+                continue;  // sliding past each other, the gap stays a gap
+            const TopoDS_Shape grown = solid(m, a, at, g);
+            Bnd_Box near, other;
+            BRepBndLib::Add(grown, near);
+            BRepBndLib::Add(shapes[b], other);
+            near.Enlarge(g);
+            if (near.IsOut(other))
+                continue;
+            std::vector<TopoDS_Shape> path;  // 32 poses while they turn (the first half), 8 while they slide
+            for (int step = 1; step <= 40; ++step) {
+                const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
+                path.push_back(moved(grown, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
+            }
+            shapes[b] = cut(shapes[b], fuseAll(path));
+        }
+}
+
 }  // namespace
 
 Printable makePrintable(const Model& m, const Printer& printer)
@@ -425,11 +533,14 @@ Printable makePrintable(const Model& m, const Printer& printer)
         const Joint& joint = m.joints[j];
         const int other = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
         for (size_t k = 0; k < m.configurations.size() && other >= 0; ++k)
-            if (poseOf(m, static_cast<int>(j), static_cast<int>(k)))
+            if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
                 shapes[function::partOf(m, other)] =
                     cut(shapes[function::partOf(m, other)],
-                        sweep(m, joint.part, static_cast<int>(k), solid(m, joint.part, at, g)));
+                        hingeSweep(m, joint, *pose, solid(m, joint.part, at, g)));
     }
+    // Two neighbours that both move (doors meeting in the middle) clear what each sweeps past the other.
+    for (size_t k = 0; k < m.configurations.size(); ++k)
+        clearNeighbours(m, static_cast<int>(k), at, g, shapes);
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
         if (joint.turns())
