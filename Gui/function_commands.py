@@ -6,7 +6,8 @@ import os
 import FreeCAD
 import FreeCADGui
 
-from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships, workslike_file
+from fabguide.function import (configuration, cuboids, joints, mechanism, parts, printable, relationships,
+                               workslike_file)
 from fabguide_gui import function_viewproviders as vp
 from fabguide_gui.command_base import Command, all_in, selected, tell, transaction
 
@@ -337,6 +338,53 @@ class ExportWorkslike(Command):
             FreeCAD.Console.PrintMessage("FabGuide wrote " + path + "\n")
 
 
+class MakePrintable(Command):
+    ICON, MENU = "FabGuide_Printable.svg", "Make Printable"
+    TIP = ("Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, "
+           "pivot links; checked along every motion")
+
+    def IsActive(self):
+        return Configurations.IsActive(self)
+
+    def run(self, doc):
+        mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
+        if len(mechs) != 1:
+            return tell("Select the mechanism to print.")
+        mech = mechs[0]
+        existing = [p for p in all_in(doc, printable.is_printable) if p.Mechanism == mech]
+        with transaction(doc, self.MENU):
+            made = existing[0] if existing else vp.attach(printable.create(doc, mech))
+            added = printable.sync(made) if existing else [c for c in made.Group]
+            vp.colour_bodies(made, added)
+            mech.ViewObject.Visibility = False
+            doc.recompute()
+        FreeCAD.Console.PrintMessage("{}: least clearance {:.3f} mm ({})\n".format(
+            made.Label, made.MinimumClearance.Value, made.ClearanceAt))
+
+
+class ExportPrintable(Command):
+    ICON, MENU = "FabGuide_ExportPrintable.svg", "Export Printable"
+    TIP = "Write the selected printable as STL, 3MF and STEP: the assembly and one file per body"
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, printable.is_printable))
+
+    def run(self, doc):
+        from PySide import QtGui
+
+        made = selected(printable.is_printable) or all_in(doc, printable.is_printable)
+        if len(made) > 1:
+            return tell("Select the printable to export.")
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the print files",
+                                                        os.path.expanduser("~"))
+        if folder:
+            try:
+                written = printable.export(made[0], folder)
+            except (ValueError, RuntimeError) as error:
+                return tell(str(error))
+            FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
+
+
 COMMANDS = {
     "FabGuide_NewMechanism": NewMechanism(),
     "FabGuide_MakePart": MakePart(),
@@ -354,4 +402,6 @@ COMMANDS = {
     "FabGuide_Configurations": Configurations(),
     "FabGuide_ImportWorkslike": ImportWorkslike(),
     "FabGuide_ExportWorkslike": ExportWorkslike(),
+    "FabGuide_MakePrintable": MakePrintable(),
+    "FabGuide_ExportPrintable": ExportPrintable(),
 }

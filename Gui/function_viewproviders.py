@@ -2,7 +2,7 @@
 in the 3-D view, conflicting parts shown in red, and the task panels opened by double-click."""
 import FreeCADGui
 
-from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships
+from fabguide.function import configuration, cuboids, joints, mechanism, parts, printable, relationships
 from fabguide_gui.viewproviders import EditedByDoubleClick, ViewProvider
 
 CONFLICT_COLOUR = (0.85, 0.2, 0.2)
@@ -121,6 +121,10 @@ class ViewProviderRelationship(ViewProvider):
         return True
 
 
+class ViewProviderPrintable(ViewProvider):
+    ICON = "FabGuide_Printable.svg"
+
+
 def axis_points(joint):
     """Pairs of points of the lines that show a joint: the hinge's edge, the slide's axis through its part, the
     double pivot's link."""
@@ -169,6 +173,7 @@ def relationship_parts(rel):
 
 
 CLASSES = [(mechanism.is_mechanism, ViewProviderMechanism), (parts.is_part, ViewProviderPart),
+           (printable.is_printable, ViewProviderPrintable),
            (joints.is_joint, ViewProviderJoint), (configuration.is_configuration, ViewProviderConfiguration),
            (relationships.is_relationship, ViewProviderRelationship)]
 
@@ -180,6 +185,20 @@ def attach(obj):
             if test(obj):
                 cls(obj.ViewObject)
     return obj
+
+
+def colour_bodies(made, bodies):
+    """Each printed body in its part's colour; the swept cavities see-through."""
+    colours = {p.Label: p.Cuboids[0].ViewObject.ShapeColor for p in mechanism.members(made.Mechanism, parts.is_part)
+               if p.Cuboids and p.Cuboids[0].ViewObject}
+    for body in bodies:
+        if body.ViewObject is None:
+            continue
+        if body.BodyName == printable.CAVITIES:
+            body.ViewObject.Transparency = 80
+            body.ViewObject.ShapeColor = (1.0, 0.6, 0.1)
+        else:
+            body.ViewObject.ShapeColor = colours.get(body.BodyName, AXIS_COLOUR)
 
 
 def style_cavity(box):

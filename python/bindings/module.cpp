@@ -15,4 +15,5 @@ PYBIND11_MODULE(fabguide_core, m)
           "List of (library, version) compiled into the core.");
     fabguide::bindings::bindMaterial(m);
     fabguide::bindings::bindFunction(m);
+    fabguide::bindings::bindPrintable(m);
 }

@@ -185,6 +185,33 @@ def a_double_pivot_from_two_picked_points():
     assert joints.as_dict(joint)["pivot"] == ["Arm.left", [0.0, 80.0, 210.0]]
 
 
+def the_cellphone_made_printable_in_its_colours():
+    doc = FreeCAD.newDocument("Phone")
+    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cellphone.workslike.json"),
+                     "FabGuide_ImportWorkslike")
+    mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
+    doc.getObjectsByLabel("screen")[0].ViewObject.ShapeColor = (0.2, 0.5, 0.8)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_MakePrintable")
+    made = [o for o in doc.Objects if o.Label == mech.Label + " printable"][0]
+    assert "Invalid" not in made.State and abs(made.MinimumClearance.Value - 0.4) < 0.01
+    screen = [c for c in made.Group if c.BodyName == "screen part"][0]
+    assert abs(screen.ViewObject.ShapeColor[2] - 0.8) < 0.01, "printed in its part's colour"
+    assert not [o.Label for o in doc.Objects if "Touched" in o.State]
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("function_cellphone_printable"))
+    folder = tempfile.mkdtemp()
+    original = QtGui.QFileDialog.getExistingDirectory
+    QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kwargs: folder)
+    try:
+        Gui.runCommand("FabGuide_ExportPrintable")
+    finally:
+        QtGui.QFileDialog.getExistingDirectory = original
+    assert "assembly.3mf" in os.listdir(folder)
+
+
 def export_writes_a_model_the_core_solves():
     path = os.path.join(tempfile.mkdtemp(), "clamshell.workslike.json")
     Gui.Selection.clearSelection()
@@ -203,4 +230,5 @@ guitest.run([
     a_double_pivot_from_two_picked_points,
     export_writes_a_model_the_core_solves,
     the_crate_bed_folds_along_its_four_bar_motion,
+    the_cellphone_made_printable_in_its_colours,
 ])

@@ -192,3 +192,28 @@ def test_every_example_imports_solves_and_round_trips(doc, source_dir, tmp_path,
     first, second = mechanism.boxes(mech), mechanism.boxes(again)
     flat = [[v for b in boxes for v in cuboids.coordinates(b)] for boxes in (first, second)]
     assert len(first) == len(second) and flat[0] == pytest.approx(flat[1], abs=1e-6)
+
+
+def test_the_printable_cellphone_has_separate_valid_bodies_that_keep_their_gap(doc, source_dir, tmp_path):
+    from fabguide.function import printable
+
+    mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "cellphone.workslike.json"))
+    doc.recompute()
+    made = printable.create(doc, mech)
+    doc.recompute()
+    assert "Invalid" not in made.State
+    bodies = {c.BodyName: c for c in made.Group if c.BodyName != printable.CAVITIES}
+    assert sorted(bodies) == ["base part", "battery part", "screen part"]  # named like the parts
+    for body in bodies.values():
+        assert body.Shape.isValid() and len(body.Shape.Solids) >= 1
+    assert made.MinimumClearance.Value == pytest.approx(0.4, abs=0.01)
+    # The battery fits its bay with the gap all round: its volume is the modelled one less the gap.
+    battery = doc.getObjectsByLabel("battery")[0]
+    modelled = battery.Shape.Volume  # the box, as modelled and solved
+    assert bodies["battery part"].Shape.Volume < modelled
+    # Resin prints with a smaller gap; the bodies follow.
+    made.Printer = "Resin (0.2 mm gap)"
+    doc.recompute()
+    assert made.Gap.Value == pytest.approx(0.2) and made.MinimumClearance.Value == pytest.approx(0.2, abs=0.01)
+    written = printable.export(made, str(tmp_path))
+    assert {os.path.basename(p) for p in written} >= {"assembly.stl", "assembly.3mf", "assembly.step", "screen-part.stl"}

@@ -1,0 +1,115 @@
+"""Printable: a mechanism turned into print-in-place bodies (thesis 4.5): one Part::Feature per part (and per
+double-pivot link) in a group, remade on recompute when the mechanism changes; the clearance found along every
+motion is shown, and the bodies export as STL, 3MF and STEP."""
+import FreeCAD
+import Part
+
+import fabguide_core
+from fabguide import properties
+from fabguide.function import mechanism
+
+PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
+
+
+class PrintableError(ValueError):
+    """A mechanism that cannot be made printable; the message names the printable and the reason."""
+
+
+class Printable(properties.Proxy):
+    TYPE = "FabGuide::Printable"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLink", "Mechanism", "Printable", "The mechanism to print in place")
+        add(obj, "App::PropertyEnumeration", "Printer", "Printable", "Printer profile: the gap it needs", list(PRINTERS))
+        add(obj, "App::PropertyLength", "Gap", "Printable", "Clearance between parts (set by the printer profile)",
+            0.4)
+        add(obj, "App::PropertyBool", "ShowCavities", "Printable", "Show the volumes swept into cavities", False)
+        add(obj, "App::PropertyBool", "CheckMotion", "Printable",
+            "Measure the clearance at 32 poses along every configuration's motion", True)
+        add(obj, "App::PropertyLength", "MinimumClearance", "Result", "Least distance between two bodies", mode=1)
+        add(obj, "App::PropertyString", "ClearanceAt", "Result", "Where the least distance is", mode=1)
+        add(obj, "App::PropertyStringList", "Notes", "Result", "Joints made without geometry, and why", mode=1)
+
+    def onChanged(self, obj, prop):
+        if prop == "Printer" and PRINTERS.get(obj.Printer) is not None and "Gap" in obj.PropertiesList:
+            obj.Gap = PRINTERS[obj.Printer]
+
+    def execute(self, obj):
+        data = bodies(obj)
+        by_name = {child.BodyName: child for child in obj.Group if hasattr(child, "BodyName")}
+        missing = [b["name"] for b in data["bodies"] if b["name"] not in by_name]
+        if missing:
+            raise PrintableError("Printable '{}': the mechanism has new parts ({}); run Make Printable again"
+                                 .format(obj.Label, ", ".join(missing)))
+        for b in data["bodies"]:
+            shape = Part.Shape()
+            shape.importBrepFromString(b["brep"])
+            by_name[b["name"]].Shape = shape
+            by_name[b["name"]].purgeTouched()  # made here, within this recompute
+        cavities = [c for c in obj.Group if getattr(c, "BodyName", None) == CAVITIES]
+        for c in cavities:
+            shapes = []
+            for text in data["sweeps"] if obj.ShowCavities else []:
+                s = Part.Shape()
+                s.importBrepFromString(text)
+                shapes.append(s)
+            c.Shape = Part.makeCompound(shapes) if shapes else Part.Shape()
+            c.purgeTouched()
+        if obj.CheckMotion:
+            obj.MinimumClearance = data["clearance"]
+            obj.ClearanceAt = data["where"]
+            if data["invalid"]:
+                raise PrintableError("Printable '{}': invalid solids: {}".format(obj.Label, ", ".join(data["invalid"])))
+            if data["clearance"] < obj.Gap.Value - 0.01:
+                FreeCAD.Console.PrintWarning("{}: parts come within {:.3f} mm of each other ({}), less than the {} mm "
+                                             "gap\n".format(obj.Label, data["clearance"], data["where"],
+                                                            obj.Gap.Value))
+        obj.Notes = data["notes"]
+
+
+CAVITIES = "cavities swept"
+
+
+def bodies(obj):
+    if obj.Mechanism is None:
+        raise PrintableError("Printable '{}': choose the Mechanism to print".format(obj.Label))
+    try:
+        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion)
+    except (fabguide_core.FormatError, RuntimeError) as error:
+        raise PrintableError("Printable '{}': {}".format(obj.Label, error))
+
+
+def create(doc, mech, label=None):
+    """The Printable group and one body per part and link of the mechanism."""
+    obj = doc.addObject("App::DocumentObjectGroupPython", "Printable")
+    Printable(obj)
+    obj.Label = label or mech.Label + " printable"
+    obj.Mechanism = mech
+    sync(obj)
+    return obj
+
+
+def sync(obj):
+    """One Part::Feature per body (named by BodyName), plus one for the swept cavities; returns those added."""
+    names = [b["name"] for b in fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, False)["bodies"]]
+    have = {getattr(c, "BodyName", None) for c in obj.Group}
+    added = []
+    for name in [n for n in names + [CAVITIES] if n not in have]:
+        child = obj.Document.addObject("Part::Feature", "Body")
+        child.addProperty("App::PropertyString", "BodyName", "Printable", "The body this shape is")
+        child.BodyName = name
+        child.setEditorMode("BodyName", 1)
+        child.Label = name + " printed"
+        added.append(child)
+    obj.Group = obj.Group + added
+    return added
+
+
+def is_printable(obj):
+    return properties.is_a(obj, Printable)
+
+
+def export(obj, folder):
+    """assembly.stl/.3mf/.step and one of each per body into folder; the paths written."""
+    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder)

@@ -1,0 +1,62 @@
+"""`fabguide printable`: print-in-place bodies written as files that the tools makers use accept: admesh finds
+the STL closed and manifold, PrusaSlicer slices the STL and the 3MF, the STEP is ISO 10303-21; the clearance
+along every motion is at least the gap; a model whose parts overlap is refused with the pair named."""
+import os
+import re
+import subprocess
+
+import pytest
+
+
+def printable(fabguide_cli, source_dir, tmp_path, name, *options):
+    out = tmp_path / name
+    run = subprocess.run([fabguide_cli, "printable", os.path.join(source_dir, "examples", name + ".workslike.json"),
+                          "-o", str(out), *options], capture_output=True, text=True, timeout=600)
+    return run, out
+
+
+def clearance(stdout):
+    return float(re.search(r"minimum clearance ([0-9.]+) mm", stdout).group(1))
+
+
+def test_the_cellphone_prints_in_place_and_slices(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "cellphone")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    volumes = [float(v) for v in re.findall(r"^body .* ([0-9.]+) mm3$", run.stdout, re.M)]
+    assert len(volumes) == 3
+    # admesh: three closed parts, nothing to fix, the volume of the bodies.
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    assert re.search(r"Number of parts\s*:\s*3\b", mesh), mesh
+    for check in ("Total disconnected facets", "Degenerate facets", "Edges fixed", "Facets reversed",
+                  "Backwards edges"):
+        assert re.search(check + r"\s*:\s*0\b", mesh), check + "\n" + mesh
+    stl_volume = float(re.search(r"Volume\s*:\s*([0-9.]+)", mesh).group(1))
+    assert stl_volume == pytest.approx(sum(volumes), rel=0.01)
+    # PrusaSlicer slices both the STL and the 3MF.
+    for source in ("assembly.stl", "assembly.3mf"):
+        gcode = tmp_path / (source + ".gcode")
+        sliced = subprocess.run(["prusa-slicer", "--export-gcode", "--output", str(gcode), str(out / source)],
+                                capture_output=True, text=True, timeout=300)
+        assert sliced.returncode == 0, sliced.stdout + sliced.stderr
+        assert gcode.read_text().count(";LAYER_CHANGE") > 10
+    assert (out / "assembly.step").read_text().startswith("ISO-10303-21;")
+    assert (out / "screen.3mf").stat().st_size > 0 and (out / "battery.stl").stat().st_size > 0
+
+
+def test_the_crate_bed_gets_pins_and_separate_links(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "crate-bed", "--printer", "resin")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) >= 0.2 - 0.01
+    for link in ("head pivot left", "head pivot right", "foot pivot left", "foot pivot right"):
+        assert "body " + link + " link" in run.stdout
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    assert re.search(r"Number of parts\s*:\s*7\b", mesh), mesh  # bed, two boards, four links
+
+
+def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_path):
+    # The box-with-lid example models its drawer inside a solid body, with no cavity.
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
+    assert run.returncode == 1
+    assert "minimum clearance 0.000 mm (gap 0.40 mm): body and drawer as printed" in run.stdout
+    assert "drawer slide: slides free" in run.stdout
