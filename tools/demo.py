@@ -16,7 +16,7 @@ assert os.path.isfile(os.path.join(mod_dir, "InitGui.py")), "fabguide_core is no
 print("FabGuide {} loaded by FreeCAD {} from {}".format(
     fabguide_core.__version__, ".".join(FreeCAD.Version()[:3]), mod_dir))
 
-from fabguide.function import joints, mechanism, parts, relationships, workslike_file  # noqa: E402
+from fabguide.function import joints, mechanism, parts, printable, relationships, workslike_file  # noqa: E402
 from fabguide.material import layout  # noqa: E402
 
 # Function: the Cabinet as parts, joints, configurations and relationships; solved on recompute (thesis ch. 4).
@@ -39,6 +39,18 @@ for box in mechanism.boxes(cabinet):
             box.Label, was.XLength, was.YLength, was.ZLength, now.XLength, now.YLength, now.ZLength))
 if cabinet.Status != "Solved":
     sys.exit("the cabinet did not solve: " + cabinet.Status)
+# Print in place (thesis 4.5): gaps, cavities, hinge pins and yokes; STL, 3MF and STEP; the clearance checked.
+made = printable.create(doc, cabinet)
+doc.recompute()
+if "Invalid" in made.State:
+    sys.exit("the cabinet could not be made printable: see the messages above")
+print("Cabinet printable: {} bodies, least clearance {:.3f} mm (gap {} mm), at {}".format(
+    len(made.Group) - 1, made.MinimumClearance.Value, made.Gap.Value, made.ClearanceAt))
+for note in made.Notes:
+    print("  note: " + note)
+for path in printable.export(made, os.path.join(OUT, "cabinet", "print")):
+    if "assembly" in path:
+        print("  wrote " + os.path.relpath(path, ROOT))
 doc.saveAs(os.path.join(OUT, "cabinet", "cabinet.FCStd"))
 print("  wrote " + os.path.relpath(doc.FileName, ROOT))
 FreeCAD.closeDocument(doc.Name)

@@ -38,7 +38,17 @@ def render():
     Gui.updateGui()
     view.saveImage(os.path.join(OUT, "cabinet-stowed.png"), 1200, 900, "White")
     poser.clear()
-    print("wrote build/demo/cabinet/cabinet.png and cabinet-stowed.png")
+    # The printable cabinet: the bodies as printed, the carcass see-through to show the hinge yokes.
+    made = next(o for o in doc.Objects if getattr(o, "Proxy", None) and o.Proxy.__class__.__name__ == "Printable")
+    for o in doc.Objects:
+        o.ViewObject.Visibility = o in made.Group and o.BodyName != "cavities swept"
+    carcass.DisplayMode = "Flat Lines"
+    printed = next(o for o in made.Group if o.BodyName == "carcass part")
+    printed.ViewObject.Transparency = 50
+    view.fitAll()
+    Gui.updateGui()
+    view.saveImage(os.path.join(OUT, "cabinet-printable.png"), 1200, 900, "White")
+    print("wrote build/demo/cabinet/cabinet.png, cabinet-stowed.png and cabinet-printable.png")
 
 
 def main():

@@ -20,7 +20,7 @@ namespace {
 
 struct PrintableArguments {
     std::string input, output = "printable", printer = "fdm";
-    double gap = -1;
+    double gap = -1, scale = 1;
 };
 
 /// Printer profiles: the gap a printer needs so parts do not fuse (FDM 0.4 mm, resin 0.2 mm).
@@ -38,7 +38,8 @@ int run(const PrintableArguments& args)
         return 1;
     }
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
-    const printable::Printable made = printable::makePrintable(solved.model, {gap});
+    const function::Model model = function::scaled(solved.model, args.scale);
+    const printable::Printable made = printable::makePrintable(model, {gap});
     for (const printable::Body& b : made.bodies) {
         GProp_GProps volume;
         BRepGProp::VolumeProperties(b.shape, volume);
@@ -46,7 +47,7 @@ int run(const PrintableArguments& args)
     }
     for (const std::string& note : made.notes)
         std::printf("note: %s\n", note.c_str());
-    const printable::Check check = printable::check(solved.model, made, gap);
+    const printable::Check check = printable::check(model, made, gap);
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
@@ -74,6 +75,9 @@ void addPrintableCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->callback([args] {
         if (const int code = run(*args))
             throw CLI::RuntimeError(code);

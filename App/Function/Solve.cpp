@@ -186,6 +186,25 @@ std::vector<LinearConstraint> constraints(const Model& model)
     return rows;
 }
 
+Model scaled(Model model, double factor)
+{
+    for (Cuboid& c : model.cuboids)
+        for (double& x : c.coordinates)
+            x *= factor;
+    for (Joint& j : model.joints)
+        for (auto* offsets : {&j.pivot, &j.basePivot})
+            for (double& x : *offsets)
+                x *= factor;
+    for (Configuration& c : model.configurations)
+        for (JointPose& pose : c.poses) {
+            pose.offset *= factor;
+            for (double& x : pose.pole)
+                x *= factor;
+        }
+    model.minimumSize *= factor;
+    return model;
+}
+
 SolveResult solve(const Model& model)
 {
     Eigen::VectorXd target(6 * model.cuboids.size());

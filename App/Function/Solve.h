@@ -28,6 +28,10 @@ struct SolveResult {
     std::vector<std::string> notes;  ///< why, where the names alone do not say
 };
 
+/// The model at `factor` times its size (a works-like prototype printed at 1:5): coordinates, slide offsets,
+/// poles and pivots scale; angles do not.
+Model scaled(Model model, double factor);
+
 /// The model nearest to `model` that satisfies all its relationships, locks and minimum sizes.
 SolveResult solve(const Model& model);
 

@@ -24,7 +24,7 @@ namespace fabguide::bindings {
 namespace {
 
 /// The model solved (raises PrintableError naming what conflicts) and made printable.
-printable::Printable made(const py::object& model, double gap)
+printable::Printable made(const py::object& model, double gap, double scale)
 {
     const function::Model read = io::readWorkslike(toJson(model));
     py::gil_scoped_release release;
@@ -36,7 +36,7 @@ printable::Printable made(const py::object& model, double gap)
         throw std::runtime_error("the mechanism does not solve: " + names + " cannot hold together");
     }
     try {
-        return printable::makePrintable(solved.model, {gap});
+        return printable::makePrintable(function::scaled(solved.model, scale), {gap});
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
     }
@@ -51,9 +51,9 @@ std::string brep(const TopoDS_Shape& shape)
 
 /// {"bodies": [{"name", "part", "brep", "volume"}], "sweeps": [brep], "notes", "clearance", "where",
 /// "invalid"}
-py::dict printableBodies(const py::object& model, double gap, bool check)
+py::dict printableBodies(const py::object& model, double gap, bool check, double scale)
 {
-    const printable::Printable p = made(model, gap);
+    const printable::Printable p = made(model, gap, scale);
     py::list bodies, sweeps;
     for (const printable::Body& b : p.bodies) {
         GProp_GProps volume;
@@ -72,7 +72,8 @@ py::dict printableBodies(const py::object& model, double gap, bool check)
     out["sweeps"] = sweeps;
     out["notes"] = p.notes;
     if (check) {
-        const function::Model solved = function::solve(io::readWorkslike(toJson(model))).model;
+        const function::Model solved =
+            function::scaled(function::solve(io::readWorkslike(toJson(model))).model, scale);
         printable::Check c;
         {
             py::gil_scoped_release release;
@@ -85,9 +86,10 @@ py::dict printableBodies(const py::object& model, double gap, bool check)
     return out;
 }
 
-std::vector<std::string> exportPrintable(const py::object& model, double gap, const std::string& folder)
+std::vector<std::string> exportPrintable(const py::object& model, double gap, const std::string& folder,
+                                         double scale)
 {
-    const printable::Printable p = made(model, gap);
+    const printable::Printable p = made(model, gap, scale);
     py::gil_scoped_release release;
     return io::writePrintFiles(p, folder);
 }
@@ -97,9 +99,11 @@ std::vector<std::string> exportPrintable(const py::object& model, double gap, co
 void bindPrintable(py::module_& m)
 {
     m.def("printable", &printableBodies, py::arg("model"), py::arg("gap") = 0.4, py::arg("check") = true,
+          py::arg("scale") = 1.0,
           "Print-in-place bodies of a works-like model (solved first): {'bodies': [{'name', 'part', 'brep',\n"
           "'volume'}], 'sweeps', 'notes', and with check 'clearance' (mm), 'where', 'invalid'}.");
     m.def("export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
+          py::arg("scale") = 1.0,
           "Write assembly.stl/.3mf/.step and one of each per body into folder; returns the paths.");
 }
 

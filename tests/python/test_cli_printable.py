@@ -60,3 +60,15 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
     assert run.returncode == 1
     assert "minimum clearance 0.000 mm (gap 0.40 mm): body and drawer as printed" in run.stdout
     assert "drawer slide: slides free" in run.stdout
+
+
+def test_a_scaled_print_keeps_the_gap_and_names_joints_too_thin_for_it(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "crate-bed", "--scale", "0.2")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    x = re.search(r"Min X\s*=\s*([-0-9.]+), Max X\s*=\s*([-0-9.]+)", mesh)
+    assert x and float(x.group(2)) - float(x.group(1)) < 1000 * 0.2 + 30  # a fifth of the bed, plus the links
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.2")
+    assert run.returncode == 1
+    assert "joint 'lid hinge': its parts are too thin (2.800000 mm)" in run.stderr

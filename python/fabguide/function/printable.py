@@ -24,6 +24,8 @@ class Printable(properties.Proxy):
         add(obj, "App::PropertyEnumeration", "Printer", "Printable", "Printer profile: the gap it needs", list(PRINTERS))
         add(obj, "App::PropertyLength", "Gap", "Printable", "Clearance between parts (set by the printer profile)",
             0.4)
+        add(obj, "App::PropertyFloat", "Scale", "Printable",
+            "Print at this scale (0.2 for 1:5); the gap stays as it is", 1.0)
         add(obj, "App::PropertyBool", "ShowCavities", "Printable", "Show the volumes swept into cavities", False)
         add(obj, "App::PropertyBool", "CheckMotion", "Printable",
             "Measure the clearance at 32 poses along every configuration's motion", True)
@@ -36,6 +38,8 @@ class Printable(properties.Proxy):
             obj.Gap = PRINTERS[obj.Printer]
 
     def execute(self, obj):
+        if obj.Scale <= 0:
+            raise PrintableError("Printable '{}': Scale must be greater than 0".format(obj.Label))
         data = bodies(obj)
         by_name = {child.BodyName: child for child in obj.Group if hasattr(child, "BodyName")}
         missing = [b["name"] for b in data["bodies"] if b["name"] not in by_name]
@@ -75,7 +79,7 @@ def bodies(obj):
     if obj.Mechanism is None:
         raise PrintableError("Printable '{}': choose the Mechanism to print".format(obj.Label))
     try:
-        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion)
+        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale)
     except (fabguide_core.FormatError, RuntimeError) as error:
         raise PrintableError("Printable '{}': {}".format(obj.Label, error))
 
@@ -92,7 +96,8 @@ def create(doc, mech, label=None):
 
 def sync(obj):
     """One Part::Feature per body (named by BodyName), plus one for the swept cavities; returns those added."""
-    names = [b["name"] for b in fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, False)["bodies"]]
+    names = [b["name"] for b in fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, False,
+                                                         obj.Scale)["bodies"]]
     have = {getattr(c, "BodyName", None) for c in obj.Group}
     added = []
     for name in [n for n in names + [CAVITIES] if n not in have]:
@@ -112,4 +117,4 @@ def is_printable(obj):
 
 def export(obj, folder):
     """assembly.stl/.3mf/.step and one of each per body into folder; the paths written."""
-    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder)
+    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder, obj.Scale)
