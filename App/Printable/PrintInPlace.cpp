@@ -371,7 +371,8 @@ TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double 
 /// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
 /// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
 /// each cleared of the other by the gap.
-void addHinge(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const Joint& joint = m.joints[j];
     const gp_Ax1 axis = hingeAxis(m, joint);
@@ -383,8 +384,8 @@ void addHinge(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes
     }
     const int base = function::partOf(m, onEdge);
     const Radii r = radii(m, joint.name, {joint.edgeA.cuboid, onEdge}, g);
-    const Cuboid& c = m.cuboids[joint.edgeA.cuboid];
-    const double lo = c.at(static_cast<Side>(2 * along)), hi = c.at(static_cast<Side>(2 * along + 1));
+    const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
+    const double lo = edge[2 * along], hi = edge[2 * along + 1];
     const double yoke = (hi - lo) / 4;
     const gp_Pnt at = axis.Location();
     TopoDS_Shape& part = shapes[joint.part];
@@ -544,7 +545,7 @@ Printable makePrintable(const Model& m, const Printer& printer)
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
         if (joint.turns())
-            addHinge(m, static_cast<int>(j), g, shapes, out);
+            addHinge(m, static_cast<int>(j), at, g, shapes, out);
         else if (joint.type == Joint::Type::DoublePivot)
             addDoublePivot(m, static_cast<int>(j), g, shapes, out);
         else if (std::none_of(m.fitInside.begin(), m.fitInside.end(), [&](const function::FitInside& f) {
