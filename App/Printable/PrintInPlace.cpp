@@ -171,7 +171,11 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                         // Against another solid: a's side on b's opposite side; against a cavity: on its same
                         // side.
                         const int facing = m.cuboids[b].cavity() ? side : side ^ 1;
-                        if (std::abs(ca[side] - cb[facing]) < hair)
+                        const bool opening =
+                            m.cuboids[b].cavity() &&  // no wall there: the cavity opens
+                            std::abs(m.cuboids[b].coordinates[side] -
+                                     m.cuboids[m.cuboids[b].within].coordinates[side]) < hair;
+                        if (std::abs(ca[side] - cb[facing]) < hair && !opening)
                             if (const int s = modelledSide(m, partOf[a], static_cast<int>(a), k, side);
                                 s >= 0)
                                 steps[a][s] = true;
@@ -187,6 +191,14 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                 x[s] += s % 2 ? -gap : gap;
         out.push_back(x);
     }
+    // Cuboids of one part stay joined: where one face stepped back, the cuboid glued to it follows.
+    for (size_t a = 0; a < m.cuboids.size(); ++a)
+        for (size_t b = 0; b < m.cuboids.size(); ++b)
+            for (int side = 0; side < 6 && a != b && partOf[a] == partOf[b] && !m.cuboids[a].cavity() &&
+                               !m.cuboids[b].cavity();
+                 ++side)
+                if (std::abs(m.cuboids[a].coordinates[side] - m.cuboids[b].coordinates[side ^ 1]) < hair)
+                    out[b][side ^ 1] = out[a][side];
     return out;
 }
 

@@ -72,3 +72,12 @@ def test_a_scaled_print_keeps_the_gap_and_names_joints_too_thin_for_it(fabguide_
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.2")
     assert run.returncode == 1
     assert "joint 'lid hinge': its parts are too thin (2.800000 mm)" in run.stderr
+
+
+def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide_cli, source_dir, tmp_path):
+    # Pocket doors on sliding hinges (slotted yokes), a flip-up flap, a two-cuboid drawer, a lid.
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "cabinet")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh  # the drawer's front and box stay one body
