@@ -7,6 +7,8 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -434,6 +436,105 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
 }
 
+/// Slide (4.5.2) not guided by a cavity: mated rails. A dovetail tongue on the part it rests against, along
+/// the slide axis where the two meet, and the matching groove, the gap all round, cut into the moving part
+/// along its travel, so it can slide but not lift off.
+void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const int a = joint.axis;
+    // The widest contact between a cuboid of the part and one of another part, across the slide axis.
+    int mover = -1, base = -1, normal = -1;
+    double widest = 0;
+    for (int c : m.parts[joint.part].cuboids)
+        for (size_t q = 0; q < m.cuboids.size(); ++q) {
+            if (m.cuboids[c].cavity() || m.cuboids[q].cavity() ||
+                function::partOf(m, static_cast<int>(q)) == joint.part)
+                continue;
+            const auto& x = m.cuboids[c].coordinates;
+            const auto& y = m.cuboids[q].coordinates;
+            for (int n = 0; n < 3; ++n) {
+                if (n == a ||
+                    (std::abs(x[2 * n] - y[2 * n + 1]) > 1e-6 && std::abs(x[2 * n + 1] - y[2 * n]) > 1e-6))
+                    continue;
+                double area = 1;
+                for (int o = 0; o < 3; ++o)
+                    if (o != n)
+                        area *= std::max(0.0,
+                                         std::min(x[2 * o + 1], y[2 * o + 1]) - std::max(x[2 * o], y[2 * o]));
+                if (area > widest) {
+                    widest = area;
+                    mover = c;
+                    base = static_cast<int>(q);
+                    normal = n;
+                }
+            }
+        }
+    if (mover < 0) {
+        out.notes.push_back(joint.name + ": slides free (no cavity guides it and it rests on no other part)");
+        return;
+    }
+    const auto& x = m.cuboids[mover].coordinates;
+    const auto& y = m.cuboids[base].coordinates;
+    const int across = 3 - a - normal;
+    const double dir =
+        std::abs(x[2 * normal] - y[2 * normal + 1]) < 1e-6 ? 1 : -1;  // from the base to the part
+    const double plane = dir > 0 ? y[2 * normal + 1] : y[2 * normal];
+    const double thin = std::min(gapped[mover][2 * normal + 1] - gapped[mover][2 * normal],
+                                 y[2 * normal + 1] - y[2 * normal]);
+    const double h = 0.4 * thin, width = std::min(x[2 * across + 1], y[2 * across + 1]) -
+                                         std::max(x[2 * across], y[2 * across]);
+    const double centre =
+        (std::max(x[2 * across], y[2 * across]) + std::min(x[2 * across + 1], y[2 * across + 1])) / 2;
+    const double from = std::max(x[2 * a], y[2 * a]), to = std::min(x[2 * a + 1], y[2 * a + 1]);
+    if (h < 2 * g || width < 6 * h || to - from < 4 * h) {
+        out.notes.push_back(joint.name + ": slides free (too little contact for rails at this gap)");
+        return;
+    }
+    // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
+    // groove's is the same offset outwards by the gap, edge by edge.
+    auto tongue = [&](double grow, double start, double length) {
+        const gp_XY corners[4] = {{centre - h, plane - dir},
+                                  {centre + h, plane - dir},
+                                  {centre + 1.5 * h, plane + dir * h},
+                                  {centre - 1.5 * h, plane + dir * h}};
+        auto offsetLine = [&](int i) {  // edge i moved out by `grow`: a point on it and its direction
+            const gp_XY d = (corners[(i + 1) % 4] - corners[i]).Normalized();
+            gp_XY out(d.Y(), -d.X());  // outward for the corners' winding when dir > 0
+            if ((out * (corners[i] - gp_XY(centre, plane + dir * h / 2))) < 0)
+                out.Reverse();
+            return std::pair{corners[i] + out * grow, d};
+        };
+        auto point = [&](int i) {  // where the offset edges i − 1 and i meet
+            const auto [p1, d1] = offsetLine((i + 3) % 4);
+            const auto [p2, d2] = offsetLine(i);
+            const double t = ((p2 - p1) ^ d2) / (d1 ^ d2);
+            const gp_XY uv = p1 + d1 * t;
+            gp_Pnt p;
+            p.SetCoord(a + 1, start);
+            p.SetCoord(across + 1, uv.X());
+            p.SetCoord(normal + 1, uv.Y());
+            return p;
+        };
+        BRepBuilderAPI_MakePolygon outline(point(0), point(1), point(2), point(3), true);
+        gp_Vec along(0, 0, 0);
+        along.SetCoord(a + 1, length);
+        return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), along).Shape();
+    };
+    double low = 0, high = 0;  // the travel
+    for (size_t k = 0; k < m.configurations.size(); ++k)
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
+            low = std::min(low, pose->offset);
+            high = std::max(high, pose->offset);
+        }
+    const int q = function::partOf(m, base);
+    shapes[q] = fuse(shapes[q], tongue(0, from, to - from));
+    // In the part's frame the tongue runs back over the travel; the groove is open at the part's ends.
+    shapes[joint.part] = cut(shapes[joint.part], tongue(g, std::min(from, x[2 * a]) - high - 1,
+                                                        std::max(to, x[2 * a + 1]) - from + high - low + 2));
+}
+
 /// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
 /// rigid link between them, outside the faces, with a hole round each pin.
 void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
@@ -564,8 +665,7 @@ Printable makePrintable(const Model& m, const Printer& printer)
                      return f.cavity >= 0 &&
                             std::find(f.inner.begin(), f.inner.end(), joint.part) != f.inner.end();
                  }))
-            out.notes.push_back(joint.name +
-                                ": slides free (no cavity guides it and rails are not made yet)");
+            addRails(m, static_cast<int>(j), at, g, shapes, out);
     }
     for (size_t p = 0; p < m.parts.size(); ++p) {
         ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);

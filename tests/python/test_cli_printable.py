@@ -59,7 +59,7 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
     assert run.returncode == 1
     assert "minimum clearance 0.000 mm (gap 0.40 mm): body and drawer as printed" in run.stdout
-    assert "drawer slide: slides free" in run.stdout
+    assert "drawer slide: slides free (no cavity guides it and it rests on no other part)" in run.stdout
 
 
 def test_a_scaled_print_keeps_the_gap_and_names_joints_too_thin_for_it(fabguide_cli, source_dir, tmp_path):
@@ -81,3 +81,18 @@ def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide
     assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh  # the drawer's front and box stay one body
+
+
+def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "sliding-box")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "slides free" not in run.stdout
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # also all along the slide open
+    volumes = dict(re.findall(r"^body (\w+)\s+([0-9.]+) mm3$", run.stdout, re.M))
+    # The box gained a tongue; the lid (100 x 60 x 8 less its gap) lost a groove.
+    assert float(volumes["box"]) > 100 * 60 * 40 - 90 * 50 * 35
+    assert float(volumes["lid"]) < 100 * 60 * 8
+    gcode = tmp_path / "box.gcode"
+    sliced = subprocess.run(["prusa-slicer", "--export-gcode", "--output", str(gcode), str(out / "assembly.3mf")],
+                            capture_output=True, text=True, timeout=300)
+    assert sliced.returncode == 0, sliced.stdout + sliced.stderr

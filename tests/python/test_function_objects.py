@@ -176,7 +176,7 @@ def test_the_cabinet_imports_with_cavities_and_an_edit_widens_both_doors(doc, so
 
 
 @pytest.mark.parametrize("name", ["box-with-lid", "cabinet", "cellphone", "crate-bar", "crate-bed", "printer", "sofa-bunk",
-                                  "tablet", "toolbox"])
+                                  "tablet", "toolbox", "sliding-box"])
 def test_every_example_imports_solves_and_round_trips(doc, source_dir, tmp_path, name):
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", name + ".workslike.json"))
     doc.recompute()
