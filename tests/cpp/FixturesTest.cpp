@@ -82,7 +82,7 @@ INSTANTIATE_TEST_SUITE_P(Table41, Fixture,
                                          "tablet.workslike.json", "toolbox.workslike.json",
                                          "printer.workslike.json", "crate-bar.workslike.json",
                                          "box-with-lid.workslike.json", "crate-bed.workslike.json",
-                                         "sofa-bunk.workslike.json"),
+                                         "sofa-bunk.workslike.json", "sliding-box.workslike.json"),
                          [](const auto& info) {
                              std::string name = info.param;
                              name = name.substr(0, name.find('.'));
