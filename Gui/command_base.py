@@ -36,6 +36,16 @@ def all_in(doc, test):
     return [o for o in doc.Objects if test(o)]
 
 
+def the_one(doc, test, what):
+    """The selected object of a kind, else the document's only one; when that is not one, tells the user to
+    select the `what` and returns None."""
+    found = selected(test) or all_in(doc, test)
+    if len(found) != 1:
+        tell("Select the {}.".format(what) if found else "There is no {} in this document yet.".format(what.split()[0]))
+        return None
+    return found[0]
+
+
 class Command:
     """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
 

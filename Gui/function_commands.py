@@ -9,7 +9,7 @@ import FreeCADGui
 from fabguide.function import (configuration, cuboids, joints, mechanism, parts, printable, relationships,
                                workslike_file)
 from fabguide_gui import function_viewproviders as vp
-from fabguide_gui.command_base import Command, all_in, selected, tell, transaction
+from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
 
 
 def picks():
@@ -282,8 +282,9 @@ class Configurations(Command):
         return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, mechanism.is_mechanism))
 
     def run(self, doc):
-        mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
-        FreeCADGui.ActiveDocument.setEdit(mechs[0].Name)
+        mech = the_one(doc, mechanism.is_mechanism, "mechanism to pose")
+        if mech is not None:
+            FreeCADGui.ActiveDocument.setEdit(mech.Name)
 
 
 class ImportWorkslike(Command):
@@ -324,15 +325,15 @@ class ExportWorkslike(Command):
     def run(self, doc):
         from PySide import QtGui
 
-        mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
-        if len(mechs) > 1:
-            return tell("Select the mechanism to export.")
+        mech = the_one(doc, mechanism.is_mechanism, "mechanism to export")
+        if mech is None:
+            return
         path, _ = QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), "Works-like model",
-                                                    mechs[0].Label + ".workslike.json",
+                                                    mech.Label + ".workslike.json",
                                                     "Works-like models (*.workslike.json)")
         if path:
             try:
-                workslike_file.write(mechs[0], path)
+                workslike_file.write(mech, path)
             except ValueError as error:
                 return tell(str(error))
             FreeCAD.Console.PrintMessage("FabGuide wrote " + path + "\n")
@@ -347,10 +348,9 @@ class MakePrintable(Command):
         return Configurations.IsActive(self)
 
     def run(self, doc):
-        mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
-        if len(mechs) != 1:
-            return tell("Select the mechanism to print.")
-        mech = mechs[0]
+        mech = the_one(doc, mechanism.is_mechanism, "mechanism to print")
+        if mech is None:
+            return
         existing = [p for p in all_in(doc, printable.is_printable) if p.Mechanism == mech]
         with transaction(doc, self.MENU):
             made = existing[0] if existing else vp.attach(printable.create(doc, mech))
@@ -372,14 +372,14 @@ class ExportPrintable(Command):
     def run(self, doc):
         from PySide import QtGui
 
-        made = selected(printable.is_printable) or all_in(doc, printable.is_printable)
-        if len(made) > 1:
-            return tell("Select the printable to export.")
+        made = the_one(doc, printable.is_printable, "printable to export")
+        if made is None:
+            return
         folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the print files",
                                                         os.path.expanduser("~"))
         if folder:
             try:
-                written = printable.export(made[0], folder)
+                written = printable.export(made, folder)
             except (ValueError, RuntimeError) as error:
                 return tell(str(error))
             FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")

@@ -7,7 +7,7 @@ import FreeCADGui
 
 from fabguide.material import board, layout, master_board, techdraw
 from fabguide_gui import viewproviders
-from fabguide_gui.command_base import Command, all_in, selected, tell, transaction
+from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
 
 
 def first_thickness(doc):
@@ -98,15 +98,15 @@ class ExportCutSheets(Command):
     def run(self, doc):
         from PySide import QtGui
 
-        layouts = selected(layout.is_layout) or all_in(doc, layout.is_layout)
-        if len(layouts) > 1:
-            return tell("Select the layout to export.")
+        chosen = the_one(doc, layout.is_layout, "layout to export")
+        if chosen is None:
+            return
         start = os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~")
         folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the cut sheets", start)
         if not folder:
             return
         try:
-            written = layout.export_cut_sheets(layouts[0], folder)
+            written = layout.export_cut_sheets(chosen, folder)
         except (layout.LayoutError, ValueError, RuntimeError) as error:
             return tell(str(error))
         FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
@@ -120,12 +120,12 @@ class TechDrawPages(Command):
         return ExportCutSheets.IsActive(self)
 
     def run(self, doc):
-        layouts = selected(layout.is_layout) or all_in(doc, layout.is_layout)
-        if len(layouts) > 1:
-            return tell("Select the layout to draw.")
+        chosen = the_one(doc, layout.is_layout, "layout to draw")
+        if chosen is None:
+            return
         try:
             with transaction(doc, "TechDraw pages"):
-                pages = techdraw.make_pages(layouts[0])
+                pages = techdraw.make_pages(chosen)
         except layout.LayoutError as error:
             return tell(str(error))
         pages[0].ViewObject.doubleClicked()
