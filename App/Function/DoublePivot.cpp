@@ -2,6 +2,7 @@
 
 #include <libalglib/optimization.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -40,6 +41,7 @@ struct Placement {
     PivotPlane plane;
     int axisA = 0, axisB = 0;
     std::vector<JointPose> poses;
+    std::vector<int> configurations;  ///< of each pose
 
     Point pivotA(double a) const
     {
@@ -129,14 +131,40 @@ bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& bo
     return true;
 }
 
-/// Whether the part hits its base at one of 32 poses along the four-bar motion to each pose, with the pivots
-/// moved by (a, b): both parts' solid cuboids, in the pivot plane, where they share depth along the normal.
+/// Whether part `part` stays where it is in configuration k: no joint of its chain is posed there.
+bool standsStill(const Model& model, int part, int k)
+{
+    for (int guard = 0; part >= 0 && guard <= static_cast<int>(model.joints.size()); ++guard) {
+        const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
+                                        [&](const Joint& j) { return j.part == part; });
+        if (joint == model.joints.end())
+            return true;
+        const int j = static_cast<int>(joint - model.joints.begin());
+        const auto& poses = model.configurations[k].poses;
+        if (std::any_of(poses.begin(), poses.end(), [&](const JointPose& pose) { return pose.joint == j; }))
+            return false;
+        part = joint->base;
+    }
+    return true;
+}
+
+/// Whether the part hits its base, or any other part standing still, at one of 32 poses along the four-bar
+/// motion to each pose, with the pivots moved by (a, b): solid cuboids, in the pivot plane, where they share
+/// depth along the normal (the thesis checked the base only).
 bool collides(const Placement& p, double a, double b)
 {
     const Point pivot = p.pivotA(a), base = p.pivotB(b);
-    const auto moving = rectangles(p.model, p.joint.part, p.plane),
-               fixed = rectangles(p.model, p.joint.base, p.plane);
-    for (const JointPose& pose : p.poses) {
+    const auto moving = rectangles(p.model, p.joint.part, p.plane);
+    for (size_t i = 0; i < p.poses.size(); ++i) {
+        const JointPose& pose = p.poses[i];
+        std::vector<std::array<double, 6>>
+            fixed;  // the base and every part standing still in this configuration
+        for (size_t q = 0; q < p.model.parts.size(); ++q)
+            if (static_cast<int>(q) != p.joint.part &&
+                standsStill(p.model, static_cast<int>(q), p.configurations[i])) {
+                const auto r = rectangles(p.model, static_cast<int>(q), p.plane);
+                fixed.insert(fixed.end(), r.begin(), r.end());
+            }
         const auto [link, part] = fourBarAngles(pivot, base, p.pole(pose), pose.angle);
         for (int step = 1; step <= 32; ++step) {
             const double t = step / 32.0;
@@ -279,14 +307,16 @@ std::vector<Unplaced> placePivots(Model& model)
     for (Joint& joint : model.joints) {
         if (joint.type != Joint::Type::DoublePivot)
             continue;
-        Placement p{model, joint, pivotPlane(model, joint), 0, 0, {}};
+        Placement p{model, joint, pivotPlane(model, joint), 0, 0, {}, {}};
         p.axisA = longest(model.cuboids[joint.pivotFace.cuboid], p.plane);
         p.axisB = longest(model.cuboids[joint.basePivotFace.cuboid], p.plane);
         const int j = static_cast<int>(&joint - model.joints.data());
-        for (const Configuration& c : model.configurations)
-            for (const JointPose& pose : c.poses)
-                if (pose.joint == j)
+        for (size_t k = 0; k < model.configurations.size(); ++k)
+            for (const JointPose& pose : model.configurations[k].poses)
+                if (pose.joint == j) {
                     p.poses.push_back(pose);
+                    p.configurations.push_back(static_cast<int>(k));
+                }
         if (p.poses.empty())
             continue;
         const auto [lowA, highA] = p.range(joint.pivotFace, p.axisA, p.plane.pivot);
@@ -297,11 +327,12 @@ std::vector<Unplaced> placePivots(Model& model)
         if (!placed || collides(p, placed->first, placed->second))
             placed = clearPlacement(p, range);
         if (!placed) {
-            failed.push_back({joint.name, reachable
-                                              ? "its part would hit '" + model.parts[joint.base].name +
-                                                    "' on the way, wherever its pivots sit on their faces"
-                                              : "no pivot positions on their faces keep the link's length "
-                                                "in every configuration"});
+            failed.push_back(
+                {joint.name, reachable ? "its part would hit '" + model.parts[joint.base].name +
+                                             "' or another part standing still on the way, wherever its "
+                                             "pivots sit on their faces"
+                                       : "no pivot positions on their faces keep the link's length "
+                                         "in every configuration"});
             continue;
         }
         joint.pivot[p.axisA] += placed->first;
