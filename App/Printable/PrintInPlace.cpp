@@ -670,6 +670,12 @@ Printable makePrintable(const Model& m, const Printer& printer)
     for (size_t p = 0; p < m.parts.size(); ++p) {
         ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);
         unify.Build();
+        int pieces = 0;
+        for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
+            ++pieces;
+        if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
+            out.notes.push_back(m.parts[p].name + ": falls apart into " + std::to_string(pieces) +
+                                " pieces; check which way its neighbours' joints turn");
         out.bodies.insert(out.bodies.begin() + static_cast<long>(p),
                           {m.parts[p].name, static_cast<int>(p), -1, unify.Shape()});
     }
