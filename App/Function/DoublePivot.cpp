@@ -1,5 +1,7 @@
 #include "Function/DoublePivot.h"
 
+#include "Function/Pose.h"
+
 #include <libalglib/optimization.h>
 
 #include <algorithm>
@@ -131,23 +133,6 @@ bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& bo
     return true;
 }
 
-/// Whether part `part` stays where it is in configuration k: no joint of its chain is posed there.
-bool standsStill(const Model& model, int part, int k)
-{
-    for (int guard = 0; part >= 0 && guard <= static_cast<int>(model.joints.size()); ++guard) {
-        const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
-                                        [&](const Joint& j) { return j.part == part; });
-        if (joint == model.joints.end())
-            return true;
-        const int j = static_cast<int>(joint - model.joints.begin());
-        const auto& poses = model.configurations[k].poses;
-        if (std::any_of(poses.begin(), poses.end(), [&](const JointPose& pose) { return pose.joint == j; }))
-            return false;
-        part = joint->base;
-    }
-    return true;
-}
-
 /// Whether the part hits its base, or any other part standing still, at one of 32 poses along the four-bar
 /// motion to each pose, with the pivots moved by (a, b): solid cuboids, in the pivot plane, where they share
 /// depth along the normal (the thesis checked the base only).
@@ -161,7 +146,7 @@ bool collides(const Placement& p, double a, double b)
             fixed;  // the base and every part standing still in this configuration
         for (size_t q = 0; q < p.model.parts.size(); ++q)
             if (static_cast<int>(q) != p.joint.part &&
-                standsStill(p.model, static_cast<int>(q), p.configurations[i])) {
+                jointMovingIn(p.model, static_cast<int>(q), p.configurations[i]) < 0) {
                 const auto r = rectangles(p.model, static_cast<int>(q), p.plane);
                 fixed.insert(fixed.end(), r.begin(), r.end());
             }

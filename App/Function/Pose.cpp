@@ -1,5 +1,6 @@
 #include "Function/Pose.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fabguide::function {
@@ -66,15 +67,39 @@ Box moved(const Joint& joint, const JointPose& pose, Box box)
     return box;
 }
 
-const Joint* jointMoving(const Model& model, int part)
+}  // namespace
+
+int jointMoving(const Model& model, int part)
 {
-    for (const Joint& joint : model.joints)
-        if (joint.part == part)
-            return &joint;
-    return nullptr;
+    for (size_t j = 0; j < model.joints.size(); ++j)
+        if (model.joints[j].part == part)
+            return static_cast<int>(j);
+    return -1;
 }
 
-}  // namespace
+const JointPose* poseOf(const Model& model, int joint, int configuration)
+{
+    if (configuration < 0)
+        return nullptr;
+    const auto& poses = model.configurations[configuration].poses;
+    const auto found =
+        std::find_if(poses.begin(), poses.end(), [&](const JointPose& p) { return p.joint == joint; });
+    return found == poses.end() ? nullptr : &*found;
+}
+
+int jointMovingIn(const Model& model, int part, int configuration)
+{
+    // The reader refuses bases that go round in a circle; the bound only guards against a half-read model.
+    for (size_t step = 0; part >= 0 && step <= model.joints.size(); ++step) {
+        const int j = jointMoving(model, part);
+        if (j < 0)
+            return -1;
+        if (poseOf(model, j, configuration))
+            return j;
+        part = model.joints[j].base;
+    }
+    return -1;
+}
 
 int partOf(const Model& model, int cuboid)
 {
@@ -93,13 +118,10 @@ Expression posed(const Model& model, const Face& face, int configuration)
     if (configuration < 0)
         return box[static_cast<int>(face.side)];
     // The part's own joint first, then its base's, out to the ground (thesis 4.1.2, J(Θ)).
-    for (const Joint* joint = jointMoving(model, partOf(model, face.cuboid)); joint;
-         joint = joint->base < 0 ? nullptr : jointMoving(model, joint->base)) {
-        const int j = static_cast<int>(joint - model.joints.data());
-        for (const JointPose& pose : model.configurations[configuration].poses)
-            if (pose.joint == j)
-                box = moved(*joint, pose, box);
-    }
+    for (int j = jointMoving(model, partOf(model, face.cuboid)); j >= 0;
+         j = model.joints[j].base < 0 ? -1 : jointMoving(model, model.joints[j].base))
+        if (const JointPose* pose = poseOf(model, j, configuration))
+            box = moved(model.joints[j], *pose, box);
     return box[static_cast<int>(face.side)];
 }
 

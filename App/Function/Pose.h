@@ -14,6 +14,16 @@ Expression posed(const Model& model, const Face& face, int configuration);
 /// The part a cuboid belongs to.
 int partOf(const Model& model, int cuboid);
 
+/// The first joint that moves part p (its own, not its base's), or -1.
+int jointMoving(const Model& model, int part);
+
+/// How configuration k poses joint j, or nullptr (also for k = -1, as modelled).
+const JointPose* poseOf(const Model& model, int joint, int configuration);
+
+/// The first joint of part p's chain (its own, then its base's, out to the ground) that configuration k
+/// poses, or -1: the part stands still there.
+int jointMovingIn(const Model& model, int part, int configuration);
+
 /// The value of an expression for the model's current coordinates.
 double evaluate(const Model& model, const Expression& expression);
 

@@ -2,6 +2,7 @@
 
 #include "Function/Cover.h"
 #include "Function/FitInside.h"
+#include "Function/Pose.h"
 #include "Function/Support.h"
 #include "IO/Json.h"
 
@@ -238,40 +239,29 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         }
         configuration.poses.push_back(pose);
     }
-    // A double pivot's base stands still where it is posed (stage 2 places pivots against a fixed base).
-    auto posed = [&](int j) {
-        return std::any_of(configuration.poses.begin(), configuration.poses.end(),
-                           [&](const function::JointPose& p) { return p.joint == j; });
-    };
+    model.configurations.push_back(configuration);
+    const int k = static_cast<int>(model.configurations.size()) - 1;
     for (const function::JointPose& a : configuration.poses) {
-        const function::Joint& pivot = model.joints[a.joint];
-        for (int part = pivot.base; pivot.type == function::Joint::Type::DoublePivot && part >= 0;) {
-            const auto carrier = std::find_if(model.joints.begin(), model.joints.end(),
-                                              [&](const function::Joint& k) { return k.part == part; });
-            if (carrier == model.joints.end())
-                break;
-            if (posed(static_cast<int>(carrier - model.joints.begin())))
-                throw FormatError(c.pathOf("poses") + ": '" + pivot.name + "' needs its base '" +
-                                  model.parts[pivot.base].name + "' to stand still, but '" + carrier->name +
-                                  "' moves it");
-            part = carrier->base;
-        }
-    }
-    // Double pivots that move one part (parallel links) take it to one place.
-    for (const function::JointPose& a : configuration.poses)
+        const function::Joint& first = model.joints[a.joint];
+        if (first.type != function::Joint::Type::DoublePivot)
+            continue;
+        // Its base stands still here (stage 2 places pivots against a fixed base).
+        if (const int carrier = function::jointMovingIn(model, first.base, k); carrier >= 0)
+            throw FormatError(c.pathOf("poses") + ": '" + first.name + "' needs its base '" +
+                              model.parts[first.base].name + "' to stand still, but '" +
+                              model.joints[carrier].name + "' moves it");
+        // Double pivots that move one part (parallel links) take it to one place.
         for (size_t j = 0; j < model.joints.size(); ++j) {
-            const function::Joint &first = model.joints[a.joint], &other = model.joints[j];
+            const function::Joint& other = model.joints[j];
             if (static_cast<int>(j) == a.joint || other.part != first.part ||
                 other.type != function::Joint::Type::DoublePivot)
                 continue;
-            const auto b =
-                std::find_if(configuration.poses.begin(), configuration.poses.end(),
-                             [&](const function::JointPose& p) { return p.joint == static_cast<int>(j); });
-            if (b == configuration.poses.end() || b->angle != a.angle || b->pole != a.pole)
+            const function::JointPose* b = function::poseOf(model, static_cast<int>(j), k);
+            if (!b || b->angle != a.angle || b->pole != a.pole)
                 throw FormatError(c.pathOf("poses") + ": '" + first.name + "' and '" + other.name +
                                   "' move one part and must be posed alike");
         }
-    model.configurations.push_back(configuration);
+    }
 }
 
 std::vector<int> partList(const function::Model& model, const Fields& r, const std::string& key)
@@ -558,9 +548,8 @@ function::Model readWorkslike(const nlohmann::json& document)
         for (size_t step = 0; base >= 0; ++step) {
             if (step == model.joints.size())
                 throw FormatError(at("joints", j) + ".base: the joints' bases go round in a circle");
-            const auto carrier = std::find_if(model.joints.begin(), model.joints.end(),
-                                              [&](const function::Joint& k) { return k.part == base; });
-            base = carrier == model.joints.end() ? -1 : carrier->base;
+            const int carrier = function::jointMoving(model, base);
+            base = carrier < 0 ? -1 : model.joints[carrier].base;
         }
     }
 

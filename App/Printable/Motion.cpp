@@ -21,11 +21,21 @@ using function::Side;
 
 constexpr double kPi = 3.14159265358979323846;
 
-gp_Trsf turn(const gp_Pnt& through, int axis, double degrees)
+gp_Trsf turn(const gp_Ax1& axis, double degrees)
 {
     gp_Trsf t;
-    t.SetRotation(gp_Ax1(through, gp_Dir(axis == 0, axis == 1, axis == 2)), degrees * kPi / 180);
+    t.SetRotation(axis, degrees * kPi / 180);
     return t;
+}
+
+/// Turns happen in the first half of a motion, slides in the second.
+double turning(double t)
+{
+    return std::min(1.0, 2 * t);
+}
+double sliding(double t)
+{
+    return std::max(0.0, 2 * t - 1);
 }
 
 gp_Trsf shift(int axis, double by)
@@ -35,47 +45,35 @@ gp_Trsf shift(int axis, double by)
     return t;
 }
 
-/// A hinge's edge: the point where its two faces meet (at the low end of the third axis) and that axis.
-std::pair<gp_Pnt, int> edge(const Model& model, const Joint& joint)
-{
-    const gp_Ax1 axis = hingeAxis(model, joint);
-    return {axis.Location(), std::abs(axis.Direction().X()) > 0.5   ? 0
-                             : std::abs(axis.Direction().Y()) > 0.5 ? 1
-                                                                    : 2};
-}
-
-/// A double pivot's pivot (on the part) and base pivot as 3-D points, and the pivot plane's normal axis.
-struct Pivots {
-    gp_Pnt pivot, base;
-    int normal;
-    double link, part;  ///< the four-bar's turns (degrees)
+/// A double pivot's four-bar: the turns about its base pivot (the link) and its own pivot (the part).
+struct FourBar {
+    gp_Ax1 link, part;
+    double linkDegrees, partDegrees;
 };
 
-Pivots pivots(const Model& model, const Joint& joint, const JointPose& pose)
+FourBar fourBar(const Model& model, const Joint& joint, const JointPose& pose)
 {
-    const function::PivotPlane plane = function::pivotPlane(model, joint);
-    const double n = model.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
-    auto point = [&](const std::array<double, 2>& uw) {
-        double p[3];
-        p[plane.normal] = n;
-        p[plane.u] = uw[0];
-        p[plane.w] = uw[1];
-        return gp_Pnt(p[0], p[1], p[2]);
-    };
+    const auto [pivot, base] = pivotPoints(model, joint);
+    const int n = function::pivotPlane(model, joint).normal;
+    const gp_Dir normal(n == 0, n == 1, n == 2);
     const auto [link, part] = function::linkAngles(model, joint, pose);
-    return {point(plane.pivot), point(plane.basePivot), plane.normal, link, part};
+    return {gp_Ax1(base, normal), gp_Ax1(pivot, normal), link, part};
 }
 
 }  // namespace
 
-const JointPose* poseOf(const Model& model, int j, int configuration)
+std::pair<gp_Pnt, gp_Pnt> pivotPoints(const Model& model, const Joint& joint)
 {
-    if (configuration < 0)
-        return nullptr;
-    const auto& poses = model.configurations[configuration].poses;
-    const auto found =
-        std::find_if(poses.begin(), poses.end(), [&](const JointPose& p) { return p.joint == j; });
-    return found == poses.end() ? nullptr : &*found;
+    const function::PivotPlane plane = function::pivotPlane(model, joint);
+    const double n = model.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
+    auto point = [&](const std::array<double, 2>& uw) {
+        gp_Pnt p;
+        p.SetCoord(plane.normal + 1, n);
+        p.SetCoord(plane.u + 1, uw[0]);
+        p.SetCoord(plane.w + 1, uw[1]);
+        return p;
+    };
+    return {point(plane.pivot), point(plane.basePivot)};
 }
 
 gp_Ax1 hingeAxis(const Model& model, const Joint& joint)
@@ -90,36 +88,23 @@ gp_Ax1 hingeAxis(const Model& model, const Joint& joint)
     return gp_Ax1(gp_Pnt(p[0], p[1], p[2]), gp_Dir(along == 0, along == 1, along == 2));
 }
 
-int jointMoving(const Model& model, int part)
-{
-    for (size_t j = 0; j < model.joints.size(); ++j)
-        if (model.joints[j].part == part)
-            return static_cast<int>(j);
-    return -1;
-}
-
 gp_Trsf jointMotion(const Model& model, int j, int configuration, double t)
 {
     const JointPose* pose = poseOf(model, j, configuration);
     if (!pose)
         return {};
     const Joint& joint = model.joints[j];
-    const double turning = std::min(1.0, 2 * t),
-                 sliding = std::max(0.0, 2 * t - 1);  // turns first, then slides
     switch (joint.type) {
-        case Joint::Type::Hinge: {
-            const auto [through, axis] = edge(model, joint);
-            return turn(through, axis, turning * pose->angle);
-        }
+        case Joint::Type::Hinge:
+            return turn(hingeAxis(model, joint), turning(t) * pose->angle);
         case Joint::Type::Slide:
-            return shift(joint.axis, sliding * pose->offset);
-        case Joint::Type::SlidingHinge: {
-            const auto [through, axis] = edge(model, joint);
-            return shift(joint.axis, sliding * pose->offset) * turn(through, axis, turning * pose->angle);
-        }
+            return shift(joint.axis, sliding(t) * pose->offset);
+        case Joint::Type::SlidingHinge:
+            return shift(joint.axis, sliding(t) * pose->offset) *
+                   turn(hingeAxis(model, joint), turning(t) * pose->angle);
         case Joint::Type::DoublePivot: {
-            const Pivots p = pivots(model, joint, *pose);
-            return turn(p.base, p.normal, turning * p.link) * turn(p.pivot, p.normal, turning * p.part);
+            const FourBar f = fourBar(model, joint, *pose);
+            return turn(f.link, turning(t) * f.linkDegrees) * turn(f.part, turning(t) * f.partDegrees);
         }
     }
     return {};
@@ -143,8 +128,8 @@ gp_Trsf linkMotion(const Model& model, int j, int configuration, double t)
     const Joint& joint = model.joints[j];
     gp_Trsf own;
     if (const JointPose* pose = poseOf(model, j, configuration)) {
-        const Pivots p = pivots(model, joint, *pose);
-        own = turn(p.base, p.normal, std::min(1.0, 2 * t) * p.link);
+        const FourBar f = fourBar(model, joint, *pose);
+        own = turn(f.link, turning(t) * f.linkDegrees);
     }
     return partMotion(model, joint.base, configuration, t) * own;
 }

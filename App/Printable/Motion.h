@@ -4,11 +4,15 @@
 #pragma once
 
 #include "Function/Model.h"
+#include "Function/Pose.h"
 
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
 namespace fabguide::printable {
+
+using function::jointMoving;
+using function::poseOf;
 
 /// Joint j's motion `t` (0..1) of the way to its pose in configuration k (identity when k does not pose it).
 /// Everything that turns does so in the first half, everything that slides in the second: doors swing open
@@ -22,11 +26,8 @@ gp_Trsf partMotion(const function::Model& model, int part, int configuration, do
 /// A double pivot's link: turned about the base pivot (and carried by whatever carries the base).
 gp_Trsf linkMotion(const function::Model& model, int j, int configuration, double t);
 
-/// The first joint that moves part p, or -1.
-int jointMoving(const function::Model& model, int part);
-
-/// How configuration k poses joint j, or nullptr.
-const function::JointPose* poseOf(const function::Model& model, int j, int configuration);
+/// A double pivot's pivots as modelled: on the part, on the base (on the coplanar faces).
+std::pair<gp_Pnt, gp_Pnt> pivotPoints(const function::Model& model, const function::Joint& joint);
 
 /// A hinge's (or sliding hinge's) axis: its edge, directed along +x, +y or +z.
 gp_Ax1 hingeAxis(const function::Model& model, const function::Joint& joint);
