@@ -1,7 +1,6 @@
 // `fabguide printable`: a works-like model as print-in-place bodies (thesis 4.5), checked, written as STL,
 // 3MF and STEP.
 #include "Cli/Commands.h"
-#include "Function/Solve.h"
 #include "IO/Json.h"
 #include "IO/PrintFiles.h"
 #include "IO/WorkslikeFormat.h"
@@ -28,17 +27,9 @@ const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
 int run(const PrintableArguments& args)
 {
-    const function::SolveResult solved = function::solve(io::readWorkslike(io::readJsonFile(args.input)));
-    if (!solved.solved) {
-        std::string names;
-        for (const std::string& name : solved.conflict)
-            names += (names.empty() ? "" : ", ") + ("'" + name + "'");
-        std::fprintf(stderr, "fabguide printable: the model does not solve: %s cannot hold together\n",
-                     names.c_str());
-        return 1;
-    }
+    const function::Model model =
+        printable::solvedToPrint(io::readWorkslike(io::readJsonFile(args.input)), args.scale);
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
-    const function::Model model = function::scaled(solved.model, args.scale);
     const printable::Printable made = printable::makePrintable(model, {gap});
     for (const printable::Body& b : made.bodies) {
         GProp_GProps volume;

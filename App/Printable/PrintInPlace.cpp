@@ -2,6 +2,7 @@
 
 #include "Function/DoublePivot.h"
 #include "Function/Pose.h"
+#include "Function/Solve.h"
 #include "Printable/Motion.h"
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -50,11 +51,21 @@ TopoDS_Shape box(const Coordinates& c)
     return BRepPrimAPI_MakeBox(gp_Pnt(c[0], c[2], c[4]), gp_Pnt(c[1], c[3], c[5])).Shape();
 }
 
-/// A Boolean operation's result, or an error: OpenCASCADE reports failures by flags, not exceptions.
+/// A Boolean operation of the first shape with the others, or an error naming it: OpenCASCADE reports
+/// failures by flags, not exceptions. Many tools in one operation are much faster than one at a time.
 template <typename Operation>
-TopoDS_Shape boolean(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* what)
+TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
 {
-    Operation operation(a, b);
+    if (shapes.size() < 2)
+        return shapes.empty() ? TopoDS_Shape() : shapes.front();
+    TopTools_ListOfShape first, rest;
+    first.Append(shapes.front());
+    for (size_t i = 1; i < shapes.size(); ++i)
+        rest.Append(shapes[i]);
+    Operation operation;
+    operation.SetArguments(first);
+    operation.SetTools(rest);
+    operation.Build();
     if (operation.HasErrors()) {
         std::ostringstream report;
         operation.DumpErrors(report);
@@ -65,30 +76,17 @@ TopoDS_Shape boolean(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* w
 
 TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
-    return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>(a, b, "union");
+    return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>({a, b}, "union");
 }
 
-/// The union of many shapes in one Boolean operation (much faster than one at a time).
 TopoDS_Shape fuseAll(const std::vector<TopoDS_Shape>& shapes)
 {
-    if (shapes.size() < 2)
-        return shapes.empty() ? TopoDS_Shape() : shapes.front();
-    TopTools_ListOfShape first, rest;
-    first.Append(shapes.front());
-    for (size_t i = 1; i < shapes.size(); ++i)
-        rest.Append(shapes[i]);
-    BRepAlgoAPI_Fuse operation;
-    operation.SetArguments(first);
-    operation.SetTools(rest);
-    operation.Build();
-    if (operation.HasErrors())
-        throw std::runtime_error("geometry: a union of swept poses failed");
-    return operation.Shape();
+    return boolean<BRepAlgoAPI_Fuse>(shapes, "union");
 }
 
 TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
-    return b.IsNull() ? a : boolean<BRepAlgoAPI_Cut>(a, b, "cut");
+    return b.IsNull() ? a : boolean<BRepAlgoAPI_Cut>({a, b}, "cut");
 }
 
 TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
@@ -238,6 +236,26 @@ TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
     return result;
 }
 
+/// What a shape sweeps turning by `radians` about `axis`, then shifting by `by` (motions turn first, then
+/// slide): a revolution, then a prism of the turned shape.
+TopoDS_Shape turnedThenShifted(const TopoDS_Shape& shape, const gp_Ax1& axis, double radians,
+                               const gp_Vec& by)
+{
+    TopoDS_Shape result = shape, turned = shape;
+    if (std::abs(radians) > 1e-12) {
+        result = swept(shape,
+                       [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
+        gp_Trsf turn;
+        turn.SetRotation(axis, radians);
+        turned = moved(shape, turn);
+    }
+    if (by.Magnitude() > 1e-9)
+        result =
+            fuse(result,
+                 swept(turned, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakePrism(f, by).Shape(); }));
+    return result;
+}
+
 /// The volume a shape sweeps as part p moves from its modelled pose to configuration k (4.5.1). Motions turn
 /// first, then slide (Motion.h), so with at most one hinge turning in p's chain the sweep is exact: that
 /// hinge's revolution, then a prism along the slides' common displacement; otherwise (double pivots, turns
@@ -258,20 +276,12 @@ TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
         }
     }
     if (!pivots && turns <= 1) {
-        TopoDS_Shape result = shape;
-        if (turning >= 0) {
-            const double radians = poseOf(m, turning, k)->angle * kPi / 180;
-            const gp_Ax1 axis = hingeAxis(m, m.joints[turning]);
-            result = swept(
-                shape, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
-        }
         const gp_Trsf half = partMotion(m, part, k, 0.5), whole = partMotion(m, part, k, 1);
         const gp_Vec by((whole * half.Inverted()).TranslationPart());
-        if (by.Magnitude() > 1e-9)
-            result = fuse(result, swept(moved(shape, half), [&](const TopoDS_Face& f) {
-                              return BRepPrimAPI_MakePrism(f, by).Shape();
-                          }));
-        return result;
+        if (turning < 0)
+            return turnedThenShifted(shape, gp_Ax1(), 0, by);
+        return turnedThenShifted(shape, hingeAxis(m, m.joints[turning]),
+                                 poseOf(m, turning, k)->angle * kPi / 180, by);
     }
     std::vector<TopoDS_Shape> poses;
     for (int step = 0; step <= 48; ++step)
@@ -284,20 +294,10 @@ TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
 TopoDS_Shape hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
                         const TopoDS_Shape& shape)
 {
-    const gp_Ax1 axis = hingeAxis(m, joint);
-    const double radians = pose.angle * kPi / 180;
-    TopoDS_Shape result =
-        swept(shape, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
-    if (joint.slides() && std::abs(pose.offset) > 1e-9) {
-        gp_Trsf turn;
-        turn.SetRotation(axis, radians);
-        gp_Vec by(0, 0, 0);
+    gp_Vec by(0, 0, 0);
+    if (joint.slides())
         by.SetCoord(joint.axis + 1, pose.offset);
-        result = fuse(result, swept(moved(shape, turn), [&](const TopoDS_Face& f) {
-                          return BRepPrimAPI_MakePrism(f, by).Shape();
-                      }));
-    }
-    return result;
+    return turnedThenShifted(shape, hingeAxis(m, joint), pose.angle * kPi / 180, by);
 }
 
 /// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
@@ -356,17 +356,24 @@ int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
     return best;
 }
 
-/// A rod along a hinge's axis, made a slot over a sliding hinge's travel (its offsets in every configuration)
-/// by the rod at both ends of the travel and the box between: slotted yokes and their clearances.
-TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
+/// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
+std::pair<double, double> travel(const Model& m, int j)
 {
-    const Joint& joint = m.joints[j];
     double low = 0, high = 0;
-    for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
+    for (size_t k = 0; k < m.configurations.size() && m.joints[j].slides(); ++k)
         if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
             low = std::min(low, pose->offset);
             high = std::max(high, pose->offset);
         }
+    return {low, high};
+}
+
+/// A rod along a hinge's axis, made a slot over a sliding hinge's travel by the rod at both ends of the
+/// travel and the box between: slotted yokes and their clearances.
+TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
+{
+    const Joint& joint = m.joints[j];
+    const auto [low, high] = travel(m, j);
     if (high - low < 1e-9)
         return rod(at, along, from, to, r);
     auto shifted = [&](double by) {
@@ -409,22 +416,16 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     // around them as they stand in its own frame along the way.
     const TopoDS_Shape yokes = fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
                                     slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g));
-    // In its frame they turn back about the axis, then (turned back) slide back: a revolution and a prism.
+    // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis.
     TopoDS_Shape around = yokes;
     for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
         if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
-            gp_Vec back(0, 0, 0);
-            back.SetCoord(joint.axis + 1, -pose->offset);
             gp_Trsf turnBack;
             turnBack.SetRotation(axis, -pose->angle * kPi / 180);
-            around = fuse(around, swept(yokes, [&](const TopoDS_Face& f) {
-                              return BRepPrimAPI_MakeRevol(f, axis, -pose->angle * kPi / 180).Shape();
-                          }));
+            gp_Vec back(0, 0, 0);
+            back.SetCoord(joint.axis + 1, -pose->offset);
             around = fuse(
-                around,
-                moved(swept(yokes,
-                            [&](const TopoDS_Face& f) { return BRepPrimAPI_MakePrism(f, back).Shape(); }),
-                      turnBack));
+                around, turnedThenShifted(yokes, axis, -pose->angle * kPi / 180, back.Transformed(turnBack)));
         }
     part = cut(part, around);
     other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
@@ -522,12 +523,7 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         along.SetCoord(a + 1, length);
         return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), along).Shape();
     };
-    double low = 0, high = 0;  // the travel
-    for (size_t k = 0; k < m.configurations.size(); ++k)
-        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
-            low = std::min(low, pose->offset);
-            high = std::max(high, pose->offset);
-        }
+    const auto [low, high] = travel(m, j);
     const int q = function::partOf(m, base);
     shapes[q] = fuse(shapes[q], tongue(0, from, to - from));
     // In the part's frame the tongue runs back over the travel; the groove is open at the part's ends.
@@ -552,19 +548,13 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
     const double link = r.outer, head = std::max(1.0, r.outer / 3);
-    auto point = [&](const std::array<double, 2>& uw) {
-        gp_Pnt p;
-        p.SetCoord(n + 1, face);
-        p.SetCoord(plane.u + 1, uw[0]);
-        p.SetCoord(plane.w + 1, uw[1]);
-        return p;
-    };
+
     // Along the normal, from the face outwards: [a, b] as a rod's from/to whatever the side.
     auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
         const double a = face + outward * from, b = face + outward * to;
         return rod(p, n, std::min(a, b), std::max(a, b), radius);
     };
-    const gp_Pnt pivot = point(plane.pivot), base = point(plane.basePivot);
+    const auto [pivot, base] = pivotPoints(m, joint);
     for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})
         shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
                                                span(p, 2 * g + link, 2 * g + link + head, r.outer)));
@@ -617,6 +607,18 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
 }
 
 }  // namespace
+
+Model solvedToPrint(const Model& model, double scale)
+{
+    const function::SolveResult solved = function::solve(model);
+    if (!solved.solved) {
+        std::string names;
+        for (const std::string& name : solved.conflict)
+            names += (names.empty() ? "" : ", ") + ("'" + name + "'");
+        throw std::runtime_error("the model does not solve: " + names + " cannot hold together");
+    }
+    return function::scaled(solved.model, scale);
+}
 
 Printable makePrintable(const Model& m, const Printer& printer)
 {

@@ -31,6 +31,10 @@ struct Printable {
     std::vector<std::string> notes;    ///< joints left without geometry, and why
 };
 
+/// The model solved (both stages) and scaled (a 1:5 prototype: 0.2) for printing; std::runtime_error naming
+/// the relationships that cannot hold together when it does not solve.
+function::Model solvedToPrint(const function::Model& model, double scale);
+
 /// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too
 /// thin for its geometry at this gap.
 Printable makePrintable(const function::Model& solved, const Printer& printer);

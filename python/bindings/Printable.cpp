@@ -1,7 +1,6 @@
 // Bindings of print-in-place geometry (thesis 4.5): bodies cross as BREP text, which FreeCAD's Part module
 // reads (Part.Shape().importBrepFromString).
 #include "Bindings.h"
-#include "Function/Solve.h"
 #include "IO/Json.h"
 #include "IO/PrintFiles.h"
 #include "IO/WorkslikeFormat.h"
@@ -23,20 +22,20 @@ namespace fabguide::bindings {
 
 namespace {
 
-/// The model solved (raises PrintableError naming what conflicts) and made printable.
-printable::Printable made(const py::object& model, double gap, double scale)
+/// The model solved and scaled, and its printable bodies (RuntimeError naming what conflicts).
+struct Made {
+    function::Model model;
+    printable::Printable printable;
+};
+
+Made made(const py::object& model, double gap, double scale)
 {
     const function::Model read = io::readWorkslike(toJson(model));
     py::gil_scoped_release release;
-    const function::SolveResult solved = function::solve(read);
-    if (!solved.solved) {
-        std::string names;
-        for (const std::string& n : solved.conflict)
-            names += (names.empty() ? "" : ", ") + n;
-        throw std::runtime_error("the mechanism does not solve: " + names + " cannot hold together");
-    }
     try {
-        return printable::makePrintable(function::scaled(solved.model, scale), {gap});
+        function::Model solved = printable::solvedToPrint(read, scale);
+        printable::Printable p = printable::makePrintable(solved, {gap});
+        return {std::move(solved), std::move(p)};
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
     }
@@ -53,7 +52,8 @@ std::string brep(const TopoDS_Shape& shape)
 /// "invalid"}
 py::dict printableBodies(const py::object& model, double gap, bool check, double scale)
 {
-    const printable::Printable p = made(model, gap, scale);
+    const Made m = made(model, gap, scale);
+    const printable::Printable& p = m.printable;
     py::list bodies, sweeps;
     for (const printable::Body& b : p.bodies) {
         GProp_GProps volume;
@@ -72,12 +72,10 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["sweeps"] = sweeps;
     out["notes"] = p.notes;
     if (check) {
-        const function::Model solved =
-            function::scaled(function::solve(io::readWorkslike(toJson(model))).model, scale);
         printable::Check c;
         {
             py::gil_scoped_release release;
-            c = printable::check(solved, p, gap);
+            c = printable::check(m.model, p, gap);  // the model the bodies were made from, solved once
         }
         out["clearance"] = c.clearance;
         out["where"] = c.where;
@@ -89,9 +87,9 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
 std::vector<std::string> exportPrintable(const py::object& model, double gap, const std::string& folder,
                                          double scale)
 {
-    const printable::Printable p = made(model, gap, scale);
+    const Made m = made(model, gap, scale);
     py::gil_scoped_release release;
-    return io::writePrintFiles(p, folder);
+    return io::writePrintFiles(m.printable, folder);
 }
 
 }  // namespace
