@@ -39,9 +39,7 @@ def import_model(doc, data, label="Mechanism"):
             edge = (box, [cuboids.edge_element(box, [f.rsplit(".", 1)[1] for f in j["edge"]])])
         pivots = None
         if j["type"] == "double_pivot":
-            pivots = [(boxes[j[key][0].rsplit(".", 1)[0]],
-                       "Face{}".format(cuboids.SIDES.index(j[key][0].rsplit(".", 1)[1]) + 1),
-                       FreeCAD.Vector(*j[key][1])) for key in ("pivot", "base_pivot")]
+            pivots = [box_face(boxes, j[key][0]) + (FreeCAD.Vector(*j[key][1]),) for key in ("pivot", "base_pivot")]
         made_joints[j["name"]] = joints.create(doc, j["type"], made_parts[j["part"]], edge=edge, axis=j.get("axis"),
                                                base=made_parts.get(j.get("base")), label=j["name"], pivots=pivots)
         members.append(made_joints[j["name"]])
@@ -63,11 +61,15 @@ def import_model(doc, data, label="Mechanism"):
     return mech
 
 
+def box_face(boxes, name):
+    """"lid.top" in the file → (the box made for cuboid "lid", "Face6")."""
+    cuboid, side = name.rsplit(".", 1)
+    return boxes[cuboid], "Face{}".format(cuboids.SIDES.index(side) + 1)
+
+
 def relationship_fields(r, made_parts, boxes, rename):
     """The relationship object's properties from its *.workslike.json entry."""
-    def faces(names):
-        return [(boxes[n.rsplit(".", 1)[0]], "Face{}".format(cuboids.SIDES.index(n.rsplit(".", 1)[1]) + 1))
-                for n in names]
+    
 
     def pairs(r):
         return {"Pairs": [rename(a) + relationships.ARROW + rename(b) for a, b in r["pairs"]]} if "pairs" in r else {}
@@ -95,7 +97,7 @@ def relationship_fields(r, made_parts, boxes, rename):
                     Cavity=boxes.get(r.get("cavity")), Portion=[boxes[n] for n in r.get("portion", [])],
                     **{"Just" + a.upper(): True for a in axes})
     if kind == "flush":
-        return dict(Faces=faces(r["faces"]))
+        return dict(Faces=[box_face(boxes, n) for n in r["faces"]])
     return dict(Left=quantities(r["left"]), Right=quantities(r["right"]), Offset=r.get("offset", 0),
                 Relation="Equal" if r.get("relation", "equal") == "equal" else "AtMost")
 
