@@ -104,6 +104,15 @@ bool Fields::flag(const std::string& key, bool fallback) const
     return value ? value->get<bool>() : fallback;
 }
 
+void Fields::header(const std::string& format, int version) const
+{
+    if (text("format", format) != format)
+        throw FormatError("format: expected \"" + format + "\", got \"" + text("format") + "\"");
+    if (const int given = integer("version", version); given != version)
+        throw FormatError("version: this FabGuide reads version " + std::to_string(version) +
+                          ", the file is version " + std::to_string(given));
+}
+
 const nlohmann::json& Fields::array(const std::string& key, bool optional) const
 {
     static const nlohmann::json empty = nlohmann::json::array();

@@ -34,6 +34,8 @@ public:
     std::string text(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
     /// true or false; `fallback` when absent.
     bool flag(const std::string& key, bool fallback) const;
+    /// A document's "format" (when given) must be `format` and its "version" (when given) `version`.
+    void header(const std::string& format, int version) const;
     /// The array at key (required unless `optional`, then empty when absent).
     const nlohmann::json& array(const std::string& key, bool optional = false) const;
     std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }

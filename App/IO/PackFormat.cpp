@@ -143,12 +143,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
 material::PackProblem readPackProblem(const nlohmann::json& document)
 {
     const Fields root(document, "");
-    if (root.text("format", "fabguide.pack") != "fabguide.pack")
-        throw FormatError("format: expected \"fabguide.pack\", got \"" + root.text("format") + "\"");
-    const int version = root.integer("version", kPackFormatVersion);
-    if (version != kPackFormatVersion)
-        throw FormatError("version: this FabGuide reads version " + std::to_string(kPackFormatVersion) +
-                          ", the file is version " + std::to_string(version));
+    root.header("fabguide.pack", kPackFormatVersion);
     material::PackProblem problem;
     if (root.has("settings")) {
         const Fields settings(document["settings"], "settings");

@@ -502,12 +502,7 @@ nlohmann::json partNames(const function::Model& model, const std::vector<int>& p
 function::Model readWorkslike(const nlohmann::json& document)
 {
     const Fields root(document, "");
-    if (root.text("format", "fabguide.workslike") != "fabguide.workslike")
-        throw FormatError("format: expected \"fabguide.workslike\", got \"" + root.text("format") + "\"");
-    if (const int version = root.integer("version", kWorkslikeFormatVersion);
-        version != kWorkslikeFormatVersion)
-        throw FormatError("version: this FabGuide reads version " + std::to_string(kWorkslikeFormatVersion) +
-                          ", the file is version " + std::to_string(version));
+    root.header("fabguide.workslike", kWorkslikeFormatVersion);
     function::Model model;
     model.minimumSize = root.number("minimum_size", 1.0, 0.0);
     const nlohmann::json& parts = root.array("parts");
