@@ -278,6 +278,20 @@ std::vector<int> partList(const function::Model& model, const Fields& r, const s
     return parts;
 }
 
+/// A relationship's "pairs" [["a.side", "b.side"], …] as face pairs; `shape` is what each must look like.
+std::vector<std::pair<Face, Face>> facePairs(const function::Model& model, const Fields& r, const char* shape)
+{
+    const nlohmann::json& pairs = r.array("pairs");
+    std::vector<std::pair<Face, Face>> out;
+    for (size_t k = 0; k < pairs.size(); ++k) {
+        const std::string here = at(r.pathOf("pairs"), k);
+        if (!pairs[k].is_array() || pairs[k].size() != 2)
+            throw FormatError(here + ": must be " + shape);
+        out.push_back({face(model, pairs[k][0], here + "[0]"), face(model, pairs[k][1], here + "[1]")});
+    }
+    return out;
+}
+
 /// Support (thesis 4.2.3): "pairs" [["leg.top", "top.bottom"], …] as given, or inferred (4.3.3) when absent.
 function::Support readSupport(const function::Model& model, const Fields& r, const std::string& name,
                               int configuration)
@@ -292,15 +306,12 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
                               " mm above a supporting top face");
         return s;
     }
-    const nlohmann::json& pairs = r.array("pairs");
+    const auto pairs = facePairs(model, r, "[\"supporting.top\", \"supported.bottom\"]");
     for (size_t k = 0; k < pairs.size(); ++k) {
-        const std::string here = at(r.pathOf("pairs"), k);
-        if (!pairs[k].is_array() || pairs[k].size() != 2)
-            throw FormatError(here + ": must be [\"supporting.top\", \"supported.bottom\"]");
-        const Face top = face(model, pairs[k][0], here + "[0]"),
-                   bottom = face(model, pairs[k][1], here + "[1]");
+        const auto& [top, bottom] = pairs[k];
         if (top.side != Side::Top || bottom.side != Side::Bottom)
-            throw FormatError(here + ": a supporting top face rests under a supported bottom face");
+            throw FormatError(at(r.pathOf("pairs"), k) +
+                              ": a supporting top face rests under a supported bottom face");
         s.pairs.push_back({top.cuboid, bottom.cuboid});
     }
     return s;
@@ -390,13 +401,7 @@ function::Cover readCover(const function::Model& model, const Fields& r, const s
                               show(distance) + " mm, overlapping it by half");
         return c;
     }
-    const nlohmann::json& pairs = r.array("pairs");
-    for (size_t k = 0; k < pairs.size(); ++k) {
-        const std::string here = at(r.pathOf("pairs"), k);
-        if (!pairs[k].is_array() || pairs[k].size() != 2)
-            throw FormatError(here + ": must be [\"covering face\", \"covered face\"]");
-        c.pairs.push_back({face(model, pairs[k][0], here + "[0]"), face(model, pairs[k][1], here + "[1]")});
-    }
+    c.pairs = facePairs(model, r, "[\"covering face\", \"covered face\"]");
     for (const function::CoverComponent& component : function::components(c.pairs))
         for (const auto* faces : {&component.covering, &component.covered})
             for (const Face& f : *faces)
