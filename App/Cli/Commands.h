@@ -9,5 +9,6 @@ void addVersionCommand(CLI::App& app);
 void addPackCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
 void addPrintableCommand(CLI::App& app);
+void addOptimiseCommand(CLI::App& app);
 
 }  // namespace fabguide::cli

@@ -17,6 +17,7 @@ int main(int argc, char** argv)
     fabguide::cli::addPackCommand(app);
     fabguide::cli::addSolveCommand(app);
     fabguide::cli::addPrintableCommand(app);
+    fabguide::cli::addOptimiseCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -113,6 +113,14 @@ void Fields::header(const std::string& format, int version) const
                           ", the file is version " + std::to_string(given));
 }
 
+Eigen::Vector3d Fields::vector3(const std::string& key) const
+{
+    const nlohmann::json& value = array(key);
+    if (value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
+        throw FormatError(pathOf(key) + ": must be [x, y, z], got " + value.dump());
+    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
 const nlohmann::json& Fields::array(const std::string& key, bool optional) const
 {
     static const nlohmann::json empty = nlohmann::json::array();

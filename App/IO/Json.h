@@ -1,6 +1,7 @@
 // Reading JSON model files with errors that name the file, the position and the field.
 #pragma once
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -36,6 +37,8 @@ public:
     bool flag(const std::string& key, bool fallback) const;
     /// A document's "format" (when given) must be `format` and its "version" (when given) `version`.
     void header(const std::string& format, int version) const;
+    /// A vector [x, y, z].
+    Eigen::Vector3d vector3(const std::string& key) const;
     /// The array at key (required unless `optional`, then empty when absent).
     const nlohmann::json& array(const std::string& key, bool optional = false) const;
     std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }

@@ -29,29 +29,6 @@ std::vector<int> readOrientations(const Fields& part)
     return orientations;
 }
 
-material::MasterBoard readBoard(const nlohmann::json& json, const std::string& path)
-{
-    const Fields board(json, path);
-    material::MasterBoard b;
-    b.name = board.text("name", "board");
-    b.material = board.text("material", "");
-    b.width = board.positive("width");
-    b.height = board.positive("height");
-    b.thickness = board.number("thickness", 0.0, 0.0);
-    b.count = board.integer("count", 1);
-    const std::string grain = board.text("grain", "none");
-    if (grain != "none" && grain != "width" && grain != "height")
-        throw FormatError(board.pathOf("grain") + ": must be \"none\", \"width\" or \"height\", got \"" +
-                          grain + "\"");
-    b.grain = grain == "width"    ? material::Grain::AlongWidth
-              : grain == "height" ? material::Grain::AlongHeight
-                                  : material::Grain::None;
-    if (b.count == 0 || b.count < -1)
-        throw FormatError(board.pathOf("count") +
-                          ": must be a positive number of boards, or -1 for unlimited");
-    return b;
-}
-
 /// A polygon as [[x, y], ...]: at least 3 points, not flat; returned counter-clockwise if `outer`.
 geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& path, bool outer)
 {
@@ -79,14 +56,6 @@ geometry::Outline readOutline(const Fields& part)
     for (size_t k = 0; k < holes.size(); ++k)
         outline.holes.push_back(readPolygon(holes[k], at(part.pathOf("holes"), k), false));
     return outline;
-}
-
-Eigen::Vector3d readVector(const Fields& fields, const std::string& key)
-{
-    const nlohmann::json& value = fields.array(key);
-    if (value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
-        throw FormatError(fields.pathOf(key) + ": must be [x, y, z], got " + value.dump());
-    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
 }
 
 nlohmann::json points(const geometry::Polygon& polygon)
@@ -140,28 +109,65 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
 
 }  // namespace
 
+material::PackSettings readSettings(const nlohmann::json& document)
+{
+    material::PackSettings result;
+    if (!document.contains("settings"))
+        return result;
+    const Fields settings(document["settings"], "settings");
+    result.resolution = settings.number("resolution", 0.5);
+    if (!(result.resolution > 0))
+        throw FormatError("settings.resolution: must be greater than 0");
+    result.kerf = settings.number("kerf", 0.0, 0.0);
+    result.spacing = settings.number("spacing", 0.0, 0.0);
+    result.trim = settings.number("trim", 0.0, 0.0);
+    return result;
+}
+
+material::MasterBoard readMasterBoard(const nlohmann::json& json, const std::string& path)
+{
+    const Fields board(json, path);
+    material::MasterBoard b;
+    b.name = board.text("name", "board");
+    b.material = board.text("material", "");
+    b.width = board.positive("width");
+    b.height = board.positive("height");
+    b.thickness = board.number("thickness", 0.0, 0.0);
+    b.count = board.integer("count", 1);
+    const std::string grain = board.text("grain", "none");
+    if (grain != "none" && grain != "width" && grain != "height")
+        throw FormatError(board.pathOf("grain") + ": must be \"none\", \"width\" or \"height\", got \"" +
+                          grain + "\"");
+    b.grain = grain == "width"    ? material::Grain::AlongWidth
+              : grain == "height" ? material::Grain::AlongHeight
+                                  : material::Grain::None;
+    if (b.count == 0 || b.count < -1)
+        throw FormatError(board.pathOf("count") +
+                          ": must be a positive number of boards, or -1 for unlimited");
+    return b;
+}
+
+std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& document)
+{
+    const nlohmann::json& boards = Fields(document, "").array("boards");
+    std::vector<material::MasterBoard> result;
+    for (size_t i = 0; i < boards.size(); ++i)
+        result.push_back(readMasterBoard(boards[i], at("boards", i)));
+    if (result.empty())
+        throw FormatError("boards: at least one master board is needed");
+    return result;
+}
+
 material::PackProblem readPackProblem(const nlohmann::json& document)
 {
     const Fields root(document, "");
     root.header("fabguide.pack", kPackFormatVersion);
     material::PackProblem problem;
-    if (root.has("settings")) {
-        const Fields settings(document["settings"], "settings");
-        problem.settings.resolution = settings.number("resolution", 0.5);
-        if (!(problem.settings.resolution > 0))
-            throw FormatError("settings.resolution: must be greater than 0");
-        problem.settings.kerf = settings.number("kerf", 0.0, 0.0);
-        problem.settings.spacing = settings.number("spacing", 0.0, 0.0);
-        problem.settings.trim = settings.number("trim", 0.0, 0.0);
-    }
-    const nlohmann::json& boards = root.array("boards");
-    for (size_t i = 0; i < boards.size(); ++i)
-        problem.boards.push_back(readBoard(boards[i], at("boards", i)));
+    problem.settings = readSettings(document);
+    problem.boards = readMasterBoards(document);
     const nlohmann::json& parts = root.array("parts");
     for (size_t i = 0; i < parts.size(); ++i)
         problem.parts.push_back(readPart(parts[i], at("parts", i), i));
-    if (problem.boards.empty())
-        throw FormatError("boards: at least one master board is needed");
     if (problem.parts.empty())
         throw FormatError("parts: at least one part is needed");
     return problem;
@@ -202,7 +208,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
     material::Layout layout;
     const nlohmann::json& boards = root.array("boards");
     for (size_t i = 0; i < boards.size(); ++i) {
-        layout.sheets.push_back(readBoard(boards[i], at("boards", i)));
+        layout.sheets.push_back(readMasterBoard(boards[i], at("boards", i)));
         layout.sheetArea += layout.sheets.back().width * layout.sheets.back().height;
     }
     const nlohmann::json& placements = root.array("placements");
@@ -242,8 +248,8 @@ std::vector<material::Board3> readBoards3(const nlohmann::json& document)
     std::vector<material::Board3> boards;
     for (size_t i = 0; i < document.size(); ++i) {
         const Fields board(document[i], at("boards", i));
-        material::Board3 b{board.text("id"),       readOutline(board),     readVector(board, "origin"),
-                           readVector(board, "u"), readVector(board, "v"), board.positive("thickness")};
+        material::Board3 b{board.text("id"),       readOutline(board),     board.vector3("origin"),
+                           board.vector3("u"), board.vector3("v"), board.positive("thickness")};
         if (std::abs(b.u.norm() - 1) > 1e-6 || std::abs(b.v.norm() - 1) > 1e-6 ||
             std::abs(b.u.dot(b.v)) > 1e-6)
             throw FormatError(board.pathOf("u") + ", v: must be perpendicular unit vectors");

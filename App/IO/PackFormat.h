@@ -11,6 +11,12 @@ namespace fabguide::io {
 
 constexpr int kPackFormatVersion = 1;
 
+/// The "settings" of a `*.pack.json` or `*.flatpack.json` document (defaults when absent).
+material::PackSettings readSettings(const nlohmann::json& document);
+
+/// The "boards" (master boards) of a `*.pack.json` or `*.flatpack.json` document; at least one.
+std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& document);
+
 /// Reads a `*.pack.json` document. Throws FormatError naming the offending field.
 material::PackProblem readPackProblem(const nlohmann::json& document);
 

@@ -11,7 +11,15 @@ Footprint Footprint::rectangle(int width, int height)
     if (width <= 0 || height <= 0)
         throw std::invalid_argument("a part must be at least one grid cell wide and high, got " +
                                     std::to_string(width) + " x " + std::to_string(height));
-    return Footprint(width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height, 1));
+    Footprint solid;
+    solid.width_ = width;
+    solid.height_ = height;
+    solid.area_ = static_cast<long>(width) * height;
+    solid.left_.assign(height, 0);
+    solid.right_.assign(height, width);
+    solid.bottom_.assign(width, 0);
+    solid.top_.assign(width, height);
+    return solid;
 }
 
 Footprint::Footprint(int width, int height, std::vector<std::uint8_t> cells)
@@ -36,10 +44,14 @@ Footprint::Footprint(int width, int height, std::vector<std::uint8_t> cells)
             }
     if (area_ == 0)
         throw std::invalid_argument("footprint has no filled cell");
+    if (area_ == static_cast<long>(width_) * height_)
+        cells_.clear();  // solid: one representation for every full rectangle
 }
 
 Footprint Footprint::rotated90() const
 {
+    if (cells_.empty())
+        return rectangle(height_, width_);
     // Counter-clockwise: cell (x, y) goes to (height - 1 - y, x).
     std::vector<std::uint8_t> turned(cells_.size());
     for (int y = 0; y < height_; ++y)

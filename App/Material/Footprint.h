@@ -13,7 +13,7 @@ namespace fabguide::material {
 /// An empty row has left = width, right = 0 (likewise columns), so it never constrains.
 class Footprint {
 public:
-    /// A full w × h rectangle of cells.
+    /// A full w × h rectangle of cells, stored as its profiles only (design exploration makes many).
     static Footprint rectangle(int width, int height);
     /// From a row-major bitmap (row 0 at the bottom); throws std::invalid_argument if empty.
     Footprint(int width, int height, std::vector<std::uint8_t> cells);
@@ -21,7 +21,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     long area() const { return area_; }
-    bool filled(int x, int y) const { return cells_[static_cast<std::size_t>(y) * width_ + x] != 0; }
+    bool filled(int x, int y) const
+    {
+        return cells_.empty() || cells_[static_cast<std::size_t>(y) * width_ + x] != 0;
+    }
 
     const std::vector<int>& left() const { return left_; }
     const std::vector<int>& right() const { return right_; }
@@ -37,9 +40,10 @@ public:
     }
 
 private:
-    int width_;
-    int height_;
-    std::vector<std::uint8_t> cells_;
+    Footprint() = default;
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<std::uint8_t> cells_;  ///< row-major; empty when every cell is filled (a rectangle)
     long area_ = 0;
     std::vector<int> left_, right_, bottom_, top_;
 };

@@ -7,8 +7,6 @@
 
 namespace fabguide::material {
 
-namespace {
-
 RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 {
     RasterPart part{spec.id, {}, {}, spec.followsGrain};
@@ -40,8 +38,6 @@ void checkSettings(const PackProblem& problem)
     if (problem.parts.empty())
         throw std::invalid_argument("parts: nothing to lay out");
 }
-
-}  // namespace
 
 namespace {
 
@@ -89,49 +85,41 @@ PartSpec rectangularPart(std::string id, double width, double height, int quanti
     return {std::move(id), geometry::rectangle(width, height), quantity, std::move(orientations), {}, {}};
 }
 
-Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+RasterProblem rasterise(const PackProblem& problem)
 {
-    const auto started = std::chrono::steady_clock::now();
-    checkSettings(problem);
     const PackSettings& settings = problem.settings;
     const double clearance = settings.kerf + settings.spacing;
-
-    std::vector<RasterPart> parts;  // one per unit of demand
-    std::vector<int> specOf;
+    RasterProblem raster;
     long stripCells = 0;
     for (size_t i = 0; i < problem.parts.size(); ++i)
         for (int q = 0; q < problem.parts[i].quantity; ++q) {
-            parts.push_back(rasterPart(problem.parts[i], settings));
-            specOf.push_back(static_cast<int>(i));
-            stripCells += std::max(parts.back().shapes[0].width(), parts.back().shapes[0].height());
+            raster.parts.push_back(rasterPart(problem.parts[i], settings));
+            raster.specOf.push_back(static_cast<int>(i));
+            stripCells += std::max(raster.parts.back().shapes[0].width(), raster.parts.back().shapes[0].height());
         }
-
-    std::vector<BoardStock> stock;
     for (const MasterBoard& board : problem.boards)
-        stock.push_back({cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
-                         problem.strip
-                             ? static_cast<int>(stripCells)
-                             : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
-                         problem.strip ? 1 : board.count, board.grain});
+        raster.stock.push_back(
+            {cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
+             problem.strip ? static_cast<int>(stripCells)
+                           : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
+             problem.strip ? 1 : board.count, board.grain});
     if (problem.strip)
-        stock.resize(1);
+        raster.stock.resize(1);
+    return raster;
+}
 
-    OrderingSearchOptions options = search;
-    options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
-    options.timeLimit =
-        std::max(0.0, options.timeLimit -
-                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-    const GridLayout grid = searchFromStarts(parts, stock, options);
-
+Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster)
+{
     if (!grid.unplaced.empty()) {
-        const std::string first = "'" + parts[grid.unplaced.front()].name + "'";
+        const std::string first = "'" + raster.parts[grid.unplaced.front()].name + "'";
         const size_t more = grid.unplaced.size() - 1;
         throw PackingError("not enough master boards: " +
                            (more ? "part " + first + " and " + std::to_string(more) + " more do not fit"
                                  : "part " + first + " does not fit") +
                            " on the boards available");
     }
-
+    const PackSettings& settings = problem.settings;
+    const double clearance = settings.kerf + settings.spacing;
     Layout layout;
     const double tau = settings.resolution;
     for (size_t s = 0; s < grid.stock.size(); ++s) {
@@ -145,15 +133,28 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
         layout.boundingArea += usedWidth * (grid.usedHeight[s] * tau - clearance);
     }
     for (const Placed& p : grid.placed) {
-        const PartSpec& spec = problem.parts[specOf[p.part]];
-        const int rotation = parts[p.part].rotations[p.shape];
+        const PartSpec& spec = problem.parts[raster.specOf[p.part]];
+        const int rotation = raster.parts[p.part].rotations[p.shape];
         const bool turned = rotation % 180 != 0;
         layout.placements.push_back(
-            {specOf[p.part], p.sheet, settings.trim + p.x * tau, settings.trim + p.y * tau, rotation,
+            {raster.specOf[p.part], p.sheet, settings.trim + p.x * tau, settings.trim + p.y * tau, rotation,
              turned ? spec.height() : spec.width(), turned ? spec.width() : spec.height()});
         layout.partArea += geometry::area(spec.outline);
     }
     return layout;
+}
+
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+{
+    const auto started = std::chrono::steady_clock::now();
+    checkSettings(problem);
+    const RasterProblem raster = rasterise(problem);
+    OrderingSearchOptions options = search;
+    options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
+    options.timeLimit =
+        std::max(0.0, options.timeLimit -
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    return inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
 }
 
 }  // namespace fabguide::material

@@ -74,6 +74,25 @@ struct Layout {
     double wasteArea() const { return sheetArea - partArea; }
 };
 
+/// Throws std::invalid_argument naming a bad setting, or when there are no boards or no parts.
+void checkSettings(const PackProblem& problem);
+
+/// A part's allowed orientations rasterised at the settings' resolution with kerf + spacing as clearance,
+/// identical shapes once (a turned one kept apart when the part follows the grain).
+RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings);
+
+/// A problem on the material-space grid: one RasterPart per unit of demand, the part (spec) each unit is
+/// of, and the master boards in cells (trim removed, clearance added back at the far edges).
+struct RasterProblem {
+    std::vector<RasterPart> parts;
+    std::vector<int> specOf;
+    std::vector<BoardStock> stock;
+};
+RasterProblem rasterise(const PackProblem& problem);
+
+/// A grid layout of `raster` back in millimetres. Throws PackingError naming the parts left unplaced.
+Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster);
+
 /// The ordering search of `pack`: swaps from several starting orders sharing `options.timeLimit`
 /// (best-fit orders and the thesis' decreasing extent); the best layout found.
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,

@@ -1,0 +1,98 @@
+// `fabguide optimise`: design variations that waste less material (thesis 5.4, MINWASTAGE).
+#include "Cli/Commands.h"
+#include "IO/CutSheetFiles.h"
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace fabguide::cli {
+
+namespace {
+
+struct OptimiseArguments {
+    std::string input;
+    std::string output;
+    material::MinWastageOptions options;
+};
+
+/// Layout JSON and SVG cut sheets of one design into out/<name>.layout.json and out/<name>/sheet-N.svg.
+nlohmann::json writeLayout(const material::MaterialSpace& material, const material::DesignLayout& d,
+                           const std::filesystem::path& out, const std::string& name)
+{
+    const material::PackProblem problem = material.problem(d.sizes);
+    const material::Layout layout = material.inMillimetres(d.layout, d.sizes);
+    io::writeJsonFile((out / (name + ".layout.json")).string(),
+                      io::layoutToJson(layout, problem, io::PartNames::Ids));
+    nlohmann::json svgs = nlohmann::json::array();
+    for (const std::string& path : io::writeCutSheets(layout, problem, (out / name).string(), "", ""))
+        svgs.push_back(std::filesystem::relative(path, out).string());
+    return {{"layout", name + ".layout.json"}, {"svg", svgs}};
+}
+
+void run(const OptimiseArguments& args)
+{
+    const nlohmann::json document = io::readJsonFile(args.input);
+    const io::FlatpackDesign flatpack = io::readFlatpack(document);
+    const material::ConstrainedDesign design(flatpack.design);
+    const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
+    material::MinWastageOptions options = args.options;
+    options.progress = [](double done, double best) {
+        std::fprintf(stderr, "\r%3.0f %%  best usage %.4f", 100 * done, best);
+    };
+    const material::Exploration exploration = material::minWastage(design, material, options);
+    std::fprintf(stderr, "\n");
+
+    const std::filesystem::path out(args.output);
+    std::filesystem::create_directories(out);
+    nlohmann::json summary = {{"usage_before", exploration.usageBefore()},
+                              {"before", writeLayout(material, exploration.start, out, "before")},
+                              {"seconds", exploration.seconds},
+                              {"stopped", exploration.stopped},
+                              {"suggestions", nlohmann::json::array()}};
+    std::printf("usage before  %.4f  (%zu parts)\n", exploration.usageBefore(), flatpack.design.boards.size());
+    for (size_t k = 0; k < exploration.suggestions.size(); ++k) {
+        const material::Suggestion& s = exploration.suggestions[k];
+        const std::string name = "suggestion-" + std::to_string(k + 1);
+        io::writeJsonFile((out / (name + ".flatpack.json")).string(),
+                          io::suggestionDocument(document, flatpack.design, s));
+        nlohmann::json entry = writeLayout(material, s.result, out, name);
+        entry["usage_after"] = s.usage();
+        entry["file"] = name + ".flatpack.json";
+        entry["path_length"] = s.path.size();
+        summary["suggestions"].push_back(entry);
+        std::printf("suggestion %zu  %.4f -> %.4f  %s\n", k + 1, exploration.usageBefore(), s.usage(),
+                    (out / entry["file"].get<std::string>()).c_str());
+    }
+    if (exploration.suggestions.empty())
+        std::printf("no design variation found that wastes less\n");
+    std::printf("seconds       %.2f%s\n", exploration.seconds, exploration.stopped ? " (stopped at the time limit)" : "");
+    io::writeJsonFile((out / "summary.json").string(), summary);
+}
+
+}  // namespace
+
+void addOptimiseCommand(CLI::App& app)
+{
+    auto args = std::make_shared<OptimiseArguments>();
+    auto* cmd = app.add_subcommand("optimise", "Suggest design variations that waste less material (*.flatpack.json)");
+    cmd->alias("optimize");
+    cmd->add_option("input", args->input, "*.flatpack.json design")->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->output, "folder for the suggestions and summary.json")->required();
+    cmd->add_option("--seed", args->options.seed, "same seed, same suggestions")->capture_default_str();
+    cmd->add_option("--threads", args->options.threads, "exploration threads")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--time-limit", args->options.timeLimit, "seconds")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    cmd->add_option("--rounds", args->options.rounds, "G: rounds of ordering exploration and design improvement")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->callback([args] { run(*args); });
+}
+
+}  // namespace fabguide::cli

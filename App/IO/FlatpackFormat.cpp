@@ -1,0 +1,322 @@
+#include "IO/FlatpackFormat.h"
+
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace fabguide::io {
+
+namespace {
+
+using material::Design;
+using material::DesignConstraint;
+using material::Linear;
+
+std::string at(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
+
+int boardIndex(const Design& design, const std::string& id, const std::string& path)
+{
+    for (size_t b = 0; b < design.boards.size(); ++b)
+        if (design.boards[b].id == id)
+            return static_cast<int>(b);
+    throw FormatError(path + ": no part \"" + id + "\"");
+}
+
+int axisOf(const std::string& name, const std::string& path)
+{
+    if (name == "x" || name == "y" || name == "z")
+        return name[0] - 'x';
+    throw FormatError(path + ": axis must be x, y or z, got \"" + name + "\"");
+}
+
+/// "part.size.x", "part.centre.y", "part.min.z" or "part.max.x" as a linear expression.
+Linear reference(const Design& design, const nlohmann::json& json, const std::string& path)
+{
+    if (!json.is_string())
+        throw FormatError(path + ": must be a reference like \"top.size.x\", got " + json.dump());
+    const std::string text = json.get<std::string>();
+    const size_t last = text.rfind('.'), middle = last == std::string::npos ? last : text.rfind('.', last - 1);
+    if (middle == std::string::npos || middle == 0)
+        throw FormatError(path + ": \"" + text + "\" is not <part>.<size|centre|min|max>.<x|y|z>");
+    const int board = boardIndex(design, text.substr(0, middle), path);
+    const std::string what = text.substr(middle + 1, last - middle - 1);
+    const int axis = axisOf(text.substr(last + 1), path);
+    if (what == "size")
+        return material::sizeOf(board, axis);
+    if (what == "centre" || what == "center")
+        return material::centreOf(board, axis);
+    if (what == "min")
+        return material::lowerFace(board, axis);
+    if (what == "max")
+        return material::upperFace(board, axis);
+    throw FormatError(path + ": \"" + what + "\" in \"" + text + "\" must be size, centre, min or max");
+}
+
+std::vector<Linear> references(const Design& design, const Fields& c, const std::string& key, size_t least)
+{
+    const nlohmann::json& list = c.array(key);
+    if (list.size() < least)
+        throw FormatError(c.pathOf(key) + ": needs at least " + std::to_string(least) + " references");
+    std::vector<Linear> refs;
+    for (size_t k = 0; k < list.size(); ++k)
+        refs.push_back(reference(design, list[k], at(c.pathOf(key), k)));
+    return refs;
+}
+
+std::vector<int> partsOf(const Design& design, const Fields& c, size_t least)
+{
+    const nlohmann::json& list = c.array("parts");
+    if (list.size() < least)
+        throw FormatError(c.pathOf("parts") + ": needs at least " + std::to_string(least) + " parts");
+    std::vector<int> parts;
+    for (size_t k = 0; k < list.size(); ++k) {
+        const std::string path = at(c.pathOf("parts"), k);
+        if (!list[k].is_string())
+            throw FormatError(path + ": must be a part id");
+        parts.push_back(boardIndex(design, list[k].get<std::string>(), path));
+    }
+    return parts;
+}
+
+std::string joined(const nlohmann::json& list, const std::string& separator)
+{
+    std::string text;
+    for (size_t k = 0; k < list.size(); ++k)
+        text += (k ? separator : "") + (list[k].is_string() ? list[k].get<std::string>() : list[k].dump());
+    return text;
+}
+
+Linear sum(const std::vector<Linear>& terms)
+{
+    Linear total;
+    for (const Linear& t : terms)
+        total = total + t;
+    return total;
+}
+
+/// One entry of "constraints": equalities into design.equalities, ranges into design.bounds.
+void readConstraint(Design& design, const nlohmann::json& json, const std::string& path)
+{
+    const Fields c(json, path);
+    const std::string kind = c.text("kind");
+    const Eigen::VectorXd X = design.variables();
+    const auto named = [&](const std::string& fallback) { return c.text("name", kind + " " + fallback); };
+    const auto equal = [&](const std::string& name, const Linear& e) { design.equalities.push_back({name, e}); };
+    if (kind == "equal") {
+        const std::vector<Linear> refs = references(design, c, "refs", 2);
+        const std::string name = named(joined(c.array("refs"), " = "));
+        for (size_t k = 1; k < refs.size(); ++k)
+            equal(name, refs[k] - refs[0]);
+    } else if (kind == "sum") {
+        const Linear lhs = sum(references(design, c, "lhs", 1)), rhs = sum(references(design, c, "rhs", 1));
+        const double offset = c.number("offset", 0.0);
+        equal(named(joined(c.array("lhs"), " + ") + " = " + joined(c.array("rhs"), " + ") +
+                    (offset != 0 ? " + " + show(offset) : "")),
+              lhs - rhs - material::constant(offset));
+    } else if (kind == "fixed") {
+        const Linear ref = reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
+        const double value = c.number("value", ref.value(X));
+        equal(named(json["ref"].get<std::string>() + " = " + show(value)), ref - material::constant(value));
+    } else if (kind == "symmetric") {
+        const std::vector<Linear> refs = references(design, c, "refs", 2);
+        if (refs.size() != 2)
+            throw FormatError(c.pathOf("refs") + ": symmetric takes two references");
+        const Linear about = !c.has("about")             ? material::constant((refs[0] + refs[1]).value(X) / 2)
+                             : json["about"].is_number() ? material::constant(json["about"].get<double>())
+                                                         : reference(design, json["about"], c.pathOf("about"));
+        equal(named(joined(c.array("refs"), ", ")), refs[0] + refs[1] - about * 2.0);
+    } else if (kind == "ground") {
+        const std::vector<int> parts = partsOf(design, c, 1);
+        double lowest = std::numeric_limits<double>::infinity();
+        for (size_t b = 0; b < design.boards.size(); ++b)
+            lowest = std::min(lowest, material::lowerFace(static_cast<int>(b), 2).value(X));
+        const double level = c.number("level", lowest);
+        for (int b : parts)
+            equal(named(design.boards[b].id + " on z = " + show(level)),
+                  material::lowerFace(b, 2) - material::constant(level));
+    } else if (kind == "coplanar") {
+        const std::vector<int> parts = partsOf(design, c, 2);
+        const int normal = design.boards[parts[0]].normal;
+        for (int b : parts)
+            if (design.boards[b].normal != normal)
+                throw FormatError(path + ": " + design.boards[b].id + " is not parallel to " +
+                                  design.boards[parts[0]].id);
+        for (size_t k = 1; k < parts.size(); ++k)
+            equal(named(joined(c.array("parts"), ", ")),
+                  material::centreOf(parts[k], normal) - material::centreOf(parts[0], normal));
+    } else if (kind == "snap") {
+        const std::vector<int> parts = partsOf(design, c, 2);
+        if (parts.size() != 2)
+            throw FormatError(c.pathOf("parts") + ": snap takes two parts");
+        const material::Snapping snap = material::snapping(design, parts[0], parts[1]);
+        if (snap.equalities.empty())
+            throw FormatError(path + ": " + design.boards[parts[0]].id + " and " + design.boards[parts[1]].id +
+                              " do not touch");
+        design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
+        design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
+    } else if (kind == "range") {
+        const Linear ref = reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
+        const std::string name = json["ref"].get<std::string>();
+        const double value = ref.value(X), fraction = c.number("fraction", 0.0, 0.0);
+        const double low = c.number("min", fraction > 0 ? value * (1 - fraction) : -HUGE_VAL);
+        const double high = c.number("max", fraction > 0 ? value * (1 + fraction) : HUGE_VAL);
+        if (!c.has("min") && !c.has("max") && !(fraction > 0))
+            throw FormatError(path + ": a range needs min, max or fraction");
+        if (std::isfinite(low))
+            design.bounds.push_back({c.text("name", name + " >= " + show(low)), material::constant(low) - ref});
+        if (std::isfinite(high))
+            design.bounds.push_back({c.text("name", name + " <= " + show(high)), ref - material::constant(high)});
+    } else {
+        throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + kind +
+                          "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
+    }
+}
+
+material::DesignBoard readPart(const nlohmann::json& json, const std::string& path, double thickness)
+{
+    const Fields part(json, path);
+    material::DesignBoard board;
+    board.id = part.text("id");
+    board.size = part.vector3("size");
+    board.centre = part.vector3("position") + board.size / 2;
+    board.quantity = part.integer("quantity", 1);
+    board.followsGrain = part.flag("follow_grain", false);
+    if (board.quantity < 1)
+        throw FormatError(part.pathOf("quantity") + ": must be at least 1");
+    board.size.minCoeff(&board.normal);
+    if (board.size.minCoeff() <= 0)
+        throw FormatError(part.pathOf("size") + ": every side must be longer than 0");
+    if (std::abs(board.size[board.normal] - thickness) > 1e-6)
+        throw FormatError(part.pathOf("size") + ": its thinnest side " + show(board.size[board.normal]) +
+                          " must be the board thickness " + show(thickness));
+    return board;
+}
+
+/// Outer volume: every part within [min, max]; bounds named after the part side that would leave it.
+void readOuterVolume(Design& design, const nlohmann::json& json)
+{
+    const Fields outer(json, "outer_volume");
+    const Eigen::Vector3d low = outer.vector3("min"), high = outer.vector3("max");
+    const char* axes = "xyz";
+    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::string side = design.boards[b].id + "." + std::string("min.") + axes[axis];
+            design.bounds.push_back({"outer volume (" + side + ")",
+                                     material::constant(low[axis]) - material::lowerFace(b, axis)});
+            design.bounds.push_back({"outer volume (" + design.boards[b].id + ".max." + axes[axis] + ")",
+                                     material::upperFace(b, axis) - material::constant(high[axis])});
+        }
+}
+
+}  // namespace
+
+FlatpackDesign readFlatpack(const nlohmann::json& document)
+{
+    const Fields root(document, "");
+    root.header("fabguide.flatpack", kFlatpackFormatVersion);
+    FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};
+    const double thickness = result.boards.front().thickness;
+    for (size_t i = 1; i < result.boards.size(); ++i)
+        if (result.boards[i].thickness != thickness)
+            throw FormatError(at("boards", i) + ".thickness: every master board must be " + show(thickness) +
+                              " thick, like boards[0]");
+    if (!(thickness > 0))
+        throw FormatError("boards[0].thickness: must be greater than 0");
+    Design& design = result.design;
+    const nlohmann::json& parts = root.array("parts");
+    for (size_t i = 0; i < parts.size(); ++i) {
+        design.boards.push_back(readPart(parts[i], at("parts", i), thickness));
+        for (size_t j = 0; j < i; ++j)
+            if (design.boards[j].id == design.boards[i].id)
+                throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");
+    }
+    if (design.boards.empty())
+        throw FormatError("parts: at least one part is needed");
+
+    const Fields settings(document.contains("settings") ? document["settings"] : nlohmann::json::object(),
+                          "settings");
+    const Eigen::VectorXd X = design.variables();
+    const double shortest = settings.number("min_length", 2 * thickness, 0.0);
+    const char* axes = "xyz";
+    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
+        for (int axis : design.boards[b].inPlane()) {
+            const double least = std::min(shortest, X[material::sizeVariable(b, axis)]);
+            design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " >= " + show(least),
+                                     material::constant(least) - material::sizeOf(b, axis)});
+        }
+    if (settings.flag("snap", true))
+        for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
+            for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b) {
+                const material::Snapping snap = material::snapping(design, a, b);
+                design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
+                design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
+            }
+    const nlohmann::json& constraints = root.array("constraints", true);
+    for (size_t i = 0; i < constraints.size(); ++i)
+        readConstraint(design, constraints[i], at("constraints", i));
+    const nlohmann::json& inner = root.array("inner_volumes", true);
+    for (size_t i = 0; i < inner.size(); ++i) {
+        const Fields volume(inner[i], at("inner_volumes", i));
+        material::InnerVolume v;
+        v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
+        v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
+        v.size = volume.vector3("size");
+        v.offset = volume.vector3("position") - design.boards[v.on].centre;
+        design.innerVolumes.push_back(v);
+    }
+    if (root.has("outer_volume"))
+        readOuterVolume(design, document["outer_volume"]);
+
+    std::vector<std::string> broken = material::unsatisfied(design, X);
+    for (const std::string& name : material::ineffective(design, X))
+        broken.push_back(name);
+    if (!broken.empty()) {
+        std::string names;
+        for (size_t k = 0; k < broken.size() && k < 5; ++k)
+            names += (k ? "; " : "") + broken[k];
+        throw FormatError("the design does not satisfy its own constraints: " + names +
+                          (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
+    }
+    return result;
+}
+
+nlohmann::json partsAt(const Design& design, const Eigen::VectorXd& X)
+{
+    nlohmann::json parts = nlohmann::json::array();
+    for (const material::DesignBoard& b : design.boardsAt(X)) {
+        const Eigen::Vector3d low = b.centre - b.size / 2;
+        parts.push_back({{"id", b.id}, {"position", {low.x(), low.y(), low.z()}}, {"size", {b.size.x(), b.size.y(), b.size.z()}}});
+    }
+    return parts;
+}
+
+nlohmann::json withParts(nlohmann::json document, const Design& design, const Eigen::VectorXd& X)
+{
+    const nlohmann::json parts = partsAt(design, X);
+    for (size_t i = 0; i < parts.size(); ++i) {
+        document["parts"][i]["position"] = parts[i]["position"];
+        document["parts"][i]["size"] = parts[i]["size"];
+    }
+    return document;
+}
+
+nlohmann::json suggestionDocument(const nlohmann::json& document, const Design& design,
+                                  const material::Suggestion& suggestion, size_t steps)
+{
+    nlohmann::json out = withParts(document, design, suggestion.result.X);
+    out["usage"] = suggestion.usage();
+    nlohmann::json path = nlohmann::json::array();
+    const size_t n = suggestion.path.size();
+    for (size_t k = 0; k < std::min(n, steps); ++k) {
+        const material::DesignLayout& step = suggestion.path[steps >= n ? k : k * (n - 1) / (steps - 1)];
+        path.push_back({{"usage", 1 - step.wastage}, {"parts", partsAt(design, step.X)}});
+    }
+    out["path"] = path;
+    return out;
+}
+
+}  // namespace fabguide::io

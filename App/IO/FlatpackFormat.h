@@ -1,0 +1,37 @@
+// The flat-pack design format `*.flatpack.json` (docs/formats.md): boards in 3-D with design constraints,
+// effectiveness constraints and the master boards to cut them from (thesis 5.1).
+#pragma once
+
+#include "Material/Design.h"
+#include "Material/MinWastage.h"
+#include "Material/Pack.h"
+
+#include <nlohmann/json.hpp>
+
+namespace fabguide::io {
+
+constexpr int kFlatpackFormatVersion = 1;
+
+struct FlatpackDesign {
+    material::Design design;
+    std::vector<material::MasterBoard> boards;
+    material::PackSettings settings;
+};
+
+/// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, also when the design
+/// does not satisfy its own constraints (naming them).
+FlatpackDesign readFlatpack(const nlohmann::json& document);
+
+/// The parts at design vector X: [{"id", "position" (lower corner), "size"}].
+nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X);
+
+/// `document` with its parts moved and resized to X; constraints and volumes as they were.
+nlohmann::json withParts(nlohmann::json document, const material::Design& design, const Eigen::VectorXd& X);
+
+/// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage" and
+/// "path": [{"usage", "parts"}] from the user's design to the suggestion, at most `steps` of them (evenly
+/// picked, first and last kept).
+nlohmann::json suggestionDocument(const nlohmann::json& document, const material::Design& design,
+                                  const material::Suggestion& suggestion, size_t steps = 40);
+
+}  // namespace fabguide::io

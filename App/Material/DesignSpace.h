@@ -1,0 +1,72 @@
+// The design function D(X) as the layout search sees it (thesis 5.2.1): part sizes from design parameters,
+// and CHANGEPARTSIZES (5.4.2.2), for constrained designs (5.3.5) and parametric ones.
+#pragma once
+
+#include "Material/Design.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fabguide::material {
+
+/// A part D produces, cut `quantity` times.
+struct PartKind {
+    std::string id;
+    int quantity = 1;
+    bool followsGrain = false;
+};
+
+class DesignSpace {
+public:
+    virtual ~DesignSpace() = default;
+    virtual const std::vector<PartKind>& parts() const = 0;
+    /// X_s, the user's design.
+    virtual Eigen::VectorXd start() const = 0;
+    /// s(X): part i's width in material space at 2i, its height at 2i + 1, in mm.
+    virtual Eigen::VectorXd sizes(const Eigen::VectorXd& X) const = 0;
+    /// CHANGEPARTSIZES: parameters whose part sizes change by about `change` (one entry per size), the other
+    /// sizes kept where the design allows; nullopt when the design cannot move that way at all.
+    virtual std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                           const Eigen::VectorXd& change) const = 0;
+};
+
+/// A design of boards with design and effectiveness constraints: a size change is the change vector u of
+/// thesis 5.3.5, kept valid by Algorithms 5 and 6.
+class ConstrainedDesign : public DesignSpace {
+public:
+    explicit ConstrainedDesign(Design design);
+    const std::vector<PartKind>& parts() const override { return parts_; }
+    Eigen::VectorXd start() const override { return design_.variables(); }
+    Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                   const Eigen::VectorXd& change) const override;
+    const Design& design() const { return design_; }
+
+private:
+    Design design_;
+    std::vector<PartKind> parts_;
+};
+
+/// A parametric design (thesis 5.4.2.2): D given as a function from parameters to part sizes, each
+/// parameter within [lower, upper]. Sizes change through finite-difference gradients ds/dX and a least
+/// squares / least norm solve (complete orthogonal decomposition), cut short at the parameter bounds.
+class ParametricDesign : public DesignSpace {
+public:
+    using SizesOf = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+    ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start, Eigen::VectorXd lower,
+                     Eigen::VectorXd upper);
+    const std::vector<PartKind>& parts() const override { return parts_; }
+    Eigen::VectorXd start() const override { return start_; }
+    Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                   const Eigen::VectorXd& change) const override;
+
+private:
+    std::vector<PartKind> parts_;
+    SizesOf sizesOf_;
+    Eigen::VectorXd start_, lower_, upper_;
+};
+
+}  // namespace fabguide::material

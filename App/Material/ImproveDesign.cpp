@@ -1,0 +1,222 @@
+#include "Material/ImproveDesign.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <set>
+
+namespace fabguide::material {
+
+DesignLayout Explorer::docked(const Eigen::VectorXd& X) const
+{
+    const Eigen::VectorXd sizes = design.sizes(X);
+    GridLayout layout = material.dock(sizes, order);
+    const double wastage = material.wastage(layout, sizes);
+    return {X, sizes, std::move(layout), wastage};
+}
+
+DesignLayout Explorer::slid(const DesignLayout& from, const Eigen::VectorXd& X) const
+{
+    const Eigen::VectorXd sizes = design.sizes(X);
+    GridLayout layout = material.slide(from.layout, sizes);
+    const double wastage = material.wastage(layout, sizes);
+    return {X, sizes, std::move(layout), wastage};
+}
+
+namespace {
+
+/// One cell more (or less) of part size `size`, through CHANGEPARTSIZE.
+std::optional<Eigen::VectorXd> changePartSize(const Explorer& explorer, const Eigen::VectorXd& X, int size,
+                                              double cells)
+{
+    Eigen::VectorXd change = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(explorer.design.parts().size()));
+    change[size] = cells * explorer.material.resolution();
+    return explorer.design.changePartSizes(X, change);
+}
+
+}  // namespace
+
+void growParts(Explorer& explorer, DesignLayout& best, DesignLayout& current)
+{
+    std::vector<int> sizes(2 * explorer.design.parts().size());
+    std::iota(sizes.begin(), sizes.end(), 0);
+    for (bool improvement = true; improvement && !explorer.stopped();) {
+        improvement = false;
+        std::shuffle(sizes.begin(), sizes.end(), explorer.random);
+        for (int size : sizes) {
+            if (explorer.stopped())
+                return;
+            // Grow once, then on while the wastage drops (lines 5-15); keep the least-wastage growth.
+            std::optional<DesignLayout> grown;
+            for (DesignLayout at = current;;) {
+                const auto X = changePartSize(explorer, at.X, size, +1);
+                if (!X)
+                    break;
+                DesignLayout next = explorer.slid(at, *X);
+                if (next.wastage > (grown ? grown->wastage : 1.0 - 1e-12))
+                    next = explorer.docked(*X);  // sliding lost (or failed): dock again (line 11)
+                if (grown && next.wastage >= grown->wastage)
+                    break;
+                grown = next;
+                at = std::move(next);
+            }
+            if (grown && grown->wastage < current.wastage) {
+                current = std::move(*grown);
+                improvement = true;
+                if (current.wastage < best.wastage) {
+                    best = current;
+                    explorer.improved(best);
+                }
+            }
+        }
+    }
+}
+
+namespace {
+
+/// A unit's cells on its sheet.
+struct Box {
+    int sheet;
+    int at[2];
+    int length[2];
+    int rotation;
+};
+
+std::vector<Box> boxesOf(const Explorer& explorer, const DesignLayout& d)
+{
+    const RasterProblem units = explorer.material.raster(d.sizes);
+    std::vector<Box> boxes(units.parts.size());
+    for (const Placed& p : d.layout.placed) {
+        const RasterPart& unit = units.parts[p.part];
+        boxes[p.part] = {p.sheet,
+                         {p.x, p.y},
+                         {unit.shapes[p.shape].width(), unit.shapes[p.shape].height()},
+                         unit.rotations[p.shape]};
+    }
+    return boxes;
+}
+
+/// FORMCONTACTCHAINS along `axis`: from units touching the far border of their sheet's layout, through units
+/// touching each other, to the near border; each chain as the part sizes along `axis`.
+void lockingChains(const Explorer& explorer, const DesignLayout& d, int axis, std::vector<std::vector<int>>& chains)
+{
+    constexpr size_t kMostChains = 512;
+    const std::vector<Box> boxes = boxesOf(explorer, d);
+    const int other = 1 - axis;
+    const auto touchesBefore = [&](const Box& u, const Box& v) {  // v ends where u starts, side by side
+        return u.sheet == v.sheet && v.at[axis] + v.length[axis] == u.at[axis] &&
+               v.at[other] < u.at[other] + u.length[other] && u.at[other] < v.at[other] + v.length[other];
+    };
+    std::vector<int> chain;
+    const auto extend = [&](auto&& self, int unit) -> void {
+        if (chains.size() >= kMostChains)
+            return;
+        chain.push_back(explorer.material.sizeAlong(unit, boxes[unit].rotation, axis));
+        if (boxes[unit].at[axis] == 0)
+            chains.push_back(chain);
+        for (int v = 0; v < static_cast<int>(boxes.size()); ++v)
+            if (touchesBefore(boxes[unit], boxes[v]))
+                self(self, v);
+        chain.pop_back();
+    };
+    for (int u = 0; u < static_cast<int>(boxes.size()); ++u) {
+        const Box& b = boxes[u];
+        const int used = axis == 0 ? d.layout.usedWidth[b.sheet] : d.layout.usedHeight[b.sheet];
+        if (b.at[axis] + b.length[axis] == used)
+            extend(extend, u);
+    }
+}
+
+}  // namespace
+
+std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout& best)
+{
+    if (!best.layout.unplaced.empty())
+        return {};
+    std::vector<std::vector<int>> chains;
+    for (int axis : {0, 1})
+        lockingChains(explorer, best, axis, chains);
+
+    // dep(s): how many part sizes shrinking s changes; sizes that cannot shrink are left out.
+    std::map<int, std::optional<int>> dependence;
+    const auto dep = [&](int size) {
+        auto found = dependence.find(size);
+        if (found != dependence.end())
+            return found->second;
+        std::optional<int> count;
+        if (const auto X = changePartSize(explorer, best.X, size, -1)) {
+            const Eigen::VectorXd change = explorer.design.sizes(*X) - best.sizes;
+            count = static_cast<int>((change.array().abs() > 1e-9).count());
+        }
+        return dependence[size] = count;
+    };
+
+    std::vector<int> chosen;
+    while (!chains.empty()) {
+        std::map<int, int> occurrences;
+        for (const auto& chain : chains)
+            for (int size : std::set<int>(chain.begin(), chain.end()))
+                if (dep(size))
+                    ++occurrences[size];
+        if (occurrences.empty())
+            break;  // what is left cannot be broken
+        // P(o) ∝ Σ occ over sizes occurring o times; then P(s | o) ∝ 1 - dep(s) / Σ dep.
+        std::map<int, double> weightOf;
+        for (const auto& [size, occ] : occurrences)
+            weightOf[occ] += occ;
+        std::vector<int> counts;
+        std::vector<double> weights;
+        for (const auto& [occ, weight] : weightOf) {
+            counts.push_back(occ);
+            weights.push_back(weight);
+        }
+        const int o = counts[std::discrete_distribution<int>(weights.begin(), weights.end())(explorer.random)];
+        std::vector<int> candidates;
+        double depSum = 0;
+        for (const auto& [size, occ] : occurrences)
+            if (occ == o) {
+                candidates.push_back(size);
+                depSum += *dep(size);
+            }
+        std::vector<double> p;
+        for (int size : candidates)
+            p.push_back(candidates.size() == 1 || depSum == 0 ? 1.0 : 1.0 - *dep(size) / depSum);
+        const int size = candidates[std::discrete_distribution<int>(p.begin(), p.end())(explorer.random)];
+        chosen.push_back(size);
+        chains.erase(std::remove_if(chains.begin(), chains.end(),
+                                    [&](const std::vector<int>& c) {
+                                        return std::find(c.begin(), c.end(), size) != c.end();
+                                    }),
+                     chains.end());
+    }
+    return chosen;
+}
+
+DesignLayout improveDesign(Explorer& explorer, const DesignLayout& start, int iterations)
+{
+    DesignLayout best = start, current = start;
+    for (int i = 0; i < iterations && !explorer.stopped(); ++i) {
+        growParts(explorer, best, current);
+        // SHRINKPARTS (Algorithm 11): one cell off each chosen size at once.
+        const std::vector<int> shrink = selectPartSizesToShrink(explorer, best);
+        if (shrink.empty())
+            break;
+        Eigen::VectorXd change = Eigen::VectorXd::Zero(best.sizes.size());
+        for (int size : shrink)
+            change[size] = -explorer.material.resolution();
+        const auto X = explorer.design.changePartSizes(best.X, change);
+        if (!X)
+            break;
+        current = explorer.slid(best, *X);
+        if (current.wastage >= 1)
+            current = explorer.docked(*X);
+        if (current.wastage < best.wastage) {
+            best = current;
+            explorer.improved(best);
+        }
+    }
+    return best;
+}
+
+}  // namespace fabguide::material

@@ -1,0 +1,54 @@
+// Material space for design exploration (thesis 5.2.2, 5.4.1, 5.4.2.3): a design's parts as rectangles on
+// the master-board grid, laid out by Docking or updated by SLIDE (Algorithm 9), and the wastage measure.
+#pragma once
+
+#include "Material/DesignSpace.h"
+#include "Material/Pack.h"
+
+#include <Eigen/Core>
+
+namespace fabguide::material {
+
+class MaterialSpace {
+public:
+    /// Throws std::invalid_argument for bad settings or no master boards.
+    MaterialSpace(std::vector<MasterBoard> boards, PackSettings settings, std::vector<PartKind> parts);
+
+    /// The parts at sizes s as a layout problem (rectangles, any orientation unless they follow the grain).
+    PackProblem problem(const Eigen::VectorXd& sizes) const;
+    RasterProblem raster(const Eigen::VectorXd& sizes) const { return rasterise(problem(sizes)); }
+    const std::vector<BoardStock>& stock() const { return stock_; }
+    const std::vector<PartKind>& parts() const { return parts_; }
+    double resolution() const { return settings_.resolution; }
+
+    /// DOCKING (Algorithm 13) of the parts at sizes s in `order` (unit indices).
+    GridLayout dock(const Eigen::VectorXd& sizes, const std::vector<int>& order) const;
+
+    /// SLIDE (Algorithm 9): the units of `previous` re-inserted in its docking order at their sizes s, each
+    /// on its sheet and in its orientation, moved at most N = 4 times left/right or down/up to close gaps and
+    /// resolve overlaps, preferring the move that keeps the layout's bounding box smallest. A layout with
+    /// every unit unplaced when a unit no longer fits.
+    GridLayout slide(const GridLayout& previous, const Eigen::VectorXd& sizes) const;
+
+    /// W(L): 1 - part area / summed bounding rectangles of the sheets' layouts (5.2.3), 1 when a unit is
+    /// unplaced.
+    double wastage(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
+
+    /// The layout in millimetres, for files and thumbnails.
+    Layout inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
+
+    /// Which size of unit `unit`, turned by `rotation`, runs along material-space axis `axis` (0 x, 1 y):
+    /// index 2i (width) or 2i + 1 (height) of s, i its part kind.
+    int sizeAlong(int unit, int rotation, int axis) const;
+    /// The part kind of each unit.
+    const std::vector<int>& kindOf() const { return kindOf_; }
+
+private:
+    std::vector<MasterBoard> boards_;
+    PackSettings settings_;
+    std::vector<PartKind> parts_;
+    std::vector<int> kindOf_;
+    std::vector<BoardStock> stock_;
+};
+
+}  // namespace fabguide::material

@@ -1,0 +1,226 @@
+#include "Material/MinWastage.h"
+
+#include <algorithm>
+#include <condition_variable>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+namespace fabguide::material {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A design carried between rounds: with its docking order and the path that led to it.
+struct Entry {
+    DesignLayout design;
+    std::vector<int> order;
+    std::vector<DesignLayout> path;
+};
+
+std::vector<int> orderOf(const GridLayout& layout)
+{
+    std::vector<int> order;
+    for (const Placed& p : layout.placed)
+        order.push_back(p.part);
+    order.insert(order.end(), layout.unplaced.begin(), layout.unplaced.end());
+    return order;
+}
+
+/// A seed per round and task (splitmix64), so results do not depend on which thread ran what.
+std::uint64_t seedOf(std::uint64_t seed, int round, int task)
+{
+    std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (1 + static_cast<std::uint64_t>(round) * 1000003 + task);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
+                         std::uint64_t seed)
+{
+    const RasterProblem units = material.raster(sizes);
+    OrderingSearchOptions options;
+    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());  // |D(X)|², 5.4.3
+    options.timeLimit = 1e9;
+    options.seed = seed;
+    return exploreOrderings(units.parts, std::move(order), material.stock(), options);
+}
+
+/// One task of a round: EXPLOREORDERINGS from the entry's order (shuffled unless `keepOrder`), then
+/// IMPROVEDESIGN along the order found.
+Entry improve(const DesignSpace& design, const MaterialSpace& material, const Entry& from, std::uint64_t seed,
+              bool keepOrder, const MinWastageOptions& options, Clock::time_point deadline)
+{
+    Explorer explorer{design, material, from.order, std::mt19937_64(seed), options.cancel, deadline, {}};
+    std::vector<int> order = from.order;
+    if (!keepOrder)
+        std::shuffle(order.begin(), order.end(), explorer.random);
+    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed));
+    const DesignLayout start = explorer.docked(from.design.X);
+    Entry out{improveDesign(explorer, start, options.improveIterations), explorer.order, from.path};
+    out.path.insert(out.path.end(), explorer.path.begin(), explorer.path.end());
+    return out;
+}
+
+/// Runs tasks 0..count-1 on `threads` threads (or the caller's), reporting progress on the caller's thread.
+template <class Task>
+void runAll(int count, int threads, Task&& task, const std::function<void(int)>& finished)
+{
+    if (threads <= 1) {
+        for (int t = 0; t < count; ++t) {
+            task(t);
+            finished(t);
+        }
+        return;
+    }
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::vector<int> done;  // tasks in the order they finished
+    std::exception_ptr failure;
+    int next = 0, working = std::min(threads, count);
+    const auto work = [&] {
+        std::unique_lock<std::mutex> lock(mutex);
+        while (next < count && !failure) {
+            const int t = next++;
+            lock.unlock();
+            try {
+                task(t);
+            } catch (...) {
+                lock.lock();
+                failure = std::current_exception();
+                break;
+            }
+            lock.lock();
+            done.push_back(t);
+            changed.notify_one();
+        }
+        --working;
+        changed.notify_one();
+    };
+    std::vector<std::thread> pool;
+    for (int k = 0; k < working; ++k)
+        pool.emplace_back(work);
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        for (size_t reported = 0;;) {
+            changed.wait(lock, [&] { return reported < done.size() || working == 0; });
+            while (reported < done.size()) {
+                const int t = done[reported++];
+                lock.unlock();
+                finished(t);
+                lock.lock();
+            }
+            if (working == 0)
+                break;
+        }
+    }
+    for (std::thread& thread : pool)
+        thread.join();
+    if (failure)
+        std::rethrow_exception(failure);
+}
+
+/// The K least-wastage designs of `entries`, each design once.
+std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
+{
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const Entry& a, const Entry& b) { return a.design.wastage < b.design.wastage; });
+    std::vector<Entry> kept;
+    for (Entry& e : entries) {
+        const bool known = std::any_of(kept.begin(), kept.end(), [&](const Entry& k) {
+            return (k.design.X - e.design.X).norm() < 1e-6;
+        });
+        if (!known && static_cast<int>(kept.size()) < keep)
+            kept.push_back(std::move(e));
+    }
+    return kept;
+}
+
+/// Farthest-point choice (5.3.3): the best design, then repeatedly the design farthest in part lengths from
+/// those chosen, among designs within `window` of the best usage that improve on the start.
+std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count)
+{
+    constexpr double window = 0.03, distinct = 1.0;  // usage; mm
+    pool = keepBest(std::move(pool), static_cast<int>(pool.size()));
+    std::vector<Suggestion> chosen;
+    if (pool.empty() || pool.front().design.wastage >= start.wastage)
+        return chosen;
+    const double worst = pool.front().design.wastage + window;
+    std::vector<bool> taken(pool.size(), false);
+    for (int k = 0; k < count; ++k) {
+        int pick = -1;
+        double farthest = distinct;
+        for (size_t i = 0; i < pool.size(); ++i) {
+            const DesignLayout& d = pool[i].design;
+            if (taken[i] || d.wastage > worst || d.wastage >= start.wastage)
+                continue;
+            double nearest = std::numeric_limits<double>::infinity();
+            for (const Suggestion& s : chosen)
+                nearest = std::min(nearest, (s.result.sizes - d.sizes).norm());
+            if (chosen.empty() ? pick < 0 : nearest > farthest) {
+                pick = static_cast<int>(i);
+                farthest = chosen.empty() ? distinct : nearest;
+            }
+        }
+        if (pick < 0)
+            break;
+        taken[pick] = true;
+        chosen.push_back({pool[pick].design, pool[pick].path});
+    }
+    return chosen;
+}
+
+}  // namespace
+
+DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed)
+{
+    const Eigen::VectorXd X = design.start();
+    const Eigen::VectorXd sizes = design.sizes(X);
+    const RasterProblem units = material.raster(sizes);
+    GridLayout layout = exploredOrder(material, sizes, decreasingExtentOrder(units.parts), seed);
+    const double wastage = material.wastage(layout, sizes);
+    return {X, sizes, std::move(layout), wastage};
+}
+
+Exploration minWastage(const DesignSpace& design, const MaterialSpace& material, const MinWastageOptions& options)
+{
+    const auto started = Clock::now();
+    const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
+                                        std::chrono::duration<double>(std::max(0.0, options.timeLimit)));
+    Exploration exploration;
+    exploration.start = layOut(design, material, options.seed);
+    std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
+    std::vector<Entry> pool;
+    const int total = options.rounds * options.tasksPerRound;
+    double bestUsage = exploration.usageBefore();
+    for (int round = 0; round < options.rounds; ++round) {
+        std::vector<Entry> results(options.tasksPerRound);
+        const auto task = [&](int t) {
+            const int from = t % static_cast<int>(entries.size());
+            results[t] = improve(design, material, entries[from], seedOf(options.seed, round, t),
+                                 t < static_cast<int>(entries.size()), options, deadline);
+        };
+        const auto finished = [&](int t) {
+            ++exploration.designsImproved;
+            bestUsage = std::max(bestUsage, 1 - results[t].design.wastage);
+            if (options.progress)
+                options.progress(static_cast<double>(exploration.designsImproved) / total, bestUsage);
+        };
+        runAll(options.tasksPerRound, options.threads, task, finished);
+        pool.insert(pool.end(), results.begin(), results.end());
+        results.insert(results.end(), entries.begin(), entries.end());
+        entries = keepBest(std::move(results), options.keep);
+        exploration.stopped = (options.cancel && options.cancel->load()) || Clock::now() > deadline;
+        if (exploration.stopped)
+            break;
+    }
+    exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions);
+    exploration.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    return exploration;
+}
+
+}  // namespace fabguide::material

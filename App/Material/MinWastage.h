@@ -1,0 +1,52 @@
+// MINWASTAGE (thesis 5.4, Algorithm 7): rounds of ordering exploration and design improvement on several
+// threads, and K = 3 diverse suggestions (5.3.3) with the path of designs that led to each.
+#pragma once
+
+#include "Material/ImproveDesign.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace fabguide::material {
+
+struct MinWastageOptions {
+    int rounds = 3;             ///< G
+    int keep = 3;               ///< K designs carried from round to round
+    int tasksPerRound = 8;      ///< orderings explored and improved per round (thesis: up to 8 threads)
+    int improveIterations = 6;  ///< N of IMPROVEDESIGN
+    int suggestions = 3;
+    int threads = 2;            ///< 1 runs everything on the caller's thread
+    std::uint64_t seed = 1;     ///< same seed, same suggestions (unless the time limit cuts the search)
+    double timeLimit = 10;      ///< seconds
+    const std::atomic<bool>* cancel = nullptr;
+    /// Called on the caller's thread after each task: fraction done, best usage so far.
+    std::function<void(double, double)> progress;
+};
+
+/// A suggestion: the design reached, its layout, and the designs from the user's one to it, in order.
+struct Suggestion {
+    DesignLayout result;
+    std::vector<DesignLayout> path;
+    double usage() const { return 1 - result.wastage; }
+};
+
+struct Exploration {
+    DesignLayout start;  ///< the user's design, laid out by the same docking and ordering search
+    std::vector<Suggestion> suggestions;
+    double seconds = 0;
+    bool stopped = false;  ///< cancelled, or the time limit ended it
+    int designsImproved = 0;
+    double usageBefore() const { return 1 - start.wastage; }
+};
+
+/// The user's design laid out: EXPLOREORDERINGS from decreasing extent with |parts|² swaps.
+DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed);
+
+/// Algorithm 7. Every suggestion comes from CHANGEPARTSIZES, so it keeps the design's constraints; the
+/// suggestions are the least-wastage design found and then, among designs within 0.03 of its usage, those
+/// farthest (in part lengths) from the ones already chosen. Fewer when the search found no other distinct
+/// improving design.
+Exploration minWastage(const DesignSpace& design, const MaterialSpace& material, const MinWastageOptions& options);
+
+}  // namespace fabguide::material
