@@ -53,7 +53,8 @@ void run(const OptimiseArguments& args)
                               {"seconds", exploration.seconds},
                               {"stopped", exploration.stopped},
                               {"suggestions", nlohmann::json::array()}};
-    std::printf("usage before  %.4f  (%zu parts)\n", exploration.usageBefore(), flatpack.design.boards.size());
+    std::printf("usage before  %.4f  (%zu parts)\n", exploration.usageBefore(),
+                flatpack.design.boards.size());
     for (size_t k = 0; k < exploration.suggestions.size(); ++k) {
         const material::Suggestion& s = exploration.suggestions[k];
         const std::string name = "suggestion-" + std::to_string(k + 1);
@@ -69,7 +70,8 @@ void run(const OptimiseArguments& args)
     }
     if (exploration.suggestions.empty())
         std::printf("no design variation found that wastes less\n");
-    std::printf("seconds       %.2f%s\n", exploration.seconds, exploration.stopped ? " (stopped at the time limit)" : "");
+    std::printf("seconds       %.2f%s\n", exploration.seconds,
+                exploration.stopped ? " (stopped at the time limit)" : "");
     io::writeJsonFile((out / "summary.json").string(), summary);
 }
 
@@ -78,7 +80,8 @@ void run(const OptimiseArguments& args)
 void addOptimiseCommand(CLI::App& app)
 {
     auto args = std::make_shared<OptimiseArguments>();
-    auto* cmd = app.add_subcommand("optimise", "Suggest design variations that waste less material (*.flatpack.json)");
+    auto* cmd = app.add_subcommand("optimise",
+                                   "Suggest design variations that waste less material (*.flatpack.json)");
     cmd->alias("optimize");
     cmd->add_option("input", args->input, "*.flatpack.json design")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "folder for the suggestions and summary.json")->required();
@@ -89,7 +92,8 @@ void addOptimiseCommand(CLI::App& app)
     cmd->add_option("--time-limit", args->options.timeLimit, "seconds")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    cmd->add_option("--rounds", args->options.rounds, "G: rounds of ordering exploration and design improvement")
+    cmd->add_option("--rounds", args->options.rounds,
+                    "G: rounds of ordering exploration and design improvement")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->callback([args] { run(*args); });

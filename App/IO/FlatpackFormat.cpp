@@ -16,7 +16,10 @@ using material::Design;
 using material::DesignConstraint;
 using material::Linear;
 
-std::string at(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
+std::string at(const std::string& array, size_t i)
+{
+    return array + "[" + std::to_string(i) + "]";
+}
 
 int boardIndex(const Design& design, const std::string& id, const std::string& path)
 {
@@ -39,7 +42,8 @@ Linear reference(const Design& design, const nlohmann::json& json, const std::st
     if (!json.is_string())
         throw FormatError(path + ": must be a reference like \"top.size.x\", got " + json.dump());
     const std::string text = json.get<std::string>();
-    const size_t last = text.rfind('.'), middle = last == std::string::npos ? last : text.rfind('.', last - 1);
+    const size_t last = text.rfind('.'),
+                 middle = last == std::string::npos ? last : text.rfind('.', last - 1);
     if (middle == std::string::npos || middle == 0)
         throw FormatError(path + ": \"" + text + "\" is not <part>.<size|centre|min|max>.<x|y|z>");
     const int board = boardIndex(design, text.substr(0, middle), path);
@@ -105,7 +109,9 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
     const std::string kind = c.text("kind");
     const Eigen::VectorXd X = design.variables();
     const auto named = [&](const std::string& fallback) { return c.text("name", kind + " " + fallback); };
-    const auto equal = [&](const std::string& name, const Linear& e) { design.equalities.push_back({name, e}); };
+    const auto equal = [&](const std::string& name, const Linear& e) {
+        design.equalities.push_back({name, e});
+    };
     if (kind == "equal") {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         const std::string name = named(joined(c.array("refs"), " = "));
@@ -125,9 +131,10 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         if (refs.size() != 2)
             throw FormatError(c.pathOf("refs") + ": symmetric takes two references");
-        const Linear about = !c.has("about")             ? material::constant((refs[0] + refs[1]).value(X) / 2)
-                             : json["about"].is_number() ? material::constant(json["about"].get<double>())
-                                                         : reference(design, json["about"], c.pathOf("about"));
+        const Linear about = !c.has("about") ? material::constant((refs[0] + refs[1]).value(X) / 2)
+                             : json["about"].is_number()
+                                 ? material::constant(json["about"].get<double>())
+                                 : reference(design, json["about"], c.pathOf("about"));
         equal(named(joined(c.array("refs"), ", ")), refs[0] + refs[1] - about * 2.0);
     } else if (kind == "ground") {
         const std::vector<int> parts = partsOf(design, c, 1);
@@ -154,8 +161,8 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
             throw FormatError(c.pathOf("parts") + ": snap takes two parts");
         const material::Snapping snap = material::snapping(design, parts[0], parts[1]);
         if (snap.equalities.empty())
-            throw FormatError(path + ": " + design.boards[parts[0]].id + " and " + design.boards[parts[1]].id +
-                              " do not touch");
+            throw FormatError(path + ": " + design.boards[parts[0]].id + " and " +
+                              design.boards[parts[1]].id + " do not touch");
         design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
         design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
     } else if (kind == "range") {
@@ -167,9 +174,11 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
         if (!c.has("min") && !c.has("max") && !(fraction > 0))
             throw FormatError(path + ": a range needs min, max or fraction");
         if (std::isfinite(low))
-            design.bounds.push_back({c.text("name", name + " >= " + show(low)), material::constant(low) - ref});
+            design.bounds.push_back(
+                {c.text("name", name + " >= " + show(low)), material::constant(low) - ref});
         if (std::isfinite(high))
-            design.bounds.push_back({c.text("name", name + " <= " + show(high)), ref - material::constant(high)});
+            design.bounds.push_back(
+                {c.text("name", name + " <= " + show(high)), ref - material::constant(high)});
     } else {
         throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + kind +
                           "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
@@ -252,7 +261,8 @@ FlatpackDesign readFlatpack(const nlohmann::json& document)
         for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
             for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b) {
                 const material::Snapping snap = material::snapping(design, a, b);
-                design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
+                design.equalities.insert(design.equalities.end(), snap.equalities.begin(),
+                                         snap.equalities.end());
                 design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
             }
     const nlohmann::json& constraints = root.array("constraints", true);
@@ -289,7 +299,9 @@ nlohmann::json partsAt(const Design& design, const Eigen::VectorXd& X)
     nlohmann::json parts = nlohmann::json::array();
     for (const material::DesignBoard& b : design.boardsAt(X)) {
         const Eigen::Vector3d low = b.centre - b.size / 2;
-        parts.push_back({{"id", b.id}, {"position", {low.x(), low.y(), low.z()}}, {"size", {b.size.x(), b.size.y(), b.size.z()}}});
+        parts.push_back({{"id", b.id},
+                         {"position", {low.x(), low.y(), low.z()}},
+                         {"size", {b.size.x(), b.size.y(), b.size.z()}}});
     }
     return parts;
 }

@@ -248,7 +248,7 @@ std::vector<material::Board3> readBoards3(const nlohmann::json& document)
     std::vector<material::Board3> boards;
     for (size_t i = 0; i < document.size(); ++i) {
         const Fields board(document[i], at("boards", i));
-        material::Board3 b{board.text("id"),       readOutline(board),     board.vector3("origin"),
+        material::Board3 b{board.text("id"),   readOutline(board), board.vector3("origin"),
                            board.vector3("u"), board.vector3("v"), board.positive("thickness")};
         if (std::abs(b.u.norm() - 1) > 1e-6 || std::abs(b.v.norm() - 1) > 1e-6 ||
             std::abs(b.u.dot(b.v)) > 1e-6)

@@ -158,7 +158,8 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
         return X + alpha * u + *d;
     };
     const auto isHeld = [&](const std::string& name) {
-        return std::any_of(held.begin(), held.end(), [&](const DesignConstraint& c) { return c.name == name; });
+        return std::any_of(held.begin(), held.end(),
+                           [&](const DesignConstraint& c) { return c.name == name; });
     };
     CorrectedChange best{X, 0, {}};
     while (true) {

@@ -8,7 +8,9 @@ namespace fabguide::material {
 
 std::array<int, 2> DesignBoard::inPlane() const
 {
-    return normal == 0 ? std::array<int, 2>{1, 2} : normal == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
+    return normal == 0   ? std::array<int, 2>{1, 2}
+           : normal == 1 ? std::array<int, 2>{0, 2}
+                         : std::array<int, 2>{0, 1};
 }
 
 double Linear::value(const Eigen::VectorXd& X) const
@@ -36,16 +38,40 @@ Linear Linear::operator*(double factor) const
     return scaled;
 }
 
-Linear Linear::operator-(const Linear& other) const { return *this + other * -1.0; }
+Linear Linear::operator-(const Linear& other) const
+{
+    return *this + other * -1.0;
+}
 
-Linear centreOf(int board, int axis) { return {{{centreVariable(board, axis), 1.0}}, 0}; }
-Linear sizeOf(int board, int axis) { return {{{sizeVariable(board, axis), 1.0}}, 0}; }
-Linear lowerFace(int board, int axis) { return centreOf(board, axis) - sizeOf(board, axis) * 0.5; }
-Linear upperFace(int board, int axis) { return centreOf(board, axis) + sizeOf(board, axis) * 0.5; }
-Linear constant(double value) { return {{}, value}; }
+Linear centreOf(int board, int axis)
+{
+    return {{{centreVariable(board, axis), 1.0}}, 0};
+}
+Linear sizeOf(int board, int axis)
+{
+    return {{{sizeVariable(board, axis), 1.0}}, 0};
+}
+Linear lowerFace(int board, int axis)
+{
+    return centreOf(board, axis) - sizeOf(board, axis) * 0.5;
+}
+Linear upperFace(int board, int axis)
+{
+    return centreOf(board, axis) + sizeOf(board, axis) * 0.5;
+}
+Linear constant(double value)
+{
+    return {{}, value};
+}
 
-Linear InnerVolume::lower(int axis) const { return centreOf(on, axis) + constant(offset[axis]); }
-Linear InnerVolume::upper(int axis) const { return lower(axis) + constant(size[axis]); }
+Linear InnerVolume::lower(int axis) const
+{
+    return centreOf(on, axis) + constant(offset[axis]);
+}
+Linear InnerVolume::upper(int axis) const
+{
+    return lower(axis) + constant(size[axis]);
+}
 
 Eigen::VectorXd Design::variables() const
 {
@@ -143,7 +169,8 @@ Snapping snapping(const Design& design, int a, int b, double tolerance)
              aBelow ? upperFace(a, axis) - lowerFace(b, axis) : upperFace(b, axis) - lowerFace(a, axis)});
         for (int other : {j, k}) {
             const std::string along = std::string(" along ") + names[other];
-            const bool lowFlush = std::abs(lowerFace(a, other).value(X) - lowerFace(b, other).value(X)) <= tolerance;
+            const bool lowFlush =
+                std::abs(lowerFace(a, other).value(X) - lowerFace(b, other).value(X)) <= tolerance;
             const bool highFlush =
                 std::abs(upperFace(a, other).value(X) - upperFace(b, other).value(X)) <= tolerance;
             if (lowFlush)
@@ -155,10 +182,12 @@ Snapping snapping(const Design& design, int a, int b, double tolerance)
             if (lowFlush || highFlush)
                 continue;
             const Linear keep = constant(std::min(overlap(other), thinner));
-            kept.bounds.push_back({"snap " + pair + " stay connected" + along + " (" + design.boards[b].id + " end)",
-                                   lowerFace(a, other) - upperFace(b, other) + keep});
-            kept.bounds.push_back({"snap " + pair + " stay connected" + along + " (" + design.boards[a].id + " end)",
-                                   lowerFace(b, other) - upperFace(a, other) + keep});
+            kept.bounds.push_back(
+                {"snap " + pair + " stay connected" + along + " (" + design.boards[b].id + " end)",
+                 lowerFace(a, other) - upperFace(b, other) + keep});
+            kept.bounds.push_back(
+                {"snap " + pair + " stay connected" + along + " (" + design.boards[a].id + " end)",
+                 lowerFace(b, other) - upperFace(a, other) + keep});
         }
         return kept;
     }

@@ -1,5 +1,6 @@
 // A flat-pack design in object space (thesis 5.1, 5.2.1, 5.3.5): boards as boxes, the design vector X,
-// design constraints C X = s and effectiveness constraints (ranges, minimum lengths, inner and outer volumes).
+// design constraints C X = s and effectiveness constraints (ranges, minimum lengths, inner and outer
+// volumes).
 #pragma once
 
 #include <Eigen/Core>
@@ -25,8 +26,14 @@ struct DesignBoard {
 
 /// X holds six variables per board: its centre (x, y, z) then its size (x, y, z) (thesis 5.2: the box
 /// centre and the lengths of its sides).
-inline int centreVariable(int board, int axis) { return 6 * board + axis; }
-inline int sizeVariable(int board, int axis) { return 6 * board + 3 + axis; }
+inline int centreVariable(int board, int axis)
+{
+    return 6 * board + axis;
+}
+inline int sizeVariable(int board, int axis)
+{
+    return 6 * board + 3 + axis;
+}
 
 /// Σ coefficient · X[variable] + constant.
 struct Linear {

@@ -54,7 +54,10 @@ ParametricDesign::ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf,
         throw std::invalid_argument("parametric design: D(X) must give a width and a height per part");
 }
 
-Eigen::VectorXd ParametricDesign::sizes(const Eigen::VectorXd& X) const { return sizesOf_(X); }
+Eigen::VectorXd ParametricDesign::sizes(const Eigen::VectorXd& X) const
+{
+    return sizesOf_(X);
+}
 
 std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::VectorXd& X,
                                                                  const Eigen::VectorXd& change) const

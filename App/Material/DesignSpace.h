@@ -55,8 +55,8 @@ private:
 class ParametricDesign : public DesignSpace {
 public:
     using SizesOf = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
-    ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start, Eigen::VectorXd lower,
-                     Eigen::VectorXd upper);
+    ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,
+                     Eigen::VectorXd lower, Eigen::VectorXd upper);
     const std::vector<PartKind>& parts() const override { return parts_; }
     Eigen::VectorXd start() const override { return start_; }
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;

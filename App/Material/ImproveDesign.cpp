@@ -30,7 +30,8 @@ namespace {
 std::optional<Eigen::VectorXd> changePartSize(const Explorer& explorer, const Eigen::VectorXd& X, int size,
                                               double cells)
 {
-    Eigen::VectorXd change = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(explorer.design.parts().size()));
+    Eigen::VectorXd change =
+        Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(explorer.design.parts().size()));
     change[size] = cells * explorer.material.resolution();
     return explorer.design.changePartSizes(X, change);
 }
@@ -99,7 +100,8 @@ std::vector<Box> boxesOf(const Explorer& explorer, const DesignLayout& d)
 
 /// FORMCONTACTCHAINS along `axis`: from units touching the far border of their sheet's layout, through units
 /// touching each other, to the near border; each chain as the part sizes along `axis`.
-void lockingChains(const Explorer& explorer, const DesignLayout& d, int axis, std::vector<std::vector<int>>& chains)
+void lockingChains(const Explorer& explorer, const DesignLayout& d, int axis,
+                   std::vector<std::vector<int>>& chains)
 {
     constexpr size_t kMostChains = 512;
     const std::vector<Box> boxes = boxesOf(explorer, d);
@@ -171,7 +173,8 @@ std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout&
             counts.push_back(occ);
             weights.push_back(weight);
         }
-        const int o = counts[std::discrete_distribution<int>(weights.begin(), weights.end())(explorer.random)];
+        const int o =
+            counts[std::discrete_distribution<int>(weights.begin(), weights.end())(explorer.random)];
         std::vector<int> candidates;
         double depSum = 0;
         for (const auto& [size, occ] : occurrences)

@@ -20,7 +20,8 @@ struct DesignLayout {
 };
 
 /// What the design search works with: D, the material space, the docking order O, its random source, the
-/// designs that improved on the best so far (the path a suggestion's slider follows) and a stop flag and a deadline.
+/// designs that improved on the best so far (the path a suggestion's slider follows) and a stop flag and a
+/// deadline.
 struct Explorer {
     const DesignSpace& design;
     const MaterialSpace& material;
@@ -42,9 +43,9 @@ struct Explorer {
     void improved(const DesignLayout& best) { path.push_back(best); }
 };
 
-/// GROWPARTS (Algorithm 10): each part size in random order grows one grid cell at a time (sliding the layout,
-/// docking again when sliding loses) for as long as the wastage drops; a growth that ends below the current
-/// wastage is kept. Repeats while some growth was kept. `best` follows the least wastage seen.
+/// GROWPARTS (Algorithm 10): each part size in random order grows one grid cell at a time (sliding the
+/// layout, docking again when sliding loses) for as long as the wastage drops; a growth that ends below the
+/// current wastage is kept. Repeats while some growth was kept. `best` follows the least wastage seen.
 void growParts(Explorer& explorer, DesignLayout& best, DesignLayout& current);
 
 /// SELECTPARTSIZESTOSHRINK (Algorithm 12): the locking chains of the layout (units touching from the right

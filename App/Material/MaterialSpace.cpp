@@ -6,7 +6,8 @@
 
 namespace fabguide::material {
 
-MaterialSpace::MaterialSpace(std::vector<MasterBoard> boards, PackSettings settings, std::vector<PartKind> parts)
+MaterialSpace::MaterialSpace(std::vector<MasterBoard> boards, PackSettings settings,
+                             std::vector<PartKind> parts)
     : boards_(std::move(boards)), settings_(settings), parts_(std::move(parts))
 {
     for (size_t k = 0; k < parts_.size(); ++k)
@@ -20,7 +21,8 @@ PackProblem MaterialSpace::problem(const Eigen::VectorXd& sizes) const
 {
     PackProblem problem{boards_, {}, settings_, false};
     for (size_t k = 0; k < parts_.size(); ++k) {
-        problem.parts.push_back(rectangularPart(parts_[k].id, sizes[2 * k], sizes[2 * k + 1], parts_[k].quantity));
+        problem.parts.push_back(
+            rectangularPart(parts_[k].id, sizes[2 * k], sizes[2 * k + 1], parts_[k].quantity));
         problem.parts.back().followsGrain = parts_[k].followsGrain;
     }
     return problem;

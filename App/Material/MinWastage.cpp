@@ -186,7 +186,8 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
     return {X, sizes, std::move(layout), wastage};
 }
 
-Exploration minWastage(const DesignSpace& design, const MaterialSpace& material, const MinWastageOptions& options)
+Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
+                       const MinWastageOptions& options)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(

@@ -16,9 +16,9 @@ struct MinWastageOptions {
     int tasksPerRound = 8;      ///< orderings explored and improved per round (thesis: up to 8 threads)
     int improveIterations = 6;  ///< N of IMPROVEDESIGN
     int suggestions = 3;
-    int threads = 2;            ///< 1 runs everything on the caller's thread
-    std::uint64_t seed = 1;     ///< same seed, same suggestions (unless the time limit cuts the search)
-    double timeLimit = 10;      ///< seconds
+    int threads = 2;         ///< 1 runs everything on the caller's thread
+    std::uint64_t seed = 1;  ///< same seed, same suggestions (unless the time limit cuts the search)
+    double timeLimit = 10;   ///< seconds
     const std::atomic<bool>* cancel = nullptr;
     /// Called on the caller's thread after each task: fraction done, best usage so far.
     std::function<void(double, double)> progress;
@@ -47,6 +47,7 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
 /// suggestions are the least-wastage design found and then, among designs within 0.03 of its usage, those
 /// farthest (in part lengths) from the ones already chosen. Fewer when the search found no other distinct
 /// improving design.
-Exploration minWastage(const DesignSpace& design, const MaterialSpace& material, const MinWastageOptions& options);
+Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
+                       const MinWastageOptions& options);
 
 }  // namespace fabguide::material

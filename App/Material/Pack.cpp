@@ -95,7 +95,8 @@ RasterProblem rasterise(const PackProblem& problem)
         for (int q = 0; q < problem.parts[i].quantity; ++q) {
             raster.parts.push_back(rasterPart(problem.parts[i], settings));
             raster.specOf.push_back(static_cast<int>(i));
-            stripCells += std::max(raster.parts.back().shapes[0].width(), raster.parts.back().shapes[0].height());
+            stripCells +=
+                std::max(raster.parts.back().shapes[0].width(), raster.parts.back().shapes[0].height());
         }
     for (const MasterBoard& board : problem.boards)
         raster.stock.push_back(

@@ -1,0 +1,176 @@
+// Design exploration (thesis 5.4): SLIDE, the locking chains, IMPROVEDESIGN and MINWASTAGE on real designs.
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
+#include "Material/MinWastage.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+using namespace fabguide;
+using namespace fabguide::material;
+
+namespace {
+
+io::FlatpackDesign example(const std::string& name)
+{
+    return io::readFlatpack(io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/examples/" + name));
+}
+
+/// No two units overlap, every unit inside its board.
+void expectValid(const MaterialSpace& material, const GridLayout& layout, const Eigen::VectorXd& sizes)
+{
+    const RasterProblem units = material.raster(sizes);
+    ASSERT_TRUE(layout.unplaced.empty());
+    ASSERT_EQ(layout.placed.size(), units.parts.size());
+    for (size_t i = 0; i < layout.placed.size(); ++i) {
+        const Placed& a = layout.placed[i];
+        const Footprint& fa = units.parts[a.part].shapes[a.shape];
+        const BoardStock& board = material.stock()[layout.stock[a.sheet]];
+        EXPECT_GE(a.x, 0);
+        EXPECT_GE(a.y, 0);
+        EXPECT_LE(a.x + fa.width(), board.width);
+        EXPECT_LE(a.y + fa.height(), board.height);
+        for (size_t j = 0; j < i; ++j) {
+            const Placed& b = layout.placed[j];
+            const Footprint& fb = units.parts[b.part].shapes[b.shape];
+            const bool apart = a.sheet != b.sheet || a.x >= b.x + fb.width() || b.x >= a.x + fa.width() ||
+                               a.y >= b.y + fb.height() || b.y >= a.y + fa.height();
+            EXPECT_TRUE(apart) << "units " << a.part << " and " << b.part << " overlap";
+        }
+    }
+}
+
+}  // namespace
+
+TEST(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    expectValid(material, start.layout, start.sizes);
+    Eigen::VectorXd sizes = start.sizes;
+    sizes[0] += 40;  // the top 40 mm wider: overlaps whatever sat beside it
+    const GridLayout slid = material.slide(start.layout, sizes);
+    expectValid(material, slid, sizes);
+    EXPECT_LT(material.wastage(slid, sizes), 1);
+    // Shrinking leaves gaps that sliding closes: the layout never grows.
+    sizes = start.sizes;
+    sizes[1] -= 20;
+    const GridLayout shrunk = material.slide(start.layout, sizes);
+    expectValid(material, shrunk, sizes);
+    EXPECT_LE(shrunk.usedWidth[0] * shrunk.usedHeight[0],
+              start.layout.usedWidth[0] * start.layout.usedHeight[0]);
+}
+
+TEST(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    Explorer explorer{design, material, {}, std::mt19937_64(3), nullptr, {}, {}};
+    const DesignLayout start = layOut(design, material, 1);
+    const std::vector<int> sizes = selectPartSizesToShrink(explorer, start);
+    ASSERT_FALSE(sizes.empty());
+    for (int s : sizes) {
+        Eigen::VectorXd change = Eigen::VectorXd::Zero(start.sizes.size());
+        change[s] = -material.resolution();
+        EXPECT_TRUE(design.changePartSizes(start.X, change)) << "size " << s;
+    }
+}
+
+TEST(MinWastageTest, SuggestionsWasteLessAndKeepEveryConstraint)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    MinWastageOptions options;
+    options.timeLimit = 60;
+    const Exploration e = minWastage(design, material, options);
+    ASSERT_FALSE(e.suggestions.empty());
+    EXPECT_LE(e.suggestions.size(), 3u);
+    for (const Suggestion& s : e.suggestions) {
+        EXPECT_GT(s.usage(), e.usageBefore());
+        EXPECT_TRUE(unsatisfied(f.design, s.result.X, 1e-6).empty());
+        EXPECT_TRUE(ineffective(f.design, s.result.X).empty());
+        expectValid(material, s.result.layout, s.result.sizes);
+        // The path runs from the user's design to the suggestion, each step valid.
+        ASSERT_GE(s.path.size(), 2u);
+        EXPECT_EQ(s.path.front().X, design.start());
+        EXPECT_EQ(s.path.back().X, s.result.X);
+        for (const DesignLayout& step : s.path)
+            EXPECT_TRUE(unsatisfied(f.design, step.X, 1e-6).empty());
+    }
+    // Suggestions differ from each other in their part sizes.
+    for (size_t i = 1; i < e.suggestions.size(); ++i)
+        EXPECT_GT((e.suggestions[i].result.sizes - e.suggestions[0].result.sizes).norm(), 1.0);
+}
+
+TEST(MinWastageTest, TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    MinWastageOptions options;
+    options.timeLimit = 60;
+    options.seed = 7;
+    options.threads = 1;
+    const Exploration one = minWastage(design, material, options);
+    options.threads = 2;
+    const Exploration two = minWastage(design, material, options);
+    ASSERT_EQ(one.suggestions.size(), two.suggestions.size());
+    for (size_t i = 0; i < one.suggestions.size(); ++i)
+        EXPECT_EQ(one.suggestions[i].result.X, two.suggestions[i].result.X);
+}
+
+TEST(MinWastageTest, CancellingStopsTheSearchAndReportsProgressOnTheCallersThread)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    std::atomic<bool> cancel{false};
+    const std::thread::id caller = std::this_thread::get_id();
+    int calls = 0;
+    MinWastageOptions options;
+    options.cancel = &cancel;
+    options.progress = [&](double done, double best) {
+        EXPECT_EQ(std::this_thread::get_id(), caller);
+        EXPECT_GT(done, 0);
+        EXPECT_LE(done, 1);
+        EXPECT_GT(best, 0);
+        ++calls;
+        cancel = true;
+    };
+    const Exploration e = minWastage(design, material, options);
+    EXPECT_TRUE(e.stopped);
+    EXPECT_GE(calls, 1);
+    EXPECT_LT(e.designsImproved, options.rounds * options.tasksPerRound);
+}
+
+TEST(MinWastageTest, AParametricDesignIsImprovedThroughItsGradients)
+{
+    // A box of side s and height h from 12 mm boards: two sides s x h, two ends (s - 24) x h, a bottom
+    // (s - 24) x (s - 24); parameters s in [200, 400], h in [100, 300].
+    const ParametricDesign design(
+        {{"side", 2}, {"end", 2}, {"bottom", 1}},
+        [](const Eigen::VectorXd& x) {
+            Eigen::VectorXd s(6);
+            s << x[0], x[1], x[0] - 24, x[1], x[0] - 24, x[0] - 24;
+            return s;
+        },
+        Eigen::Vector2d(300, 170), Eigen::Vector2d(200, 100), Eigen::Vector2d(400, 300));
+    const MaterialSpace material({{"mdf", "mdf", 900, 600, 12, 1}}, {1.0, 0, 0, 0}, design.parts());
+    MinWastageOptions options;
+    options.timeLimit = 60;
+    options.rounds = 2;
+    const Exploration e = minWastage(design, material, options);
+    ASSERT_FALSE(e.suggestions.empty());
+    const Eigen::VectorXd x = e.suggestions[0].result.X;
+    EXPECT_GT(e.suggestions[0].usage(), e.usageBefore());
+    EXPECT_GE(x[0], 200);
+    EXPECT_LE(x[0], 400);
+    EXPECT_GE(x[1], 100);
+    EXPECT_LE(x[1], 300);
+    expectValid(material, e.suggestions[0].result.layout, e.suggestions[0].result.sizes);
+}
