@@ -96,6 +96,8 @@ void addOptimiseCommand(CLI::App& app)
                     "G: rounds of ordering exploration and design improvement")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_flag("!--unguided", args->options.guided,
+                  "shrink random part sizes instead of the layout's locking chains (the thesis' baseline)");
     cmd->callback([args] { run(*args); });
 }
 

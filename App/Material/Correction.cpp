@@ -12,11 +12,12 @@ namespace {
 
 constexpr double kResidual = 1e-9;  // mm, thesis 5.3.5.2
 
-/// The equalities as a dense C and s (C X = s).
+/// The equalities as C and s (C X = s), C also by columns for the variable choice.
 struct System {
     Eigen::MatrixXd C;
     Eigen::VectorXd s;
     std::vector<std::string> names;
+    std::vector<std::vector<std::pair<int, double>>> columns;  ///< per variable: (row, coefficient)
 };
 
 System systemOf(const Design& design, const std::vector<DesignConstraint>& extra, int variables)
@@ -28,13 +29,18 @@ System systemOf(const Design& design, const std::vector<DesignConstraint>& extra
         rows.push_back(&e);
     System system{Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), variables),
                   Eigen::VectorXd(static_cast<int>(rows.size())),
-                  {}};
+                  {},
+                  std::vector<std::vector<std::pair<int, double>>>(variables)};
     for (size_t i = 0; i < rows.size(); ++i) {
         for (const auto& [variable, coefficient] : rows[i]->expression.terms)
             system.C(static_cast<int>(i), variable) += coefficient;
         system.s[static_cast<int>(i)] = -rows[i]->expression.constant;
         system.names.push_back(rows[i]->name);
     }
+    for (int v = 0; v < variables; ++v)
+        for (int i = 0; i < system.C.rows(); ++i)
+            if (system.C(i, v) != 0)
+                system.columns[v].emplace_back(i, system.C(i, v));
     return system;
 }
 
@@ -44,21 +50,26 @@ int chooseVariable(const System& system, const Eigen::VectorXd& r, const Eigen::
 {
     int best = -1;
     double bestScore = -std::numeric_limits<double>::infinity();
-    for (int v = 0; v < system.C.cols(); ++v) {
-        const Eigen::VectorXd c = system.C.col(v);
-        bool inBrokenRow = false;
-        for (int i = 0; i < r.size() && !inBrokenRow; ++i)
-            inBrokenRow = std::abs(r[i]) > kResidual && c[i] != 0;
-        if (!inBrokenRow || fixed[v])
+    for (int v = 0; v < static_cast<int>(system.columns.size()); ++v) {
+        if (fixed[v])
             continue;
-        const double m = -c.dot(r) / c.squaredNorm();  // how far it would move alone
+        bool inBrokenRow = false;
+        double cr = 0, cc = 0;
+        for (const auto& [row, c] : system.columns[v]) {
+            inBrokenRow = inBrokenRow || std::abs(r[row]) > kResidual;
+            cr += c * r[row];
+            cc += c * c;
+        }
+        if (!inBrokenRow)
+            continue;
+        const double m = -cr / cc;  // how far it would move alone
         const bool length = v % 6 >= 3;
         if (length && at[v] + m < minimum[v] - 1e-9)
             continue;  // it would pass its minimum length
         double score = -std::abs(m);
         if (length)
             score -= 1e6;  // positions before lengths
-        if (std::abs(c.dot(r)) < 1e-12)
+        if (std::abs(cr) < 1e-12)
             score -= 1e12;  // alone it cannot help
         if (score > bestScore) {
             bestScore = score;
@@ -68,15 +79,11 @@ int chooseVariable(const System& system, const Eigen::VectorXd& r, const Eigen::
     return best;
 }
 
-}  // namespace
-
-std::optional<Eigen::VectorXd> correctForDesignConstraints(const Design& design,
-                                                           const std::vector<DesignConstraint>& extra,
-                                                           const Eigen::VectorXd& X, const Eigen::VectorXd& u,
-                                                           std::vector<std::string>* broken)
+/// Algorithm 6 on a prepared system.
+std::optional<Eigen::VectorXd> correct(const System& system, const Design& design, const Eigen::VectorXd& X,
+                                       const Eigen::VectorXd& u, std::vector<std::string>* broken)
 {
     const int n = static_cast<int>(X.size());
-    const System system = systemOf(design, extra, n);
     const Eigen::VectorXd changed = X + u;
     const Eigen::VectorXd minimum = design.minimum();
     std::vector<bool> fixed = design.frozen();
@@ -84,7 +91,8 @@ std::optional<Eigen::VectorXd> correctForDesignConstraints(const Design& design,
         fixed[v] = fixed[v] || u[v] != 0;
 
     Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd r = system.C * changed - system.s;
+    const Eigen::VectorXd target = system.s - system.C * changed;
+    Eigen::VectorXd r = -target;
     std::vector<int> freed;  // Λ
     while (r.norm() >= kResidual) {
         const int v = chooseVariable(system, r, changed + d, fixed, minimum);
@@ -101,14 +109,23 @@ std::optional<Eigen::VectorXd> correctForDesignConstraints(const Design& design,
         Eigen::MatrixXd subset(system.C.rows(), static_cast<int>(freed.size()));
         for (size_t k = 0; k < freed.size(); ++k)
             subset.col(static_cast<int>(k)) = system.C.col(freed[k]);
-        const Eigen::VectorXd dFreed =
-            subset.completeOrthogonalDecomposition().solve(system.s - system.C * changed);
+        const Eigen::VectorXd dFreed = subset.completeOrthogonalDecomposition().solve(target);
         d.setZero();
         for (size_t k = 0; k < freed.size(); ++k)
             d[freed[k]] = dFreed[static_cast<int>(k)];
-        r = system.C * (changed + d) - system.s;
+        r = subset * dFreed - target;
     }
     return d;
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> correctForDesignConstraints(const Design& design,
+                                                           const std::vector<DesignConstraint>& extra,
+                                                           const Eigen::VectorXd& X, const Eigen::VectorXd& u,
+                                                           std::vector<std::string>* broken)
+{
+    return correct(systemOf(design, extra, static_cast<int>(X.size())), design, X, u, broken);
 }
 
 namespace {
@@ -150,9 +167,10 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
 {
     std::vector<DesignConstraint> held;
     std::vector<std::string> broken;  // the design constraints the last failed attempt could not keep
+    System system = systemOf(design, held, static_cast<int>(X.size()));
     const auto attempt = [&](double alpha) -> std::optional<Eigen::VectorXd> {
         broken.clear();
-        auto d = correctForDesignConstraints(design, held, X, alpha * u, &broken);
+        auto d = correct(system, design, X, alpha * u, &broken);
         if (!d)
             return std::nullopt;
         return X + alpha * u + *d;
@@ -163,15 +181,16 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
     };
     CorrectedChange best{X, 0, {}};
     while (true) {
-        if (auto full = attempt(1.0); full && ineffective(design, *full).empty())
+        if (auto full = attempt(1.0); full && effective(design, *full))
             return {*full, 1.0, {}};
         // Bisection on alpha for the first break (lines 4-12).
         double l = best.alpha, r = 1.0;
         Eigen::VectorXd atL = best.X, atR = X + u;
-        while (r - l > 1e-6) {
+        const double step = std::max(1e-12, u.lpNorm<Eigen::Infinity>());
+        while ((r - l) * step > 1e-4) {  // to a tenth of a micrometre along the change
             const double m = (l + r) / 2;
             const auto at = attempt(m);
-            if (at && ineffective(design, *at).empty()) {
+            if (at && effective(design, *at)) {
                 l = m;
                 atL = *at;
             } else {
@@ -188,6 +207,7 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
                 held.push_back(std::move(c));
                 ++added;
             }
+        system = systemOf(design, held, static_cast<int>(X.size()));
         if (added == 0) {
             for (const DesignConstraint& c : held)
                 best.limits.push_back(c.name);

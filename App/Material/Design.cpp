@@ -125,6 +125,18 @@ bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, do
     return true;
 }
 
+bool effective(const Design& design, const Eigen::VectorXd& X)
+{
+    for (const DesignConstraint& bound : design.bounds)
+        if (bound.expression.value(X) > 1e-7)
+            return false;
+    for (const InnerVolume& volume : design.innerVolumes)
+        for (size_t b = 0; b < design.boards.size(); ++b)
+            if (intrudes(volume, static_cast<int>(b), X))
+                return false;
+    return true;
+}
+
 std::vector<std::string> ineffective(const Design& design, const Eigen::VectorXd& X)
 {
     std::vector<std::string> broken;

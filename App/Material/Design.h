@@ -87,7 +87,10 @@ struct Design {
 /// Whether board `board` at X overlaps the inner volume's interior by more than `tolerance` on every axis.
 bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, double tolerance = 1e-6);
 
-/// The effectiveness constraints X breaks, by name (empty when E(X) is true, thesis 5.3.5.1).
+/// E(X) of thesis 5.3.5.1: every bound holds and no board enters an inner volume.
+bool effective(const Design& design, const Eigen::VectorXd& X);
+
+/// The effectiveness constraints X breaks, by name (empty when E(X) is true).
 std::vector<std::string> ineffective(const Design& design, const Eigen::VectorXd& X);
 
 /// The design constraints X breaks by more than `tolerance` mm, by name.

@@ -196,13 +196,28 @@ std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout&
     return chosen;
 }
 
+namespace {
+
+/// The baseline of thesis Fig. 5.20: one to three part sizes drawn at random.
+std::vector<int> randomSizes(Explorer& explorer, const DesignLayout& best)
+{
+    std::vector<int> sizes(best.sizes.size());
+    std::iota(sizes.begin(), sizes.end(), 0);
+    std::shuffle(sizes.begin(), sizes.end(), explorer.random);
+    sizes.resize(std::min<size_t>(sizes.size(), std::uniform_int_distribution<size_t>(1, 3)(explorer.random)));
+    return sizes;
+}
+
+}  // namespace
+
 DesignLayout improveDesign(Explorer& explorer, const DesignLayout& start, int iterations)
 {
     DesignLayout best = start, current = start;
     for (int i = 0; i < iterations && !explorer.stopped(); ++i) {
         growParts(explorer, best, current);
         // SHRINKPARTS (Algorithm 11): one cell off each chosen size at once.
-        const std::vector<int> shrink = selectPartSizesToShrink(explorer, best);
+        const std::vector<int> shrink =
+            explorer.guided ? selectPartSizesToShrink(explorer, best) : randomSizes(explorer, best);
         if (shrink.empty())
             break;
         Eigen::VectorXd change = Eigen::VectorXd::Zero(best.sizes.size());

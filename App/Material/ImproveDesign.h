@@ -30,6 +30,7 @@ struct Explorer {
     const std::atomic<bool>* stop = nullptr;
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
     std::vector<DesignLayout> path;
+    bool guided = true;  ///< false: shrink random part sizes instead of the locking chains (Fig. 5.20 baseline)
 
     bool stopped() const
     {
@@ -55,7 +56,8 @@ void growParts(Explorer& explorer, DesignLayout& best, DesignLayout& current);
 std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout& best);
 
 /// IMPROVEDESIGN (Algorithm 8): `iterations` rounds of grow, then shrink the locking chains by one cell
-/// (SHRINKPARTS, Algorithm 11) and slide; returns the least-wastage design found.
+/// (SHRINKPARTS, Algorithm 11) and slide; returns the least-wastage design found. Unguided, it shrinks one
+/// to three part sizes drawn at random instead.
 DesignLayout improveDesign(Explorer& explorer, const DesignLayout& start, int iterations);
 
 }  // namespace fabguide::material

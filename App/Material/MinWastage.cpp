@@ -55,7 +55,7 @@ GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& s
 Entry improve(const DesignSpace& design, const MaterialSpace& material, const Entry& from, std::uint64_t seed,
               bool keepOrder, const MinWastageOptions& options, Clock::time_point deadline)
 {
-    Explorer explorer{design, material, from.order, std::mt19937_64(seed), options.cancel, deadline, {}};
+    Explorer explorer{design, material, from.order, std::mt19937_64(seed), options.cancel, deadline, {}, options.guided};
     std::vector<int> order = from.order;
     if (!keepOrder)
         std::shuffle(order.begin(), order.end(), explorer.random);
@@ -181,7 +181,15 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
     const RasterProblem units = material.raster(sizes);
-    GridLayout layout = exploredOrder(material, sizes, decreasingExtentOrder(units.parts), seed);
+    OrderingSearchOptions options;
+    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());
+    options.timeLimit = 10;  // the iterations end it first
+    options.seed = seed;
+    GridLayout layout = searchFromStarts(units.parts, material.stock(), options);
+    if (!layout.unplaced.empty())
+        throw PackingError("the design does not fit on the master boards: part '" +
+                           material.parts()[material.kindOf()[layout.unplaced.front()]].id +
+                           "' is left over; add a board or make the design smaller");
     const double wastage = material.wastage(layout, sizes);
     return {X, sizes, std::move(layout), wastage};
 }

@@ -18,7 +18,8 @@ struct MinWastageOptions {
     int suggestions = 3;
     int threads = 2;         ///< 1 runs everything on the caller's thread
     std::uint64_t seed = 1;  ///< same seed, same suggestions (unless the time limit cuts the search)
-    double timeLimit = 10;   ///< seconds
+    double timeLimit = 8;    ///< seconds; the search ends with what it has found
+    bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
     const std::atomic<bool>* cancel = nullptr;
     /// Called on the caller's thread after each task: fraction done, best usage so far.
     std::function<void(double, double)> progress;
@@ -40,7 +41,8 @@ struct Exploration {
     double usageBefore() const { return 1 - start.wastage; }
 };
 
-/// The user's design laid out: EXPLOREORDERINGS from decreasing extent with |parts|² swaps.
+/// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
+/// |parts|² swaps each). Throws PackingError naming a part left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed);
 
 /// Algorithm 7. Every suggestion comes from CHANGEPARTSIZES, so it keeps the design's constraints; the
