@@ -6,7 +6,8 @@ import os
 import FreeCAD
 import FreeCADGui
 
-from fabguide.function import (configuration, cuboids, joints, mechanism, parts, printable, relationships,
+from fabguide import cuboids
+from fabguide.function import (configuration, joints, mechanism, parts, printable, relationships,
                                workslike_file)
 from fabguide_gui import function_viewproviders as vp
 from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction

@@ -5,7 +5,8 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from fabguide.function import cuboids, mechanism, parts, relationships
+from fabguide import cuboids
+from fabguide.function import mechanism, parts, relationships
 from fabguide_gui.configurations_panel import close_panel
 
 BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)

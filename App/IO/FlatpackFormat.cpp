@@ -173,12 +173,14 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
         const double high = c.number("max", fraction > 0 ? value * (1 + fraction) : HUGE_VAL);
         if (!c.has("min") && !c.has("max") && !(fraction > 0))
             throw FormatError(path + ": a range needs min, max or fraction");
+        // A named range names both its ends: "table height (min)", "table height (max)".
+        const auto end = [&](const char* side, const std::string& fallback) {
+            return c.has("name") ? c.text("name") + " (" + side + ")" : fallback;
+        };
         if (std::isfinite(low))
-            design.bounds.push_back(
-                {c.text("name", name + " >= " + show(low)), material::constant(low) - ref});
+            design.bounds.push_back({end("min", name + " >= " + show(low)), material::constant(low) - ref});
         if (std::isfinite(high))
-            design.bounds.push_back(
-                {c.text("name", name + " <= " + show(high)), ref - material::constant(high)});
+            design.bounds.push_back({end("max", name + " <= " + show(high)), ref - material::constant(high)});
     } else {
         throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + kind +
                           "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");

@@ -204,7 +204,8 @@ std::vector<int> randomSizes(Explorer& explorer, const DesignLayout& best)
     std::vector<int> sizes(best.sizes.size());
     std::iota(sizes.begin(), sizes.end(), 0);
     std::shuffle(sizes.begin(), sizes.end(), explorer.random);
-    sizes.resize(std::min<size_t>(sizes.size(), std::uniform_int_distribution<size_t>(1, 3)(explorer.random)));
+    sizes.resize(
+        std::min<size_t>(sizes.size(), std::uniform_int_distribution<size_t>(1, 3)(explorer.random)));
     return sizes;
 }
 

@@ -30,7 +30,8 @@ struct Explorer {
     const std::atomic<bool>* stop = nullptr;
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
     std::vector<DesignLayout> path;
-    bool guided = true;  ///< false: shrink random part sizes instead of the locking chains (Fig. 5.20 baseline)
+    bool guided =
+        true;  ///< false: shrink random part sizes instead of the locking chains (Fig. 5.20 baseline)
 
     bool stopped() const
     {

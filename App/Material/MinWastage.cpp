@@ -55,7 +55,8 @@ GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& s
 Entry improve(const DesignSpace& design, const MaterialSpace& material, const Entry& from, std::uint64_t seed,
               bool keepOrder, const MinWastageOptions& options, Clock::time_point deadline)
 {
-    Explorer explorer{design, material, from.order, std::mt19937_64(seed), options.cancel, deadline, {}, options.guided};
+    Explorer explorer{design,         material, from.order, std::mt19937_64(seed),
+                      options.cancel, deadline, {},         options.guided};
     std::vector<int> order = from.order;
     if (!keepOrder)
         std::shuffle(order.begin(), order.end(), explorer.random);

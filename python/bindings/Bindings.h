@@ -8,5 +8,6 @@ namespace fabguide::bindings {
 void bindMaterial(pybind11::module_& m);
 void bindFunction(pybind11::module_& m);
 void bindPrintable(pybind11::module_& m);
+void bindExplore(pybind11::module_& m);
 
 }  // namespace fabguide::bindings

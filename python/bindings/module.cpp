@@ -16,4 +16,5 @@ PYBIND11_MODULE(fabguide_core, m)
     fabguide::bindings::bindMaterial(m);
     fabguide::bindings::bindFunction(m);
     fabguide::bindings::bindPrintable(m);
+    fabguide::bindings::bindExplore(m);
 }

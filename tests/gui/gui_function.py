@@ -11,7 +11,8 @@ from PySide import QtGui
 
 import fabguide_core
 import guitest
-from fabguide.function import cuboids, joints, mechanism, relationships
+from fabguide import cuboids
+from fabguide.function import joints, mechanism, relationships
 
 state = {}
 SOURCE = os.environ["FABGUIDE_SOURCE_DIR"]

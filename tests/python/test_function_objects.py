@@ -8,7 +8,8 @@ import FreeCAD
 import pytest
 
 import fabguide_core
-from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships, workslike_file
+from fabguide import cuboids
+from fabguide.function import configuration, joints, mechanism, parts, relationships, workslike_file
 
 
 @pytest.fixture

@@ -3,7 +3,7 @@ axis, a sliding hinge does both; a double pivot links a point on a face of the p
 of its Base by a rigid link (the solve places both pivots, 4.3.6). A joint may hang on another moving part (its
 Base), which carries it."""
 from fabguide import properties
-from fabguide.function import cuboids
+from fabguide import cuboids
 
 AXES = ["x", "y", "z"]
 

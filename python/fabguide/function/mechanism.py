@@ -7,7 +7,8 @@ import FreeCAD
 
 import fabguide_core
 from fabguide import properties
-from fabguide.function import configuration, cuboids, joints, parts, relationships
+from fabguide import cuboids
+from fabguide.function import configuration, joints, parts, relationships
 
 SATISFIED = "Satisfied"
 

@@ -1,6 +1,6 @@
 """A works-like part (thesis 4.1.1): one or more native Part::Box objects moving together."""
 from fabguide import properties
-from fabguide.function import cuboids
+from fabguide import cuboids
 
 
 class FunctionalPart(properties.Proxy):

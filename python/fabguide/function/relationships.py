@@ -1,7 +1,7 @@
 """Functional relationships (thesis 4.2–4.3): cover, fit inside, support, flush, and geometric relations. Each
 names the configuration it must hold in and shows its Status after the Mechanism solves."""
 from fabguide import properties
-from fabguide.function import cuboids
+from fabguide import cuboids
 
 ARROW = " -> "  # how a pair of the corresponding-faces graph is written in Pairs
 

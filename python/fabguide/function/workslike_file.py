@@ -4,7 +4,8 @@ import json
 
 import FreeCAD
 
-from fabguide.function import configuration, cuboids, joints, mechanism, parts, relationships
+from fabguide import cuboids
+from fabguide.function import configuration, joints, mechanism, parts, relationships
 
 
 def import_model(doc, data, label="Mechanism"):

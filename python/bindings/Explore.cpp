@@ -1,0 +1,218 @@
+// Bindings of zero-waste design exploration (thesis 5.3-5.4): designs are the `*.flatpack.json` dicts of
+// docs/formats.md; the search runs without the GIL and reports progress on the calling thread.
+#include "Bindings.h"
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+#include "Json.h"
+#include "Material/Correction.h"
+
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+
+namespace py = pybind11;
+
+namespace fabguide::bindings {
+
+namespace {
+
+/// Lets another thread stop a running exploration.
+struct CancelToken {
+    std::atomic<bool> flag{false};
+};
+
+/// A design's layout: usage, the layout dict and the pack problem dict it refers to.
+nlohmann::json layoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
+{
+    const material::PackProblem problem = material.problem(d.sizes);
+    nlohmann::json parts = nlohmann::json::array();
+    for (const material::PartSpec& p : problem.parts)
+        parts.push_back(
+            {{"id", p.id}, {"width", p.width()}, {"height", p.height()}, {"quantity", p.quantity}});
+    nlohmann::json boards = nlohmann::json::array();
+    for (const material::MasterBoard& b : problem.boards)
+        boards.push_back({{"name", b.name},
+                          {"material", b.material},
+                          {"width", b.width},
+                          {"height", b.height},
+                          {"thickness", b.thickness},
+                          {"count", b.count}});
+    const nlohmann::json settings = {{"resolution", problem.settings.resolution},
+                                     {"kerf", problem.settings.kerf},
+                                     {"spacing", problem.settings.spacing},
+                                     {"trim", problem.settings.trim}};
+    return {
+        {"usage", 1 - d.wastage},
+        {"layout", io::layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, io::PartNames::Ids)},
+        {"problem",
+         {{"format", "fabguide.pack"}, {"settings", settings}, {"boards", boards}, {"parts", parts}}}};
+}
+
+material::MinWastageOptions options(std::uint64_t seed, int threads, double timeLimit, int rounds,
+                                    bool guided, const std::function<void(double, double)>& progress,
+                                    CancelToken* cancel)
+{
+    material::MinWastageOptions o;
+    o.seed = seed;
+    o.threads = threads;
+    o.timeLimit = timeLimit;
+    o.rounds = rounds;
+    o.guided = guided;
+    o.cancel = cancel ? &cancel->flag : nullptr;
+    if (progress)
+        o.progress = [progress](double done, double best) {
+            py::gil_scoped_acquire gil;
+            progress(done, best);
+        };
+    return o;
+}
+
+material::Exploration explore(const material::DesignSpace& design, const material::MaterialSpace& material,
+                              const material::MinWastageOptions& o)
+{
+    py::gil_scoped_release release;
+    return material::minWastage(design, material, o);
+}
+
+py::object layOutDesign(const py::object& document, std::uint64_t seed)
+{
+    const io::FlatpackDesign f = io::readFlatpack(toJson(document));
+    const material::ConstrainedDesign design(f.design);
+    const material::MaterialSpace material(f.boards, f.settings, design.parts());
+    material::DesignLayout laid;
+    {
+        py::gil_scoped_release release;
+        laid = material::layOut(design, material, seed);
+    }
+    return fromJson(layoutJson(material, laid));
+}
+
+py::object optimise(const py::object& document, std::uint64_t seed, int threads, double timeLimit, int rounds,
+                    bool guided, const std::function<void(double, double)>& progress, CancelToken* cancel)
+{
+    const nlohmann::json doc = toJson(document);
+    const io::FlatpackDesign f = io::readFlatpack(doc);
+    const material::ConstrainedDesign design(f.design);
+    const material::MaterialSpace material(f.boards, f.settings, design.parts());
+    const material::Exploration e =
+        explore(design, material, options(seed, threads, timeLimit, rounds, guided, progress, cancel));
+    nlohmann::json out = {{"usage_before", e.usageBefore()},
+                          {"before", layoutJson(material, e.start)},
+                          {"seconds", e.seconds},
+                          {"stopped", e.stopped},
+                          {"suggestions", nlohmann::json::array()}};
+    for (const material::Suggestion& s : e.suggestions) {
+        nlohmann::json entry = layoutJson(material, s.result);
+        entry["design"] = io::suggestionDocument(doc, f.design, s);
+        out["suggestions"].push_back(entry);
+    }
+    return fromJson(out);
+}
+
+/// Thesis 5.3.5: the edited design kept valid, the edits kept (Algorithms 5 and 6).
+py::object correctDesign(const py::object& valid, const py::object& edited)
+{
+    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
+    nlohmann::json editedDoc = toJson(valid);
+    editedDoc["parts"] = toJson(edited)["parts"];
+    material::Design changed = before.design;
+    const nlohmann::json& parts = editedDoc["parts"];
+    if (!parts.is_array() || parts.size() != changed.boards.size())
+        throw io::FormatError("parts: the edited design must have the same parts as the valid one");
+    for (size_t b = 0; b < parts.size(); ++b) {
+        const io::Fields part(parts[b], "parts[" + std::to_string(b) + "]");
+        changed.boards[b].size = part.vector3("size");
+        changed.boards[b].centre = part.vector3("position") + changed.boards[b].size / 2;
+    }
+    const Eigen::VectorXd X = before.design.variables();
+    material::CorrectedChange c;
+    {
+        py::gil_scoped_release release;
+        c = material::correctChange(before.design, X, changed.variables() - X);
+    }
+    return fromJson({{"parts", io::partsAt(before.design, c.X)}, {"alpha", c.alpha}, {"limits", c.limits}});
+}
+
+py::object optimiseParametric(const py::list& parts,
+                              const std::function<std::vector<double>(std::vector<double>)>& sizes,
+                              const std::vector<double>& start, const std::vector<double>& lower,
+                              const std::vector<double>& upper, const py::object& sheets, std::uint64_t seed,
+                              double timeLimit, int rounds,
+                              const std::function<void(double, double)>& progress, CancelToken* cancel)
+{
+    std::vector<material::PartKind> kinds;
+    for (const py::handle& p : parts)
+        kinds.push_back(
+            {p["id"].cast<std::string>(), p.contains("quantity") ? p["quantity"].cast<int>() : 1});
+    const auto toVector = [](const std::vector<double>& v) {
+        return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    };
+    const material::ParametricDesign design(
+        kinds,
+        [sizes](const Eigen::VectorXd& X) {
+            const std::vector<double> s = sizes(std::vector<double>(X.data(), X.data() + X.size()));
+            return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(s.data(), s.size()));
+        },
+        toVector(start), toVector(lower), toVector(upper));
+    const nlohmann::json sheetsDoc = toJson(sheets);
+    const material::MaterialSpace material(io::readMasterBoards(sheetsDoc), io::readSettings(sheetsDoc),
+                                           kinds);
+    // D(X) is Python: one thread, on this one (FreeCAD documents recompute on the thread that owns them).
+    material::MinWastageOptions o = options(seed, 1, timeLimit, rounds, true, progress, cancel);
+    const material::Exploration e = material::minWastage(design, material, o);
+    const auto list = [](const Eigen::VectorXd& X) {
+        return std::vector<double>(X.data(), X.data() + X.size());
+    };
+    nlohmann::json out = {{"usage_before", e.usageBefore()},
+                          {"seconds", e.seconds},
+                          {"stopped", e.stopped},
+                          {"suggestions", nlohmann::json::array()}};
+    for (const material::Suggestion& s : e.suggestions) {
+        nlohmann::json entry = layoutJson(material, s.result);
+        entry["parameters"] = list(s.result.X);
+        entry["path"] = nlohmann::json::array();
+        for (const material::DesignLayout& step : s.path)
+            entry["path"].push_back({{"usage", 1 - step.wastage}, {"parameters", list(step.X)}});
+        out["suggestions"].push_back(entry);
+    }
+    return fromJson(out);
+}
+
+}  // namespace
+
+void bindExplore(py::module_& m)
+{
+    py::class_<CancelToken>(m, "CancelToken", "Stops a running optimise() from another thread.")
+        .def(py::init<>())
+        .def("cancel", [](CancelToken& t) { t.flag = true; })
+        .def_property_readonly("cancelled", [](const CancelToken& t) { return t.flag.load(); });
+    m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1,
+          "A *.flatpack.json design dict laid out on its master boards: {usage, layout, problem}. Raises "
+          "FormatError naming a bad field or a broken constraint, PackingError naming a part that does not "
+          "fit.");
+    m.def(
+        "optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
+        py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
+        py::arg("progress") = nullptr, py::arg("cancel") = nullptr,
+        "MINWASTAGE on a *.flatpack.json design dict: {usage_before, before, seconds, stopped, suggestions: "
+        "[{usage, layout, problem, design (with path)}]}. progress(fraction, best_usage) is called on this "
+        "thread; cancel is a CancelToken.");
+    m.def("correct_design", &correctDesign, py::arg("valid"), py::arg("edited"),
+          "Keeps an edited design valid (thesis 5.3.5): valid is a design dict satisfying its constraints, "
+          "edited "
+          "has the same parts with some moved or resized. Returns {parts, alpha (share of the edit kept), "
+          "limits "
+          "(constraints that stopped it)}.");
+    m.def(
+        "optimise_parametric", &optimiseParametric, py::arg("parts"), py::arg("sizes"), py::arg("start"),
+        py::arg("lower"), py::arg("upper"), py::arg("sheets"), py::arg("seed") = 1,
+        py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("progress") = nullptr,
+        py::arg("cancel") = nullptr,
+        "MINWASTAGE on a parametric design (thesis 5.4.2.2): sizes(parameters) -> [w0, h0, w1, h1, ...] for "
+        "parts [{id, quantity}], parameters within [lower, upper]; sheets is {boards, settings} as in "
+        "*.pack.json. Runs on this thread. Returns suggestions with their parameters and paths.");
+}
+
+}  // namespace fabguide::bindings

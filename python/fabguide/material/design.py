@@ -1,0 +1,330 @@
+"""Flat-pack design (thesis 5.1): furniture modelled as native Part::Box boards of one thickness, with design
+constraints, inner and outer volumes and the master boards to cut from. Its recompute keeps the constraints
+holding as the user edits a box (thesis 5.3.5: the edit is kept, the rest adapts) and lays the boards out to
+show the material usage live; an edit that no longer fits the master boards is undone with the reason."""
+import json
+
+import FreeCAD
+import Part
+
+import fabguide_core
+from fabguide import cuboids, properties
+from fabguide.material import master_board
+
+SATISFIED = "Satisfied"
+UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
+KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
+
+
+class DesignError(ValueError):
+    """A design that cannot be read as modelled; the message names the design and the object."""
+
+
+class FlatpackDesign(properties.Proxy):
+    TYPE = "FabGuide::FlatpackDesign"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Design", "Master boards to cut the boards from")
+        add(obj, "App::PropertyLength", "Resolution", "Layout", "Grid cell size tau (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyLength", "Kerf", "Layout", "Width of the cut", 0.2)
+        add(obj, "App::PropertyLength", "Spacing", "Layout", "Extra material between parts", 3)
+        add(obj, "App::PropertyLength", "Trim", "Layout", "Margin cut off every master board edge", 5)
+        add(obj, "App::PropertyLength", "MinimumLength", "Design", "Shortest side a board may shrink to", 60)
+        add(obj, "App::PropertyBool", "Snap", "Design", "Boards that touch stay touching (edge snapping)", True)
+        add(obj, "App::PropertyBool", "KeepEdits", "Design",
+            "A box you edit keeps its new size and place while the rest adapts to the constraints", True)
+        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / layout bounding rectangle (thesis 5.2.3)",
+            mode=1)
+        add(obj, "App::PropertyString", "Status", "Result", "Laid out, or what is wrong", mode=1)
+        add(obj, "App::PropertyString", "Valid", "Data", "Boards after the last valid recompute (JSON)", mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
+
+    def execute(self, obj):
+        recompute(obj)
+
+
+class DesignConstraint(properties.Proxy):
+    """One design constraint of thesis 5.1 as docs/formats.md writes it; references are "Box.size.x",
+    "Box.centre.z", "Box.min.y" or "Box.max.x" with the box's label."""
+    TYPE = "FabGuide::DesignConstraint"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyEnumeration", "Kind", "Constraint", "What must hold", list(KINDS))
+        add(obj, "App::PropertyStringList", "Refs", "Constraint",
+            "References: equal, symmetric (two), sum (left side), fixed and range (one)")
+        add(obj, "App::PropertyStringList", "Rhs", "Constraint", "Right side of a sum")
+        add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
+        add(obj, "App::PropertyFloat", "Value", "Constraint", "Fixed value (mm) or sum offset")
+        add(obj, "App::PropertyFloat", "Min", "Constraint", "Range: smallest value, mm")
+        add(obj, "App::PropertyFloat", "Max", "Constraint", "Range: largest value, mm")
+        add(obj, "App::PropertyString", "About", "Constraint", "Symmetric about this reference (empty: midway now)")
+        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
+
+    def execute(self, obj):
+        pass
+
+
+class Volume(properties.Proxy):
+    """An inner volume (space kept free, resting on board On) or the outer volume (the envelope the design must
+    fit), shown as a box (thesis 5.3.5.1)."""
+    TYPE = "FabGuide::DesignVolume"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyEnumeration", "Kind", "Volume", "Inner: kept free; Outer: the design stays inside",
+            ["Inner", "Outer"])
+        add(obj, "App::PropertyLink", "On", "Volume", "Inner volume: the board it rests on and moves with")
+        add(obj, "App::PropertyLength", "Length", "Volume", "Size along x", 100)
+        add(obj, "App::PropertyLength", "Width", "Volume", "Size along y", 100)
+        add(obj, "App::PropertyLength", "Height", "Volume", "Size along z", 100)
+        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or the boards that break it", mode=1)
+
+    def execute(self, obj):
+        obj.Shape = Part.makeBox(obj.Length.Value, obj.Width.Value, obj.Height.Value)
+
+
+def create(doc, boxes, master_boards, label="FlatpackDesign"):
+    obj = doc.addObject("App::DocumentObjectGroupPython", "FlatpackDesign")
+    FlatpackDesign(obj)
+    obj.Label = label
+    obj.Group = list(boxes)
+    obj.MasterBoards = list(master_boards)
+    return obj
+
+
+def add_constraint(design, kind, label=None, **values):
+    """A constraint in `design`: values are its properties (Refs, Rhs, Parts, Value, Min, Max, About)."""
+    doc = design.Document
+    obj = doc.addObject("App::FeaturePython", "DesignConstraint")
+    DesignConstraint(obj)
+    obj.Kind = kind
+    for name, value in values.items():
+        setattr(obj, name, value)
+    obj.Label = label or "{} {}".format(kind.capitalize(), ", ".join(values.get("Refs", [])) or
+                                        ", ".join(p.Label for p in values.get("Parts", [])))
+    design.addObject(obj)
+    return obj
+
+
+def add_volume(design, kind, at, size, on=None, label=None):
+    obj = design.Document.addObject("Part::FeaturePython", "Volume")
+    Volume(obj)
+    obj.Kind = kind
+    obj.On = on
+    obj.Length, obj.Width, obj.Height = size
+    obj.Placement = FreeCAD.Placement(FreeCAD.Vector(*at), FreeCAD.Rotation())
+    obj.Label = label or ("Space on " + on.Label if on else "Outer volume")
+    design.addObject(obj)
+    return obj
+
+
+def is_design(obj):
+    return properties.is_a(obj, FlatpackDesign)
+
+
+def is_constraint(obj):
+    return properties.is_a(obj, DesignConstraint)
+
+
+def is_volume(obj):
+    return properties.is_a(obj, Volume)
+
+
+def boxes(obj):
+    return [o for o in obj.Group if cuboids.is_box(o)]
+
+
+def parts_of(obj):
+    """The boards as the format's parts: {id, position, size}, from the boxes as they are now."""
+    parts = []
+    for box in boxes(obj):
+        c = cuboids.coordinates(box)
+        parts.append({"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]})
+    return parts
+
+
+def constraint_dict(c):
+    d = {"kind": c.Kind, "name": c.Label}
+    if c.Kind in ("equal", "symmetric"):
+        d["refs"] = list(c.Refs)
+    if c.Kind == "symmetric" and c.About:
+        d["about"] = c.About
+    if c.Kind == "sum":
+        d.update(lhs=list(c.Refs), rhs=list(c.Rhs), offset=c.Value)
+    if c.Kind in ("fixed", "range"):
+        if len(c.Refs) != 1:
+            raise DesignError("constraint '{}': a {} constraint takes one reference".format(c.Label, c.Kind))
+        d["ref"] = c.Refs[0]
+    if c.Kind == "fixed":
+        d["value"] = c.Value
+    if c.Kind == "range":
+        d.update({key: value for key, value in (("min", c.Min), ("max", c.Max)) if abs(value) < UNBOUNDED})
+    if c.Kind in ("ground", "coplanar", "snap"):
+        d["parts"] = [p.Label for p in c.Parts]
+    return d
+
+
+def volume_dicts(obj):
+    inner, outer = [], None
+    for v in obj.Group:
+        if not is_volume(v):
+            continue
+        low = v.Placement.Base
+        size = [v.Length.Value, v.Width.Value, v.Height.Value]
+        if v.Kind == "Inner":
+            if v.On is None:
+                raise DesignError("inner volume '{}': choose the board it rests on (On)".format(v.Label))
+            inner.append({"name": v.Label, "on": v.On.Label, "position": [low.x, low.y, low.z], "size": size})
+        else:
+            outer = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
+    return inner, outer
+
+
+def flatpack(obj, parts=None):
+    """The design as a *.flatpack.json dict (docs/formats.md), with `parts` instead of the boxes if given."""
+    try:
+        if not obj.MasterBoards:
+            raise DesignError("add a master board (MasterBoards)")
+        inner, outer = volume_dicts(obj)
+        doc = {"format": "fabguide.flatpack", "version": 1,
+               "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
+                            "trim": obj.Trim.Value, "min_length": obj.MinimumLength.Value, "snap": obj.Snap},
+               "boards": [master_board.as_problem_board(m) for m in obj.MasterBoards],
+               "parts": parts if parts is not None else parts_of(obj),
+               "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
+               "inner_volumes": inner}
+        if outer:
+            doc["outer_volume"] = outer
+        return doc
+    except (ValueError, cuboids.CuboidError) as error:
+        raise DesignError("Design '{}': {}".format(obj.Label, error))
+
+
+def recompute(obj):
+    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit."""
+    edited = flatpack(obj)
+    valid = json.loads(obj.Valid) if obj.Valid else None
+    note = ""
+    if valid and obj.KeepEdits and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]] \
+            and valid != edited["parts"]:
+        try:
+            corrected = fabguide_core.correct_design(dict(edited, parts=valid), edited)
+        except fabguide_core.FormatError as error:  # the valid state no longer reads: start from the boxes
+            FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, error))
+        else:
+            write_parts(obj, corrected["parts"])
+            edited["parts"] = parts_of(obj)
+            if corrected["alpha"] < 1:
+                note = "; edit kept {:.0%}, held by {}".format(corrected["alpha"], ", ".join(corrected["limits"]))
+    try:
+        laid = fabguide_core.lay_out_design(edited)
+    except fabguide_core.FormatError as error:
+        mark_constraints(obj, str(error))
+        obj.Status = "Constraints broken: {}".format(error)
+        raise DesignError("Design '{}': {}".format(obj.Label, error))
+    except fabguide_core.PackingError as error:
+        if valid:
+            write_parts(obj, valid)
+            obj.Status = "Edit undone: {}".format(error)
+            FreeCAD.Console.PrintError("{}: edit undone: {}\n".format(obj.Label, error))
+            return
+        obj.Status = str(error)
+        raise DesignError("Design '{}': {}".format(obj.Label, error))
+    mark_constraints(obj, "")
+    obj.Usage = laid["usage"]
+    obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
+    obj.Status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
+    obj.Valid = json.dumps(edited["parts"])
+
+
+def mark_constraints(obj, error):
+    """Each constraint and volume named in `error` shows it; the others are satisfied."""
+    for c in obj.Group:
+        if is_constraint(c) or is_volume(c):
+            status = "Broken: " + error if c.Label in error else SATISFIED
+            if c.Status != status:
+                c.Status = status
+
+
+def write_parts(obj, parts):
+    """Moves and sizes the boxes to `parts`; inner volumes follow the board they rest on."""
+    by_id = {p["id"]: p for p in parts}
+    moved = {}
+    for box in boxes(obj):
+        p = by_id[box.Label]
+        before = cuboids.coordinates(box)
+        values = [round(v, 9) for a in range(3) for v in (p["position"][a], p["position"][a] + p["size"][a])]
+        if cuboids.set_coordinates(box, values):
+            moved[box.Name] = FreeCAD.Vector(*[(values[2 * a] + values[2 * a + 1] - before[2 * a] - before[2 * a + 1])
+                                               / 2 for a in range(3)])
+            box.recompute()
+            box.purgeTouched()
+    for v in obj.Group:
+        if is_volume(v) and v.On is not None and v.On.Name in moved:
+            v.Placement = FreeCAD.Placement(v.Placement.Base + moved[v.On.Name], FreeCAD.Rotation())
+            v.purgeTouched()
+
+
+def apply_parts(obj, parts):
+    """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept)."""
+    write_parts(obj, parts)
+    obj.Valid = json.dumps(parts)
+    obj.touch()
+
+
+def from_file(doc, path, label=None):
+    """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes."""
+    with open(path) as f:
+        data = json.load(f)
+    fabguide_core.lay_out_design(data)  # refuse what the core cannot read, with its message
+    masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
+                                   b.get("material", "plywood"), b.get("name", "MasterBoard")) for b in data["boards"]]
+    made = {}
+    for p in data["parts"]:
+        box = doc.addObject("Part::Box", "Box")
+        box.Label = p["id"]
+        box.Length, box.Width, box.Height = p["size"]
+        box.Placement.Base = FreeCAD.Vector(*p["position"])
+        made[p["id"]] = box
+    obj = create(doc, made.values(), masters, label or data.get("title", "FlatpackDesign"))
+    s = data.get("settings", {})
+    obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
+    obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
+    obj.MinimumLength, obj.Snap = s.get("min_length", 2 * data["boards"][0]["thickness"]), s.get("snap", True)
+    for c in data.get("constraints", []):
+        values = {}
+        if "refs" in c:
+            values["Refs"] = c["refs"]
+        if "lhs" in c:
+            values.update(Refs=c["lhs"], Rhs=c["rhs"], Value=c.get("offset", 0))
+        if "ref" in c:
+            values["Refs"] = [c["ref"]]
+        if c["kind"] == "fixed" and "value" in c:
+            values["Value"] = c["value"]
+        if c["kind"] == "range":
+            values.update(Min=c.get("min", -10 * UNBOUNDED), Max=c.get("max", 10 * UNBOUNDED))
+            if "fraction" in c:
+                values.update(fraction_bounds(data, c))
+        if isinstance(c.get("about"), str):
+            values["About"] = c["about"]
+        if "parts" in c:
+            values["Parts"] = [made[p] for p in c["parts"]]
+        add_constraint(obj, c["kind"], c.get("name"), **values)
+    for v in data.get("inner_volumes", []):
+        add_volume(obj, "Inner", v["position"], v["size"], made[v["on"]], v.get("name"))
+    if "outer_volume" in data:
+        low, high = data["outer_volume"]["min"], data["outer_volume"]["max"]
+        add_volume(obj, "Outer", low, [h - l for h, l in zip(high, low)])
+    return obj
+
+
+def fraction_bounds(data, c):
+    """A range given as a fraction of the present value, as Min and Max."""
+    part, what, axis = c["ref"].rsplit(".", 2)
+    p = next(q for q in data["parts"] if q["id"] == part)
+    a = "xyz".index(axis)
+    value = {"size": p["size"][a], "min": p["position"][a], "max": p["position"][a] + p["size"][a]}.get(
+        what, p["position"][a] + p["size"][a] / 2)
+    return {"Min": c.get("min", value * (1 - c["fraction"])), "Max": c.get("max", value * (1 + c["fraction"]))}

@@ -1,0 +1,160 @@
+"""Flat-pack design objects, headless (thesis 5.1, 5.3.5): a design of Part::Box boards keeps its constraints as
+the user edits, shows its usage, undoes an edit that no longer fits, survives save/reload and undo; suggestions
+from the core applied to it keep every constraint; a parametric design driven by a spreadsheet is optimised
+through its gradients."""
+import json
+import os
+
+import FreeCAD
+import pytest
+
+import fabguide_core
+from fabguide import cuboids
+from fabguide.material import design
+
+
+@pytest.fixture
+def doc():
+    document = FreeCAD.newDocument("flatpack")
+    document.UndoMode = 1
+    name = document.Name
+    yield document
+    if name in FreeCAD.listDocuments():
+        FreeCAD.closeDocument(name)
+
+
+@pytest.fixture
+def table(doc, source_dir):
+    obj = design.from_file(doc, os.path.join(source_dir, "examples", "coffee-table.flatpack.json"))
+    doc.recompute()
+    return obj
+
+
+def box(doc, label):
+    return doc.getObjectsByLabel(label)[0]
+
+
+def size(doc, label, axis):
+    return getattr(box(doc, label), cuboids.SIZES[axis]).Value
+
+
+def test_a_design_from_a_file_lays_out_and_shows_its_usage(doc, table, source_dir):
+    with open(os.path.join(source_dir, "examples", "coffee-table.flatpack.json")) as f:
+        expected = fabguide_core.lay_out_design(json.load(f))["usage"]
+    assert table.Usage == pytest.approx(expected)
+    assert table.Status.startswith("Usage ")
+    assert len(design.boxes(table)) == 4
+    assert len([c for c in table.Group if design.is_constraint(c)]) == 8
+    assert all(c.Status == design.SATISFIED for c in table.Group if design.is_constraint(c))
+    assert not [o.Name for o in doc.Objects if "Touched" in o.State]
+
+
+def test_an_edit_is_kept_and_the_rest_adapts(doc, table):
+    doc.openTransaction("widen")
+    box(doc, "top").Length = 760
+    doc.recompute()
+    doc.commitTransaction()
+    assert size(doc, "top", 0) == pytest.approx(760)
+    # The legs stay flush with the top's ends, symmetric about its centre; the shelf widens between them.
+    left, right, top = (cuboids.coordinates(box(doc, n)) for n in ("left", "right", "top"))
+    assert left[0] == pytest.approx(top[0]) and right[1] == pytest.approx(top[1])
+    assert size(doc, "shelf", 0) == pytest.approx(760 - 24)
+    assert "Touched" not in table.State
+    doc.undo()
+    doc.recompute()
+    assert size(doc, "top", 0) == pytest.approx(720)
+    assert size(doc, "shelf", 0) == pytest.approx(696)
+
+
+def test_an_edit_past_a_range_is_kept_as_far_as_the_range_allows(doc, table):
+    box(doc, "top").Length = 2000  # the range allows 720 x 1.25 = 900
+    doc.recompute()
+    assert size(doc, "top", 0) == pytest.approx(900, abs=1e-3)
+    assert "held by Range top.size.x (max)" in table.Status
+
+
+def test_an_edit_that_does_not_fit_the_master_board_is_undone_with_the_reason(doc, table):
+    table.Group = [o for o in table.Group if not design.is_constraint(o)]  # nothing holds the shelf back
+    box(doc, "shelf").Width = 1300
+    doc.recompute()
+    assert size(doc, "shelf", 1) == pytest.approx(260)
+    assert table.Status == "Edit undone: part 'shelf' is larger than every master board"
+
+
+def test_save_and_reload_keep_the_design(doc, table, tmp_path):
+    path = str(tmp_path / "table.FCStd")
+    doc.saveAs(path)
+    before = design.parts_of(table)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        obj = next(o for o in reopened.Objects if design.is_design(o))
+        reopened.recompute()
+        assert design.parts_of(obj) == before
+        assert obj.Usage > 0.9
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_suggestion_applied_keeps_every_constraint_and_wastes_less(doc, table):
+    result = fabguide_core.optimise(design.flatpack(table), seed=3, threads=2, time_limit=20)
+    assert result["suggestions"]
+    best = result["suggestions"][0]
+    assert best["usage"] > result["usage_before"]
+    doc.openTransaction("accept")
+    design.apply_parts(table, best["design"]["parts"])
+    doc.recompute()
+    doc.commitTransaction()
+    assert table.Usage == pytest.approx(best["usage"], abs=0.02)
+    assert all(c.Status == design.SATISFIED for c in table.Group if design.is_constraint(c))
+    fabguide_core.lay_out_design(design.flatpack(table))  # reads back: every constraint holds
+
+
+def test_optimise_reports_progress_and_can_be_cancelled(table):
+    token = fabguide_core.CancelToken()
+    seen = []
+
+    def progress(done, best):
+        seen.append((done, best))
+        token.cancel()
+
+    result = fabguide_core.optimise(design.flatpack(table), progress=progress, cancel=token)
+    assert result["stopped"]
+    assert seen and 0 < seen[0][0] < 1
+
+
+def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
+    """A box (two sides, two ends, a bottom) whose sizes come from spreadsheet aliases side and height."""
+    sheet = doc.addObject("Spreadsheet::Sheet", "Parameters")
+    sheet.set("A1", "300")
+    sheet.setAlias("A1", "side")
+    sheet.set("A2", "170")
+    sheet.setAlias("A2", "height")
+    boards = {}
+    for name, length, width in (("side", "Parameters.side", "Parameters.height"),
+                                ("end", "Parameters.side - 24", "Parameters.height"),
+                                ("bottom", "Parameters.side - 24", "Parameters.side - 24")):
+        b = doc.addObject("Part::Box", name)
+        b.Height = 12
+        b.setExpression("Length", length)
+        b.setExpression("Width", width)
+        boards[name] = b
+    doc.recompute()
+
+    def sizes(parameters):
+        sheet.set("A1", str(parameters[0]))
+        sheet.set("A2", str(parameters[1]))
+        doc.recompute()
+        return [v for b in boards.values() for v in (b.Length.Value, b.Width.Value)]
+
+    parts = [{"id": "side", "quantity": 2}, {"id": "end", "quantity": 2}, {"id": "bottom", "quantity": 1}]
+    sheets = {"boards": [{"width": 900, "height": 600, "thickness": 12}], "settings": {"resolution": 1}}
+    result = fabguide_core.optimise_parametric(parts, sizes, [300, 170], [200, 100], [400, 300], sheets,
+                                               rounds=2, time_limit=30)
+    best = result["suggestions"][0]
+    assert best["usage"] > result["usage_before"]
+    side, height = best["parameters"]
+    assert 200 <= side <= 400 and 100 <= height <= 300
+    sizes(best["parameters"])
+    assert boards["bottom"].Length.Value == pytest.approx(side - 24)
+    assert [s["parameters"] for s in best["path"]][0] == [300, 170]
