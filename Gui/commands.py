@@ -1,16 +1,18 @@
 """FabGuide's GUI commands and where the workbench shows them."""
 import FreeCADGui as Gui
 
-from fabguide_gui import about, function_commands, material_commands
+from fabguide_gui import about, design_commands, function_commands, material_commands
 
-# Toolbar and menu contents: Function (thesis ch. 4), Material (ch. 5).
+# Toolbar and menu contents: Function (thesis ch. 4), Material and Zero waste (ch. 5).
 TOOLBARS = {
     "Function": list(function_commands.COMMANDS),
     "Material": list(material_commands.COMMANDS),
+    "Zero waste": list(design_commands.COMMANDS),
 }
 HELP = ["FabGuide_About"]
 
-COMMANDS = dict(function_commands.COMMANDS, **material_commands.COMMANDS, FabGuide_About=about.AboutCommand())
+COMMANDS = dict(function_commands.COMMANDS, **material_commands.COMMANDS, **design_commands.COMMANDS,
+                FabGuide_About=about.AboutCommand())
 
 
 def register():

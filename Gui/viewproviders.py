@@ -77,3 +77,40 @@ def colour_layout(obj):
         return
     if view and not shape.isNull():
         view.DiffuseColor = [SHEET_COLOUR] * sheets + [PART_COLOUR] * (len(shape.Faces) - sheets)
+
+
+# Zero-waste designs (thesis 5.1): the design group, its constraints by kind, its volumes.
+CONSTRAINT_ICONS = {"equal": "FabGuide_EqualLengths.svg", "sum": "FabGuide_SumOfLengths.svg",
+                    "fixed": "FabGuide_FixedLength.svg", "range": "FabGuide_LengthRange.svg",
+                    "symmetric": "FabGuide_Symmetric.svg", "ground": "FabGuide_Ground.svg",
+                    "coplanar": "FabGuide_Coplanar.svg", "snap": "FabGuide_Snap.svg"}
+VOLUME_COLOURS = {"Inner": (0.30, 0.75, 0.35), "Outer": (0.80, 0.20, 0.20)}
+
+
+class ViewProviderFlatpackDesign(ViewProvider):
+    ICON = "FabGuide_FlatpackDesign.svg"
+
+
+class ViewProviderDesignConstraint(ViewProvider):
+    def getIcon(self):
+        return resources.icon(CONSTRAINT_ICONS.get(getattr(self.Object, "Kind", ""), "FabGuide.svg"))
+
+
+class ViewProviderVolume(ViewProvider):
+    """A see-through box: green for space kept free, red for the envelope."""
+
+    def getIcon(self):
+        return resources.icon("FabGuide_InnerVolume.svg" if getattr(self.Object, "Kind", "") == "Inner"
+                              else "FabGuide_OuterVolume.svg")
+
+    def attach(self, vobj):
+        super().attach(vobj)
+        self.colour(vobj)
+
+    def updateData(self, obj, prop):
+        if prop == "Kind":
+            self.colour(obj.ViewObject)
+
+    def colour(self, vobj):
+        vobj.ShapeColor = VOLUME_COLOURS.get(getattr(vobj.Object, "Kind", "Inner"), VOLUME_COLOURS["Inner"])
+        vobj.Transparency = 75

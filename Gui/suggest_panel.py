@@ -1,0 +1,313 @@
+"""Suggest task panel (thesis 5.1, 5.3.3): the exploration runs in the background with a progress bar and Stop;
+three suggestions appear as thumbnails (3-D view and layout) with their usage; a slider moves the design along
+the chosen suggestion's path live; OK applies it as one undo step, locking the sizes of the parts ticked; "Lock
+and suggest again" applies, locks and searches from there."""
+import os
+import tempfile
+import threading
+
+import FreeCAD
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+import fabguide_core
+from fabguide.material import design
+from fabguide_gui import resources
+
+THUMB = QtCore.QSize(92, 70)  # two side by side fit a default-width task view
+SHEET, PART, EDGE = QtGui.QColor(233, 211, 166), QtGui.QColor(61, 125, 202), QtGui.QColor(29, 63, 107)
+
+
+def layout_pixmap(layout, size=THUMB):
+    """The layout's master boards side by side, parts in blue, scaled into `size`."""
+    boards = layout["boards"]
+    gap = 10.0
+    total_w = sum(b["width"] for b in boards) + gap * (len(boards) - 1)
+    total_h = max(b["height"] for b in boards)
+    scale = min((size.width() - 4) / total_w, (size.height() - 4) / total_h)
+    pixmap = QtGui.QPixmap(size)
+    pixmap.fill(QtCore.Qt.white)
+    painter = QtGui.QPainter(pixmap)
+    offsets, x = [], 2.0
+    for b in boards:
+        offsets.append(x)
+        painter.fillRect(QtCore.QRectF(x, 2, b["width"] * scale, b["height"] * scale), SHEET)
+        x += (b["width"] + gap) * scale
+    painter.setPen(EDGE)
+    for p in layout["placements"]:
+        top = 2 + (boards[p["board"]]["height"] - p["y"] - p["height"]) * scale  # y up on the sheet
+        rect = QtCore.QRectF(offsets[p["board"]] + p["x"] * scale, top, p["width"] * scale, p["height"] * scale)
+        painter.fillRect(rect, PART)
+        painter.drawRect(rect)
+    painter.end()
+    return pixmap
+
+
+class SuggestPanel:
+    def __init__(self, design_obj):
+        self.design = design_obj
+        self.doc = design_obj.Document
+        self.original = design.parts_of(design_obj)
+        self.result, self.error, self.thread, self.token = None, None, None, None
+        self.progress = (0.0, 0.0)
+        self.chosen = None
+        self.form = self.build()
+        self.timer = QtCore.QTimer()
+        self.timer.timeout.connect(self.poll)
+        self.start()
+
+    # --- the form -------------------------------------------------------------------------------------
+    def build(self):
+        form = QtGui.QWidget()
+        form.setWindowTitle("Suggest")
+        form.setWindowIcon(QtGui.QIcon(resources.icon("FabGuide_Suggest.svg")))
+        layout = QtGui.QVBoxLayout(form)
+        self.now = QtGui.QLabel("Usage now: {:.3f}".format(self.design.Usage))
+        layout.addWidget(self.now)
+        self.seconds = QtGui.QDoubleSpinBox()
+        self.seconds.setRange(1, 600)
+        self.seconds.setValue(8)
+        self.seconds.setSuffix(" s")
+        self.threads = QtGui.QSpinBox()
+        self.threads.setRange(1, max(1, os.cpu_count() or 1))
+        self.threads.setValue(min(2, self.threads.maximum()))
+        self.seed = QtGui.QSpinBox()
+        self.seed.setRange(1, 1 << 30)
+        settings = QtGui.QFormLayout()
+        for label, widget in (("Time limit", self.seconds), ("Threads", self.threads), ("Seed", self.seed)):
+            settings.addRow(label, widget)
+        layout.addLayout(settings)
+        row = QtGui.QHBoxLayout()
+        self.run_button = QtGui.QPushButton("Suggest")
+        self.run_button.clicked.connect(self.start)
+        self.stop_button = QtGui.QPushButton("Stop")
+        self.stop_button.clicked.connect(self.stop)
+        row.addWidget(self.run_button)
+        row.addWidget(self.stop_button)
+        layout.addLayout(row)
+        self.bar = QtGui.QProgressBar()
+        self.bar.setRange(0, 100)
+        layout.addWidget(self.bar)
+        self.message = QtGui.QLabel("")
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.cards = QtGui.QButtonGroup(form)
+        self.cards.setExclusive(True)
+        (getattr(self.cards, "idClicked", None) or self.cards.buttonClicked[int]).connect(self.choose)
+        self.grid = QtGui.QGridLayout()
+        layout.addLayout(self.grid)
+        row = QtGui.QHBoxLayout()
+        row.addWidget(QtGui.QLabel("Path"))
+        self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
+        self.slider.setEnabled(False)
+        self.slider.valueChanged.connect(self.slide)
+        row.addWidget(self.slider)
+        self.step = QtGui.QLabel("")
+        row.addWidget(self.step)
+        layout.addLayout(row)
+        locks = QtGui.QLabel("Keep these parts' sizes from the suggestion:")
+        locks.setWordWrap(True)
+        layout.addWidget(locks)
+        self.locks = QtGui.QListWidget()
+        for box in design.boxes(self.design):
+            item = QtGui.QListWidgetItem(box.Label)
+            item.setFlags(item.flags() | QtCore.Qt.ItemIsUserCheckable)
+            item.setCheckState(QtCore.Qt.Unchecked)
+            self.locks.addItem(item)
+        self.locks.setMaximumHeight(110)
+        layout.addWidget(self.locks)
+        self.again = QtGui.QPushButton("Apply, keep, suggest again")
+        self.again.clicked.connect(self.apply_and_again)
+        self.again.setEnabled(False)
+        layout.addWidget(self.again)
+        return form
+
+    # --- the search -----------------------------------------------------------------------------------
+    def start(self):
+        if self.thread and self.thread.is_alive():
+            return
+        try:
+            data = design.flatpack(self.design)
+        except design.DesignError as error:
+            self.message.setText(str(error))
+            return
+        self.clear_cards()
+        self.result, self.error, self.progress = None, None, (0.0, self.design.Usage)
+        self.token = fabguide_core.CancelToken()
+        options = dict(seed=self.seed.value(), threads=self.threads.value(), time_limit=self.seconds.value())
+
+        def work():
+            try:
+                self.result = fabguide_core.optimise(data, progress=self.report, cancel=self.token, **options)
+            except Exception as error:  # shown to the user by poll()
+                self.error = error
+
+        self.thread = threading.Thread(target=work, daemon=True)
+        self.thread.start()
+        self.run_button.setEnabled(False)
+        self.stop_button.setEnabled(True)
+        self.message.setText("Searching for designs that waste less...")
+        self.timer.start(100)
+
+    def report(self, done, best):
+        self.progress = (done, best)  # on the search's thread: poll() shows it
+
+    def stop(self):
+        if self.token:
+            self.token.cancel()
+
+    def wait(self):
+        """Blocks until the running search ends (scripts and tests)."""
+        if self.thread:
+            self.thread.join()
+        self.poll()
+
+    def poll(self):
+        done, best = self.progress
+        self.bar.setValue(int(100 * done))
+        if self.thread and self.thread.is_alive():
+            self.message.setText("Searching... best usage so far {:.3f}".format(best))
+            return
+        self.timer.stop()
+        self.run_button.setEnabled(True)
+        self.stop_button.setEnabled(False)
+        if self.error is not None:
+            self.message.setText("<b>No suggestions:</b> {}".format(self.error))
+        elif self.result is not None and not self.cards.buttons():
+            self.show_results()
+
+    # --- results --------------------------------------------------------------------------------------
+    def clear_cards(self):
+        for button in self.cards.buttons():
+            self.cards.removeButton(button)
+            button.deleteLater()
+        self.chosen = None
+        self.slider.setEnabled(False)
+        self.again.setEnabled(False)
+
+    def show_results(self):
+        result = self.result
+        suggestions = result["suggestions"]
+        self.bar.setValue(100)
+        stopped = " (stopped early)" if result["stopped"] else ""
+        if not suggestions:
+            self.message.setText("No variation of this design wastes less within its constraints{}.".format(stopped))
+            return
+        self.message.setText("{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.".format(
+            len(suggestions), result["seconds"], stopped))
+        views = self.view_thumbnails([s["design"]["parts"] for s in suggestions])
+        for k, s in enumerate(suggestions):
+            button = QtGui.QToolButton()
+            button.setCheckable(True)
+            button.setToolButtonStyle(QtCore.Qt.ToolButtonTextUnderIcon)
+            icon = QtGui.QPixmap(THUMB.width() * 2 + 4, THUMB.height())
+            icon.fill(QtCore.Qt.white)
+            painter = QtGui.QPainter(icon)
+            if views[k] is not None:
+                painter.drawPixmap(0, 0, views[k])
+            painter.drawPixmap(THUMB.width() + 4, 0, layout_pixmap(s["layout"]))
+            painter.end()
+            button.setIcon(QtGui.QIcon(icon))
+            button.setIconSize(icon.size())
+            button.setText("{}: {:.3f} ({:+.1f})".format(k + 1, s["usage"], 100 * (s["usage"] - result["usage_before"])))
+            button.setToolTip("Suggestion {}: usage {:.3f}, {:+.1f} points over the design now".format(
+                k + 1, s["usage"], 100 * (s["usage"] - result["usage_before"])))
+            self.cards.addButton(button, k)
+            self.grid.addWidget(button, k, 0)
+        self.cards.button(0).setChecked(True)
+        self.choose(0)
+
+    def view_thumbnails(self, designs):
+        """The 3-D view of each suggested design (None without a 3-D view)."""
+        view = getattr(FreeCADGui.getDocument(self.doc.Name), "ActiveView", None)
+        if view is None or not hasattr(view, "saveImage"):
+            return [None] * len(designs)
+        images = []
+        with tempfile.TemporaryDirectory() as folder:
+            for k, parts in enumerate(designs):
+                self.preview(parts)
+                path = os.path.join(folder, "view{}.png".format(k))
+                view.saveImage(path, THUMB.width(), THUMB.height(), "White")
+                images.append(QtGui.QPixmap(path))
+        self.preview(self.original)
+        return images
+
+    def choose(self, k):
+        self.chosen = k
+        path = self.result["suggestions"][k]["design"]["path"]
+        self.slider.blockSignals(True)
+        self.slider.setRange(0, len(path) - 1)
+        self.slider.setValue(len(path) - 1)
+        self.slider.blockSignals(False)
+        self.slider.setEnabled(True)
+        self.again.setEnabled(True)
+        self.slide(len(path) - 1)
+
+    def current(self):
+        """The parts and usage at the slider's place on the chosen suggestion's path."""
+        step = self.result["suggestions"][self.chosen]["design"]["path"][self.slider.value()]
+        return step["parts"], step["usage"]
+
+    def slide(self, _value):
+        parts, usage = self.current()
+        self.step.setText("usage {:.3f}".format(usage))
+        self.preview(parts)
+
+    def preview(self, parts):
+        """Shows a design in the 3-D view without touching the document's history."""
+        design.write_parts(self.design, parts)
+        FreeCADGui.updateGui()
+
+    # --- applying -------------------------------------------------------------------------------------
+    def apply(self):
+        """The design at the slider as one undo step, with the ticked parts' sizes locked."""
+        parts, _ = self.current()
+        self.preview(self.original)
+        self.doc.openTransaction("Accept suggestion")
+        design.apply_parts(self.design, parts)
+        self.lock(parts)
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        self.original = design.parts_of(self.design)
+        self.now.setText("Usage now: {:.3f}".format(self.design.Usage))
+
+    def lock(self, parts):
+        by_id = {p["id"]: p for p in parts}
+        for row in range(self.locks.count()):
+            item = self.locks.item(row)
+            if item.checkState() != QtCore.Qt.Checked:
+                continue
+            box = self.doc.getObjectsByLabel(item.text())[0]
+            size = by_id[item.text()]["size"]
+            thin = size.index(min(size))
+            for axis in (a for a in range(3) if a != thin):
+                ref = "{}.size.{}".format(item.text(), "xyz"[axis])
+                obj = design.add_constraint(self.design, "fixed", "Locked " + ref, Refs=[ref], Value=size[axis])
+                from fabguide_gui import viewproviders
+
+                viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
+            item.setCheckState(QtCore.Qt.Unchecked)
+            FreeCAD.Console.PrintMessage("FabGuide: locked the size of {}\n".format(box.Label))
+
+    def apply_and_again(self):
+        if self.chosen is None:
+            return
+        self.apply()
+        self.start()
+
+    def accept(self):
+        self.stop()
+        if self.thread:
+            self.thread.join()
+        if self.chosen is not None:
+            self.apply()
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def reject(self):
+        self.stop()
+        if self.thread:
+            self.thread.join()
+        self.preview(self.original)
+        FreeCADGui.Control.closeDialog()
+        return True

@@ -1,0 +1,128 @@
+"""Zero-waste toolbar in the real FreeCAD GUI: a coffee table of Part boxes becomes a flat-pack design with
+live usage; constraints are added from picked edges, faces and boxes; Suggest runs in the background with a
+progress bar, shows three thumbnails, slides the design along a path and applies the choice as one undo step;
+screenshots of the panel and the 3-D view."""
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtGui
+
+import guitest
+from fabguide import cuboids
+from fabguide.material import design
+
+state = {}
+
+
+def box(label, size, at):
+    b = state["doc"].addObject("Part::Box", label)
+    b.Label = label
+    b.Length, b.Width, b.Height = size
+    b.Placement.Base = FreeCAD.Vector(*at)
+    return b
+
+
+def boxes_become_a_design_with_live_usage():
+    Gui.activateWorkbench("FabGuideWorkbench")
+    state["doc"] = doc = FreeCAD.newDocument("Table")
+    parts = [box("top", (720, 450, 12), (0, 0, 400)), box("left", (12, 450, 400), (0, 0, 0)),
+             box("right", (12, 450, 400), (708, 0, 0)), box("shelf", (696, 260, 12), (12, 95, 140))]
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    for p in parts:
+        Gui.Selection.addSelection(p)
+    Gui.runCommand("FabGuide_DesignFromBoxes")
+    designs = [o for o in doc.Objects if design.is_design(o)]
+    assert len(designs) == 1, [o.Label for o in doc.Objects]
+    d = state["design"] = designs[0]
+    d.MasterBoards[0].Width, d.MasterBoards[0].Height = 1220, 915
+    doc.recompute()
+    assert d.MasterBoards[0].Thickness.Value == 12
+    assert 0.5 < d.Usage <= 1 and d.Status.startswith("Usage"), d.Status
+    state["parts"] = {p.Label: p for p in parts}
+
+
+def constraints_from_picked_edges_faces_and_boxes():
+    doc, parts = state["doc"], state["parts"]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(parts["left"], "Edge1")   # along z
+    Gui.Selection.addSelection(parts["right"], "Edge1")
+    Gui.runCommand("FabGuide_EqualLengths")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(parts["left"])
+    Gui.Selection.addSelection(parts["right"])
+    Gui.runCommand("FabGuide_Ground")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(parts["left"])
+    Gui.Selection.addSelection(parts["right"])
+    Gui.runCommand("FabGuide_Symmetric")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(parts["top"], "Edge2")
+    Gui.runCommand("FabGuide_LengthRange")
+    constraints = [o for o in state["design"].Group if design.is_constraint(o)]
+    kinds = sorted(c.Kind for c in constraints)
+    assert kinds == ["equal", "ground", "range", "symmetric"], kinds
+    assert constraints[0].Refs == ["left.size.z", "right.size.z"], constraints[0].Refs
+    assert all(c.Status == design.SATISFIED for c in constraints), [c.Status for c in constraints]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(parts["shelf"])
+    Gui.runCommand("FabGuide_InnerVolume")
+    volumes = [o for o in state["design"].Group if design.is_volume(o)]
+    assert len(volumes) == 1 and volumes[0].On == parts["shelf"]
+
+
+def an_edit_keeps_the_constraints():
+    doc, parts = state["doc"], state["parts"]
+    doc.openTransaction("taller")
+    parts["left"].Height = 420
+    doc.recompute()
+    doc.commitTransaction()
+    assert parts["right"].Height.Value == 420  # equal lengths
+    assert cuboids.coordinates(parts["top"])[4] == 420  # the top still rests on the legs
+    doc.undo()
+    doc.recompute()
+    assert parts["right"].Height.Value == 400
+
+
+def suggest_shows_three_suggestions_and_applies_one_as_one_step():
+    doc, d = state["doc"], state["design"]
+    before = design.parts_of(d)
+    usage_before = d.Usage
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    Gui.Selection.clearSelection()
+    Gui.runCommand("FabGuide_Suggest")
+    from fabguide_gui import design_commands
+
+    panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
+    QtGui.QApplication.processEvents()
+    assert panel.form.isVisible(), "the Suggest panel is open"
+    panel.wait()
+    QtGui.QApplication.processEvents()
+    assert panel.bar.value() == 100
+    cards = panel.cards.buttons()
+    assert 1 <= len(cards) <= 3, panel.message.text()
+    assert cards[0].text().startswith("1: 0.9"), cards[0].text()
+    # The slider moves the design along the path, live, without an undo step.
+    panel.slider.setValue(0)
+    assert design.parts_of(d) == panel.result["suggestions"][0]["design"]["path"][0]["parts"]
+    panel.slider.setValue(panel.slider.maximum())
+    QtGui.QApplication.processEvents()
+    print("screenshot: " + guitest.screenshot("suggest_panel"))
+    print("3-D view: " + guitest.view_image("suggest_3d"))
+    undo_steps = doc.UndoCount
+    panel.accept()
+    doc.recompute()
+    assert doc.UndoCount == undo_steps + 1
+    assert d.Usage > usage_before, (d.Usage, usage_before)
+    assert all(c.Status == design.SATISFIED for c in d.Group if design.is_constraint(c))
+    doc.undo()
+    doc.recompute()
+    assert design.parts_of(d) == before
+
+
+guitest.run([
+    boxes_become_a_design_with_live_usage,
+    constraints_from_picked_edges_faces_and_boxes,
+    an_edit_keeps_the_constraints,
+    suggest_shows_three_suggestions_and_applies_one_as_one_step,
+])
