@@ -1,6 +1,7 @@
 """What every FabGuide command shares: one undo step per command, telling the user about mistakes, reading
 the selection."""
 import contextlib
+import os
 
 import FreeCAD
 import FreeCADGui
@@ -44,6 +45,20 @@ def the_one(doc, test, what):
         tell("Select the {}.".format(what) if found else "There is no {} in this document yet.".format(what.split()[0]))
         return None
     return found[0]
+
+
+def ask_open(title, filter):
+    """A file to read, or "" when the user cancels."""
+    from PySide import QtGui
+
+    return QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), title, os.path.expanduser("~"), filter)[0]
+
+
+def ask_save(title, name, filter):
+    """A file to write, or "" when the user cancels."""
+    from PySide import QtGui
+
+    return QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), title, name, filter)[0]
 
 
 class Command:

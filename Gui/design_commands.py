@@ -3,13 +3,12 @@ picked from edges, faces and boxes, inner and outer volumes, and Suggest. Each c
 import json
 import os
 
-import FreeCAD
 import FreeCADGui
 
 from fabguide import cuboids
 from fabguide.material import design, master_board
 from fabguide_gui import viewproviders
-from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
+from fabguide_gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
 
 AXES = "xyz"
 
@@ -30,6 +29,11 @@ def edge_length(box, element):
     sides = cuboids.edge_sides(box, element)
     axis = ({0, 1, 2} - {cuboids.SIDES.index(s) // 2 for s in sides}).pop()
     return "{}.size.{}".format(box.Label, AXES[axis])
+
+
+def length(box, ref):
+    """The present value of a "Box.size.x" reference."""
+    return getattr(box, cuboids.SIZES[AXES.index(ref[-1])]).Value
 
 
 def face_position(box, element):
@@ -91,10 +95,7 @@ class ImportFlatpack(Command):
     TIP = "Open a *.flatpack.json design: boxes, master boards, constraints and volumes"
 
     def run(self, doc):
-        from PySide import QtGui
-
-        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), "Import flat-pack design",
-                                                    os.path.expanduser("~"), "Flat-pack designs (*.flatpack.json)")
+        path = ask_open("Import flat-pack design", "Flat-pack designs (*.flatpack.json)")
         if not path:
             return
         try:
@@ -126,13 +127,10 @@ class ExportFlatpack(Command):
     TIP = "Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)"
 
     def run(self, doc):
-        from PySide import QtGui
-
         chosen = the_one(doc, design.is_design, "flat-pack design to export")
         if chosen is None:
             return
-        path, _ = QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), "Export flat-pack design",
-                                                    chosen.Label + ".flatpack.json", "Flat-pack designs (*.flatpack.json)")
+        path = ask_save("Export flat-pack design", chosen.Label + ".flatpack.json", "Flat-pack designs (*.flatpack.json)")
         if not path:
             return
         try:
@@ -179,8 +177,7 @@ class FixedLength(EdgesCommand):
 
     def make(self, doc, boxes, refs):
         for box, ref in zip(boxes, refs):
-            axis = AXES.index(ref[-1])
-            add(doc, "fixed", [box], "Fixed " + ref, Refs=[ref], Value=getattr(box, cuboids.SIZES[axis]).Value)
+            add(doc, "fixed", [box], "Fixed " + ref, Refs=[ref], Value=length(box, ref))
 
 
 class LengthRange(EdgesCommand):
@@ -190,8 +187,7 @@ class LengthRange(EdgesCommand):
 
     def make(self, doc, boxes, refs):
         for box, ref in zip(boxes, refs):
-            value = getattr(box, cuboids.SIZES[AXES.index(ref[-1])]).Value
-            add(doc, "range", [box], "Range " + ref, Refs=[ref], Min=0.75 * value, Max=1.25 * value)
+            add(doc, "range", [box], "Range " + ref, Refs=[ref], Min=0.75 * length(box, ref), Max=1.25 * length(box, ref))
 
 
 class EqualPosition(Command):
@@ -250,6 +246,13 @@ class Symmetric(BoxesCommand):
         add(doc, "symmetric", [a, b], "Symmetric " + ", ".join(refs), Refs=refs)
 
 
+def add_volume(doc, target, kind, at, size, on=None):
+    with transaction(doc, "Add {} volume".format(kind.lower())):
+        obj = design.add_volume(target, kind, at, size, on)
+        viewproviders.ViewProviderVolume(obj.ViewObject)
+        doc.recompute()
+
+
 class InnerVolume(Command):
     ICON, MENU = "FabGuide_InnerVolume.svg", "Inner Volume"
     TIP = "Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place"
@@ -264,10 +267,7 @@ class InnerVolume(Command):
         c = cuboids.coordinates(boxes[0])
         size = [0.6 * (c[1] - c[0]), 0.6 * (c[3] - c[2]), 100]
         at = [c[0] + 0.2 * (c[1] - c[0]), c[2] + 0.2 * (c[3] - c[2]), c[5]]
-        with transaction(doc, "Add inner volume"):
-            obj = design.add_volume(target, "Inner", at, size, boxes[0])
-            viewproviders.ViewProviderVolume(obj.ViewObject)
-            doc.recompute()
+        add_volume(doc, target, "Inner", at, size, boxes[0])
 
 
 class OuterVolume(Command):
@@ -282,12 +282,9 @@ class OuterVolume(Command):
         low = [min(c[2 * a] for c in coords) for a in range(3)]
         high = [max(c[2 * a + 1] for c in coords) for a in range(3)]
         margin = [0.05 * (h - l) for l, h in zip(low, high)]
-        with transaction(doc, "Add outer volume"):
-            obj = design.add_volume(target, "Outer", [l - m if a < 2 else l for a, (l, m) in enumerate(zip(low, margin))],
-                                    [h - l + 2 * m if a < 2 else h - l + m for a, (l, h, m) in
-                                     enumerate(zip(low, high, margin))])
-            viewproviders.ViewProviderVolume(obj.ViewObject)
-            doc.recompute()
+        at = [l - m if a < 2 else l for a, (l, m) in enumerate(zip(low, margin))]  # on the ground
+        add_volume(doc, target, "Outer", at, [h - l + 2 * m if a < 2 else h - l + m
+                                              for a, (l, h, m) in enumerate(zip(low, high, margin))])
 
 
 class Suggest(Command):

@@ -7,10 +7,9 @@ import FreeCAD
 import FreeCADGui
 
 from fabguide import cuboids
-from fabguide.function import (configuration, joints, mechanism, parts, printable, relationships,
-                               workslike_file)
+from fabguide.function import joints, mechanism, parts, printable, relationships, workslike_file
 from fabguide_gui import function_viewproviders as vp
-from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
+from fabguide_gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
 
 
 def picks():
@@ -293,10 +292,7 @@ class ImportWorkslike(Command):
     TIP = "Build a mechanism from a *.workslike.json file"
 
     def run(self, doc):
-        from PySide import QtGui
-
-        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), "Works-like model",
-                                                    os.path.expanduser("~"), "Works-like models (*.workslike.json)")
+        path = ask_open("Works-like model", "Works-like models (*.workslike.json)")
         if path:
             with transaction(doc, "Import works-like model"):
                 mech = import_file(doc, path)
@@ -324,14 +320,10 @@ class ExportWorkslike(Command):
         return Configurations.IsActive(self)
 
     def run(self, doc):
-        from PySide import QtGui
-
         mech = the_one(doc, mechanism.is_mechanism, "mechanism to export")
         if mech is None:
             return
-        path, _ = QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), "Works-like model",
-                                                    mech.Label + ".workslike.json",
-                                                    "Works-like models (*.workslike.json)")
+        path = ask_save("Works-like model", mech.Label + ".workslike.json", "Works-like models (*.workslike.json)")
         if path:
             try:
                 workslike_file.write(mech, path)

@@ -2,7 +2,6 @@
 in the 3-D view, conflicting parts shown in red, and the task panels opened by double-click."""
 import FreeCADGui
 
-from fabguide import cuboids
 from fabguide.function import configuration, joints, mechanism, parts, printable, relationships
 from fabguide_gui.viewproviders import EditedByDoubleClick, ViewProvider
 

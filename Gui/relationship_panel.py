@@ -2,7 +2,6 @@
 (thesis 4.3.1, 4.3.3), which the user can correct; while it is open the faces are coloured, covering or
 supporting in blue, covered or supported in red."""
 import FreeCAD
-import FreeCADGui
 from PySide import QtCore, QtGui
 
 from fabguide import cuboids

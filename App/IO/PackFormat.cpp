@@ -307,19 +307,55 @@ nlohmann::json piecesToJson(const std::vector<material::Piece>& pieces, const ma
     return {{"parts", parts}, {"connectors", connectors}, {"notes", joined.notes}};
 }
 
+nlohmann::json boardToJson(const material::MasterBoard& board)
+{
+    return {{"name", board.name},
+            {"material", board.material},
+            {"width", board.width},
+            {"height", board.height},
+            {"thickness", board.thickness},
+            {"count", board.count},
+            {"grain", board.grain == material::Grain::AlongWidth    ? "width"
+                      : board.grain == material::Grain::AlongHeight ? "height"
+                                                                    : "none"}};
+}
+
+nlohmann::json problemToJson(const material::PackProblem& problem)
+{
+    nlohmann::json boards = nlohmann::json::array(), parts = nlohmann::json::array();
+    for (const material::MasterBoard& board : problem.boards)
+        boards.push_back(boardToJson(board));
+    for (const material::PartSpec& p : problem.parts) {
+        nlohmann::json part = {{"id", p.id},
+                               {"quantity", p.quantity},
+                               {"orientations", p.orientations},
+                               {"follow_grain", p.followsGrain}};
+        if (geometry::isRectangle(p.outline)) {
+            part["width"] = p.width();
+            part["height"] = p.height();
+        } else {
+            part["outline"] = points(p.outline.outer);
+            part["holes"] = nlohmann::json::array();
+            for (const geometry::Polygon& hole : p.outline.holes)
+                part["holes"].push_back(points(hole));
+        }
+        parts.push_back(part);
+    }
+    const material::PackSettings& s = problem.settings;
+    return {{"format", "fabguide.pack"},
+            {"version", kPackFormatVersion},
+            {"settings",
+             {{"resolution", s.resolution}, {"kerf", s.kerf}, {"spacing", s.spacing}, {"trim", s.trim}}},
+            {"boards", boards},
+            {"parts", parts}};
+}
+
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,
                             PartNames names)
 {
     nlohmann::json boards = nlohmann::json::array();
     for (const material::MasterBoard& sheet : layout.sheets)
-        boards.push_back({{"name", sheet.name},
-                          {"material", sheet.material},
-                          {"width", sheet.width},
-                          {"height", sheet.height},
-                          {"thickness", sheet.thickness},
-                          {"grain", sheet.grain == material::Grain::AlongWidth    ? "width"
-                                    : sheet.grain == material::Grain::AlongHeight ? "height"
-                                                                                  : "none"}});
+        boards.push_back(boardToJson(sheet));
     nlohmann::json placements = nlohmann::json::array();
     for (const material::Placement& p : layout.placements) {
         nlohmann::json part =

@@ -28,6 +28,12 @@ material::PackProblem readStripInstance(const nlohmann::json& document);
 /// How placements name their part: by the part's id, or (OR-Datasets) by its index in the input.
 enum class PartNames { Ids, Indices };
 
+/// A master board as *.pack.json writes it.
+nlohmann::json boardToJson(const material::MasterBoard& board);
+
+/// A problem as a *.pack.json document (rectangles as width and height, other parts as outlines).
+nlohmann::json problemToJson(const material::PackProblem& problem);
+
 /// The layout JSON contract: {"boards": [{"width", "height", ...}], "strip_height" (strip mode),
 /// "placements": [{"part", "board", "x", "y", "rotation", "width", "height"}], metrics}.
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,

@@ -27,27 +27,10 @@ struct CancelToken {
 nlohmann::json layoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
 {
     const material::PackProblem problem = material.problem(d.sizes);
-    nlohmann::json parts = nlohmann::json::array();
-    for (const material::PartSpec& p : problem.parts)
-        parts.push_back(
-            {{"id", p.id}, {"width", p.width()}, {"height", p.height()}, {"quantity", p.quantity}});
-    nlohmann::json boards = nlohmann::json::array();
-    for (const material::MasterBoard& b : problem.boards)
-        boards.push_back({{"name", b.name},
-                          {"material", b.material},
-                          {"width", b.width},
-                          {"height", b.height},
-                          {"thickness", b.thickness},
-                          {"count", b.count}});
-    const nlohmann::json settings = {{"resolution", problem.settings.resolution},
-                                     {"kerf", problem.settings.kerf},
-                                     {"spacing", problem.settings.spacing},
-                                     {"trim", problem.settings.trim}};
     return {
         {"usage", 1 - d.wastage},
         {"layout", io::layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, io::PartNames::Ids)},
-        {"problem",
-         {{"format", "fabguide.pack"}, {"settings", settings}, {"boards", boards}, {"parts", parts}}}};
+        {"problem", io::problemToJson(problem)}};
 }
 
 material::MinWastageOptions options(std::uint64_t seed, int threads, double timeLimit, int rounds,

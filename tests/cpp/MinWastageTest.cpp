@@ -41,13 +41,18 @@ void expectValid(const MaterialSpace& material, const GridLayout& layout, const 
     }
 }
 
+/// The coffee table example, its design space and material space.
+class MinWastageTest : public ::testing::Test {
+protected:
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design{f.design};
+    const MaterialSpace material{f.boards, f.settings, design.parts()};
+};
+
 }  // namespace
 
-TEST(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
+TEST_F(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
 {
-    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
-    const ConstrainedDesign design(f.design);
-    const MaterialSpace material(f.boards, f.settings, design.parts());
     const DesignLayout start = layOut(design, material, 1);
     expectValid(material, start.layout, start.sizes);
     Eigen::VectorXd sizes = start.sizes;
@@ -64,11 +69,8 @@ TEST(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
               start.layout.usedWidth[0] * start.layout.usedHeight[0]);
 }
 
-TEST(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
+TEST_F(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
 {
-    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
-    const ConstrainedDesign design(f.design);
-    const MaterialSpace material(f.boards, f.settings, design.parts());
     Explorer explorer{design, material, {}, std::mt19937_64(3), nullptr, {}, {}};
     const DesignLayout start = layOut(design, material, 1);
     const std::vector<int> sizes = selectPartSizesToShrink(explorer, start);
@@ -80,11 +82,8 @@ TEST(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
     }
 }
 
-TEST(MinWastageTest, SuggestionsWasteLessAndKeepEveryConstraint)
+TEST_F(MinWastageTest, SuggestionsWasteLessAndKeepEveryConstraint)
 {
-    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
-    const ConstrainedDesign design(f.design);
-    const MaterialSpace material(f.boards, f.settings, design.parts());
     MinWastageOptions options;
     options.timeLimit = 60;
     const Exploration e = minWastage(design, material, options);
@@ -107,11 +106,8 @@ TEST(MinWastageTest, SuggestionsWasteLessAndKeepEveryConstraint)
         EXPECT_GT((e.suggestions[i].result.sizes - e.suggestions[0].result.sizes).norm(), 1.0);
 }
 
-TEST(MinWastageTest, TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo)
+TEST_F(MinWastageTest, TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo)
 {
-    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
-    const ConstrainedDesign design(f.design);
-    const MaterialSpace material(f.boards, f.settings, design.parts());
     MinWastageOptions options;
     options.timeLimit = 60;
     options.seed = 7;
@@ -124,11 +120,8 @@ TEST(MinWastageTest, TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo)
         EXPECT_EQ(one.suggestions[i].result.X, two.suggestions[i].result.X);
 }
 
-TEST(MinWastageTest, CancellingStopsTheSearchAndReportsProgressOnTheCallersThread)
+TEST_F(MinWastageTest, CancellingStopsTheSearchAndReportsProgressOnTheCallersThread)
 {
-    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
-    const ConstrainedDesign design(f.design);
-    const MaterialSpace material(f.boards, f.settings, design.parts());
     std::atomic<bool> cancel{false};
     const std::thread::id caller = std::this_thread::get_id();
     int calls = 0;
@@ -148,7 +141,7 @@ TEST(MinWastageTest, CancellingStopsTheSearchAndReportsProgressOnTheCallersThrea
     EXPECT_LT(e.designsImproved, options.rounds * options.tasksPerRound);
 }
 
-TEST(MinWastageTest, AParametricDesignIsImprovedThroughItsGradients)
+TEST(ParametricDesignTest, IsImprovedThroughItsGradients)
 {
     // A box of side s and height h from 12 mm boards: two sides s x h, two ends (s - 24) x h, a bottom
     // (s - 24) x (s - 24); parameters s in [200, 400], h in [100, 300].

@@ -42,7 +42,7 @@ def boxes_become_a_design_with_live_usage():
 
 
 def constraints_from_picked_edges_faces_and_boxes():
-    doc, parts = state["doc"], state["parts"]
+    parts = state["parts"]
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(parts["left"], "Edge1")   # along z
     Gui.Selection.addSelection(parts["right"], "Edge1")
