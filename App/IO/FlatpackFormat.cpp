@@ -248,8 +248,8 @@ FlatpackDesign readFlatpack(const nlohmann::json& document)
     if (design.boards.empty())
         throw FormatError("parts: at least one part is needed");
 
-    const Fields settings(document.contains("settings") ? document["settings"] : nlohmann::json::object(),
-                          "settings");
+    const nlohmann::json noSettings = nlohmann::json::object();
+    const Fields settings(document.contains("settings") ? document["settings"] : noSettings, "settings");
     const Eigen::VectorXd X = design.variables();
     const double shortest = settings.number("min_length", 2 * thickness, 0.0);
     const char* axes = "xyz";

@@ -18,9 +18,8 @@ ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
 Eigen::VectorXd ConstrainedDesign::sizes(const Eigen::VectorXd& X) const
 {
     Eigen::VectorXd s(2 * design_.boards.size());
-    for (size_t b = 0; b < design_.boards.size(); ++b)
-        for (int k = 0; k < 2; ++k)
-            s[2 * b + k] = X[sizeVariable(static_cast<int>(b), design_.boards[b].inPlane()[k])];
+    for (int i = 0; i < s.size(); ++i)
+        s[i] = X[variableOfSize(i)];
     return s;
 }
 
@@ -29,7 +28,7 @@ std::optional<Eigen::VectorXd> ConstrainedDesign::changePartSizes(const Eigen::V
 {
     Eigen::VectorXd u = Eigen::VectorXd::Zero(X.size());
     for (int i = 0; i < change.size(); ++i)
-        u[sizeVariable(i / 2, design_.boards[i / 2].inPlane()[i % 2])] = change[i];
+        u[variableOfSize(i)] = change[i];
     const CorrectedChange corrected = correctChange(design_, X, u);
     if (corrected.alpha <= 0)
         return std::nullopt;

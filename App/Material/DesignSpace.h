@@ -43,6 +43,11 @@ public:
     std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
                                                    const Eigen::VectorXd& change) const override;
     const Design& design() const { return design_; }
+    /// The design variable behind part size s_i (a board's length along one of its in-plane axes).
+    int variableOfSize(int size) const
+    {
+        return sizeVariable(size / 2, design_.boards[size / 2].inPlane()[size % 2]);
+    }
 
 private:
     Design design_;

@@ -20,6 +20,7 @@ public:
     const std::vector<BoardStock>& stock() const { return stock_; }
     const std::vector<PartKind>& parts() const { return parts_; }
     double resolution() const { return settings_.resolution; }
+    double clearance() const { return settings_.kerf + settings_.spacing; }
 
     /// DOCKING (Algorithm 13) of the parts at sizes s in `order` (unit indices).
     GridLayout dock(const Eigen::VectorXd& sizes, const std::vector<int>& order) const;

@@ -6,6 +6,7 @@
 #include "IO/PackFormat.h"
 #include "Json.h"
 #include "Material/Correction.h"
+#include "Material/DynamicPacker.h"
 
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
@@ -94,28 +95,49 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
     return fromJson(out);
 }
 
-/// Thesis 5.3.5: the edited design kept valid, the edits kept (Algorithms 5 and 6).
-py::object correctDesign(const py::object& valid, const py::object& edited)
+/// X of `design` with the parts of the `edited` design dict (same parts, moved or resized).
+Eigen::VectorXd editedVariables(const material::Design& design, const py::object& edited)
 {
-    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
-    nlohmann::json editedDoc = toJson(valid);
-    editedDoc["parts"] = toJson(edited)["parts"];
-    material::Design changed = before.design;
-    const nlohmann::json& parts = editedDoc["parts"];
-    if (!parts.is_array() || parts.size() != changed.boards.size())
+    const nlohmann::json parts = toJson(edited)["parts"];
+    if (!parts.is_array() || parts.size() != design.boards.size())
         throw io::FormatError("parts: the edited design must have the same parts as the valid one");
+    material::Design changed = design;
     for (size_t b = 0; b < parts.size(); ++b) {
         const io::Fields part(parts[b], "parts[" + std::to_string(b) + "]");
         changed.boards[b].size = part.vector3("size");
         changed.boards[b].centre = part.vector3("position") + changed.boards[b].size / 2;
     }
-    const Eigen::VectorXd X = before.design.variables();
+    return changed.variables();
+}
+
+/// Thesis 5.3.5: the edited design kept valid, the edits kept (Algorithms 5 and 6).
+py::object correctDesign(const py::object& valid, const py::object& edited)
+{
+    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
+    const Eigen::VectorXd X = before.design.variables(), edit = editedVariables(before.design, edited);
     material::CorrectedChange c;
     {
         py::gil_scoped_release release;
-        c = material::correctChange(before.design, X, changed.variables() - X);
+        c = material::correctChange(before.design, X, edit - X);
     }
     return fromJson({{"parts", io::partsAt(before.design, c.X)}, {"alpha", c.alpha}, {"limits", c.limits}});
+}
+
+/// Thesis 5.3.2: an edit after which the parts overflow the master boards, absorbed by the dynamic packer.
+py::object absorbEdit(const py::object& valid, const py::object& edited)
+{
+    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
+    const material::ConstrainedDesign design(before.design);
+    const material::MaterialSpace material(before.boards, before.settings, design.parts());
+    const Eigen::VectorXd X = before.design.variables(), edit = editedVariables(before.design, edited);
+    material::Absorbed a;
+    {
+        py::gil_scoped_release release;
+        const material::DesignLayout laid = material::layOut(design, material, 1);
+        a = material::dynamicPacker(design, material, X, laid.layout, edit - X);
+    }
+    return fromJson(
+        {{"fitted", a.fitted}, {"parts", io::partsAt(before.design, a.X)}, {"snapped", a.snapped}});
 }
 
 py::object optimiseParametric(const py::list& parts,
@@ -188,6 +210,11 @@ void bindExplore(py::module_& m)
           "has the same parts with some moved or resized. Returns {parts, alpha (share of the edit kept), "
           "limits "
           "(constraints that stopped it)}.");
+    m.def(
+        "absorb_edit", &absorbEdit, py::arg("valid"), py::arg("edited"),
+        "The dynamic packer (thesis 5.3.2): when the edited design's parts no longer fit the master boards, "
+        "shortens the parts that share a line across the board with the edited ones so they do, keeping the "
+        "edit and every constraint. Returns {fitted, parts, snapped (the lines saturated)}.");
     m.def(
         "optimise_parametric", &optimiseParametric, py::arg("parts"), py::arg("sizes"), py::arg("start"),
         py::arg("lower"), py::arg("upper"), py::arg("sheets"), py::arg("seed") = 1,

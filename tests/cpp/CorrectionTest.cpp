@@ -121,6 +121,20 @@ TEST(CorrectionTest, AnInnerVolumeIsKeptFreeByHoldingThePartThatWouldEnterIt)
     EXPECT_FALSE(stopped.limits.empty());
 }
 
+TEST(CorrectionTest, NoBoardShrinksBelowTheMinimumLength)
+{
+    nlohmann::json doc = {{"format", "fabguide.flatpack"},
+                          {"settings", {{"min_length", 100}}},
+                          {"boards", {{{"width", 1220}, {"height", 915}, {"thickness", 12}}}},
+                          {"parts", {{{"id", "shelf"}, {"position", {0, 0, 0}}, {"size", {300, 250, 12}}}}}};
+    const Design design = io::readFlatpack(doc).design;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
+    u[sizeVariable(0, 1)] = -200;  // to 50 mm
+    const CorrectedChange c = correctChange(design, design.variables(), u);
+    EXPECT_NEAR(size(c.X, 0, 1), 100, 1e-3);
+    EXPECT_EQ(c.limits, std::vector<std::string>{"shelf.size.y >= 100"});
+}
+
 TEST(CorrectionTest, TheFormatNamesWhatItCannotRead)
 {
     const auto error = [](const nlohmann::json& extra) {

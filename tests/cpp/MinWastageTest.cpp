@@ -1,6 +1,8 @@
 // Design exploration (thesis 5.4): SLIDE, the locking chains, IMPROVEDESIGN and MINWASTAGE on real designs.
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
+#include "Material/Correction.h"
+#include "Material/DynamicPacker.h"
 #include "Material/MinWastage.h"
 
 #include <gtest/gtest.h>
@@ -166,4 +168,43 @@ TEST(ParametricDesignTest, IsImprovedThroughItsGradients)
     EXPECT_GE(x[1], 100);
     EXPECT_LE(x[1], 300);
     expectValid(material, e.suggestions[0].result.layout, e.suggestions[0].result.sizes);
+}
+
+TEST(DynamicPackerTest, AnEditThatOverflowsTheBoardIsAbsorbedBySnappingTheOtherParts)
+{
+    // The coffee table without its ranges: a top 1000 mm wide fits the board in no layout; the packer keeps
+    // its width and makes the top, and the legs flush with it, shallower so the line across the board fits.
+    nlohmann::json doc =
+        io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/examples/coffee-table.flatpack.json");
+    auto& constraints = doc["constraints"];
+    constraints.erase(std::remove_if(constraints.begin(), constraints.end(),
+                                     [](const nlohmann::json& c) { return c["kind"] == "range"; }),
+                      constraints.end());
+    const io::FlatpackDesign f = io::readFlatpack(doc);
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(start.X.size());
+    u[sizeVariable(0, 0)] = 1000 - start.X[sizeVariable(0, 0)];
+    const Eigen::VectorXd edited = correctChange(f.design, start.X, u).X;
+    ASSERT_FALSE(material.slide(start.layout, design.sizes(edited)).unplaced.empty());
+    const Absorbed a = dynamicPacker(design, material, start.X, start.layout, u);
+    ASSERT_TRUE(a.fitted);
+    EXPECT_FALSE(a.snapped.empty());
+    EXPECT_NEAR(a.X[sizeVariable(0, 0)], 1000, 1e-9);  // the edit is kept
+    EXPECT_LT(a.X[sizeVariable(0, 1)], 450);           // the top gave way in depth
+    EXPECT_TRUE(unsatisfied(f.design, a.X, 1e-6).empty());
+    EXPECT_TRUE(ineffective(f.design, a.X).empty());
+    expectValid(material, a.layout, design.sizes(a.X));
+}
+
+TEST(DynamicPackerTest, AnEditNoBoardCanHoldIsNotAbsorbed)
+{
+    const io::FlatpackDesign f = example("coffee-table.flatpack.json");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(start.X.size());
+    u[sizeVariable(3, 1)] = 1300 - start.X[sizeVariable(3, 1)];  // the shelf deeper than any board
+    EXPECT_FALSE(dynamicPacker(design, material, start.X, start.layout, u).fitted);
 }

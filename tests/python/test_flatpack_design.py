@@ -81,6 +81,17 @@ def test_an_edit_that_does_not_fit_the_master_board_is_undone_with_the_reason(do
     assert table.Status == "Edit undone: part 'shelf' is larger than every master board"
 
 
+def test_an_edit_that_overflows_the_board_is_absorbed_by_the_parts_beside_it(doc, table):
+    # Without ranges, a top 1000 mm wide fits in no layout: the parts sharing its line across the board give way.
+    table.Group = [o for o in table.Group if not (design.is_constraint(o) and o.Kind == "range")]
+    doc.recompute()
+    box(doc, "top").Length = 1000
+    doc.recompute()
+    assert size(doc, "top", 0) == pytest.approx(1000)
+    assert "edit absorbed: fit " in table.Status, table.Status
+    fabguide_core.lay_out_design(design.flatpack(table))  # every constraint holds and it fits
+
+
 def test_save_and_reload_keep_the_design(doc, table, tmp_path):
     path = str(tmp_path / "table.FCStd")
     doc.saveAs(path)

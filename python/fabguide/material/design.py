@@ -1,7 +1,8 @@
 """Flat-pack design (thesis 5.1): furniture modelled as native Part::Box boards of one thickness, with design
 constraints, inner and outer volumes and the master boards to cut from. Its recompute keeps the constraints
 holding as the user edits a box (thesis 5.3.5: the edit is kept, the rest adapts) and lays the boards out to
-show the material usage live; an edit that no longer fits the master boards is undone with the reason."""
+show the material usage live; an edit that no longer fits the master boards is absorbed by the dynamic packer
+(5.3.2: the parts sharing its line across the board give way) or undone with the reason."""
 import json
 
 import FreeCAD
@@ -225,18 +226,36 @@ def recompute(obj):
         obj.Status = "Constraints broken: {}".format(error)
         raise DesignError("Design '{}': {}".format(obj.Label, error))
     except fabguide_core.PackingError as error:
-        if valid:
+        if not valid:
+            obj.Status = str(error)
+            raise DesignError("Design '{}': {}".format(obj.Label, error))
+        laid, absorbed = absorb(obj, edited, valid)
+        note += absorbed
+        if laid is None:
             write_parts(obj, valid)
             obj.Status = "Edit undone: {}".format(error)
             FreeCAD.Console.PrintError("{}: edit undone: {}\n".format(obj.Label, error))
             return
-        obj.Status = str(error)
-        raise DesignError("Design '{}': {}".format(obj.Label, error))
     mark_constraints(obj, "")
     obj.Usage = laid["usage"]
     obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
     obj.Status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
     obj.Valid = json.dumps(edited["parts"])
+
+
+def absorb(obj, edited, valid):
+    """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards: (layout, note) with the
+    boxes written back when it fits, (None, "") otherwise."""
+    absorbed = fabguide_core.absorb_edit(dict(edited, parts=valid), edited)
+    if not absorbed["fitted"]:
+        return None, ""
+    write_parts(obj, absorbed["parts"])
+    edited["parts"] = parts_of(obj)
+    try:
+        laid = fabguide_core.lay_out_design(edited)
+    except fabguide_core.PackingError:
+        return None, ""
+    return laid, "; edit absorbed: " + ", ".join(absorbed["snapped"])
 
 
 def mark_constraints(obj, error):
