@@ -169,3 +169,16 @@ def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
     sizes(best["parameters"])
     assert boards["bottom"].Length.Value == pytest.approx(side - 24)
     assert [s["parameters"] for s in best["path"]][0] == [300, 170]
+
+
+@pytest.mark.parametrize("name", ["chest", "l-worktable", "low-chair", "parrot-shelf", "shelf-and-chest",
+                                  "shelf-and-table", "stylised-chair", "yin-chair"])
+def test_every_example_imports_and_exports_as_the_same_design(doc, source_dir, name):
+    path = os.path.join(source_dir, "examples", name + ".flatpack.json")
+    obj = design.from_file(doc, path)
+    doc.recompute()
+    assert "Invalid" not in obj.State, obj.Status
+    with open(path) as f:
+        assert obj.Usage == pytest.approx(fabguide_core.lay_out_design(json.load(f))["usage"])
+    exported = json.loads(json.dumps(design.flatpack(obj)))  # as Export writes it
+    assert fabguide_core.lay_out_design(exported)["usage"] == pytest.approx(obj.Usage)
