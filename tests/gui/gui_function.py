@@ -18,20 +18,11 @@ state = {}
 SOURCE = os.environ["FABGUIDE_SOURCE_DIR"]
 
 
-def with_file_dialog(name, path, command):
-    original = getattr(QtGui.QFileDialog, name)
-    setattr(QtGui.QFileDialog, name, staticmethod(lambda *args, **kwargs: (path, "")))
-    try:
-        Gui.runCommand(command)
-    finally:
-        setattr(QtGui.QFileDialog, name, original)
-
-
 def import_the_cabinet():
     Gui.activateWorkbench("FabGuideWorkbench")
     doc = FreeCAD.newDocument("Cabinet")
     state["cabinet"] = doc
-    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cabinet.workslike.json"),
+    guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cabinet.workslike.json"),
                      "FabGuide_ImportWorkslike")
     mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
     assert mech.Status == "Solved", mech.Status
@@ -117,7 +108,7 @@ def a_clamshell_from_plain_boxes_with_the_commands():
 
 
 def the_relationship_panel_colours_the_faces():
-    cover, lid, body = state["cover"], state["lid"], state["body"]
+    cover, lid = state["cover"], state["lid"]
     cover.ViewObject.doubleClicked()
     QtGui.QApplication.processEvents()
     lists = [w for w in Gui.getMainWindow().findChildren(QtGui.QListWidget) if w.isVisible()]
@@ -150,7 +141,7 @@ def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
 
 def the_crate_bed_folds_along_its_four_bar_motion():
     doc = FreeCAD.newDocument("CrateBed")
-    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "crate-bed.workslike.json"),
+    guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "crate-bed.workslike.json"),
                      "FabGuide_ImportWorkslike")
     mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
     assert mech.Status == "Solved", mech.Status
@@ -188,7 +179,7 @@ def a_double_pivot_from_two_picked_points():
 
 def the_cellphone_made_printable_in_its_colours():
     doc = FreeCAD.newDocument("Phone")
-    with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cellphone.workslike.json"),
+    guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cellphone.workslike.json"),
                      "FabGuide_ImportWorkslike")
     mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
     doc.getObjectsByLabel("screen")[0].ViewObject.ShapeColor = (0.2, 0.5, 0.8)
@@ -217,7 +208,7 @@ def export_writes_a_model_the_core_solves():
     path = os.path.join(tempfile.mkdtemp(), "clamshell.workslike.json")
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(state["mech"])
-    with_file_dialog("getSaveFileName", path, "FabGuide_ExportWorkslike")
+    guitest.with_file_dialog("getSaveFileName", path, "FabGuide_ExportWorkslike")
     with open(path) as f:
         assert fabguide_core.solve(json.load(f))["report"]["solved"]
 

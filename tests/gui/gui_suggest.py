@@ -2,8 +2,13 @@
 live usage; constraints are added from picked edges, faces and boxes; Suggest runs in the background with a
 progress bar, shows three thumbnails, slides the design along a path and applies the choice as one undo step;
 screenshots of the panel and the 3-D view."""
+import json
+import os
+import tempfile
+
 import FreeCAD
 import FreeCADGui as Gui
+import fabguide_core
 from PySide import QtGui
 
 import guitest
@@ -120,9 +125,33 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     assert design.parts_of(d) == before
 
 
+def import_and_export_a_flatpack_design():
+    Gui.Control.closeDialog()
+    doc = FreeCAD.newDocument("Shelf")
+    source = os.path.join(os.environ["FABGUIDE_SOURCE_DIR"], "examples", "parrot-shelf.flatpack.json")
+    guitest.with_file_dialog("getOpenFileName", source, "FabGuide_ImportFlatpack")
+    designs = [o for o in doc.Objects if design.is_design(o)]
+    assert len(designs) == 1 and "Invalid" not in designs[0].State, designs[0].Status
+    shelf = designs[0]
+    assert len(design.boxes(shelf)) == 7 and shelf.Usage > 0.8
+    constraints = [o for o in shelf.Group if design.is_constraint(o)]
+    assert len(constraints) == 7 and all(c.Status == design.SATISFIED for c in constraints)
+    assert [o.ViewObject.Proxy.getIcon().endswith("FabGuide_Ground.svg") for o in constraints][0]
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    print("3-D view: " + guitest.view_image("flatpack_parrot_shelf"))
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "shelf.flatpack.json")
+        Gui.Selection.clearSelection()
+        guitest.with_file_dialog("getSaveFileName", path, "FabGuide_ExportFlatpack")
+        with open(path) as f:
+            assert fabguide_core.lay_out_design(json.load(f))["usage"] == shelf.Usage
+
+
 guitest.run([
     boxes_become_a_design_with_live_usage,
     constraints_from_picked_edges_faces_and_boxes,
     an_edit_keeps_the_constraints,
     suggest_shows_three_suggestions_and_applies_one_as_one_step,
+    import_and_export_a_flatpack_design,
 ])

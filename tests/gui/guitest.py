@@ -37,6 +37,19 @@ def view_image(name, width=1200, height=900):
     return path
 
 
+def with_file_dialog(name, path, command):
+    """Runs FreeCAD command `command` with QFileDialog.`name` (getOpenFileName, getSaveFileName) answering
+    `path`, as if the user had picked it (a modal dialog would stop the test)."""
+    from PySide import QtGui
+
+    original = getattr(QtGui.QFileDialog, name)
+    setattr(QtGui.QFileDialog, name, staticmethod(lambda *args, **kwargs: (path, "")))
+    try:
+        FreeCADGui.runCommand(command)
+    finally:
+        setattr(QtGui.QFileDialog, name, original)
+
+
 def _run_all(steps):
     status = 0
     try:
