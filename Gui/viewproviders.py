@@ -88,7 +88,18 @@ VOLUME_COLOURS = {"Inner": (0.30, 0.75, 0.35), "Outer": (0.80, 0.20, 0.20)}
 
 
 class ViewProviderFlatpackDesign(ViewProvider):
+    """Says the usage (or why an edit was absorbed or undone) in the status bar after every recompute, so the
+    user sees it while editing boxes (thesis 5.1: the material usage is shown live)."""
+
     ICON = "FabGuide_FlatpackDesign.svg"
+
+    def updateData(self, obj, prop):
+        if prop in ("Status", "Valid") and obj.Status:
+            # After the recompute: its progress indicator clears the status bar when it ends.
+            from PySide import QtCore
+
+            message = "{}: {}".format(obj.Label, obj.Status)
+            QtCore.QTimer.singleShot(0, lambda: FreeCADGui.getMainWindow().statusBar().showMessage(message, 15000))
 
 
 class ViewProviderDesignConstraint(ViewProvider):

@@ -82,6 +82,9 @@ def an_edit_keeps_the_constraints():
     doc.recompute()
     doc.commitTransaction()
     assert parts["right"].Height.Value == 420  # equal lengths
+    QtGui.QApplication.processEvents()
+    message = Gui.getMainWindow().statusBar().currentMessage()
+    assert message.startswith(state["design"].Label + ": Usage 0."), message
     assert cuboids.coordinates(parts["top"])[4] == 420  # the top still rests on the legs
     doc.undo()
     doc.recompute()
