@@ -102,32 +102,45 @@ Linear sum(const std::vector<Linear>& terms)
     return total;
 }
 
-/// One entry of "constraints": equalities into design.equalities, ranges into design.bounds.
-void readConstraint(Design& design, const nlohmann::json& json, const std::string& path)
-{
-    const Fields c(json, path);
-    const std::string kind = c.text("kind");
-    const Eigen::VectorXd X = design.variables();
-    const auto named = [&](const std::string& fallback) { return c.text("name", kind + " " + fallback); };
-    const auto equal = [&](const std::string& name, const Linear& e) {
-        design.equalities.push_back({name, e});
-    };
-    if (kind == "equal") {
+/// One entry of "constraints" being read: the design it adds to, its fields, and the design's values now.
+struct ConstraintReader {
+    Design& design;
+    const nlohmann::json& json;
+    Fields c;
+    std::string kind;
+    Eigen::VectorXd X;
+
+    std::string named(const std::string& fallback) const { return c.text("name", kind + " " + fallback); }
+    void equal(const std::string& name, const Linear& e) { design.equalities.push_back({name, e}); }
+    Linear ref() const
+    {
+        return reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
+    }
+    std::string refText() const { return json["ref"].get<std::string>(); }
+
+    void equalKind()
+    {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         const std::string name = named(joined(c.array("refs"), " = "));
         for (size_t k = 1; k < refs.size(); ++k)
             equal(name, refs[k] - refs[0]);
-    } else if (kind == "sum") {
+    }
+    void sumKind()
+    {
         const Linear lhs = sum(references(design, c, "lhs", 1)), rhs = sum(references(design, c, "rhs", 1));
         const double offset = c.number("offset", 0.0);
         equal(named(joined(c.array("lhs"), " + ") + " = " + joined(c.array("rhs"), " + ") +
                     (offset != 0 ? " + " + show(offset) : "")),
               lhs - rhs - material::constant(offset));
-    } else if (kind == "fixed") {
-        const Linear ref = reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
-        const double value = c.number("value", ref.value(X));
-        equal(named(json["ref"].get<std::string>() + " = " + show(value)), ref - material::constant(value));
-    } else if (kind == "symmetric") {
+    }
+    void fixedKind()
+    {
+        const Linear r = ref();
+        const double value = c.number("value", r.value(X));
+        equal(named(refText() + " = " + show(value)), r - material::constant(value));
+    }
+    void symmetricKind()
+    {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         if (refs.size() != 2)
             throw FormatError(c.pathOf("refs") + ": symmetric takes two references");
@@ -136,7 +149,9 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
                                  ? material::constant(json["about"].get<double>())
                                  : reference(design, json["about"], c.pathOf("about"));
         equal(named(joined(c.array("refs"), ", ")), refs[0] + refs[1] - about * 2.0);
-    } else if (kind == "ground") {
+    }
+    void groundKind()
+    {
         const std::vector<int> parts = partsOf(design, c, 1);
         double lowest = std::numeric_limits<double>::infinity();
         for (size_t b = 0; b < design.boards.size(); ++b)
@@ -145,17 +160,21 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
         for (int b : parts)
             equal(named(design.boards[b].id + " on z = " + show(level)),
                   material::lowerFace(b, 2) - material::constant(level));
-    } else if (kind == "coplanar") {
+    }
+    void coplanarKind()
+    {
         const std::vector<int> parts = partsOf(design, c, 2);
         const int normal = design.boards[parts[0]].normal;
         for (int b : parts)
             if (design.boards[b].normal != normal)
-                throw FormatError(path + ": " + design.boards[b].id + " is not parallel to " +
+                throw FormatError(c.pathOf("parts") + ": " + design.boards[b].id + " is not parallel to " +
                                   design.boards[parts[0]].id);
         for (size_t k = 1; k < parts.size(); ++k)
             equal(named(joined(c.array("parts"), ", ")),
                   material::centreOf(parts[k], normal) - material::centreOf(parts[0], normal));
-    } else if (kind == "snap") {
+    }
+    void snapKind(const std::string& path)
+    {
         const std::vector<int> parts = partsOf(design, c, 2);
         if (parts.size() != 2)
             throw FormatError(c.pathOf("parts") + ": snap takes two parts");
@@ -165,10 +184,11 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
                               design.boards[parts[1]].id + " do not touch");
         design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
         design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
-    } else if (kind == "range") {
-        const Linear ref = reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
-        const std::string name = json["ref"].get<std::string>();
-        const double value = ref.value(X), fraction = c.number("fraction", 0.0, 0.0);
+    }
+    void rangeKind(const std::string& path)
+    {
+        const Linear r = ref();
+        const double value = r.value(X), fraction = c.number("fraction", 0.0, 0.0);
         const double low = c.number("min", fraction > 0 ? value * (1 - fraction) : -HUGE_VAL);
         const double high = c.number("max", fraction > 0 ? value * (1 + fraction) : HUGE_VAL);
         if (!c.has("min") && !c.has("max") && !(fraction > 0))
@@ -178,13 +198,38 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
             return c.has("name") ? c.text("name") + " (" + side + ")" : fallback;
         };
         if (std::isfinite(low))
-            design.bounds.push_back({end("min", name + " >= " + show(low)), material::constant(low) - ref});
+            design.bounds.push_back(
+                {end("min", refText() + " >= " + show(low)), material::constant(low) - r});
         if (std::isfinite(high))
-            design.bounds.push_back({end("max", name + " <= " + show(high)), ref - material::constant(high)});
-    } else {
-        throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + kind +
-                          "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
+            design.bounds.push_back(
+                {end("max", refText() + " <= " + show(high)), r - material::constant(high)});
     }
+};
+
+/// One entry of "constraints": equalities into design.equalities, ranges into design.bounds.
+void readConstraint(Design& design, const nlohmann::json& json, const std::string& path)
+{
+    const Fields c(json, path);
+    ConstraintReader r{design, json, c, c.text("kind"), design.variables()};
+    if (r.kind == "equal")
+        r.equalKind();
+    else if (r.kind == "sum")
+        r.sumKind();
+    else if (r.kind == "fixed")
+        r.fixedKind();
+    else if (r.kind == "symmetric")
+        r.symmetricKind();
+    else if (r.kind == "ground")
+        r.groundKind();
+    else if (r.kind == "coplanar")
+        r.coplanarKind();
+    else if (r.kind == "snap")
+        r.snapKind(path);
+    else if (r.kind == "range")
+        r.rangeKind(path);
+    else
+        throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + r.kind +
+                          "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
 }
 
 material::DesignBoard readPart(const nlohmann::json& json, const std::string& path, double thickness)
@@ -223,6 +268,73 @@ void readOuterVolume(Design& design, const nlohmann::json& json)
         }
 }
 
+/// The boards of "parts", every one as thick as the master boards, each id once.
+void readParts(const Fields& root, double thickness, Design& design)
+{
+    const nlohmann::json& parts = root.array("parts");
+    for (size_t i = 0; i < parts.size(); ++i) {
+        design.boards.push_back(readPart(parts[i], at("parts", i), thickness));
+        for (size_t j = 0; j < i; ++j)
+            if (design.boards[j].id == design.boards[i].id)
+                throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");
+    }
+    if (design.boards.empty())
+        throw FormatError("parts: at least one part is needed");
+}
+
+/// What "settings" asks of every board: no in-plane side below min_length (or its present length if shorter),
+/// and, with snap on, every two boards that touch stay touching.
+void addSettingConstraints(const Fields& settings, double thickness, Design& design)
+{
+    const Eigen::VectorXd X = design.variables();
+    const double shortest = settings.number("min_length", 2 * thickness, 0.0);
+    const char* axes = "xyz";
+    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
+        for (int axis : design.boards[b].inPlane()) {
+            const double least = std::min(shortest, X[material::sizeVariable(b, axis)]);
+            design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " >= " + show(least),
+                                     material::constant(least) - material::sizeOf(b, axis)});
+        }
+    if (!settings.flag("snap", true))
+        return;
+    for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
+        for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b) {
+            const material::Snapping snap = material::snapping(design, a, b);
+            design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
+            design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
+        }
+}
+
+void readInnerVolumes(const Fields& root, Design& design)
+{
+    const nlohmann::json& inner = root.array("inner_volumes", true);
+    for (size_t i = 0; i < inner.size(); ++i) {
+        const Fields volume(inner[i], at("inner_volumes", i));
+        material::InnerVolume v;
+        v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
+        v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
+        v.size = volume.vector3("size");
+        v.offset = volume.vector3("position") - design.boards[v.on].centre;
+        design.innerVolumes.push_back(v);
+    }
+}
+
+/// A design must satisfy its own constraints as given; the first five broken ones are named.
+void checkSatisfied(const Design& design)
+{
+    const Eigen::VectorXd X = design.variables();
+    std::vector<std::string> broken = material::unsatisfied(design, X);
+    for (const std::string& name : material::ineffective(design, X))
+        broken.push_back(name);
+    if (broken.empty())
+        return;
+    std::string names;
+    for (size_t k = 0; k < broken.size() && k < 5; ++k)
+        names += (k ? "; " : "") + broken[k];
+    throw FormatError("the design does not satisfy its own constraints: " + names +
+                      (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
+}
+
 }  // namespace
 
 FlatpackDesign readFlatpack(const nlohmann::json& document)
@@ -238,61 +350,18 @@ FlatpackDesign readFlatpack(const nlohmann::json& document)
     if (!(thickness > 0))
         throw FormatError("boards[0].thickness: must be greater than 0");
     Design& design = result.design;
-    const nlohmann::json& parts = root.array("parts");
-    for (size_t i = 0; i < parts.size(); ++i) {
-        design.boards.push_back(readPart(parts[i], at("parts", i), thickness));
-        for (size_t j = 0; j < i; ++j)
-            if (design.boards[j].id == design.boards[i].id)
-                throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");
-    }
-    if (design.boards.empty())
-        throw FormatError("parts: at least one part is needed");
-
+    readParts(root, thickness, design);
     const nlohmann::json noSettings = nlohmann::json::object();
-    const Fields settings(document.contains("settings") ? document["settings"] : noSettings, "settings");
-    const Eigen::VectorXd X = design.variables();
-    const double shortest = settings.number("min_length", 2 * thickness, 0.0);
-    const char* axes = "xyz";
-    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
-        for (int axis : design.boards[b].inPlane()) {
-            const double least = std::min(shortest, X[material::sizeVariable(b, axis)]);
-            design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " >= " + show(least),
-                                     material::constant(least) - material::sizeOf(b, axis)});
-        }
-    if (settings.flag("snap", true))
-        for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
-            for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b) {
-                const material::Snapping snap = material::snapping(design, a, b);
-                design.equalities.insert(design.equalities.end(), snap.equalities.begin(),
-                                         snap.equalities.end());
-                design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
-            }
+    addSettingConstraints(
+        Fields(document.contains("settings") ? document["settings"] : noSettings, "settings"), thickness,
+        design);
     const nlohmann::json& constraints = root.array("constraints", true);
     for (size_t i = 0; i < constraints.size(); ++i)
         readConstraint(design, constraints[i], at("constraints", i));
-    const nlohmann::json& inner = root.array("inner_volumes", true);
-    for (size_t i = 0; i < inner.size(); ++i) {
-        const Fields volume(inner[i], at("inner_volumes", i));
-        material::InnerVolume v;
-        v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
-        v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
-        v.size = volume.vector3("size");
-        v.offset = volume.vector3("position") - design.boards[v.on].centre;
-        design.innerVolumes.push_back(v);
-    }
+    readInnerVolumes(root, design);
     if (root.has("outer_volume"))
         readOuterVolume(design, document["outer_volume"]);
-
-    std::vector<std::string> broken = material::unsatisfied(design, X);
-    for (const std::string& name : material::ineffective(design, X))
-        broken.push_back(name);
-    if (!broken.empty()) {
-        std::string names;
-        for (size_t k = 0; k < broken.size() && k < 5; ++k)
-            names += (k ? "; " : "") + broken[k];
-        throw FormatError("the design does not satisfy its own constraints: " + names +
-                          (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
-    }
+    checkSatisfied(design);
     return result;
 }
 

@@ -132,6 +132,38 @@ void lockingChains(const Explorer& explorer, const DesignLayout& d, int axis,
 
 }  // namespace
 
+namespace {
+
+/// DRAWPARTSIZEWITHPROBABILITY: a number of occurrences o with P(o) ∝ Σ occ of the sizes occurring o times,
+/// then among those sizes one with P(s | o) ∝ 1 - dep(s) / Σ dep.
+int drawPartSize(const std::map<int, int>& occurrences, const std::map<int, int>& dependence,
+                 std::mt19937_64& random)
+{
+    std::map<int, double> weightOf;
+    for (const auto& [size, occ] : occurrences)
+        weightOf[occ] += occ;
+    std::vector<int> counts;
+    std::vector<double> weights;
+    for (const auto& [occ, weight] : weightOf) {
+        counts.push_back(occ);
+        weights.push_back(weight);
+    }
+    const int o = counts[std::discrete_distribution<int>(weights.begin(), weights.end())(random)];
+    std::vector<int> candidates;
+    double depSum = 0;
+    for (const auto& [size, occ] : occurrences)
+        if (occ == o) {
+            candidates.push_back(size);
+            depSum += dependence.at(size);
+        }
+    std::vector<double> p;
+    for (int size : candidates)
+        p.push_back(candidates.size() == 1 || depSum == 0 ? 1.0 : 1.0 - dependence.at(size) / depSum);
+    return candidates[std::discrete_distribution<int>(p.begin(), p.end())(random)];
+}
+
+}  // namespace
+
 std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout& best)
 {
     if (!best.layout.unplaced.empty())
@@ -140,53 +172,33 @@ std::vector<int> selectPartSizesToShrink(Explorer& explorer, const DesignLayout&
     for (int axis : {0, 1})
         lockingChains(explorer, best, axis, chains);
 
-    // dep(s): how many part sizes shrinking s changes; sizes that cannot shrink are left out.
-    std::map<int, std::optional<int>> dependence;
-    const auto dep = [&](int size) {
-        auto found = dependence.find(size);
-        if (found != dependence.end())
-            return found->second;
-        std::optional<int> count;
-        if (const auto X = changePartSize(explorer, best.X, size, -1)) {
-            const Eigen::VectorXd change = explorer.design.sizes(*X) - best.sizes;
-            count = static_cast<int>((change.array().abs() > 1e-9).count());
+    // dep(s): how many part sizes shrinking s changes; sizes that cannot shrink are never drawn.
+    std::map<int, int> dependence;
+    std::set<int> unshrinkable;
+    for (const auto& chain : chains)
+        for (int size : chain) {
+            if (dependence.count(size) || unshrinkable.count(size))
+                continue;
+            if (const auto X = changePartSize(explorer, best.X, size, -1)) {
+                const Eigen::VectorXd change = explorer.design.sizes(*X) - best.sizes;
+                dependence[size] = static_cast<int>((change.array().abs() > 1e-9).count());
+            } else {
+                unshrinkable.insert(size);
+            }
         }
-        return dependence[size] = count;
-    };
 
     std::vector<int> chosen;
     while (!chains.empty()) {
         std::map<int, int> occurrences;
         for (const auto& chain : chains)
             for (int size : std::set<int>(chain.begin(), chain.end()))
-                if (dep(size))
+                if (dependence.count(size))
                     ++occurrences[size];
         if (occurrences.empty())
             break;  // what is left cannot be broken
-        // P(o) ∝ Σ occ over sizes occurring o times; then P(s | o) ∝ 1 - dep(s) / Σ dep.
-        std::map<int, double> weightOf;
-        for (const auto& [size, occ] : occurrences)
-            weightOf[occ] += occ;
-        std::vector<int> counts;
-        std::vector<double> weights;
-        for (const auto& [occ, weight] : weightOf) {
-            counts.push_back(occ);
-            weights.push_back(weight);
-        }
-        const int o =
-            counts[std::discrete_distribution<int>(weights.begin(), weights.end())(explorer.random)];
-        std::vector<int> candidates;
-        double depSum = 0;
-        for (const auto& [size, occ] : occurrences)
-            if (occ == o) {
-                candidates.push_back(size);
-                depSum += *dep(size);
-            }
-        std::vector<double> p;
-        for (int size : candidates)
-            p.push_back(candidates.size() == 1 || depSum == 0 ? 1.0 : 1.0 - *dep(size) / depSum);
-        const int size = candidates[std::discrete_distribution<int>(p.begin(), p.end())(explorer.random)];
+        const int size = drawPartSize(occurrences, dependence, explorer.random);
         chosen.push_back(size);
+        // KILLEDCHAINS: every chain the size is in.
         chains.erase(std::remove_if(chains.begin(), chains.end(),
                                     [&](const std::vector<int>& c) {
                                         return std::find(c.begin(), c.end(), size) != c.end();
