@@ -5,12 +5,15 @@
 #include "Function/Solve.h"
 #include "Printable/Motion.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -228,12 +231,35 @@ TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
         } catch (const Standard_Failure&) {  // a face across a hinge's axis turns in its own plane: no volume
             continue;
         }
+        if (s.IsNull())  // left out by the sweep
+            continue;
         GProp_GProps volume;
         BRepGProp::VolumeProperties(s, volume);
         if (std::abs(volume.Mass()) > 1e-9)  // faces along the motion sweep nothing
             result = fuse(result, s);
     }
     return result;
+}
+
+/// Whether a planar face lies in a plane through `axis` and touches it.
+bool onAxis(const TopoDS_Face& face, const gp_Ax1& axis)
+{
+    const BRepAdaptor_Surface surface(face);
+    if (surface.GetType() != GeomAbs_Plane)
+        return false;
+    const gp_Pln plane = surface.Plane();
+    if (std::abs(plane.Axis().Direction().Dot(axis.Direction())) > 1e-9 ||
+        plane.Distance(axis.Location()) > 1e-7)
+        return false;
+    Bnd_Box box;
+    BRepBndLib::Add(face, box);
+    const double reach = std::sqrt(box.SquareExtent()) + plane.Distance(axis.Location()) + 1;
+    const gp_Vec along(axis.Direction());
+    BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeEdge(axis.Location().Translated(-reach * along),
+                                                                axis.Location().Translated(reach * along))
+                                            .Edge(),
+                                        face);
+    return distance.IsDone() && distance.Value() < 1e-6;
 }
 
 /// What a shape sweeps turning by `radians` about `axis`, then shifting by `by` (motions turn first, then
@@ -243,11 +269,18 @@ TopoDS_Shape turnedThenShifted(const TopoDS_Shape& shape, const gp_Ax1& axis, do
 {
     TopoDS_Shape result = shape, turned = shape;
     if (std::abs(radians) > 1e-12) {
-        result = swept(shape,
-                       [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
         gp_Trsf turn;
         turn.SetRotation(axis, radians);
         turned = moved(shape, turn);
+        // A face lying on the axis (a part grown by its gap up to its hinge line) sweeps what the start and
+        // end poses and the other faces' sweeps cover; OpenCASCADE cannot unite its degenerate sweep with
+        // them.
+        result = fuse(swept(shape,
+                            [&](const TopoDS_Face& f) {
+                                return onAxis(f, axis) ? TopoDS_Shape()
+                                                       : BRepPrimAPI_MakeRevol(f, axis, radians).Shape();
+                            }),
+                      turned);
     }
     if (by.Magnitude() > 1e-9)
         result =
@@ -675,6 +708,12 @@ Printable makePrintable(const Model& m, const Printer& printer)
         int pieces = 0;
         for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
             ++pieces;
+        GProp_GProps volume;
+        BRepGProp::VolumeProperties(unify.Shape(), volume);
+        if (pieces == 0 || volume.Mass() < 1e-6)  // OpenCASCADE lost it without an error
+            throw std::runtime_error(
+                "geometry: nothing is left of part '" + m.parts[p].name +
+                "' after its cavities and joints were cut; try another --gap or --scale");
         if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
             out.notes.push_back(m.parts[p].name + ": falls apart into " + std::to_string(pieces) +
                                 " pieces; check which way its neighbours' joints turn");

@@ -83,6 +83,14 @@ def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh  # the drawer's front and box stay one body
 
 
+def test_a_coarse_printers_gap_clears_the_cabinet_too(fabguide_cli, source_dir, tmp_path):
+    # A 2 mm gap grows the pocket doors up to their hinge lines: their sweeps leave out the faces lying on the
+    # axis (OpenCASCADE could not unite them).
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "cabinet", "--gap", "2")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(2.0, abs=0.01)
+
+
 def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "sliding-box")
     assert run.returncode == 0, run.stdout + run.stderr
