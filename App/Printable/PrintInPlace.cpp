@@ -5,15 +5,12 @@
 #include "Function/Solve.h"
 #include "Printable/Motion.h"
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
-#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -32,6 +29,7 @@
 #include <gp_Ax2.hxx>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -72,7 +70,11 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
     if (operation.HasErrors()) {
         std::ostringstream report;
         operation.DumpErrors(report);
-        throw std::runtime_error(std::string("geometry: a ") + what + " failed: " + report.str());
+        std::string errors = report.str();
+        while (!errors.empty() && std::isspace(static_cast<unsigned char>(errors.back())))
+            errors.pop_back();
+        throw std::runtime_error(std::string("geometry: a ") + what + " failed: " + errors +
+                                 "; try another --gap or --scale");
     }
     return operation.Shape();
 }
@@ -87,9 +89,25 @@ TopoDS_Shape fuseAll(const std::vector<TopoDS_Shape>& shapes)
     return boolean<BRepAlgoAPI_Fuse>(shapes, "union");
 }
 
+double volumeOf(const TopoDS_Shape& s)
+{
+    GProp_GProps volume;
+    BRepGProp::VolumeProperties(s, volume);
+    return volume.Mass();
+}
+
+/// a less b. A cut takes at most the tool's volume; OpenCASCADE sometimes returns a fragment without an error
+/// (parts grown by a large gap up to a hinge line, small scales), which is refused here rather than printed.
 TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
-    return b.IsNull() ? a : boolean<BRepAlgoAPI_Cut>({a, b}, "cut");
+    if (b.IsNull())
+        return a;
+    const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>({a, b}, "cut");
+    const double lost = volumeOf(a) - volumeOf(b) - volumeOf(result);
+    if (lost > 1e-6 * volumeOf(a) + 1e-3)
+        throw std::runtime_error("geometry: a cut lost " + std::to_string(lost) +
+                                 " mm3 more than its tool holds (OpenCASCADE); try another --gap or --scale");
+    return result;
 }
 
 TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
@@ -231,35 +249,12 @@ TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
         } catch (const Standard_Failure&) {  // a face across a hinge's axis turns in its own plane: no volume
             continue;
         }
-        if (s.IsNull())  // left out by the sweep
-            continue;
         GProp_GProps volume;
         BRepGProp::VolumeProperties(s, volume);
         if (std::abs(volume.Mass()) > 1e-9)  // faces along the motion sweep nothing
             result = fuse(result, s);
     }
     return result;
-}
-
-/// Whether a planar face lies in a plane through `axis` and touches it.
-bool onAxis(const TopoDS_Face& face, const gp_Ax1& axis)
-{
-    const BRepAdaptor_Surface surface(face);
-    if (surface.GetType() != GeomAbs_Plane)
-        return false;
-    const gp_Pln plane = surface.Plane();
-    if (std::abs(plane.Axis().Direction().Dot(axis.Direction())) > 1e-9 ||
-        plane.Distance(axis.Location()) > 1e-7)
-        return false;
-    Bnd_Box box;
-    BRepBndLib::Add(face, box);
-    const double reach = std::sqrt(box.SquareExtent()) + plane.Distance(axis.Location()) + 1;
-    const gp_Vec along(axis.Direction());
-    BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeEdge(axis.Location().Translated(-reach * along),
-                                                                axis.Location().Translated(reach * along))
-                                            .Edge(),
-                                        face);
-    return distance.IsDone() && distance.Value() < 1e-6;
 }
 
 /// What a shape sweeps turning by `radians` about `axis`, then shifting by `by` (motions turn first, then
@@ -269,18 +264,11 @@ TopoDS_Shape turnedThenShifted(const TopoDS_Shape& shape, const gp_Ax1& axis, do
 {
     TopoDS_Shape result = shape, turned = shape;
     if (std::abs(radians) > 1e-12) {
+        result = swept(shape,
+                       [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
         gp_Trsf turn;
         turn.SetRotation(axis, radians);
         turned = moved(shape, turn);
-        // A face lying on the axis (a part grown by its gap up to its hinge line) sweeps what the start and
-        // end poses and the other faces' sweeps cover; OpenCASCADE cannot unite its degenerate sweep with
-        // them.
-        result = fuse(swept(shape,
-                            [&](const TopoDS_Face& f) {
-                                return onAxis(f, axis) ? TopoDS_Shape()
-                                                       : BRepPrimAPI_MakeRevol(f, axis, radians).Shape();
-                            }),
-                      turned);
     }
     if (by.Magnitude() > 1e-9)
         result =
@@ -708,9 +696,7 @@ Printable makePrintable(const Model& m, const Printer& printer)
         int pieces = 0;
         for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
             ++pieces;
-        GProp_GProps volume;
-        BRepGProp::VolumeProperties(unify.Shape(), volume);
-        if (pieces == 0 || volume.Mass() < 1e-6)  // OpenCASCADE lost it without an error
+        if (pieces == 0 || volumeOf(unify.Shape()) < 1e-6)  // OpenCASCADE lost it without an error
             throw std::runtime_error(
                 "geometry: nothing is left of part '" + m.parts[p].name +
                 "' after its cavities and joints were cut; try another --gap or --scale");

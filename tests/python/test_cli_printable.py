@@ -83,12 +83,17 @@ def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh  # the drawer's front and box stay one body
 
 
-def test_a_coarse_printers_gap_clears_the_cabinet_too(fabguide_cli, source_dir, tmp_path):
-    # A 2 mm gap grows the pocket doors up to their hinge lines: their sweeps leave out the faces lying on the
-    # axis (OpenCASCADE could not unite them).
-    run, _ = printable(fabguide_cli, source_dir, tmp_path, "cabinet", "--gap", "2")
-    assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(2.0, abs=0.01)
+@pytest.mark.parametrize("options", [("--gap", "2"), ("--scale", "0.3")])
+def test_a_print_opencascade_cannot_make_is_refused_not_written_broken(fabguide_cli, source_dir, tmp_path, options):
+    # A large gap or a small scale makes OpenCASCADE cut the cabinet's carcass to a fragment without an error;
+    # either the bodies keep their volume (a cut never takes more than its tool) or the print is refused.
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "cabinet", *options)
+    if run.returncode == 0:
+        volumes = dict(re.findall(r"^body (.*?) +([0-9.]+) mm3$", run.stdout, re.M))
+        scale = float(options[1]) if options[0] == "--scale" else 1.0
+        assert float(volumes["carcass"]) > 30e6 * scale ** 3, volumes
+    else:
+        assert "geometry: " in run.stderr and "try another --gap or --scale" in run.stderr, run.stderr
 
 
 def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_dir, tmp_path):
