@@ -289,7 +289,8 @@ class OuterVolume(Command):
 
 class Suggest(Command):
     ICON, MENU = "FabGuide_Suggest.svg", "Suggest"
-    TIP = "Search for design variations that keep your constraints and waste less material; preview and accept"
+    TIP = ("Search for design variations that keep your constraints and waste less material (or, for a design with "
+           "Parameters, spreadsheet values within their ranges); preview and accept")
 
     def run(self, doc):
         target = the_one(doc, design.is_design, "flat-pack design")
@@ -297,7 +298,10 @@ class Suggest(Command):
             return
         from fabguide_gui import suggest_panel
 
-        self.panel = suggest_panel.SuggestPanel(target)  # kept for scripts: .wait(), .result
+        try:
+            self.panel = suggest_panel.SuggestPanel(target)  # kept for scripts: .wait(), .result
+        except ValueError as error:  # Parameters that do not name spreadsheet aliases
+            return tell(str(error))
         FreeCADGui.Control.showDialog(self.panel)
 
 

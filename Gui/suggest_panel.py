@@ -11,7 +11,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 import fabguide_core
-from fabguide.material import design
+from fabguide.material import design, parametric
 from fabguide_gui import resources
 
 THUMB = QtCore.QSize(92, 70)  # two side by side fit a default-width task view
@@ -43,18 +43,74 @@ def layout_pixmap(layout, size=THUMB):
     return pixmap
 
 
+class Boxes:
+    """Suggestions as boards' sizes and places (a design of boxes with constraints)."""
+
+    background = True  # the core search runs on its own thread
+    can_lock = True
+
+    def __init__(self, obj):
+        self.obj = obj
+
+    def state(self):
+        return design.parts_of(self.obj)
+
+    def search(self, progress, cancel, **options):
+        return fabguide_core.optimise(design.flatpack(self.obj), progress=progress, cancel=cancel, **options)
+
+    def path(self, suggestion):
+        return [(step["parts"], step["usage"]) for step in suggestion["design"]["path"]]
+
+    def show(self, state):
+        design.write_parts(self.obj, state)
+
+    def apply(self, state):
+        design.apply_parts(self.obj, state)
+
+
+class Aliases:
+    """Suggestions as spreadsheet values (a parametric design, thesis 5.4.2.2)."""
+
+    background = False  # D(X) recomputes the document, which must happen on FreeCAD's thread
+    can_lock = False
+
+    def __init__(self, obj):
+        self.obj = obj
+        self.params = parametric.parameters(obj)
+
+    def state(self):
+        return [parametric.value(sheet, alias) for sheet, alias, _, _ in self.params]
+
+    def search(self, progress, cancel, threads=1, **options):
+        return parametric.optimise(self.obj, progress=progress, cancel=cancel, **options)
+
+    def path(self, suggestion):
+        return [(step["parameters"], step["usage"]) for step in suggestion["path"]]
+
+    def show(self, state):
+        parametric.set_values(self.obj, self.params, state, boxes_only=True)
+
+    def apply(self, state):
+        parametric.set_values(self.obj, self.params, state)
+
+
 class SuggestPanel:
     def __init__(self, design_obj):
         self.design = design_obj
         self.doc = design_obj.Document
-        self.original = design.parts_of(design_obj)
+        self.target = Aliases(design_obj) if design_obj.Parameters else Boxes(design_obj)
+        self.original = self.target.state()
+        self.closed = False
         self.result, self.error, self.thread, self.token = None, None, None, None
         self.progress = (0.0, 0.0)
         self.chosen = None
         self.form = self.build()
         self.timer = QtCore.QTimer()
         self.timer.timeout.connect(self.poll)
-        self.start()
+        if self.target.background:
+            self.start()
+        else:  # once the panel shows: the search then runs on FreeCAD's thread
+            QtCore.QTimer.singleShot(0, self.start)
 
     # --- the form -------------------------------------------------------------------------------------
     def build(self):
@@ -116,6 +172,8 @@ class SuggestPanel:
             self.locks.addItem(item)
         self.locks.setMaximumHeight(110)
         layout.addWidget(self.locks)
+        locks.setVisible(self.target.can_lock)
+        self.locks.setVisible(self.target.can_lock)
         self.again = QtGui.QPushButton("Apply, keep, suggest again")
         self.again.clicked.connect(self.apply_and_again)
         self.again.setEnabled(False)
@@ -126,31 +184,36 @@ class SuggestPanel:
     def start(self):
         if self.thread and self.thread.is_alive():
             return
-        try:
-            data = design.flatpack(self.design)
-        except design.DesignError as error:
-            self.message.setText(str(error))
-            return
         self.clear_cards()
         self.result, self.error, self.progress = None, None, (0.0, self.design.Usage)
         self.token = fabguide_core.CancelToken()
         options = dict(seed=self.seed.value(), threads=self.threads.value(), time_limit=self.seconds.value())
 
-        def work():
+        def work(progress):
             try:
-                self.result = fabguide_core.optimise(data, progress=self.report, cancel=self.token, **options)
+                self.result = self.target.search(progress, self.token, **options)
             except Exception as error:  # shown to the user by poll()
                 self.error = error
 
-        self.thread = threading.Thread(target=work, daemon=True)
-        self.thread.start()
         self.run_button.setEnabled(False)
         self.stop_button.setEnabled(True)
         self.message.setText("Searching for designs that waste less...")
-        self.timer.start(100)
+        if self.target.background:
+            self.thread = threading.Thread(target=work, args=(self.report,), daemon=True)
+            self.thread.start()
+            self.timer.start(100)
+        else:
+            work(self.pump)
+            self.poll()
 
     def report(self, done, best):
         self.progress = (done, best)  # on the search's thread: poll() shows it
+
+    def pump(self, done, best):
+        """Progress of a search on FreeCAD's own thread: shown, and Stop kept clickable."""
+        self.report(done, best)
+        self.bar.setValue(int(100 * done))
+        QtGui.QApplication.processEvents()
 
     def stop(self):
         if self.token:
@@ -158,6 +221,8 @@ class SuggestPanel:
 
     def wait(self):
         """Blocks until the running search ends (scripts and tests)."""
+        while self.result is None and self.error is None and not (self.thread and self.thread.is_alive()):
+            QtGui.QApplication.processEvents()  # a search on FreeCAD's thread starts from the event loop
         if self.thread:
             self.thread.join()
         self.poll()
@@ -171,6 +236,8 @@ class SuggestPanel:
         self.timer.stop()
         self.run_button.setEnabled(True)
         self.stop_button.setEnabled(False)
+        if self.closed:
+            return
         if self.error is not None:
             self.message.setText("<b>No suggestions:</b> {}".format(self.error))
         elif self.result is not None and not self.cards.buttons():
@@ -195,7 +262,7 @@ class SuggestPanel:
             return
         self.message.setText("{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.".format(
             len(suggestions), result["seconds"], stopped))
-        views = self.view_thumbnails([s["design"]["parts"] for s in suggestions])
+        views = self.view_thumbnails([self.target.path(s)[-1][0] for s in suggestions])
         for k, s in enumerate(suggestions):
             button = QtGui.QToolButton()
             button.setCheckable(True)
@@ -234,7 +301,7 @@ class SuggestPanel:
 
     def choose(self, k):
         self.chosen = k
-        path = self.result["suggestions"][k]["design"]["path"]
+        path = self.target.path(self.result["suggestions"][k])
         self.slider.blockSignals(True)
         self.slider.setRange(0, len(path) - 1)
         self.slider.setValue(len(path) - 1)
@@ -244,31 +311,31 @@ class SuggestPanel:
         self.slide(len(path) - 1)
 
     def current(self):
-        """The parts and usage at the slider's place on the chosen suggestion's path."""
-        step = self.result["suggestions"][self.chosen]["design"]["path"][self.slider.value()]
-        return step["parts"], step["usage"]
+        """The design (parts or parameter values) and usage at the slider's place on the chosen path."""
+        return self.target.path(self.result["suggestions"][self.chosen])[self.slider.value()]
 
     def slide(self, _value):
         parts, usage = self.current()
         self.step.setText("usage {:.3f}".format(usage))
         self.preview(parts)
 
-    def preview(self, parts):
+    def preview(self, state):
         """Shows a design in the 3-D view without touching the document's history."""
-        design.write_parts(self.design, parts)
+        self.target.show(state)
         FreeCADGui.updateGui()
 
     # --- applying -------------------------------------------------------------------------------------
     def apply(self):
         """The design at the slider as one undo step, with the ticked parts' sizes locked."""
-        parts, _ = self.current()
+        state, _ = self.current()
         self.preview(self.original)
         self.doc.openTransaction("Accept suggestion")
-        design.apply_parts(self.design, parts)
-        self.lock(parts)
+        self.target.apply(state)
+        if self.target.can_lock:
+            self.lock(state)
         self.doc.recompute()
         self.doc.commitTransaction()
-        self.original = design.parts_of(self.design)
+        self.original = self.target.state()
         self.now.setText("Usage now: {:.3f}".format(self.design.Usage))
 
     def lock(self, parts):
@@ -296,6 +363,7 @@ class SuggestPanel:
         self.start()
 
     def accept(self):
+        self.closed = True
         self.stop()
         if self.thread:
             self.thread.join()
@@ -305,6 +373,7 @@ class SuggestPanel:
         return True
 
     def reject(self):
+        self.closed = True
         self.stop()
         if self.thread:
             self.thread.join()

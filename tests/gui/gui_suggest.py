@@ -151,10 +151,49 @@ def import_and_export_a_flatpack_design():
             assert fabguide_core.lay_out_design(json.load(f))["usage"] == shelf.Usage
 
 
+def suggest_changes_the_spreadsheet_of_a_parametric_design():
+    Gui.Control.closeDialog()
+    state["doc"] = doc = FreeCAD.newDocument("Box")
+    sheet = doc.addObject("Spreadsheet::Sheet", "Params")
+    for cell, alias, v in (("A1", "side", "300"), ("A2", "height", "170")):
+        sheet.set(cell, v)
+        sheet.setAlias(cell, alias)
+    boards = []
+    for name, length, width in (("side", "Params.side", "Params.height"), ("end", "Params.side - 24", "Params.height"),
+                                ("bottom", "Params.side - 24", "Params.side - 24")):
+        b = box(name, (1, 1, 12), (500 * len(boards), 0, 0))
+        b.setExpression("Length", length)
+        b.setExpression("Width", width)
+        boards.append(b)
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    for b in boards:
+        Gui.Selection.addSelection(b)
+    Gui.runCommand("FabGuide_DesignFromBoxes")
+    d = next(o for o in doc.Objects if design.is_design(o))
+    d.MasterBoards[0].Width, d.MasterBoards[0].Height = 900, 600
+    d.Parameters = ["Params.side 200 400", "Params.height 100 300"]
+    doc.recompute()
+    Gui.runCommand("FabGuide_Suggest")
+    from fabguide_gui import design_commands
+
+    panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
+    panel.seconds.setValue(4)
+    panel.wait()
+    assert panel.cards.buttons(), panel.message.text()
+    assert not panel.locks.isVisible()
+    steps = doc.UndoCount
+    panel.accept()
+    assert doc.UndoCount == steps + 1
+    assert sheet.get("side") != 300 or sheet.get("height") != 170
+    assert boards[2].Length.Value == sheet.get("side") - 24
+
+
 guitest.run([
     boxes_become_a_design_with_live_usage,
     constraints_from_picked_edges_faces_and_boxes,
     an_edit_keeps_the_constraints,
     suggest_shows_three_suggestions_and_applies_one_as_one_step,
     import_and_export_a_flatpack_design,
+    suggest_changes_the_spreadsheet_of_a_parametric_design,
 ])

@@ -10,7 +10,7 @@ import pytest
 
 import fabguide_core
 from fabguide import cuboids
-from fabguide.material import design
+from fabguide.material import design, master_board, parametric
 
 
 @pytest.fixture
@@ -182,3 +182,37 @@ def test_every_example_imports_and_exports_as_the_same_design(doc, source_dir, n
         assert obj.Usage == pytest.approx(fabguide_core.lay_out_design(json.load(f))["usage"])
     exported = json.loads(json.dumps(design.flatpack(obj)))  # as Export writes it
     assert fabguide_core.lay_out_design(exported)["usage"] == pytest.approx(obj.Usage)
+
+
+def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
+    """The same box as above, as a FlatpackDesign whose Parameters name the aliases: Suggest changes them."""
+    sheet = doc.addObject("Spreadsheet::Sheet", "Params")
+    for cell, alias, v in (("A1", "side", "300"), ("A2", "height", "170")):
+        sheet.set(cell, v)
+        sheet.setAlias(cell, alias)
+    boxes = []
+    for name, length, width in (("side", "Params.side", "Params.height"), ("end", "Params.side - 24", "Params.height"),
+                                ("bottom", "Params.side - 24", "Params.side - 24")):
+        b = doc.addObject("Part::Box", name)
+        b.Height = 12
+        b.setExpression("Length", length)
+        b.setExpression("Width", width)
+        b.Placement.Base.x = 500 * len(boxes)  # apart: no snapping between them
+        boxes.append(b)
+    doc.recompute()
+    obj = design.create(doc, boxes, [master_board.create(doc, 900, 600, 12)])
+    obj.Parameters = ["Params.side 200 400", "Params.height 100 300"]
+    doc.recompute()
+    assert "Invalid" not in obj.State, obj.Status
+    result = parametric.optimise(obj, time_limit=6, rounds=1)
+    assert parametric.value(sheet, "side") == 300  # restored
+    best = result["suggestions"][0]
+    assert best["usage"] > result["usage_before"]
+    side, height = best["parameters"]
+    assert 200 <= side <= 400 and 100 <= height <= 300
+    parametric.set_values(obj, parametric.parameters(obj), best["parameters"])
+    assert boxes[2].Length.Value == pytest.approx(side - 24)
+    assert obj.Usage == pytest.approx(best["usage"], abs=0.03)
+    obj.Parameters = ["Params.depth 1 2"]
+    with pytest.raises(parametric.ParameterError, match="no spreadsheet 'Params' with an alias 'depth'"):
+        parametric.parameters(obj)

@@ -35,6 +35,9 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyBool", "Snap", "Design", "Boards that touch stay touching (edge snapping)", True)
         add(obj, "App::PropertyBool", "KeepEdits", "Design",
             "A box you edit keeps its new size and place while the rest adapts to the constraints", True)
+        add(obj, "App::PropertyStringList", "Parameters", "Parametric",
+            "Spreadsheet aliases that drive the boxes by expressions, as 'Sheet.alias min max' (thesis 5.4.2.2); "
+            "when given, Suggest changes these instead of the boxes")
         add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / layout bounding rectangle (thesis 5.2.3)",
             mode=1)
         add(obj, "App::PropertyString", "Status", "Result", "Laid out, or what is wrong", mode=1)
@@ -208,7 +211,7 @@ def recompute(obj):
     edited = flatpack(obj)
     valid = json.loads(obj.Valid) if obj.Valid else None
     note = ""
-    if valid and obj.KeepEdits and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]] \
+    if valid and obj.KeepEdits and not obj.Parameters and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]] \
             and valid != edited["parts"]:
         try:
             corrected = fabguide_core.correct_design(dict(edited, parts=valid), edited)
