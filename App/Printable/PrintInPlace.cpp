@@ -450,10 +450,10 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         }
     part = cut(part, around);
     other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
+    // The pin's hole through the other part's corner and through each yoke, before they are joined.
     const TopoDS_Shape hole = slotted(m, j, at, along, lo - 1, hi + 1, r.pin + g);
-    other = cut(fuse(other, fuse(slotted(m, j, at, along, lo, lo + yoke, r.outer),
-                                 slotted(m, j, at, along, hi - yoke, hi, r.outer))),
-                hole);
+    other = fuse(cut(other, hole), fuse(cut(slotted(m, j, at, along, lo, lo + yoke, r.outer), hole),
+                                        cut(slotted(m, j, at, along, hi - yoke, hi, r.outer), hole)));
     part = fuse(part,
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
 }
