@@ -337,7 +337,7 @@ void checkSatisfied(const Design& design)
 
 }  // namespace
 
-FlatpackDesign readFlatpack(const nlohmann::json& document)
+FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
 {
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
@@ -361,7 +361,8 @@ FlatpackDesign readFlatpack(const nlohmann::json& document)
     readInnerVolumes(root, design);
     if (root.has("outer_volume"))
         readOuterVolume(design, document["outer_volume"]);
-    checkSatisfied(design);
+    if (satisfied == Satisfied::Required)
+        checkSatisfied(design);
     return result;
 }
 

@@ -18,9 +18,12 @@ struct FlatpackDesign {
     material::PackSettings settings;
 };
 
-/// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, also when the design
-/// does not satisfy its own constraints (naming them).
-FlatpackDesign readFlatpack(const nlohmann::json& document);
+/// Whether a design read must already satisfy its constraints.
+enum class Satisfied { Required, NotRequired };
+
+/// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, and, unless told
+/// otherwise, when the design does not satisfy its own constraints (naming them).
+FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied = Satisfied::Required);
 
 /// The parts at design vector X: [{"id", "position" (lower corner), "size"}].
 nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X);

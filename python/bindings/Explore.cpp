@@ -123,6 +123,24 @@ py::object correctDesign(const py::object& valid, const py::object& edited)
     return fromJson({{"parts", io::partsAt(before.design, c.X)}, {"alpha", c.alpha}, {"limits", c.limits}});
 }
 
+/// A design that breaks some of its constraints (one just added) moved the least, sparsely (Algorithm 6, with
+/// no change to keep), so that they all hold.
+py::object satisfyDesign(const py::object& document)
+{
+    const io::FlatpackDesign f = io::readFlatpack(toJson(document), io::Satisfied::NotRequired);
+    const Eigen::VectorXd X = f.design.variables();
+    std::vector<std::string> broken;
+    std::optional<Eigen::VectorXd> d;
+    {
+        py::gil_scoped_release release;
+        d = material::correctForDesignConstraints(f.design, {}, X, Eigen::VectorXd::Zero(X.size()), &broken);
+    }
+    const Eigen::VectorXd Y = d ? Eigen::VectorXd(X + *d) : X;
+    if (d)
+        broken = material::ineffective(f.design, Y);
+    return fromJson({{"solved", broken.empty()}, {"parts", io::partsAt(f.design, Y)}, {"broken", broken}});
+}
+
 /// Thesis 5.3.2: an edit after which the parts overflow the master boards, absorbed by the dynamic packer.
 py::object absorbEdit(const py::object& valid, const py::object& edited)
 {
@@ -210,6 +228,10 @@ void bindExplore(py::module_& m)
           "has the same parts with some moved or resized. Returns {parts, alpha (share of the edit kept), "
           "limits "
           "(constraints that stopped it)}.");
+    m.def(
+        "satisfy_design", &satisfyDesign, py::arg("design"),
+        "A design dict whose boards break some of its constraints (one just added), with the boards moved or "
+        "resized the least, sparsely, so that they hold: {solved, parts, broken (names still broken)}.");
     m.def(
         "absorb_edit", &absorbEdit, py::arg("valid"), py::arg("edited"),
         "The dynamic packer (thesis 5.3.2): when the edited design's parts no longer fit the master boards, "

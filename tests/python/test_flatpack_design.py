@@ -216,3 +216,24 @@ def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
     obj.Parameters = ["Params.depth 1 2"]
     with pytest.raises(parametric.ParameterError, match="no spreadsheet 'Params' with an alias 'depth'"):
         parametric.parameters(obj)
+
+
+def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
+    a = doc.addObject("Part::Box", "a")
+    a.Length, a.Width, a.Height = 300, 200, 12
+    b = doc.addObject("Part::Box", "b")
+    b.Length, b.Width, b.Height = 340, 200, 12
+    b.Placement.Base = FreeCAD.Vector(0, 400, 0)
+    doc.recompute()
+    obj = design.create(doc, [a, b], [master_board.create(doc, 1000, 600, 12)])
+    doc.recompute()
+    design.add_constraint(obj, "equal", "same length", Refs=["a.size.x", "b.size.x"])
+    doc.recompute()
+    assert "Invalid" not in obj.State, obj.Status
+    assert a.Length.Value == pytest.approx(b.Length.Value)
+    assert {a.Length.Value, b.Length.Value} <= {300.0, 340.0}  # one board changed, not both
+    assert "boards moved so that every constraint holds" in obj.Status
+    design.add_constraint(obj, "fixed", "a is 300", Refs=["a.size.x"], Value=250)
+    design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
+    doc.recompute()
+    assert "Invalid" in obj.State and obj.Status.startswith("Constraints broken:")

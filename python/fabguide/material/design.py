@@ -223,7 +223,7 @@ def recompute(obj):
             if corrected["alpha"] < 1:
                 note = "; edit kept {:.0%}, held by {}".format(corrected["alpha"], ", ".join(corrected["limits"]))
     try:
-        laid = fabguide_core.lay_out_design(edited)
+        laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
         mark_constraints(obj, str(error))
         obj.Status = "Constraints broken: {}".format(error)
@@ -242,8 +242,27 @@ def recompute(obj):
     mark_constraints(obj, "")
     obj.Usage = laid["usage"]
     obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
-    obj.Status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
+    status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
+    if not note and valid == edited["parts"] and obj.Status.startswith(status + ";"):
+        status = obj.Status  # FreeCAD recomputes again after boxes moved: keep what the first pass said
+    obj.Status = status
     obj.Valid = json.dumps(edited["parts"])
+
+
+def lay_out_satisfied(obj, edited, note):
+    """The layout; when the boards break a constraint (one just added), they first move the least so that every
+    constraint holds (thesis 5.3.5.2 with nothing to keep). Raises FormatError when they cannot."""
+    try:
+        return fabguide_core.lay_out_design(edited), note
+    except fabguide_core.FormatError as error:
+        if "does not satisfy its own constraints" not in str(error):
+            raise
+        satisfied = fabguide_core.satisfy_design(edited)
+        if not satisfied["solved"]:
+            raise
+        write_parts(obj, satisfied["parts"])
+        edited["parts"] = parts_of(obj)
+        return fabguide_core.lay_out_design(edited), note + "; boards moved so that every constraint holds"
 
 
 def absorb(obj, edited, valid):
