@@ -554,15 +554,57 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
 
 /// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
 /// rigid link between them, outside the faces, with a hole round each pin.
+/// The link between two pivots at `depth` .. `depth` + `thick` from `face` along normal n (`inward` = -1 or 1
+/// the way in): a bar with round ends, a hole the gap round each pin.
+TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double face, double inward,
+                       double depth, double thick, const Radii& r, double g)
+{
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        const double a = face + inward * from, b = face + inward * to;
+        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+    };
+    const gp_Vec along(pivot, base);
+    const gp_Dir normal(n == 0, n == 1, n == 2), x(along), y = normal.Crossed(x);
+    gp_Pnt corner = pivot.Translated(gp_Vec(y) * -r.outer);
+    corner.SetCoord(n + 1, std::min(face + inward * depth, face + inward * (depth + thick)));
+    TopoDS_Shape bar =
+        BRepPrimAPI_MakeBox(gp_Ax2(corner, normal, x), along.Magnitude(), 2 * r.outer, thick).Shape();
+    bar = fuse(bar,
+               fuse(span(pivot, depth, depth + thick, r.outer), span(base, depth, depth + thick, r.outer)));
+    return cut(bar, fuse(span(pivot, depth - 1, depth + thick + 1, r.pin + g),
+                         span(base, depth - 1, depth + thick + 1, r.pin + g)));
+}
+
+/// A double pivot whose pivot faces face each other (the sofa bunk's bunk against its ends): the link lies in
+/// a round recess in the base part, the gap below its face, as deep as the link and two gaps, wide enough for
+/// the link turning all the way round its base pivot; each part's pin runs through the link's end, the part's
+/// stopping the gap short of the recess floor. The faces between them keep the link in.
+void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
+    const int n = function::pivotPlane(m, joint).normal;
+    const double face = m.cuboids[joint.basePivotFace.cuboid].at(joint.basePivotFace.side);
+    const double inward = static_cast<int>(joint.basePivotFace.side) % 2 ? -1 : 1;  // into the base part
+    const double link = r.outer;
+    const auto [pivot, base] = pivotPoints(m, joint);
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        const double a = face + inward * from, b = face + inward * to;
+        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+    };
+    const double reach = gp_Vec(pivot, base).Magnitude() + r.outer + g;
+    shapes[joint.base] = cut(shapes[joint.base], span(base, -1, 2 * g + link, reach));
+    shapes[joint.base] = fuse(shapes[joint.base], span(base, 0, 2 * g + link + 1, r.pin));
+    shapes[joint.part] = fuse(shapes[joint.part], span(pivot, -1 - g, g + link, r.pin));
+    out.bodies.push_back(
+        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
+}
+
 void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const Joint& joint = m.joints[j];
-    if (joint.pivotFace.side != joint.basePivotFace.side) {
-        out.notes.push_back(joint.name +
-                            ": its pivot faces face each other, so the link would need a recess; no "
-                            "pins or link made");
-        return;
-    }
+    if (joint.pivotFace.side != joint.basePivotFace.side)
+        return addRecessedPivot(m, j, g, shapes, out);
     const function::PivotPlane plane = function::pivotPlane(m, joint);
     const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
     const int n = plane.normal;
@@ -580,16 +622,8 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
         shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
                                                span(p, 2 * g + link, 2 * g + link + head, r.outer)));
     // The link: a bar with round ends between the pivots, the gap off the faces.
-    gp_Vec along(pivot, base);
-    const double length = along.Magnitude();
-    gp_Dir normal(n == 0, n == 1, n == 2);
-    const gp_Dir x(along), y = normal.Crossed(x);
-    gp_Pnt corner = pivot.Translated(gp_Vec(y) * -r.outer);
-    corner.SetCoord(n + 1, face + outward * (outward > 0 ? g : g + link));
-    TopoDS_Shape bar = BRepPrimAPI_MakeBox(gp_Ax2(corner, normal, x), length, 2 * r.outer, link).Shape();
-    bar = fuse(bar, fuse(span(pivot, g, g + link, r.outer), span(base, g, g + link, r.outer)));
-    bar = cut(bar, fuse(span(pivot, 0, 3 * g + link, r.pin + g), span(base, 0, 3 * g + link, r.pin + g)));
-    out.bodies.push_back({joint.name + " link", -1, j, bar});
+    out.bodies.push_back(
+        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
 }
 
 /// In configuration k, for two parts that lie within the gap of each other as printed and both turn, each is

@@ -54,6 +54,17 @@ def test_the_crate_bed_gets_pins_and_separate_links(fabguide_cli, source_dir, tm
     assert re.search(r"Number of parts\s*:\s*7\b", mesh), mesh  # bed, two boards, four links
 
 
+def test_the_sofa_bunks_facing_pivots_get_links_in_recesses(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "sofa-bunk")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # along both configurations, links included
+    links = re.findall(r"^body bunk pivot (left|right) link +([0-9.]+) mm3$", run.stdout, re.M)
+    assert len(links) == 2 and all(float(v) > 0 for _, v in links)
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh
+    assert re.search(r"Backwards edges\s*:\s*0\b", mesh), mesh
+
+
 def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_path):
     # The box-with-lid example models its drawer inside a solid body, with no cavity.
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
