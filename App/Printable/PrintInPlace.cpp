@@ -342,9 +342,8 @@ Radii radii(const Model& m, const std::string& joint, std::initializer_list<int>
     return {outer, pin};
 }
 
-/// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
-/// yokes hang on), or -1.
-int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
+/// cuboidAtEdge within `reach` of the axis.
+int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double reach)
 {
     int best = -1;
     double longest = 0;
@@ -368,13 +367,52 @@ int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
                 const double out = std::max({0.0, low - x, x - high});
                 d2 += out * out;
             }
-            if (std::sqrt(d2) <= 1e-3 && shared > longest) {
+            if (std::sqrt(d2) <= reach && shared > longest) {
                 longest = shared;
                 best = c;
             }
         }
     }
     return best;
+}
+
+/// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
+/// yokes hang on), or -1. An edge standing off every other part (the sofa bunk's headrest, hinged 20 mm
+/// behind the seat) hangs on the nearest one within the moving cuboid's thickness; bridge() joins its yokes
+/// to it.
+int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
+{
+    const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
+    double thickness = 1e300;
+    for (int a = 0; a < 3; ++a)
+        thickness =
+            std::min(thickness, own.at(static_cast<Side>(2 * a + 1)) - own.at(static_cast<Side>(2 * a)));
+    for (double reach : {1e-3, thickness})
+        if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
+            return c;
+    return -1;
+}
+
+/// The box joining a hinge's yokes to the cuboid they hang on across the stand-off, between `from` and `to`
+/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face. Null
+/// when the axis lies on the cuboid.
+TopoDS_Shape bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to, double r)
+{
+    Coordinates c{};
+    bool apart = false;
+    for (int a = 0; a < 3; ++a) {
+        const double low = base.at(static_cast<Side>(2 * a)), high = base.at(static_cast<Side>(2 * a + 1));
+        const double x = axis.Location().Coord(a + 1);
+        if (a == along) {
+            c[2 * a] = from, c[2 * a + 1] = to;
+        } else if (x > high + 1e-3 || x < low - 1e-3) {
+            apart = true;
+            c[2 * a] = std::min(x, high), c[2 * a + 1] = std::max(x, low);
+        } else {  // level with a face or within: r of the cuboid on the side of the axis' other offset
+            c[2 * a] = std::max(low, x - r), c[2 * a + 1] = std::min(high, x + r);
+        }
+    }
+    return apart ? box(c) : TopoDS_Shape();
 }
 
 /// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
@@ -454,6 +492,9 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const TopoDS_Shape hole = slotted(m, j, at, along, lo - 1, hi + 1, r.pin + g);
     other = fuse(cut(other, hole), fuse(cut(slotted(m, j, at, along, lo, lo + yoke, r.outer), hole),
                                         cut(slotted(m, j, at, along, hi - yoke, hi, r.outer), hole)));
+    for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
+        if (const TopoDS_Shape b = bridge(m.cuboids[onEdge], axis, along, from, to, r.outer); !b.IsNull())
+            other = fuse(other, cut(b, hole));
     part = fuse(part,
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
 }
