@@ -17,6 +17,7 @@ struct OptimiseArguments {
     std::string input;
     std::string output;
     material::MinWastageOptions options;
+    bool unguided = false;
 };
 
 /// Layout JSON and SVG cut sheets of one design into out/<name>.layout.json and out/<name>/sheet-N.svg.
@@ -40,6 +41,7 @@ void run(const OptimiseArguments& args)
     const material::ConstrainedDesign design(flatpack.design);
     const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
     material::MinWastageOptions options = args.options;
+    options.guided = !args.unguided;
     options.progress = [](double done, double best) {
         std::fprintf(stderr, "\r%3.0f %%  best usage %.4f", 100 * done, best);
     };
@@ -96,7 +98,7 @@ void addOptimiseCommand(CLI::App& app)
                     "G: rounds of ordering exploration and design improvement")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_flag("!--unguided", args->options.guided,
+    cmd->add_flag("--unguided", args->unguided,
                   "shrink random part sizes instead of the layout's locking chains (the thesis' baseline)");
     cmd->callback([args] { run(*args); });
 }
