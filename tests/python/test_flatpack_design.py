@@ -134,23 +134,29 @@ def test_optimise_reports_progress_and_can_be_cancelled(table):
     assert seen and 0 < seen[0][0] < 1
 
 
-def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
-    """A box (two sides, two ends, a bottom) whose sizes come from spreadsheet aliases side and height."""
-    sheet = doc.addObject("Spreadsheet::Sheet", "Parameters")
-    sheet.set("A1", "300")
-    sheet.setAlias("A1", "side")
-    sheet.set("A2", "170")
-    sheet.setAlias("A2", "height")
+def spreadsheet_box(doc):
+    """A box of 12 mm boards (sides, ends, a bottom) whose sizes follow spreadsheet aliases side and height, the
+    boards 500 mm apart along x (so none touches another); returns the sheet and the boards by name."""
+    sheet = doc.addObject("Spreadsheet::Sheet", "Params")
+    for cell, alias, v in (("A1", "side", "300"), ("A2", "height", "170")):
+        sheet.set(cell, v)
+        sheet.setAlias(cell, alias)
     boards = {}
-    for name, length, width in (("side", "Parameters.side", "Parameters.height"),
-                                ("end", "Parameters.side - 24", "Parameters.height"),
-                                ("bottom", "Parameters.side - 24", "Parameters.side - 24")):
+    for name, length, width in (("side", "Params.side", "Params.height"), ("end", "Params.side - 24", "Params.height"),
+                                ("bottom", "Params.side - 24", "Params.side - 24")):
         b = doc.addObject("Part::Box", name)
         b.Height = 12
         b.setExpression("Length", length)
         b.setExpression("Width", width)
+        b.Placement.Base.x = 500 * len(boards)
         boards[name] = b
     doc.recompute()
+    return sheet, boards
+
+
+def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
+    """Two sides, two ends and a bottom, through the core's parametric search directly."""
+    sheet, boards = spreadsheet_box(doc)
 
     def sizes(parameters):
         sheet.set("A1", str(parameters[0]))
@@ -186,20 +192,8 @@ def test_every_example_imports_and_exports_as_the_same_design(doc, source_dir, n
 
 def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
     """The same box as above, as a FlatpackDesign whose Parameters name the aliases: Suggest changes them."""
-    sheet = doc.addObject("Spreadsheet::Sheet", "Params")
-    for cell, alias, v in (("A1", "side", "300"), ("A2", "height", "170")):
-        sheet.set(cell, v)
-        sheet.setAlias(cell, alias)
-    boxes = []
-    for name, length, width in (("side", "Params.side", "Params.height"), ("end", "Params.side - 24", "Params.height"),
-                                ("bottom", "Params.side - 24", "Params.side - 24")):
-        b = doc.addObject("Part::Box", name)
-        b.Height = 12
-        b.setExpression("Length", length)
-        b.setExpression("Width", width)
-        b.Placement.Base.x = 500 * len(boxes)  # apart: no snapping between them
-        boxes.append(b)
-    doc.recompute()
+    sheet, boards = spreadsheet_box(doc)
+    boxes = list(boards.values())
     obj = design.create(doc, boxes, [master_board.create(doc, 900, 600, 12)])
     obj.Parameters = ["Params.side 200 400", "Params.height 100 300"]
     doc.recompute()
