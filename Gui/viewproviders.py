@@ -108,7 +108,12 @@ class ViewProviderDesignConstraint(ViewProvider):
 
 
 class ViewProviderVolume(ViewProvider):
-    """A see-through box: green for space kept free, red for the envelope."""
+    """A see-through box: green for space kept free, red for the envelope; double-click drags it in place
+    (FreeCAD's transform dragger); its Length, Width and Height are in the property view."""
+
+    def doubleClicked(self, vobj):
+        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 1)  # 1: Transform
+        return True
 
     def getIcon(self):
         return resources.icon("FabGuide_InnerVolume.svg" if getattr(self.Object, "Kind", "") == "Inner"

@@ -73,6 +73,9 @@ def constraints_from_picked_edges_faces_and_boxes():
     Gui.runCommand("FabGuide_InnerVolume")
     volumes = [o for o in state["design"].Group if design.is_volume(o)]
     assert len(volumes) == 1 and volumes[0].On == parts["shelf"]
+    volumes[0].ViewObject.doubleClicked()  # drags in place
+    assert Gui.ActiveDocument.getInEdit() == volumes[0].ViewObject
+    Gui.ActiveDocument.resetEdit()
 
 
 def an_edit_keeps_the_constraints():
