@@ -12,7 +12,7 @@ from PySide import QtCore, QtGui
 
 import fabguide_core
 from fabguide.material import design, parametric
-from fabguide_gui import resources
+from fabguide_gui import resources, viewproviders
 
 THUMB = QtCore.QSize(92, 70)  # two side by side fit a default-width task view
 SHEET, PART, EDGE = QtGui.QColor(233, 211, 166), QtGui.QColor(61, 125, 202), QtGui.QColor(29, 63, 107)
@@ -350,8 +350,6 @@ class SuggestPanel:
             for axis in (a for a in range(3) if a != thin):
                 ref = "{}.size.{}".format(item.text(), "xyz"[axis])
                 obj = design.add_constraint(self.design, "fixed", "Locked " + ref, Refs=[ref], Value=size[axis])
-                from fabguide_gui import viewproviders
-
                 viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
             item.setCheckState(QtCore.Qt.Unchecked)
             FreeCAD.Console.PrintMessage("FabGuide: locked the size of {}\n".format(box.Label))

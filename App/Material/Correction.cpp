@@ -12,12 +12,15 @@ namespace {
 
 constexpr double kResidual = 1e-9;  // mm, thesis 5.3.5.2
 
-/// The equalities as C and s (C X = s), C also by columns for the variable choice.
+/// The equalities as C and s (C X = s), C also by columns for the variable choice, with what limits the
+/// variables (frozen thicknesses, minimum lengths); made once for the many corrections a change tries.
 struct System {
     Eigen::MatrixXd C;
     Eigen::VectorXd s;
     std::vector<std::string> names;
     std::vector<std::vector<std::pair<int, double>>> columns;  ///< per variable: (row, coefficient)
+    std::vector<bool> frozen;
+    Eigen::VectorXd minimum;
 };
 
 System systemOf(const Design& design, const std::vector<DesignConstraint>& extra, int variables)
@@ -30,7 +33,9 @@ System systemOf(const Design& design, const std::vector<DesignConstraint>& extra
     System system{Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), variables),
                   Eigen::VectorXd(static_cast<int>(rows.size())),
                   {},
-                  std::vector<std::vector<std::pair<int, double>>>(variables)};
+                  std::vector<std::vector<std::pair<int, double>>>(variables),
+                  design.frozen(),
+                  design.minimum()};
     for (size_t i = 0; i < rows.size(); ++i) {
         for (const auto& [variable, coefficient] : rows[i]->expression.terms)
             system.C(static_cast<int>(i), variable) += coefficient;
@@ -80,13 +85,13 @@ int chooseVariable(const System& system, const Eigen::VectorXd& r, const Eigen::
 }
 
 /// Algorithm 6 on a prepared system.
-std::optional<Eigen::VectorXd> correct(const System& system, const Design& design, const Eigen::VectorXd& X,
+std::optional<Eigen::VectorXd> correct(const System& system, const Eigen::VectorXd& X,
                                        const Eigen::VectorXd& u, std::vector<std::string>* broken)
 {
     const int n = static_cast<int>(X.size());
     const Eigen::VectorXd changed = X + u;
-    const Eigen::VectorXd minimum = design.minimum();
-    std::vector<bool> fixed = design.frozen();
+    const Eigen::VectorXd& minimum = system.minimum;
+    std::vector<bool> fixed = system.frozen;
     for (int v = 0; v < n; ++v)
         fixed[v] = fixed[v] || u[v] != 0;
 
@@ -125,7 +130,7 @@ std::optional<Eigen::VectorXd> correctForDesignConstraints(const Design& design,
                                                            const Eigen::VectorXd& X, const Eigen::VectorXd& u,
                                                            std::vector<std::string>* broken)
 {
-    return correct(systemOf(design, extra, static_cast<int>(X.size())), design, X, u, broken);
+    return correct(systemOf(design, extra, static_cast<int>(X.size())), X, u, broken);
 }
 
 namespace {
@@ -170,7 +175,7 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
     System system = systemOf(design, held, static_cast<int>(X.size()));
     const auto attempt = [&](double alpha) -> std::optional<Eigen::VectorXd> {
         broken.clear();
-        auto d = correct(system, design, X, alpha * u, &broken);
+        auto d = correct(system, X, alpha * u, &broken);
         if (!d)
             return std::nullopt;
         return X + alpha * u + *d;

@@ -8,20 +8,29 @@
 
 namespace fabguide::material {
 
+namespace {
+
+/// X with its part sizes laid out by `layOut(sizes)`, and the wastage of that layout.
+template <typename LayOut>
+DesignLayout laidOut(const Explorer& explorer, const Eigen::VectorXd& X, LayOut&& layOut)
+{
+    const Eigen::VectorXd sizes = explorer.design.sizes(X);
+    GridLayout layout = layOut(sizes);
+    const double wastage = explorer.material.wastage(layout, sizes);
+    return {X, sizes, std::move(layout), wastage};
+}
+
+}  // namespace
+
 DesignLayout Explorer::docked(const Eigen::VectorXd& X) const
 {
-    const Eigen::VectorXd sizes = design.sizes(X);
-    GridLayout layout = material.dock(sizes, order);
-    const double wastage = material.wastage(layout, sizes);
-    return {X, sizes, std::move(layout), wastage};
+    return laidOut(*this, X, [&](const Eigen::VectorXd& sizes) { return material.dock(sizes, order); });
 }
 
 DesignLayout Explorer::slid(const DesignLayout& from, const Eigen::VectorXd& X) const
 {
-    const Eigen::VectorXd sizes = design.sizes(X);
-    GridLayout layout = material.slide(from.layout, sizes);
-    const double wastage = material.wastage(layout, sizes);
-    return {X, sizes, std::move(layout), wastage};
+    return laidOut(*this, X,
+                   [&](const Eigen::VectorXd& sizes) { return material.slide(from.layout, sizes); });
 }
 
 namespace {

@@ -103,8 +103,8 @@ TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
     if (b.IsNull())
         return a;
     const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>({a, b}, "cut");
-    const double lost = volumeOf(a) - volumeOf(b) - volumeOf(result);
-    if (lost > 1e-6 * volumeOf(a) + 1e-3)
+    const double before = volumeOf(a), lost = before - volumeOf(b) - volumeOf(result);
+    if (lost > 1e-6 * before + 1e-3)
         throw std::runtime_error("geometry: a cut lost " + std::to_string(lost) +
                                  " mm3 more than its tool holds (OpenCASCADE); try another --gap or --scale");
     return result;
@@ -122,6 +122,23 @@ TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r)
     start.SetCoord(axis + 1, from);
     return BRepPrimAPI_MakeCylinder(gp_Ax2(start, gp_Dir(axis == 0, axis == 1, axis == 2)), r, to - from)
         .Shape();
+}
+
+/// A rod of `radius` round p along normal axis n, from `from` to `to` measured from `face` in direction
+/// `sign` (+1 or -1), whichever way round that puts its ends.
+TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double from, double to, double radius)
+{
+    const double a = face + sign * from, b = face + sign * to;
+    return rod(p, n, std::min(a, b), std::max(a, b), radius);
+}
+
+/// A cuboid's thinnest side.
+double thinnest(const Cuboid& c)
+{
+    double side = 1e300;
+    for (int a = 0; a < 3; ++a)
+        side = std::min(side, c.at(static_cast<Side>(2 * a + 1)) - c.at(static_cast<Side>(2 * a)));
+    return side;
 }
 
 bool movedByJoint(const Model& m, int part)
@@ -329,16 +346,13 @@ struct Radii {
 
 Radii radii(const Model& m, const std::string& joint, std::initializer_list<int> cuboids, double g)
 {
-    double thinnest = 1e300;
+    double side = 1e300;
     for (int c : cuboids)
-        for (int a = 0; a < 3; ++a)
-            thinnest = std::min(thinnest, m.cuboids[c].at(static_cast<Side>(2 * a + 1)) -
-                                              m.cuboids[c].at(static_cast<Side>(2 * a)));
-    const double outer = thinnest / 2, pin = outer - g - std::max(0.8, 0.3 * outer);
+        side = std::min(side, thinnest(m.cuboids[c]));
+    const double outer = side / 2, pin = outer - g - std::max(0.8, 0.3 * outer);
     if (pin < 0.4)
-        throw std::invalid_argument("joint '" + joint + "': its parts are too thin (" +
-                                    std::to_string(thinnest) + " mm) for a pin and its yokes with a " +
-                                    std::to_string(g) + " mm gap");
+        throw std::invalid_argument("joint '" + joint + "': its parts are too thin (" + std::to_string(side) +
+                                    " mm) for a pin and its yokes with a " + std::to_string(g) + " mm gap");
     return {outer, pin};
 }
 
@@ -382,12 +396,7 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
 /// to it.
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 {
-    const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
-    double thickness = 1e300;
-    for (int a = 0; a < 3; ++a)
-        thickness =
-            std::min(thickness, own.at(static_cast<Side>(2 * a + 1)) - own.at(static_cast<Side>(2 * a)));
-    for (double reach : {1e-3, thickness})
+    for (double reach : {1e-3, thinnest(m.cuboids[joint.edgeA.cuboid])})
         if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
             return c;
     return -1;
@@ -593,16 +602,13 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                                                         std::max(to, x[2 * a + 1]) - from + high - low + 2));
 }
 
-/// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
-/// rigid link between them, outside the faces, with a hole round each pin.
 /// The link between two pivots at `depth` .. `depth` + `thick` from `face` along normal n (`inward` = -1 or 1
 /// the way in): a bar with round ends, a hole the gap round each pin.
 TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double face, double inward,
                        double depth, double thick, const Radii& r, double g)
 {
     const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
-        const double a = face + inward * from, b = face + inward * to;
-        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+        return rodFrom(p, n, face, inward, from, to, radius);
     };
     const gp_Vec along(pivot, base);
     const gp_Dir normal(n == 0, n == 1, n == 2), x(along), y = normal.Crossed(x);
@@ -630,8 +636,7 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
     const double link = r.outer;
     const auto [pivot, base] = pivotPoints(m, joint);
     const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
-        const double a = face + inward * from, b = face + inward * to;
-        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+        return rodFrom(p, n, face, inward, from, to, radius);
     };
     const double reach = gp_Vec(pivot, base).Magnitude() + r.outer + g;
     shapes[joint.base] = cut(shapes[joint.base], span(base, -1, 2 * g + link, reach));
@@ -641,6 +646,8 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
         {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
 }
 
+/// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
+/// rigid link between them, outside the faces, with a hole round each pin.
 void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const Joint& joint = m.joints[j];
@@ -653,10 +660,9 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
     const double link = r.outer, head = std::max(1.0, r.outer / 3);
 
-    // Along the normal, from the face outwards: [a, b] as a rod's from/to whatever the side.
-    auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
-        const double a = face + outward * from, b = face + outward * to;
-        return rod(p, n, std::min(a, b), std::max(a, b), radius);
+    // Along the normal, from the face outwards.
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        return rodFrom(p, n, face, outward, from, to, radius);
     };
     const auto [pivot, base] = pivotPoints(m, joint);
     for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})

@@ -34,6 +34,25 @@ nlohmann::json layoutJson(const material::MaterialSpace& material, const materia
         {"problem", io::problemToJson(problem)}};
 }
 
+/// An exploration as a dict: {usage_before, before, seconds, stopped, suggestions: [{usage, layout, problem,
+/// ...}]}, `describe` adding what a suggestion is in its design's own terms.
+template <typename Describe>
+nlohmann::json explorationJson(const material::MaterialSpace& material, const material::Exploration& e,
+                               Describe&& describe)
+{
+    nlohmann::json out = {{"usage_before", e.usageBefore()},
+                          {"before", layoutJson(material, e.start)},
+                          {"seconds", e.seconds},
+                          {"stopped", e.stopped},
+                          {"suggestions", nlohmann::json::array()}};
+    for (const material::Suggestion& s : e.suggestions) {
+        nlohmann::json entry = layoutJson(material, s.result);
+        describe(s, entry);
+        out["suggestions"].push_back(entry);
+    }
+    return out;
+}
+
 material::MinWastageOptions options(std::uint64_t seed, int threads, double timeLimit, int rounds,
                                     bool guided, const std::function<void(double, double)>& progress,
                                     CancelToken* cancel)
@@ -82,17 +101,9 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
     const material::MaterialSpace material(f.boards, f.settings, design.parts());
     const material::Exploration e =
         explore(design, material, options(seed, threads, timeLimit, rounds, guided, progress, cancel));
-    nlohmann::json out = {{"usage_before", e.usageBefore()},
-                          {"before", layoutJson(material, e.start)},
-                          {"seconds", e.seconds},
-                          {"stopped", e.stopped},
-                          {"suggestions", nlohmann::json::array()}};
-    for (const material::Suggestion& s : e.suggestions) {
-        nlohmann::json entry = layoutJson(material, s.result);
+    return fromJson(explorationJson(material, e, [&](const material::Suggestion& s, nlohmann::json& entry) {
         entry["design"] = io::suggestionDocument(doc, f.design, s);
-        out["suggestions"].push_back(entry);
-    }
-    return fromJson(out);
+    }));
 }
 
 /// X of `design` with the parts of the `edited` design dict (same parts, moved or resized).
@@ -188,19 +199,12 @@ py::object optimiseParametric(const py::list& parts,
     const auto list = [](const Eigen::VectorXd& X) {
         return std::vector<double>(X.data(), X.data() + X.size());
     };
-    nlohmann::json out = {{"usage_before", e.usageBefore()},
-                          {"seconds", e.seconds},
-                          {"stopped", e.stopped},
-                          {"suggestions", nlohmann::json::array()}};
-    for (const material::Suggestion& s : e.suggestions) {
-        nlohmann::json entry = layoutJson(material, s.result);
+    return fromJson(explorationJson(material, e, [&](const material::Suggestion& s, nlohmann::json& entry) {
         entry["parameters"] = list(s.result.X);
         entry["path"] = nlohmann::json::array();
         for (const material::DesignLayout& step : s.path)
             entry["path"].push_back({{"usage", 1 - step.wastage}, {"parameters", list(step.X)}});
-        out["suggestions"].push_back(entry);
-    }
-    return fromJson(out);
+    }));
 }
 
 }  // namespace
