@@ -211,15 +211,14 @@ def recompute(obj):
     edited = flatpack(obj)
     valid = json.loads(obj.Valid) if obj.Valid else None
     note = ""
-    if valid and obj.KeepEdits and not obj.Parameters and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]] \
-            and valid != edited["parts"]:
+    same_boards = valid and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]]
+    if same_boards and obj.KeepEdits and not obj.Parameters and valid != edited["parts"]:
         try:
             corrected = fabguide_core.correct_design(dict(edited, parts=valid), edited)
         except fabguide_core.FormatError as error:  # the valid state no longer reads: start from the boxes
             FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, error))
         else:
-            write_parts(obj, corrected["parts"])
-            edited["parts"] = parts_of(obj)
+            adopt(obj, edited, corrected["parts"])
             if corrected["alpha"] < 1:
                 note = "; edit kept {:.0%}, held by {}".format(corrected["alpha"], ", ".join(corrected["limits"]))
     try:
@@ -249,6 +248,12 @@ def recompute(obj):
     obj.Valid = json.dumps(edited["parts"])
 
 
+def adopt(obj, edited, parts):
+    """The boxes moved to `parts`, and the design being laid out taken from them as they now are."""
+    write_parts(obj, parts)
+    edited["parts"] = parts_of(obj)
+
+
 def lay_out_satisfied(obj, edited, note):
     """The layout; when the boards break a constraint (one just added), they first move the least so that every
     constraint holds (thesis 5.3.5.2 with nothing to keep). Raises FormatError when they cannot."""
@@ -260,8 +265,7 @@ def lay_out_satisfied(obj, edited, note):
         satisfied = fabguide_core.satisfy_design(edited)
         if not satisfied["solved"]:
             raise
-        write_parts(obj, satisfied["parts"])
-        edited["parts"] = parts_of(obj)
+        adopt(obj, edited, satisfied["parts"])
         return fabguide_core.lay_out_design(edited), note + "; boards moved so that every constraint holds"
 
 
@@ -271,8 +275,7 @@ def absorb(obj, edited, valid):
     absorbed = fabguide_core.absorb_edit(dict(edited, parts=valid), edited)
     if not absorbed["fitted"]:
         return None, ""
-    write_parts(obj, absorbed["parts"])
-    edited["parts"] = parts_of(obj)
+    adopt(obj, edited, absorbed["parts"])
     try:
         laid = fabguide_core.lay_out_design(edited)
     except fabguide_core.PackingError:
