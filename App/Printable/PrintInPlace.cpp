@@ -84,11 +84,6 @@ TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
     return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>({a, b}, "union");
 }
 
-TopoDS_Shape fuseAll(const std::vector<TopoDS_Shape>& shapes)
-{
-    return boolean<BRepAlgoAPI_Fuse>(shapes, "union");
-}
-
 double volumeOf(const TopoDS_Shape& s)
 {
     GProp_GProps volume;
@@ -96,18 +91,39 @@ double volumeOf(const TopoDS_Shape& s)
     return volume.Mass();
 }
 
-/// a less b. A cut takes at most the tool's volume; OpenCASCADE sometimes returns a fragment without an error
-/// (parts grown by a large gap up to a hinge line, small scales), which is refused here rather than printed.
-TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
+/// a less the tools, in one operation (tools that touch along faces are cut more reliably so than united
+/// first). A cut takes at most its tools' volume; OpenCASCADE sometimes returns a fragment without an error,
+/// which is refused here rather than printed.
+TopoDS_Shape cut(const TopoDS_Shape& a, const std::vector<TopoDS_Shape>& tools)
 {
-    if (b.IsNull())
-        return a;
-    const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>({a, b}, "cut");
-    const double before = volumeOf(a), lost = before - volumeOf(b) - volumeOf(result);
+    std::vector<TopoDS_Shape> shapes{a};
+    double held = 0;
+    for (const TopoDS_Shape& tool : tools)
+        if (!tool.IsNull()) {
+            shapes.push_back(tool);
+            held += volumeOf(tool);
+        }
+    const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>(shapes, "cut");
+    const double before = volumeOf(a), lost = before - held - volumeOf(result);
     if (lost > 1e-6 * before + 1e-3)
         throw std::runtime_error("geometry: a cut lost " + std::to_string(lost) +
-                                 " mm3 more than its tool holds (OpenCASCADE); try another --gap or --scale");
+                                 " mm3 more than its tools hold (OpenCASCADE); try another --gap or --scale");
     return result;
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    return cut(a, std::vector<TopoDS_Shape>{b});
+}
+
+TopoDS_Shape compound(const std::vector<TopoDS_Shape>& shapes)
+{
+    TopoDS_Compound c;
+    BRep_Builder builder;
+    builder.MakeCompound(c);
+    for (const TopoDS_Shape& s : shapes)
+        builder.Add(c, s);
+    return c;
 }
 
 TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
@@ -240,17 +256,32 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
     return out;
 }
 
-TopoDS_Shape solid(const Model& m, int part, const std::vector<Coordinates>& at, double grow = 0)
+/// A part's solid cuboids, grown by `grow` all round.
+std::vector<Coordinates> boxesOf(const Model& m, int part, const std::vector<Coordinates>& at,
+                                 double grow = 0)
 {
-    TopoDS_Shape s;
+    std::vector<Coordinates> boxes;
     for (int c : m.parts[part].cuboids)
         if (!m.cuboids[c].cavity()) {
             Coordinates k = at[c];
             for (int i = 0; i < 6; ++i)
                 k[i] += i % 2 ? grow : -grow;
-            s = fuse(s, box(k));
+            boxes.push_back(k);
         }
+    return boxes;
+}
+
+TopoDS_Shape solid(const std::vector<Coordinates>& boxes)
+{
+    TopoDS_Shape s;
+    for (const Coordinates& b : boxes)
+        s = fuse(s, box(b));
     return s;
+}
+
+TopoDS_Shape solid(const Model& m, int part, const std::vector<Coordinates>& at, double grow = 0)
+{
+    return solid(boxesOf(m, part, at, grow));
 }
 
 /// A solid swept by a motion: the solid and what each of its faces sweeps (OpenCASCADE sweeps faces into
@@ -266,9 +297,10 @@ TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
         } catch (const Standard_Failure&) {  // a face across a hinge's axis turns in its own plane: no volume
             continue;
         }
-        GProp_GProps volume;
-        BRepGProp::VolumeProperties(s, volume);
-        if (std::abs(volume.Mass()) > 1e-9)  // faces along the motion sweep nothing
+        GProp_GProps area;
+        BRepGProp::SurfaceProperties(e.Current(), area);
+        // Faces along the motion sweep nothing, or a rounding error's sliver.
+        if (std::abs(volumeOf(s)) > 1e-9 * area.Mass() * std::sqrt(area.Mass()))
             result = fuse(result, s);
     }
     return result;
@@ -294,11 +326,47 @@ TopoDS_Shape turnedThenShifted(const TopoDS_Shape& shape, const gp_Ax1& axis, do
     return result;
 }
 
-/// The volume a shape sweeps as part p moves from its modelled pose to configuration k (4.5.1). Motions turn
-/// first, then slide (Motion.h), so with at most one hinge turning in p's chain the sweep is exact: that
-/// hinge's revolution, then a prism along the slides' common displacement; otherwise (double pivots, turns
-/// upon turns) the shape at 48 poses along the motion, united.
-TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
+/// Boxes cut in two (or four) by the planes through `axis` along the box's sides wherever it passes through
+/// one: no face of the pieces crosses the axis. A face across its axis revolves into a solid that turns
+/// through itself, which OpenCASCADE cannot unite or cut reliably (parts grown by the gap reach their hinge's
+/// line, small scales).
+std::vector<Coordinates> splitAtAxis(const std::vector<Coordinates>& boxes, const gp_Ax1& axis)
+{
+    std::vector<Coordinates> pieces = boxes;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(axis.Direction().Coord(a + 1)) > 0.5)
+            continue;
+        const double x = axis.Location().Coord(a + 1);
+        std::vector<Coordinates> split;
+        for (const Coordinates& b : pieces)
+            if (b[2 * a] + 1e-6 < x && x < b[2 * a + 1] - 1e-6) {
+                Coordinates low = b, high = b;
+                low[2 * a + 1] = high[2 * a] = x;
+                split.insert(split.end(), {low, high});
+            } else {
+                split.push_back(b);
+            }
+        pieces = split;
+    }
+    return pieces;
+}
+
+/// What boxes sweep turning about `axis` then shifting by `by`: the volume each piece (splitAtAxis) sweeps,
+/// to cut with together; OpenCASCADE may drop a thin piece from their union.
+std::vector<TopoDS_Shape> turnedThenShifted(const std::vector<Coordinates>& boxes, const gp_Ax1& axis,
+                                            double radians, const gp_Vec& by)
+{
+    std::vector<TopoDS_Shape> swept;
+    for (const Coordinates& piece : splitAtAxis(boxes, axis))
+        swept.push_back(turnedThenShifted(box(piece), axis, radians, by));
+    return swept;
+}
+
+/// The volume part p's boxes sweep as it moves from its modelled pose to configuration k (4.5.1), as solids
+/// to cut with. Motions turn first, then slide (Motion.h), so with at most one hinge turning in p's chain the
+/// sweep is exact: that hinge's revolution, then a prism along the slides' common displacement; otherwise
+/// (double pivots, turns upon turns) the part at 48 poses along the motion.
+std::vector<TopoDS_Shape> sweep(const Model& m, int part, int k, const std::vector<Coordinates>& boxes)
 {
     int turning = -1, turns = 0;
     bool pivots = false;
@@ -317,25 +385,26 @@ TopoDS_Shape sweep(const Model& m, int part, int k, const TopoDS_Shape& shape)
         const gp_Trsf half = partMotion(m, part, k, 0.5), whole = partMotion(m, part, k, 1);
         const gp_Vec by((whole * half.Inverted()).TranslationPart());
         if (turning < 0)
-            return turnedThenShifted(shape, gp_Ax1(), 0, by);
-        return turnedThenShifted(shape, hingeAxis(m, m.joints[turning]),
+            return turnedThenShifted(boxes, gp_Ax1(), 0, by);
+        return turnedThenShifted(boxes, hingeAxis(m, m.joints[turning]),
                                  poseOf(m, turning, k)->angle * kPi / 180, by);
     }
+    const TopoDS_Shape shape = solid(boxes);
     std::vector<TopoDS_Shape> poses;
     for (int step = 0; step <= 48; ++step)
         poses.push_back(moved(shape, partMotion(m, part, k, step / 48.0)));
-    return fuseAll(poses);
+    return poses;
 }
 
 /// What a part sweeps by its own hinge (or sliding hinge) alone, in the frame of the part it turns on: the
 /// revolution about the edge, then the prism along the slide.
-TopoDS_Shape hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
-                        const TopoDS_Shape& shape)
+std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
+                                     const std::vector<Coordinates>& boxes)
 {
     gp_Vec by(0, 0, 0);
     if (joint.slides())
         by.SetCoord(joint.axis + 1, pose.offset);
-    return turnedThenShifted(shape, hingeAxis(m, joint), pose.angle * kPi / 180, by);
+    return turnedThenShifted(boxes, hingeAxis(m, joint), pose.angle * kPi / 180, by);
 }
 
 /// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
@@ -497,8 +566,9 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         }
     part = cut(part, around);
     other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
-    // The pin's hole through the other part's corner and through each yoke, before they are joined.
-    const TopoDS_Shape hole = slotted(m, j, at, along, lo - 1, hi + 1, r.pin + g);
+    // The pin's hole, the gap past its ends, through the other part's corner and through each yoke, before
+    // they are joined.
+    const TopoDS_Shape hole = slotted(m, j, at, along, lo - g - 1, hi + g + 1, r.pin + g);
     other = fuse(cut(other, hole), fuse(cut(slotted(m, j, at, along, lo, lo + yoke, r.outer), hole),
                                         cut(slotted(m, j, at, along, hi - yoke, hi, r.outer), hole)));
     for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
@@ -704,7 +774,7 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
                 const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
                 path.push_back(moved(grown, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
             }
-            shapes[b] = cut(shapes[b], fuseAll(path));
+            shapes[b] = cut(shapes[b], path);
         }
 }
 
@@ -740,8 +810,8 @@ Printable makePrintable(const Model& m, const Printer& printer)
         if (f.configuration < 0)
             continue;
         for (int p : f.inner) {
-            const TopoDS_Shape swept = sweep(m, p, f.configuration, solid(m, p, at, g));
-            out.sweeps.push_back(swept);
+            const std::vector<TopoDS_Shape> swept = sweep(m, p, f.configuration, boxesOf(m, p, at, g));
+            out.sweeps.push_back(compound(swept));
             shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
         }
     }
@@ -754,7 +824,7 @@ Printable makePrintable(const Model& m, const Printer& printer)
             if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
                 shapes[function::partOf(m, other)] =
                     cut(shapes[function::partOf(m, other)],
-                        hingeSweep(m, joint, *pose, solid(m, joint.part, at, g)));
+                        hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
     }
     // Two neighbours that both move (doors meeting in the middle) clear what each sweeps past the other.
     for (size_t k = 0; k < m.configurations.size(); ++k)
