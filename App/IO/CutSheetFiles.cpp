@@ -1,6 +1,7 @@
 #include "IO/CutSheetFiles.h"
 
 #include "IO/Json.h"
+#include "IO/Xml.h"
 
 #include <dxflib/dl_dxf.h>
 
@@ -18,30 +19,6 @@ std::ofstream create(const std::string& path)
     std::ofstream out(path);
     if (!out)
         throw FormatError(path + ": cannot write file");
-    return out;
-}
-
-std::string escapeXml(const std::string& text)
-{
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
     return out;
 }
 

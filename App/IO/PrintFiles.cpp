@@ -1,9 +1,13 @@
 #include "IO/PrintFiles.h"
 
+#include "IO/Xml.h"
+
 #include <zip.h>
+#include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -39,41 +43,64 @@ TopoDS_Shape meshed(const std::vector<printable::Body>& bodies)
     return all;
 }
 
-/// One body's triangles with shared vertices (adjacent faces share their edges' nodes), outward-facing.
-void meshXml(const printable::Body& body, int id, std::ostringstream& xml)
+/// The bodies' triangles as one mesh, each body's vertices shared where its faces meet, outward-facing: 3MF
+/// <vertex> and <triangle> elements; returns how many triangles each body has.
+std::vector<int> meshXml(const std::vector<printable::Body>& bodies, std::ostringstream& vertices,
+                         std::ostringstream& triangles)
 {
-    std::map<std::tuple<double, double, double>, int> index;
-    std::ostringstream vertices, triangles;
-    for (TopExp_Explorer e(body.shape, TopAbs_FACE); e.More(); e.Next()) {
-        const TopoDS_Face& face = TopoDS::Face(e.Current());
-        TopLoc_Location location;
-        const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(face, location);
-        if (mesh.IsNull())
-            continue;
-        std::vector<int> ids(mesh->NbNodes() + 1);
-        for (int n = 1; n <= mesh->NbNodes(); ++n) {
-            const gp_Pnt p = mesh->Node(n).Transformed(location.Transformation());
-            const auto key = std::make_tuple(p.X(), p.Y(), p.Z());
-            auto [it, added] = index.emplace(key, static_cast<int>(index.size()));
-            if (added) {
-                char text[120];
-                std::snprintf(text, sizeof text, "<vertex x=\"%.6f\" y=\"%.6f\" z=\"%.6f\"/>", p.X(), p.Y(),
-                              p.Z());
-                vertices << text;
+    std::vector<int> counts;
+    int first = 0;  // the body's first vertex
+    for (const printable::Body& body : bodies) {
+        std::map<std::tuple<double, double, double>, int> index;
+        int count = 0;
+        for (TopExp_Explorer e(body.shape, TopAbs_FACE); e.More(); e.Next()) {
+            const TopoDS_Face& face = TopoDS::Face(e.Current());
+            TopLoc_Location location;
+            const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(face, location);
+            if (mesh.IsNull())
+                continue;
+            std::vector<int> ids(mesh->NbNodes() + 1);
+            for (int n = 1; n <= mesh->NbNodes(); ++n) {
+                const gp_Pnt p = mesh->Node(n).Transformed(location.Transformation());
+                const auto key = std::make_tuple(p.X(), p.Y(), p.Z());
+                auto [it, added] = index.emplace(key, first + static_cast<int>(index.size()));
+                if (added) {
+                    char text[120];
+                    std::snprintf(text, sizeof text, "<vertex x=\"%.6f\" y=\"%.6f\" z=\"%.6f\"/>", p.X(),
+                                  p.Y(), p.Z());
+                    vertices << text;
+                }
+                ids[n] = it->second;
             }
-            ids[n] = it->second;
+            for (int t = 1; t <= mesh->NbTriangles(); ++t, ++count) {
+                int a, b, c;
+                mesh->Triangle(t).Get(a, b, c);
+                if (face.Orientation() == TopAbs_REVERSED)
+                    std::swap(b, c);
+                triangles << "<triangle v1=\"" << ids[a] << "\" v2=\"" << ids[b] << "\" v3=\"" << ids[c]
+                          << "\"/>";
+            }
         }
-        for (int t = 1; t <= mesh->NbTriangles(); ++t) {
-            int a, b, c;
-            mesh->Triangle(t).Get(a, b, c);
-            if (face.Orientation() == TopAbs_REVERSED)
-                std::swap(b, c);
-            triangles << "<triangle v1=\"" << ids[a] << "\" v2=\"" << ids[b] << "\" v3=\"" << ids[c]
-                      << "\"/>";
-        }
+        first += static_cast<int>(index.size());
+        counts.push_back(count);
     }
-    xml << "<object id=\"" << id << "\" name=\"" << body.name << "\" type=\"model\"><mesh><vertices>"
-        << vertices.str() << "</vertices><triangles>" << triangles.str() << "</triangles></mesh></object>";
+    return counts;
+}
+
+/// PrusaSlicer's description of the object: one part (volume) per body, by its triangles, named.
+std::string prusaSlicerConfig(const std::string& name, const std::vector<printable::Body>& bodies,
+                              const std::vector<int>& triangles)
+{
+    std::ostringstream config;
+    config << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<config><object id=\"1\" instances_count=\"1\">"
+           << "<metadata type=\"object\" key=\"name\" value=\"" << escapeXml(name) << "\"/>";
+    int first = 0;
+    for (size_t b = 0; b < bodies.size(); first += triangles[b], ++b)
+        config << "<volume firstid=\"" << first << "\" lastid=\"" << first + triangles[b] - 1 << "\">"
+               << "<metadata type=\"volume\" key=\"name\" value=\"" << escapeXml(bodies[b].name) << "\"/>"
+               << "<metadata type=\"volume\" key=\"volume_type\" value=\"ModelPart\"/></volume>";
+    config << "</object></config>\n";
+    return config.str();
 }
 
 std::string fileName(const std::string& name)
@@ -96,16 +123,26 @@ void writeStl(const std::vector<printable::Body>& bodies, const std::string& pat
 
 void write3mf(const std::vector<printable::Body>& bodies, const std::string& path)
 {
-    meshed(bodies);
-    std::ostringstream model;
-    model << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" "
-             "xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"><resources>";
-    for (size_t b = 0; b < bodies.size(); ++b)
-        meshXml(bodies[b], static_cast<int>(b) + 1, model);
-    model << "</resources><build>";
-    for (size_t b = 0; b < bodies.size(); ++b)
-        model << "<item objectid=\"" << b + 1 << "\"/>";
-    model << "</build></model>\n";
+    Bnd_Box bounds;
+    BRepBndLib::AddOptimal(meshed(bodies), bounds, true, false);
+    double x0 = 0, y0 = 0, z0 = 0, x1, y1, z1;
+    if (!bounds.IsVoid())
+        bounds.Get(x0, y0, z0, x1, y1, z1);
+    // One object, so that slicers keep the bodies where they are, together; placed with its lowest corner at
+    // the origin, since slicers take a 3MF's build as where it lies on the bed.
+    const std::string name = bodies.size() == 1 ? bodies.front().name : "assembly";
+    std::ostringstream vertices, triangles, model;
+    const std::vector<int> counts = meshXml(bodies, vertices, triangles);
+    char placed[160];
+    std::snprintf(placed, sizeof placed, "1 0 0 0 1 0 0 0 1 %.6f %.6f %.6f", -x0, -y0, -z0);
+    model
+        << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" "
+           "xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"><resources><object id=\"1\" "
+           "name=\""
+        << escapeXml(name) << "\" type=\"model\"><mesh><vertices>" << vertices.str()
+        << "</vertices><triangles>" << triangles.str()
+        << "</triangles></mesh></object></resources><build><item "
+        << "objectid=\"1\" transform=\"" << placed << "\"/></build></model>\n";
     const std::string files[][2] = {
         {"[Content_Types].xml",
          "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Types "
@@ -118,7 +155,8 @@ void write3mf(const std::vector<printable::Body>& bodies, const std::string& pat
          "xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\"><Relationship "
          "Target=\"/3D/3dmodel.model\" Id=\"rel0\" "
          "Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/></Relationships>\n"},
-        {"3D/3dmodel.model", model.str()}};
+        {"3D/3dmodel.model", model.str()},
+        {"Metadata/Slic3r_PE_model.config", prusaSlicerConfig(name, bodies, counts)}};
     int error = 0;
     zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
     if (!zip)

@@ -10,7 +10,8 @@ namespace fabguide::io {
 
 /// Triangulates and writes binary STL; `bodies` as one file.
 void writeStl(const std::vector<printable::Body>& bodies, const std::string& path);
-/// A 3MF package (3D/3dmodel.model), one object per body, named.
+/// A 3MF package: the bodies as one object (3D/3dmodel.model), its lowest corner at the origin, and for
+/// PrusaSlicer one named part per body (Metadata/Slic3r_PE_model.config).
 void write3mf(const std::vector<printable::Body>& bodies, const std::string& path);
 /// STEP AP214, the exact solids.
 void writeStep(const std::vector<printable::Body>& bodies, const std::string& path);

@@ -1,0 +1,29 @@
+#include "IO/Xml.h"
+
+namespace fabguide::io {
+
+std::string escapeXml(const std::string& text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+}  // namespace fabguide::io
