@@ -9,28 +9,54 @@
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace fabguide::cli {
 
 namespace {
 
 struct PrintableArguments {
-    std::string input, output = "printable", printer = "fdm";
+    std::string input, output = "printable", printer = "fdm", fit;
     double gap = -1, scale = 1;
 };
+
+/// "250x210x210": a build volume in mm (width x depth x height); empty when the text is not one.
+std::optional<printable::Size> buildVolume(const std::string& text)
+{
+    printable::Size size{};
+    char x1 = 0, x2 = 0;
+    std::istringstream in(text);
+    in >> size[0] >> x1 >> size[1] >> x2 >> size[2];
+    if (!in || x1 != 'x' || x2 != 'x' || !(in >> std::ws).eof() ||
+        std::any_of(size.begin(), size.end(), [](double v) { return !(v > 0); }))
+        return std::nullopt;
+    return size;
+}
 
 /// Printer profiles: the gap a printer needs so parts do not fuse (FDM 0.4 mm, resin 0.2 mm).
 const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
 int run(const PrintableArguments& args)
 {
-    const function::Model model =
-        printable::solvedToPrint(io::readWorkslike(io::readJsonFile(args.input)), args.scale);
+    const function::Model read = io::readWorkslike(io::readJsonFile(args.input));
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
-    const printable::Printable made = printable::makePrintable(model, {gap});
+    printable::Fitted fitted;
+    if (args.fit.empty()) {
+        fitted.model = printable::solvedToPrint(read, args.scale);
+        fitted.printable = printable::makePrintable(fitted.model, {gap});
+    } else {
+        fitted = printable::fitted(printable::solvedToPrint(read, 1), *buildVolume(args.fit), {gap});
+        std::printf("scale %.4g: fits %s mm\n", fitted.scale, args.fit.c_str());
+    }
+    const function::Model& model = fitted.model;
+    const printable::Printable& made = fitted.printable;
+    const printable::Size size = printable::sizeOf(made);
+    std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
     for (const printable::Body& b : made.bodies) {
         GProp_GProps volume;
         BRepGProp::VolumeProperties(b.shape, volume);
@@ -66,9 +92,20 @@ void addPrintableCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
+    auto* scale =
+        cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
+    cmd->add_option("--fit", args->fit,
+                    "print at the largest scale (at most 1) that fits this build volume, WxDxH in mm as "
+                    "modelled, e.g. 250x210x210")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return buildVolume(text) ? std::string()
+                                         : "expected width x depth x height in mm, e.g. 250x210x210";
+            },
+            "WxDxH"))
+        ->excludes(scale);
     cmd->callback([args] {
         if (const int code = run(*args))
             throw CLI::RuntimeError(code);

@@ -860,4 +860,51 @@ Printable makePrintable(const Model& m, const Printer& printer)
     return out;
 }
 
+Size sizeOf(const Printable& printable)
+{
+    Bnd_Box bounds;
+    for (const Body& b : printable.bodies)
+        BRepBndLib::AddOptimal(b.shape, bounds, false, false);
+    if (bounds.IsVoid())
+        return {0, 0, 0};
+    double x0, y0, z0, x1, y1, z1;
+    bounds.Get(x0, y0, z0, x1, y1, z1);
+    return {x1 - x0, y1 - y0, z1 - z0};
+}
+
+Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
+{
+    // First as large as the cuboids allow, then smaller by what joints and links add beyond them.
+    Size extent{0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+        double low = 1e300, high = -1e300;
+        for (const Cuboid& c : solved.cuboids) {
+            low = std::min(low, c.at(static_cast<Side>(2 * a)));
+            high = std::max(high, c.at(static_cast<Side>(2 * a + 1)));
+        }
+        extent[a] = high - low;
+    }
+    // How much larger it could be, 0.01 mm short of each side (meshes are written to a micrometre).
+    auto room = [&](const Size& size) {
+        double r = 1e300;
+        for (int a = 0; a < 3; ++a)
+            r = std::min(r, (volume[a] - 0.01) / std::max(size[a], 1e-9));
+        return r;
+    };
+    Fitted f;
+    f.scale = std::min(1.0, room(extent));
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        f.model = function::scaled(solved, f.scale);
+        f.printable = makePrintable(f.model, printer);
+        const double r = room(sizeOf(f.printable));
+        if (r >= 1 - 1e-9)
+            return f;
+        f.scale *= r * (1 - 1e-4);
+    }
+    std::ostringstream what;
+    what << "the print does not fit the build volume " << volume[0] << " x " << volume[1] << " x "
+         << volume[2] << " mm at any scale tried (down to " << f.scale << ")";
+    throw std::runtime_error(what.str());
+}
+
 }  // namespace fabguide::printable

@@ -8,6 +8,7 @@
 
 #include <TopoDS_Shape.hxx>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,22 @@ function::Model solvedToPrint(const function::Model& model, double scale);
 /// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too
 /// thin for its geometry at this gap.
 Printable makePrintable(const function::Model& solved, const Printer& printer);
+
+/// Width, depth and height (x, y, z) in mm: of a print's bodies, or of a printer's build volume.
+using Size = std::array<double, 3>;
+
+/// The bounding box of the bodies.
+Size sizeOf(const Printable& printable);
+
+/// A model scaled to print on a printer, and its bodies.
+struct Fitted {
+    double scale = 1;
+    function::Model model;
+    Printable printable;
+};
+
+/// The solved model at the largest scale, at most 1, whose bodies fit the build volume as modelled (not
+/// turned; the gap stays in mm), 0.01 mm to spare; std::runtime_error when none is found.
+Fitted fitted(const function::Model& solved, const Size& volume, const Printer& printer);
 
 }  // namespace fabguide::printable

@@ -14,6 +14,7 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <sstream>
 
 namespace py = pybind11;
@@ -22,20 +23,20 @@ namespace fabguide::bindings {
 
 namespace {
 
-/// The model solved and scaled, and its printable bodies (RuntimeError naming what conflicts).
-struct Made {
-    function::Model model;
-    printable::Printable printable;
-};
+using Fit = std::optional<printable::Size>;
 
-Made made(const py::object& model, double gap, double scale)
+/// The model solved and scaled, or fitted to a build volume, and its printable bodies (RuntimeError naming
+/// what conflicts).
+printable::Fitted made(const py::object& model, double gap, double scale, const Fit& fit)
 {
     const function::Model read = io::readWorkslike(toJson(model));
     py::gil_scoped_release release;
     try {
-        function::Model solved = printable::solvedToPrint(read, scale);
-        printable::Printable p = printable::makePrintable(solved, {gap});
-        return {std::move(solved), std::move(p)};
+        if (fit)
+            return printable::fitted(printable::solvedToPrint(read, 1), *fit, {gap});
+        printable::Fitted f{scale, printable::solvedToPrint(read, scale), {}};
+        f.printable = printable::makePrintable(f.model, {gap});
+        return f;
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
     }
@@ -48,11 +49,11 @@ std::string brep(const TopoDS_Shape& shape)
     return text.str();
 }
 
-/// {"bodies": [{"name", "part", "brep", "volume"}], "sweeps": [brep], "notes", "clearance", "where",
-/// "invalid"}
-py::dict printableBodies(const py::object& model, double gap, bool check, double scale)
+/// {"bodies": [{"name", "part", "brep", "volume"}], "sweeps": [brep], "notes", "scale", "size", "clearance",
+/// "where", "invalid"}
+py::dict printableBodies(const py::object& model, double gap, bool check, double scale, const Fit& fit)
 {
-    const Made m = made(model, gap, scale);
+    const printable::Fitted m = made(model, gap, scale, fit);
     const printable::Printable& p = m.printable;
     py::list bodies, sweeps;
     for (const printable::Body& b : p.bodies) {
@@ -71,6 +72,8 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["bodies"] = bodies;
     out["sweeps"] = sweeps;
     out["notes"] = p.notes;
+    out["scale"] = m.scale;
+    out["size"] = printable::sizeOf(p);
     if (check) {
         printable::Check c;
         {
@@ -85,9 +88,9 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
 }
 
 std::vector<std::string> exportPrintable(const py::object& model, double gap, const std::string& folder,
-                                         double scale)
+                                         double scale, const Fit& fit)
 {
-    const Made m = made(model, gap, scale);
+    const printable::Fitted m = made(model, gap, scale, fit);
     py::gil_scoped_release release;
     return io::writePrintFiles(m.printable, folder);
 }
@@ -97,11 +100,14 @@ std::vector<std::string> exportPrintable(const py::object& model, double gap, co
 void bindPrintable(py::module_& m)
 {
     m.def("printable", &printableBodies, py::arg("model"), py::arg("gap") = 0.4, py::arg("check") = true,
-          py::arg("scale") = 1.0,
-          "Print-in-place bodies of a works-like model (solved first): {'bodies': [{'name', 'part', 'brep',\n"
-          "'volume'}], 'sweeps', 'notes', and with check 'clearance' (mm), 'where', 'invalid'}.");
+          py::arg("scale") = 1.0, py::arg("fit") = py::none(),
+          "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest scale "
+          "that\n"
+          "fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep', 'volume'}], "
+          "'sweeps',\n"
+          "'notes', 'scale', 'size' (x, y, z mm), and with check 'clearance' (mm), 'where', 'invalid'}.");
     m.def("export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
-          py::arg("scale") = 1.0,
+          py::arg("scale") = 1.0, py::arg("fit") = py::none(),
           "Write assembly.stl/.3mf/.step and one of each per body into folder; returns the paths.");
 }
 

@@ -4,6 +4,7 @@ along every motion is at least the gap; a model whose parts overlap is refused w
 import os
 import re
 import subprocess
+import zipfile
 
 import pytest
 
@@ -123,3 +124,28 @@ def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_di
     sliced = subprocess.run(["prusa-slicer", "--export-gcode", "--output", str(gcode), str(out / "assembly.3mf")],
                             capture_output=True, text=True, timeout=300)
     assert sliced.returncode == 0, sliced.stdout + sliced.stderr
+
+
+def test_a_print_fitted_to_a_build_volume_slices_on_that_bed_as_one_object(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "250x210x210")
+    assert run.returncode == 0, run.stdout + run.stderr
+    scale = float(re.search(r"^scale ([0-9.]+): fits 250x210x210 mm$", run.stdout, re.M).group(1))
+    assert scale == pytest.approx(250 / 543, rel=0.01)  # 540 mm long, and the hinge's yokes stand out 3 mm
+    size = [float(v) for v in re.search(r"^size ([0-9.]+) x ([0-9.]+) x ([0-9.]+) mm$", run.stdout, re.M).groups()]
+    assert size[0] == pytest.approx(250, abs=0.05) and size[1] <= 210 and size[2] <= 210
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    # PrusaSlicer slices it on that bed and keeps the bodies together: one object, a part per body.
+    bed = ["--bed-shape", "0x0,250x0,250x210,0x210", "--max-print-height", "210"]
+    sliced = subprocess.run(["prusa-slicer", "--export-gcode", *bed, "--output", str(tmp_path / "t.gcode"),
+                             str(out / "assembly.3mf")], capture_output=True, text=True, timeout=300)
+    assert sliced.returncode == 0, sliced.stdout + sliced.stderr
+    project = tmp_path / "project.3mf"
+    subprocess.run(["prusa-slicer", "--export-3mf", "--output", str(project), str(out / "assembly.3mf")],
+                   capture_output=True, text=True, timeout=300, check=True)
+    with zipfile.ZipFile(project) as package:
+        config = package.read("Metadata/Slic3r_PE_model.config").decode()
+    assert config.count("<object ") == 1
+    assert sorted(re.findall(r'type="volume" key="name" value="([^"]+)"', config)) == ["box", "lid", "tray"]
+    # A build volume that is not one is refused by name.
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "250x210")
+    assert run.returncode != 0 and "--fit: expected width x depth x height in mm" in run.stderr

@@ -218,3 +218,34 @@ def test_the_printable_cellphone_has_separate_valid_bodies_that_keep_their_gap(d
     assert made.Gap.Value == pytest.approx(0.2) and made.MinimumClearance.Value == pytest.approx(0.2, abs=0.01)
     written = printable.export(made, str(tmp_path))
     assert {os.path.basename(p) for p in written} >= {"assembly.stl", "assembly.3mf", "assembly.step", "screen-part.stl"}
+
+
+def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc, source_dir, tmp_path):
+    from fabguide.function import printable
+
+    mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "toolbox.workslike.json"))
+    doc.recompute()
+    made = printable.create(doc, mech)
+    doc.recompute()
+    assert made.Scale == 1 and made.PrintSize.startswith("543.0 x")  # a 540 mm toolbox and its hinge
+    made.FitToBuildVolume = True  # 250 x 210 x 210 mm by default
+    doc.recompute()
+    size = [float(v) for v in made.PrintSize.split(" mm")[0].split(" x ")]
+    assert made.Scale == pytest.approx(250 / 543, rel=0.01)
+    assert size[0] == pytest.approx(250, abs=0.05) and size[1] <= 210 and size[2] <= 210
+    assert made.MinimumClearance.Value == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
+    assert made.getEditorMode("Scale") == ["ReadOnly"]
+    path = str(tmp_path / "fitted.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    again = FreeCAD.openDocument(path)
+    try:
+        reloaded = [o for o in again.Objects if printable.is_printable(o)][0]
+        assert reloaded.FitToBuildVolume and reloaded.Scale == pytest.approx(250 / 543, rel=0.01)
+        reloaded.BuildVolume = FreeCAD.Vector(250, 0, 210)
+        with pytest.raises(printable.PrintableError, match="BuildVolume must be greater than 0"):
+            printable.fit(reloaded)
+        again.recompute()
+        assert "Invalid" in reloaded.State and reloaded.Scale == pytest.approx(250 / 543, rel=0.01)
+    finally:
+        FreeCAD.closeDocument(again.Name)

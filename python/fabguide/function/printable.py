@@ -26,6 +26,12 @@ class Printable(properties.Proxy):
             0.4)
         add(obj, "App::PropertyFloat", "Scale", "Printable",
             "Print at this scale (0.2 for 1:5); the gap stays as it is", 1.0)
+        add(obj, "App::PropertyBool", "FitToBuildVolume", "Printable",
+            "Print at the largest scale (at most 1) that fits the build volume; sets Scale", False)
+        add(obj, "App::PropertyVector", "BuildVolume", "Printable",
+            "The printer's build volume in mm: width (x), depth (y), height (z); the print is not turned",
+            FreeCAD.Vector(250, 210, 210))
+        add(obj, "App::PropertyString", "PrintSize", "Result", "Width x depth x height of the print", mode=1)
         add(obj, "App::PropertyBool", "ShowCavities", "Printable", "Show the volumes swept into cavities", False)
         add(obj, "App::PropertyBool", "CheckMotion", "Printable",
             "Measure the clearance at 32 poses along every configuration's motion", True)
@@ -36,6 +42,8 @@ class Printable(properties.Proxy):
     def onChanged(self, obj, prop):
         if prop == "Printer" and PRINTERS.get(obj.Printer) is not None and "Gap" in obj.PropertiesList:
             obj.Gap = PRINTERS[obj.Printer]
+        if prop == "FitToBuildVolume" and "Scale" in obj.PropertiesList:
+            obj.setEditorMode("Scale", 1 if obj.FitToBuildVolume else 0)
 
     def execute(self, obj):
         if obj.Scale <= 0:
@@ -70,6 +78,9 @@ class Printable(properties.Proxy):
                                              "gap\n".format(obj.Label, data["clearance"], data["where"],
                                                             obj.Gap.Value))
         obj.Notes = data["notes"]
+        if obj.FitToBuildVolume:
+            obj.Scale = data["scale"]
+        obj.PrintSize = "{:.1f} x {:.1f} x {:.1f} mm".format(*data["size"])
 
 
 CAVITIES = "cavities swept"
@@ -79,9 +90,21 @@ def bodies(obj):
     if obj.Mechanism is None:
         raise PrintableError("Printable '{}': choose the Mechanism to print".format(obj.Label))
     try:
-        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale)
+        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale,
+                                       fit(obj))
     except (fabguide_core.FormatError, RuntimeError) as error:
         raise PrintableError("Printable '{}': {}".format(obj.Label, error))
+
+
+def fit(obj):
+    """The build volume to fit the print to, or None to print at Scale."""
+    if not obj.FitToBuildVolume:
+        return None
+    volume = tuple(obj.BuildVolume)
+    if min(volume) <= 0:
+        raise PrintableError("Printable '{}': BuildVolume must be greater than 0 in x, y and z (is {:g} x {:g} x {:g})"
+                             .format(obj.Label, *volume))
+    return volume
 
 
 def create(doc, mech, label=None):
@@ -117,4 +140,4 @@ def is_printable(obj):
 
 def export(obj, folder):
     """assembly.stl/.3mf/.step and one of each per body into folder; the paths written."""
-    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder, obj.Scale)
+    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder, obj.Scale, fit(obj))
