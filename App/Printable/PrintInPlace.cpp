@@ -407,22 +407,35 @@ std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const f
     return turnedThenShifted(boxes, hingeAxis(m, joint), pose.angle * kPi / 180, by);
 }
 
-/// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
-/// it with the gap and a wall around it.
 struct Radii {
     double outer, pin;
 };
 
-Radii radii(const Model& m, const std::string& joint, std::initializer_list<int> cuboids, double g)
+/// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
+/// it with the gap and a wall around it (0.8 mm, or 30 % of the radius). Where that leaves less than the
+/// least pin (0.4 mm radius), as scaled-down parts do, the round parts stand proud of the thin part, up to
+/// twice its thickness, noted; thinner parts are refused.
+Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboids, double g, Printable& out)
 {
+    constexpr double leastPin = 0.4, leastWall = 0.8;
     double side = 1e300;
     for (int c : cuboids)
         side = std::min(side, thinnest(m.cuboids[c]));
-    const double outer = side / 2, pin = outer - g - std::max(0.8, 0.3 * outer);
-    if (pin < 0.4)
-        throw std::invalid_argument("joint '" + joint + "': its parts are too thin (" + std::to_string(side) +
-                                    " mm) for a pin and its yokes with a " + std::to_string(g) + " mm gap");
-    return {outer, pin};
+    const double least = leastPin + g + leastWall;
+    if (side < least)
+        throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (" +
+                                    std::to_string(side) + " mm) for a pin and its yokes with a " +
+                                    std::to_string(g) + " mm gap");
+    const double outer = std::max(side / 2, least);
+    if (outer > side / 2) {
+        std::ostringstream note;
+        note.precision(2);
+        note << std::fixed << joint.name << ": its round parts are " << 2 * outer
+             << " mm across, proud of its " << side << " mm thin part (the least that holds a "
+             << 2 * leastPin << " mm pin with a " << g << " mm gap)";
+        out.notes.push_back(note.str());
+    }
+    return {outer, outer - g - std::max(leastWall, 0.3 * outer)};
 }
 
 /// cuboidAtEdge within `reach` of the axis.
@@ -541,7 +554,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         return;
     }
     const int base = function::partOf(m, onEdge);
-    const Radii r = radii(m, joint.name, {joint.edgeA.cuboid, onEdge}, g);
+    const Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
     const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
     const double lo = edge[2 * along], hi = edge[2 * along + 1];
     const double yoke = (hi - lo) / 4;
@@ -699,7 +712,7 @@ TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double fa
 void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const Joint& joint = m.joints[j];
-    const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
+    const Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
     const int n = function::pivotPlane(m, joint).normal;
     const double face = m.cuboids[joint.basePivotFace.cuboid].at(joint.basePivotFace.side);
     const double inward = static_cast<int>(joint.basePivotFace.side) % 2 ? -1 : 1;  // into the base part
@@ -724,7 +737,7 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     if (joint.pivotFace.side != joint.basePivotFace.side)
         return addRecessedPivot(m, j, g, shapes, out);
     const function::PivotPlane plane = function::pivotPlane(m, joint);
-    const Radii r = radii(m, joint.name, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g);
+    const Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
     const int n = plane.normal;
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;

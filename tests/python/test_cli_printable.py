@@ -75,16 +75,24 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
     assert "drawer slide: slides free (no cavity guides it and it rests on no other part)" in run.stdout
 
 
-def test_a_scaled_print_keeps_the_gap_and_names_joints_too_thin_for_it(fabguide_cli, source_dir, tmp_path):
+def test_a_scaled_print_keeps_the_gap_and_joints_stand_proud_of_thin_parts_or_are_refused(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "crate-bed", "--scale", "0.2")
     assert run.returncode == 0, run.stdout + run.stderr
     assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     x = re.search(r"Min X\s*=\s*([-0-9.]+), Max X\s*=\s*([-0-9.]+)", mesh)
     assert x and float(x.group(2)) - float(x.group(1)) < 1000 * 0.2 + 30  # a fifth of the bed, plus the links
-    run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.2")
+    # At 1:5 the toolbox's lid is 2.8 mm thick: its pin (0.8 mm) and yokes stand proud of it, noted; at 1:10
+    # (1.4 mm) there is no room for them.
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.2")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    assert "note: lid hinge: its round parts are 3.20 mm across, proud of its 2.80 mm thin part" in run.stdout
+    mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
+    assert re.search(r"Number of parts\s*:\s*3\b", mesh), mesh
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.1")
     assert run.returncode == 1
-    assert "joint 'lid hinge': its parts are too thin (2.800000 mm)" in run.stderr
+    assert "joint 'lid hinge': its parts are too thin (1.400000 mm)" in run.stderr
 
 
 def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide_cli, source_dir, tmp_path):
