@@ -19,6 +19,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Vec.hxx>
 
 #include <cstdio>
 #include <filesystem>
@@ -43,10 +44,10 @@ TopoDS_Shape meshed(const std::vector<printable::Body>& bodies)
     return all;
 }
 
-/// The bodies' triangles as one mesh, each body's vertices shared where its faces meet, outward-facing: 3MF
-/// <vertex> and <triangle> elements; returns how many triangles each body has.
-std::vector<int> meshXml(const std::vector<printable::Body>& bodies, std::ostringstream& vertices,
-                         std::ostringstream& triangles)
+/// The bodies' triangles as one mesh moved by `by`, each body's vertices shared where its faces meet,
+/// outward-facing: 3MF <vertex> and <triangle> elements; returns how many triangles each body has.
+std::vector<int> meshXml(const std::vector<printable::Body>& bodies, const gp_Vec& by,
+                         std::ostringstream& vertices, std::ostringstream& triangles)
 {
     std::vector<int> counts;
     int first = 0;  // the body's first vertex
@@ -61,7 +62,7 @@ std::vector<int> meshXml(const std::vector<printable::Body>& bodies, std::ostrin
                 continue;
             std::vector<int> ids(mesh->NbNodes() + 1);
             for (int n = 1; n <= mesh->NbNodes(); ++n) {
-                const gp_Pnt p = mesh->Node(n).Transformed(location.Transformation());
+                const gp_Pnt p = mesh->Node(n).Transformed(location.Transformation()).Translated(by);
                 const auto key = std::make_tuple(p.X(), p.Y(), p.Z());
                 auto [it, added] = index.emplace(key, first + static_cast<int>(index.size()));
                 if (added) {
@@ -128,21 +129,20 @@ void write3mf(const std::vector<printable::Body>& bodies, const std::string& pat
     double x0 = 0, y0 = 0, z0 = 0, x1, y1, z1;
     if (!bounds.IsVoid())
         bounds.Get(x0, y0, z0, x1, y1, z1);
-    // One object, so that slicers keep the bodies where they are, together; placed with its lowest corner at
-    // the origin, since slicers take a 3MF's build as where it lies on the bed.
+    // One object, so that slicers keep the bodies where they are, together; its lowest corner at the origin,
+    // since slicers take a 3MF's coordinates as where it lies on the bed (in the vertices: PrusaSlicer does
+    // not centre an object by a build item's transform).
     const std::string name = bodies.size() == 1 ? bodies.front().name : "assembly";
     std::ostringstream vertices, triangles, model;
-    const std::vector<int> counts = meshXml(bodies, vertices, triangles);
-    char placed[160];
-    std::snprintf(placed, sizeof placed, "1 0 0 0 1 0 0 0 1 %.6f %.6f %.6f", -x0, -y0, -z0);
+    const std::vector<int> counts = meshXml(bodies, gp_Vec(-x0, -y0, -z0), vertices, triangles);
     model
         << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" "
            "xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"><resources><object id=\"1\" "
            "name=\""
         << escapeXml(name) << "\" type=\"model\"><mesh><vertices>" << vertices.str()
         << "</vertices><triangles>" << triangles.str()
-        << "</triangles></mesh></object></resources><build><item "
-        << "objectid=\"1\" transform=\"" << placed << "\"/></build></model>\n";
+        << "</triangles></mesh></object></resources><build><item objectid=\"1\"/></build>"
+        << "</model>\n";
     const std::string files[][2] = {
         {"[Content_Types].xml",
          "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Types "
