@@ -1,0 +1,89 @@
+"""Print-in-place on the thesis' eight works-like examples (Table 4.1, thesis 4.5): per example the bodies, the
+least clearance along every motion and the time at full size, then fitted to a desktop printer's build volume
+(`--fit`) and sliced there by PrusaSlicer. Run alone: python3 tests/bench/printable_benchmark.py [build-dir]."""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+import zipfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+EXAMPLES = ("cabinet", "crate-bar", "crate-bed", "sofa-bunk", "printer", "cellphone", "tablet", "toolbox")
+VOLUME = (250, 210, 210)  # a common desktop FDM printer (Prusa MK3S/MK4)
+FIT = "x".join(map(str, VOLUME))
+
+
+def printable(build, name, out, *options):
+    started = time.monotonic()
+    run = subprocess.run([os.path.join(build, "fabguide"), "printable",
+                          os.path.join(ROOT, "examples", name + ".workslike.json"), "-o", out, *options],
+                         capture_output=True, text=True)
+    seconds = time.monotonic() - started
+    found = re.search(r"minimum clearance ([0-9.]+) mm", run.stdout)
+    scale = re.search(r"^scale ([0-9.]+):", run.stdout, re.M)
+    size = re.search(r"^size (.*) mm$", run.stdout, re.M)
+    return {"ok": run.returncode == 0, "seconds": seconds,
+            "bodies": len(re.findall(r"^body ", run.stdout, re.M)),
+            "clearance": float(found.group(1)) if found else None,
+            "scale": float(scale.group(1)) if scale else 1.0, "size": size.group(1) if size else "",
+            "notes": len(re.findall(r"^note: ", run.stdout, re.M)),
+            "error": run.stderr.strip().splitlines()[-1] if run.returncode and run.stderr.strip() else ""}
+
+
+def sliced(out):
+    """PrusaSlicer on the build volume: layers, and whether it kept the bodies as one object."""
+    gcode, project = os.path.join(out, "print.gcode"), os.path.join(out, "project.3mf")
+    bed = ["--bed-shape", "0x0,{0}x0,{0}x{1},0x{1}".format(*VOLUME), "--max-print-height", str(VOLUME[2])]
+    run = subprocess.run(["prusa-slicer", "--export-gcode", *bed, "--output", gcode,
+                          os.path.join(out, "assembly.3mf")], capture_output=True, text=True)
+    if run.returncode != 0:
+        return "refused: " + (run.stderr.strip().splitlines() or ["?"])[-1].strip()
+    subprocess.run(["prusa-slicer", "--export-3mf", "--output", project, os.path.join(out, "assembly.3mf")],
+                   capture_output=True, text=True, check=True)
+    with zipfile.ZipFile(project) as package:
+        config = package.read("Metadata/Slic3r_PE_model.config").decode()
+    with open(gcode) as f:
+        layers = f.read().count(";LAYER_CHANGE")
+    return "sliced, {} layers, {} object of {} parts".format(layers, config.count("<object "), config.count("<volume "))
+
+
+def run(build):
+    rows = []
+    for name in EXAMPLES:
+        with tempfile.TemporaryDirectory() as full, tempfile.TemporaryDirectory() as fitted:
+            row = {"name": name, "full": printable(build, name, full), "fitted": printable(build, name, fitted,
+                                                                                       "--fit", FIT)}
+            row["slicer"] = sliced(fitted) if row["fitted"]["ok"] else "not made: " + row["fitted"]["error"]
+        rows.append(row)
+    return rows
+
+
+def clearance(result):
+    return "{:.3f}".format(result["clearance"]) if result["clearance"] is not None else "-"
+
+
+def table(rows):
+    lines = ["## Print-in-place (thesis Table 4.1 examples, 4.5)", "",
+             "`fabguide printable examples/NAME.workslike.json -o out` (FDM: 0.4 mm gap), then with `--fit {}`: the "
+             "largest scale at which the print fits that build volume as modelled, sliced there by PrusaSlicer "
+             "(`prusa-slicer --export-gcode --bed-shape ... --max-print-height {}` on `assembly.3mf`; 'one object of "
+             "N parts' is what PrusaSlicer kept after loading it: the bodies stay where they are printed). "
+             "Clearance is the least distance between two bodies as printed and at 32 poses along every "
+             "configuration's motion (must be >= the gap). Notes: joints whose round parts stand proud of a "
+             "thin part, or a part that falls apart.".format(FIT, VOLUME[2]), "",
+             "| example | bodies | clearance mm (1:1) | seconds (1:1) | fitted scale | size mm | clearance mm | notes "
+             "| PrusaSlicer |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        full, fit = r["full"], r["fitted"]
+        lines.append("| {} | {} | {} | {:.1f} | {:.3g} | {} | {} | {} | {} |".format(
+            r["name"], full["bodies"] or full["error"], clearance(full), full["seconds"], fit["scale"],
+            fit["size"], clearance(fit), fit["notes"], r["slicer"]))
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(table(run(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build"))))
