@@ -30,7 +30,7 @@ def printable(build, name, out, *options):
             "bodies": len(re.findall(r"^body ", run.stdout, re.M)),
             "clearance": float(found.group(1)) if found else None,
             "scale": float(scale.group(1)) if scale else 1.0, "size": size.group(1) if size else "",
-            "notes": len(re.findall(r"^note: ", run.stdout, re.M)),
+            "notes": re.findall(r"^note: (.*)$", run.stdout, re.M),
             "error": run.stderr.strip().splitlines()[-1] if run.returncode and run.stderr.strip() else ""}
 
 
@@ -62,6 +62,13 @@ def run(build):
     return rows
 
 
+def notes(result):
+    """Joints whose round parts stand proud of a thin part, by count; any other note in full."""
+    proud = sum(" proud of its " in n for n in result["notes"])
+    return "; ".join(([] if not proud else ["{} joint{} proud".format(proud, "s" if proud > 1 else "")]) +
+                     [n for n in result["notes"] if " proud of its " not in n]) or "-"
+
+
 def clearance(result):
     return "{:.3f}".format(result["clearance"]) if result["clearance"] is not None else "-"
 
@@ -74,14 +81,14 @@ def table(rows):
              "N parts' is what PrusaSlicer kept after loading it: the bodies stay where they are printed). "
              "Clearance is the least distance between two bodies as printed and at 32 poses along every "
              "configuration's motion (must be >= the gap). Notes: joints whose round parts stand proud of a "
-             "thin part, or a part that falls apart.".format(FIT, VOLUME[2]), "",
+             "thin part (the least pin that prints), or what else the run noted.".format(FIT, VOLUME[2]), "",
              "| example | bodies | clearance mm (1:1) | seconds (1:1) | fitted scale | size mm | clearance mm | notes "
              "| PrusaSlicer |", "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         full, fit = r["full"], r["fitted"]
         lines.append("| {} | {} | {} | {:.1f} | {:.3g} | {} | {} | {} | {} |".format(
             r["name"], full["bodies"] or full["error"], clearance(full), full["seconds"], fit["scale"],
-            fit["size"], clearance(fit), fit["notes"], r["slicer"]))
+            fit["size"], clearance(fit), notes(fit), r["slicer"]))
     return "\n".join(lines)
 
 
