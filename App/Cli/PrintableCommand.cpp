@@ -43,16 +43,12 @@ const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
 int run(const PrintableArguments& args)
 {
-    const function::Model read = io::readWorkslike(io::readJsonFile(args.input));
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
-    printable::Fitted fitted;
-    if (args.fit.empty()) {
-        fitted.model = printable::solvedToPrint(read, args.scale);
-        fitted.printable = printable::makePrintable(fitted.model, {gap});
-    } else {
-        fitted = printable::fitted(printable::solvedToPrint(read, 1), *buildVolume(args.fit), {gap});
+    const std::optional<printable::Size> fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
+    const printable::Fitted fitted =
+        printable::printed(io::readWorkslike(io::readJsonFile(args.input)), {gap}, args.scale, fit);
+    if (fit)
         std::printf("scale %.4g: fits %s mm\n", fitted.scale, args.fit.c_str());
-    }
     const function::Model& model = fitted.model;
     const printable::Printable& made = fitted.printable;
     const printable::Size size = printable::sizeOf(made);

@@ -756,9 +756,37 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
         {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
 }
 
+/// The plain hinge on which part `carried` turns on `base` in configuration k, or -1.
+int hingeOn(const Model& m, int carried, int base, int k)
+{
+    const int j = jointMoving(m, carried);
+    return j >= 0 && m.joints[j].base == base && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k)
+               ? j
+               : -1;
+}
+
+/// What part a's boxes sweep in part b's frame as both move to configuration k: when one turns on the other
+/// by a hinge, the revolution about it (exact); otherwise a at 32 poses while they turn (the first half) and
+/// 8 while they slide.
+std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
+                                       const std::vector<Coordinates>& boxes)
+{
+    for (const auto& [carried, base, sign] : {std::tuple{b, a, -1}, std::tuple{a, b, 1}})
+        if (const int j = hingeOn(m, carried, base, k); j >= 0)
+            return turnedThenShifted(boxes, hingeAxis(m, m.joints[j]),
+                                     sign * poseOf(m, j, k)->angle * kPi / 180, gp_Vec(0, 0, 0));
+    const TopoDS_Shape shape = solid(boxes);
+    std::vector<TopoDS_Shape> path;
+    for (int step = 1; step <= 40; ++step) {
+        const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
+        path.push_back(moved(shape, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
+    }
+    return path;
+}
+
 /// In configuration k, for two parts that lie within the gap of each other as printed and both turn, each is
-/// cut by the other's path relative to it (its solid with the gap, at 40 poses in the other's frame): a
-/// door's edge turning towards its neighbour bevels the neighbour's edge.
+/// cut by the other's path relative to it, grown by the gap (pathRelative): a door's edge turning towards its
+/// neighbour bevels the neighbour's edge.
 void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, double g,
                      std::vector<TopoDS_Shape>& shapes)
 {
@@ -775,19 +803,15 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
             const gp_Trsf relative = partMotion(m, b, k, 1).Inverted() * partMotion(m, a, k, 1);
             if (relative.Form() == gp_Identity || relative.Form() == gp_Translation)
                 continue;  // sliding past each other, the gap stays a gap
-            const TopoDS_Shape grown = solid(m, a, at, g);
+            const std::vector<Coordinates> grown = boxesOf(m, a, at, g);
             Bnd_Box near, other;
-            BRepBndLib::Add(grown, near);
+            for (const Coordinates& c : grown)
+                near.Update(c[0], c[2], c[4], c[1], c[3], c[5]);
             BRepBndLib::Add(shapes[b], other);
             near.Enlarge(g);
             if (near.IsOut(other))
                 continue;
-            std::vector<TopoDS_Shape> path;  // 32 poses while they turn (the first half), 8 while they slide
-            for (int step = 1; step <= 40; ++step) {
-                const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
-                path.push_back(moved(grown, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
-            }
-            shapes[b] = cut(shapes[b], path);
+            shapes[b] = cut(shapes[b], pathRelative(m, k, a, b, grown));
         }
 }
 
@@ -918,6 +942,15 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
     what << "the print does not fit the build volume " << volume[0] << " x " << volume[1] << " x "
          << volume[2] << " mm at any scale tried (down to " << f.scale << ")";
     throw std::runtime_error(what.str());
+}
+
+Fitted printed(const Model& model, const Printer& printer, double scale, const std::optional<Size>& fit)
+{
+    if (fit)
+        return fitted(solvedToPrint(model, 1), *fit, printer);
+    Fitted f{scale, solvedToPrint(model, scale), {}};
+    f.printable = makePrintable(f.model, printer);
+    return f;
 }
 
 }  // namespace fabguide::printable

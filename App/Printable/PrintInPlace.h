@@ -9,6 +9,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,5 +57,10 @@ struct Fitted {
 /// The solved model at the largest scale, at most 1, whose bodies fit the build volume as modelled (not
 /// turned; the gap stays in mm), 0.01 mm to spare; std::runtime_error when none is found.
 Fitted fitted(const function::Model& solved, const Size& volume, const Printer& printer);
+
+/// The model solved (solvedToPrint), then scaled by `scale`, or fitted to the build volume `fit` when given,
+/// and its bodies.
+Fitted printed(const function::Model& model, const Printer& printer, double scale,
+               const std::optional<Size>& fit = std::nullopt);
 
 }  // namespace fabguide::printable

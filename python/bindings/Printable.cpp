@@ -32,11 +32,7 @@ printable::Fitted made(const py::object& model, double gap, double scale, const 
     const function::Model read = io::readWorkslike(toJson(model));
     py::gil_scoped_release release;
     try {
-        if (fit)
-            return printable::fitted(printable::solvedToPrint(read, 1), *fit, {gap});
-        printable::Fitted f{scale, printable::solvedToPrint(read, scale), {}};
-        f.printable = printable::makePrintable(f.model, {gap});
-        return f;
+        return printable::printed(read, {gap}, scale, fit);
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
     }
