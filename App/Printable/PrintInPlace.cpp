@@ -932,7 +932,14 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
     f.scale = std::min(1.0, room(extent));
     for (int attempt = 0; attempt < 4; ++attempt) {
         f.model = function::scaled(solved, f.scale);
-        f.printable = makePrintable(f.model, printer);
+        try {
+            f.printable = makePrintable(f.model, printer);
+        } catch (const std::invalid_argument& e) {
+            std::ostringstream what;
+            what << e.what() << " at scale " << f.scale << ", which fits " << volume[0] << " x " << volume[1]
+                 << " x " << volume[2] << " mm";
+            throw std::invalid_argument(what.str());
+        }
         const double r = room(sizeOf(f.printable));
         if (r >= 1 - 1e-9)
             return f;

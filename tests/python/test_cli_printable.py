@@ -154,6 +154,9 @@ def test_a_print_fitted_to_a_build_volume_slices_on_that_bed_as_one_object(fabgu
         config = package.read("Metadata/Slic3r_PE_model.config").decode()
     assert config.count("<object ") == 1
     assert sorted(re.findall(r'type="volume" key="name" value="([^"]+)"', config)) == ["box", "lid", "tray"]
-    # A build volume that is not one is refused by name.
+    # A build volume that is not one is refused by name; one too small for the joints names the scale.
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "250x210")
     assert run.returncode != 0 and "--fit: expected width x depth x height in mm" in run.stderr
+    run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "40x40x40")
+    assert run.returncode == 1 and "joint 'lid hinge': its parts are too thin" in run.stderr
+    assert re.search(r"at scale 0\.07\d*, which fits 40 x 40 x 40 mm", run.stderr), run.stderr
