@@ -202,6 +202,15 @@ def the_cellphone_made_printable_in_its_colours():
     finally:
         QtGui.QFileDialog.getExistingDirectory = original
     assert "assembly.3mf" in os.listdir(folder)
+    # Fitted to a small printer (100 mm cube): the 190 mm phone prints at about half size, Scale follows.
+    made.BuildVolume = FreeCAD.Vector(100, 100, 100)
+    made.FitToBuildVolume = True
+    doc.recompute()
+    assert "Invalid" not in made.State and abs(made.Scale - 100 / 190) < 0.01, made.Scale
+    assert made.PrintSize.startswith("26.3 x 100.0 x") and abs(made.MinimumClearance.Value - 0.4) < 0.01
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(made)
+    print("window: " + guitest.screenshot("function_cellphone_fitted"))
 
 
 def export_writes_a_model_the_core_solves():

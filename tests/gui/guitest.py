@@ -5,6 +5,7 @@ prints its traceback and FreeCAD exits with status 1; when all pass it exits wit
 """
 import os
 import sys
+import time
 import traceback
 
 import FreeCADGui
@@ -17,10 +18,19 @@ def _path(name):
     return os.path.join(folder, name + ".png")
 
 
+def settle(seconds=0.3):
+    """Let Qt run its timers for a moment: the tree and property view follow the selection on one."""
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        QtCore.QCoreApplication.processEvents()
+        time.sleep(0.01)
+
+
 def screenshot(name):
     """Grab the FreeCAD window (panels, toolbars) into $FABGUIDE_SCREENSHOTS/name.png; returns the path.
     The 3-D view is OpenGL, which a window grab leaves blank: see view_image."""
     path = _path(name)
+    settle()
     FreeCADGui.updateGui()
     if not FreeCADGui.getMainWindow().grab().save(path):
         raise RuntimeError("could not save screenshot " + path)
