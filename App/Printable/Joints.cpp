@@ -1,0 +1,365 @@
+#include "Printable/Joints.h"
+
+#include "Function/DoublePivot.h"
+#include "Function/Pose.h"
+#include "Printable/Motion.h"
+#include "Printable/Sweeps.h"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Ax2.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace fabguide::printable {
+
+namespace {
+
+struct Radii {
+    double outer, pin;
+};
+
+/// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
+/// it with the gap and a wall around it (0.8 mm, or 30 % of the radius). Where that leaves less than the
+/// least pin (0.4 mm radius), as scaled-down parts do, the round parts stand proud of the thin part, up to
+/// twice its thickness, noted; thinner parts are refused.
+Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboids, double g, Printable& out)
+{
+    constexpr double leastPin = 0.4, leastWall = 0.8;
+    double side = 1e300;
+    for (int c : cuboids)
+        side = std::min(side, thinnest(m.cuboids[c]));
+    const double least = leastPin + g + leastWall;
+    if (side < least)
+        throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (" +
+                                    std::to_string(side) + " mm) for a pin and its yokes with a " +
+                                    std::to_string(g) + " mm gap");
+    const double outer = std::max(side / 2, least);
+    if (outer > side / 2) {
+        std::ostringstream note;
+        note.precision(2);
+        note << std::fixed << joint.name << ": its round parts are " << 2 * outer
+             << " mm across, proud of its " << side << " mm thin part (the least that holds a "
+             << 2 * leastPin << " mm pin with a " << g << " mm gap)";
+        out.notes.push_back(note.str());
+    }
+    return {outer, outer - g - std::max(leastWall, 0.3 * outer)};
+}
+
+/// cuboidAtEdge within `reach` of the axis.
+int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double reach)
+{
+    int best = -1;
+    double longest = 0;
+    const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base))
+            continue;
+        for (int c : m.parts[p].cuboids) {
+            if (m.cuboids[c].cavity())
+                continue;
+            double d2 = 0, shared = 0;  // the axis' distance from the box, and how long they run together
+            for (int a = 0; a < 3; ++a) {
+                const double low = m.cuboids[c].at(static_cast<Side>(2 * a)),
+                             high = m.cuboids[c].at(static_cast<Side>(2 * a + 1));
+                if (std::abs(axis.Direction().Coord(a + 1)) > 0.5) {
+                    shared = std::min(high, own.at(static_cast<Side>(2 * a + 1))) -
+                             std::max(low, own.at(static_cast<Side>(2 * a)));
+                    continue;
+                }
+                const double x = axis.Location().Coord(a + 1);
+                const double out = std::max({0.0, low - x, x - high});
+                d2 += out * out;
+            }
+            if (std::sqrt(d2) <= reach && shared > longest) {
+                longest = shared;
+                best = c;
+            }
+        }
+    }
+    return best;
+}
+
+/// The box joining a hinge's yokes to the cuboid they hang on across the stand-off, between `from` and `to`
+/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face. Null
+/// when the axis lies on the cuboid.
+TopoDS_Shape bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to, double r)
+{
+    Coordinates c{};
+    bool apart = false;
+    for (int a = 0; a < 3; ++a) {
+        const double low = base.at(static_cast<Side>(2 * a)), high = base.at(static_cast<Side>(2 * a + 1));
+        const double x = axis.Location().Coord(a + 1);
+        if (a == along) {
+            c[2 * a] = from, c[2 * a + 1] = to;
+        } else if (x > high + 1e-3 || x < low - 1e-3) {
+            apart = true;
+            c[2 * a] = std::min(x, high), c[2 * a + 1] = std::max(x, low);
+        } else {  // level with a face or within: r of the cuboid on the side of the axis' other offset
+            c[2 * a] = std::max(low, x - r), c[2 * a + 1] = std::min(high, x + r);
+        }
+    }
+    return apart ? box(c) : TopoDS_Shape();
+}
+
+/// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
+std::pair<double, double> travel(const Model& m, int j)
+{
+    double low = 0, high = 0;
+    for (size_t k = 0; k < m.configurations.size() && m.joints[j].slides(); ++k)
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
+            low = std::min(low, pose->offset);
+            high = std::max(high, pose->offset);
+        }
+    return {low, high};
+}
+
+/// A rod along a hinge's axis, made a slot over a sliding hinge's travel by the rod at both ends of the
+/// travel and the box between: slotted yokes and their clearances.
+TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
+{
+    const Joint& joint = m.joints[j];
+    const auto [low, high] = travel(m, j);
+    if (high - low < 1e-9)
+        return rod(at, along, from, to, r);
+    auto shifted = [&](double by) {
+        return at.Translated(gp_Vec(joint.axis == 0, joint.axis == 1, joint.axis == 2) * by);
+    };
+    Coordinates span{};
+    for (int a = 0; a < 3; ++a) {
+        const double centre = at.Coord(a + 1);
+        span[2 * a] = a == along ? from : a == joint.axis ? centre + low : centre - r;
+        span[2 * a + 1] = a == along ? to : a == joint.axis ? centre + high : centre + r;
+    }
+    return fuse(fuse(rod(shifted(low), along, from, to, r), rod(shifted(high), along, from, to, r)),
+                box(span));
+}
+
+/// The link between two pivots at `depth` .. `depth` + `thick` from `face` along normal n (`inward` = -1 or 1
+/// the way in): a bar with round ends, a hole the gap round each pin.
+TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double face, double inward,
+                       double depth, double thick, const Radii& r, double g)
+{
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        return rodFrom(p, n, face, inward, from, to, radius);
+    };
+    const gp_Vec along(pivot, base);
+    const gp_Dir normal(n == 0, n == 1, n == 2), x(along), y = normal.Crossed(x);
+    gp_Pnt corner = pivot.Translated(gp_Vec(y) * -r.outer);
+    corner.SetCoord(n + 1, std::min(face + inward * depth, face + inward * (depth + thick)));
+    TopoDS_Shape bar =
+        BRepPrimAPI_MakeBox(gp_Ax2(corner, normal, x), along.Magnitude(), 2 * r.outer, thick).Shape();
+    bar = fuse(bar,
+               fuse(span(pivot, depth, depth + thick, r.outer), span(base, depth, depth + thick, r.outer)));
+    return cut(bar, fuse(span(pivot, depth - 1, depth + thick + 1, r.pin + g),
+                         span(base, depth - 1, depth + thick + 1, r.pin + g)));
+}
+
+/// A double pivot whose pivot faces face each other (the sofa bunk's bunk against its ends): the link lies in
+/// a round recess in the base part, the gap below its face, as deep as the link and two gaps, wide enough for
+/// the link turning all the way round its base pivot; each part's pin runs through the link's end, the part's
+/// stopping the gap short of the recess floor. The faces between them keep the link in.
+void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
+    const int n = function::pivotPlane(m, joint).normal;
+    const double face = m.cuboids[joint.basePivotFace.cuboid].at(joint.basePivotFace.side);
+    const double inward = static_cast<int>(joint.basePivotFace.side) % 2 ? -1 : 1;  // into the base part
+    const double link = r.outer;
+    const auto [pivot, base] = pivotPoints(m, joint);
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        return rodFrom(p, n, face, inward, from, to, radius);
+    };
+    const double reach = gp_Vec(pivot, base).Magnitude() + r.outer + g;
+    shapes[joint.base] = cut(shapes[joint.base], span(base, -1, 2 * g + link, reach));
+    shapes[joint.base] = fuse(shapes[joint.base], span(base, 0, 2 * g + link + 1, r.pin));
+    shapes[joint.part] = fuse(shapes[joint.part], span(pivot, -1 - g, g + link, r.pin));
+    out.bodies.push_back(
+        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
+}
+
+}  // namespace
+
+int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
+{
+    for (double reach : {1e-3, thinnest(m.cuboids[joint.edgeA.cuboid])})
+        if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
+            return c;
+    return -1;
+}
+
+void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const gp_Ax1 axis = hingeAxis(m, joint);
+    const int along = std::abs(axis.Direction().X()) > 0.5 ? 0 : std::abs(axis.Direction().Y()) > 0.5 ? 1 : 2;
+    const int onEdge = cuboidAtEdge(m, joint, axis);
+    if (onEdge < 0) {
+        out.notes.push_back(joint.name + ": no other part along its edge to hold the yokes; no hinge made");
+        return;
+    }
+    const int base = function::partOf(m, onEdge);
+    const Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
+    const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
+    const double lo = edge[2 * along], hi = edge[2 * along + 1];
+    const double yoke = (hi - lo) / 4;
+    const gp_Pnt at = axis.Location();
+    TopoDS_Shape& part = shapes[joint.part];
+    TopoDS_Shape& other = shapes[base];
+    // The moving part gives way around the yokes, the other part around the knuckle.
+    // A sliding hinge's slotted yokes stay put while the part turns and slides past them: it gives way
+    // around them as they stand in its own frame along the way.
+    const TopoDS_Shape yokes = fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
+                                    slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g));
+    // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis.
+    TopoDS_Shape around = yokes;
+    for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
+            gp_Trsf turnBack;
+            turnBack.SetRotation(axis, -pose->angle * kPi / 180);
+            gp_Vec back(0, 0, 0);
+            back.SetCoord(joint.axis + 1, -pose->offset);
+            around = fuse(
+                around, turnedThenShifted(yokes, axis, -pose->angle * kPi / 180, back.Transformed(turnBack)));
+        }
+    part = cut(part, around);
+    other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
+    // The pin's hole, the gap past its ends, through the other part's corner and through each yoke, before
+    // they are joined.
+    const TopoDS_Shape hole = slotted(m, j, at, along, lo - g - 1, hi + g + 1, r.pin + g);
+    other = fuse(cut(other, hole), fuse(cut(slotted(m, j, at, along, lo, lo + yoke, r.outer), hole),
+                                        cut(slotted(m, j, at, along, hi - yoke, hi, r.outer), hole)));
+    for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
+        if (const TopoDS_Shape b = bridge(m.cuboids[onEdge], axis, along, from, to, r.outer); !b.IsNull())
+            other = fuse(other, cut(b, hole));
+    part = fuse(part,
+                fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
+}
+
+void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const int a = joint.axis;
+    // The widest contact between a cuboid of the part and one of another part, across the slide axis.
+    int mover = -1, base = -1, normal = -1;
+    double widest = 0;
+    for (int c : m.parts[joint.part].cuboids)
+        for (size_t q = 0; q < m.cuboids.size(); ++q) {
+            if (m.cuboids[c].cavity() || m.cuboids[q].cavity() ||
+                function::partOf(m, static_cast<int>(q)) == joint.part)
+                continue;
+            const auto& x = m.cuboids[c].coordinates;
+            const auto& y = m.cuboids[q].coordinates;
+            for (int n = 0; n < 3; ++n) {
+                if (n == a ||
+                    (std::abs(x[2 * n] - y[2 * n + 1]) > 1e-6 && std::abs(x[2 * n + 1] - y[2 * n]) > 1e-6))
+                    continue;
+                double area = 1;
+                for (int o = 0; o < 3; ++o)
+                    if (o != n)
+                        area *= std::max(0.0,
+                                         std::min(x[2 * o + 1], y[2 * o + 1]) - std::max(x[2 * o], y[2 * o]));
+                if (area > widest) {
+                    widest = area;
+                    mover = c;
+                    base = static_cast<int>(q);
+                    normal = n;
+                }
+            }
+        }
+    if (mover < 0) {
+        out.notes.push_back(joint.name + ": slides free (no cavity guides it and it rests on no other part)");
+        return;
+    }
+    const auto& x = m.cuboids[mover].coordinates;
+    const auto& y = m.cuboids[base].coordinates;
+    const int across = 3 - a - normal;
+    const double dir =
+        std::abs(x[2 * normal] - y[2 * normal + 1]) < 1e-6 ? 1 : -1;  // from the base to the part
+    const double plane = dir > 0 ? y[2 * normal + 1] : y[2 * normal];
+    const double thin = std::min(gapped[mover][2 * normal + 1] - gapped[mover][2 * normal],
+                                 y[2 * normal + 1] - y[2 * normal]);
+    const double h = 0.4 * thin, width = std::min(x[2 * across + 1], y[2 * across + 1]) -
+                                         std::max(x[2 * across], y[2 * across]);
+    const double centre =
+        (std::max(x[2 * across], y[2 * across]) + std::min(x[2 * across + 1], y[2 * across + 1])) / 2;
+    const double from = std::max(x[2 * a], y[2 * a]), to = std::min(x[2 * a + 1], y[2 * a + 1]);
+    if (h < 2 * g || width < 6 * h || to - from < 4 * h) {
+        out.notes.push_back(joint.name + ": slides free (too little contact for rails at this gap)");
+        return;
+    }
+    // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
+    // groove's is the same offset outwards by the gap, edge by edge.
+    auto tongue = [&](double grow, double start, double length) {
+        const gp_XY corners[4] = {{centre - h, plane - dir},
+                                  {centre + h, plane - dir},
+                                  {centre + 1.5 * h, plane + dir * h},
+                                  {centre - 1.5 * h, plane + dir * h}};
+        auto offsetLine = [&](int i) {  // edge i moved out by `grow`: a point on it and its direction
+            const gp_XY d = (corners[(i + 1) % 4] - corners[i]).Normalized();
+            gp_XY out(d.Y(), -d.X());  // outward for the corners' winding when dir > 0
+            if ((out * (corners[i] - gp_XY(centre, plane + dir * h / 2))) < 0)
+                out.Reverse();
+            return std::pair{corners[i] + out * grow, d};
+        };
+        auto point = [&](int i) {  // where the offset edges i − 1 and i meet
+            const auto [p1, d1] = offsetLine((i + 3) % 4);
+            const auto [p2, d2] = offsetLine(i);
+            const double t = ((p2 - p1) ^ d2) / (d1 ^ d2);
+            const gp_XY uv = p1 + d1 * t;
+            gp_Pnt p;
+            p.SetCoord(a + 1, start);
+            p.SetCoord(across + 1, uv.X());
+            p.SetCoord(normal + 1, uv.Y());
+            return p;
+        };
+        BRepBuilderAPI_MakePolygon outline(point(0), point(1), point(2), point(3), true);
+        gp_Vec along(0, 0, 0);
+        along.SetCoord(a + 1, length);
+        return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), along).Shape();
+    };
+    const auto [low, high] = travel(m, j);
+    const int q = function::partOf(m, base);
+    shapes[q] = fuse(shapes[q], tongue(0, from, to - from));
+    // In the part's frame the tongue runs back over the travel; the groove is open at the part's ends.
+    shapes[joint.part] = cut(shapes[joint.part], tongue(g, std::min(from, x[2 * a]) - high - 1,
+                                                        std::max(to, x[2 * a + 1]) - from + high - low + 2));
+}
+
+void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    if (joint.pivotFace.side != joint.basePivotFace.side)
+        return addRecessedPivot(m, j, g, shapes, out);
+    const function::PivotPlane plane = function::pivotPlane(m, joint);
+    const Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
+    const int n = plane.normal;
+    const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
+    const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
+    const double link = r.outer, head = std::max(1.0, r.outer / 3);
+
+    // Along the normal, from the face outwards.
+    const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
+        return rodFrom(p, n, face, outward, from, to, radius);
+    };
+    const auto [pivot, base] = pivotPoints(m, joint);
+    for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})
+        shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
+                                               span(p, 2 * g + link, 2 * g + link + head, r.outer)));
+    // The link: a bar with round ends between the pivots, the gap off the faces.
+    out.bodies.push_back(
+        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
+}
+
+}  // namespace fabguide::printable

@@ -1,0 +1,34 @@
+// Joint geometry (thesis 4.5.2): hinge pins, knuckles and yokes (slotted for sliding hinges), dovetail rails
+// for slides no cavity guides, pins and links for double pivots.
+#pragma once
+
+#include "Printable/PrintInPlace.h"
+#include "Printable/Solids.h"
+
+#include <gp_Ax1.hxx>
+
+namespace fabguide::printable {
+
+/// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
+/// yokes hang on), or -1. An edge standing off every other part (the sofa bunk's headrest, hinged 20 mm
+/// behind the seat) hangs on the nearest one within the moving cuboid's thickness; bridge() joins its yokes
+/// to it.
+int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
+
+/// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
+/// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
+/// each cleared of the other by the gap.
+void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out);
+
+/// Slide (4.5.2) not guided by a cavity: mated rails. A dovetail tongue on the part it rests against, along
+/// the slide axis where the two meet, and the matching groove, the gap all round, cut into the moving part
+/// along its travel, so it can slide but not lift off.
+void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, Printable& out);
+
+/// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
+/// rigid link between them, outside the faces, with a hole round each pin.
+void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& shapes, Printable& out);
+
+}  // namespace fabguide::printable

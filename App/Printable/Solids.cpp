@@ -1,0 +1,156 @@
+#include "Printable/Solids.h"
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax2.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace fabguide::printable {
+
+namespace {
+
+/// A Boolean operation of the first shape with the others, or an error naming it: OpenCASCADE reports
+/// failures by flags, not exceptions. Many tools in one operation are much faster than one at a time.
+template <typename Operation>
+TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
+{
+    if (shapes.size() < 2)
+        return shapes.empty() ? TopoDS_Shape() : shapes.front();
+    TopTools_ListOfShape first, rest;
+    first.Append(shapes.front());
+    for (size_t i = 1; i < shapes.size(); ++i)
+        rest.Append(shapes[i]);
+    Operation operation;
+    operation.SetArguments(first);
+    operation.SetTools(rest);
+    operation.Build();
+    if (operation.HasErrors()) {
+        std::ostringstream report;
+        operation.DumpErrors(report);
+        std::string errors = report.str();
+        while (!errors.empty() && std::isspace(static_cast<unsigned char>(errors.back())))
+            errors.pop_back();
+        throw std::runtime_error(std::string("geometry: a ") + what + " failed: " + errors +
+                                 "; try another --gap or --scale");
+    }
+    return operation.Shape();
+}
+
+}  // namespace
+
+TopoDS_Shape box(const Coordinates& c)
+{
+    return BRepPrimAPI_MakeBox(gp_Pnt(c[0], c[2], c[4]), gp_Pnt(c[1], c[3], c[5])).Shape();
+}
+
+TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>({a, b}, "union");
+}
+
+double volumeOf(const TopoDS_Shape& s)
+{
+    GProp_GProps volume;
+    BRepGProp::VolumeProperties(s, volume);
+    return volume.Mass();
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const std::vector<TopoDS_Shape>& tools)
+{
+    std::vector<TopoDS_Shape> shapes{a};
+    double held = 0;
+    for (const TopoDS_Shape& tool : tools)
+        if (!tool.IsNull()) {
+            shapes.push_back(tool);
+            held += volumeOf(tool);
+        }
+    const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>(shapes, "cut");
+    const double before = volumeOf(a), lost = before - held - volumeOf(result);
+    if (lost > 1e-6 * before + 1e-3)
+        throw std::runtime_error("geometry: a cut lost " + std::to_string(lost) +
+                                 " mm3 more than its tools hold (OpenCASCADE); try another --gap or --scale");
+    return result;
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    return cut(a, std::vector<TopoDS_Shape>{b});
+}
+
+TopoDS_Shape compound(const std::vector<TopoDS_Shape>& shapes)
+{
+    TopoDS_Compound c;
+    BRep_Builder builder;
+    builder.MakeCompound(c);
+    for (const TopoDS_Shape& s : shapes)
+        builder.Add(c, s);
+    return c;
+}
+
+TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
+{
+    return BRepBuilderAPI_Transform(s, t, true).Shape();
+}
+
+TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r)
+{
+    gp_Pnt start = at;
+    start.SetCoord(axis + 1, from);
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(start, gp_Dir(axis == 0, axis == 1, axis == 2)), r, to - from)
+        .Shape();
+}
+
+TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double from, double to, double radius)
+{
+    const double a = face + sign * from, b = face + sign * to;
+    return rod(p, n, std::min(a, b), std::max(a, b), radius);
+}
+
+double thinnest(const Cuboid& c)
+{
+    double side = 1e300;
+    for (int a = 0; a < 3; ++a)
+        side = std::min(side, c.at(static_cast<Side>(2 * a + 1)) - c.at(static_cast<Side>(2 * a)));
+    return side;
+}
+
+std::vector<Coordinates> boxesOf(const Model& m, int part, const std::vector<Coordinates>& at, double grow)
+{
+    std::vector<Coordinates> boxes;
+    for (int c : m.parts[part].cuboids)
+        if (!m.cuboids[c].cavity()) {
+            Coordinates k = at[c];
+            for (int i = 0; i < 6; ++i)
+                k[i] += i % 2 ? grow : -grow;
+            boxes.push_back(k);
+        }
+    return boxes;
+}
+
+TopoDS_Shape solid(const std::vector<Coordinates>& boxes)
+{
+    TopoDS_Shape s;
+    for (const Coordinates& b : boxes)
+        s = fuse(s, box(b));
+    return s;
+}
+
+TopoDS_Shape solid(const Model& m, int part, const std::vector<Coordinates>& at, double grow)
+{
+    return solid(boxesOf(m, part, at, grow));
+}
+
+}  // namespace fabguide::printable

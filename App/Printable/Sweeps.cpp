@@ -1,0 +1,161 @@
+#include "Printable/Sweeps.h"
+
+#include "Printable/Motion.h"
+
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+
+#include <cmath>
+#include <tuple>
+
+namespace fabguide::printable {
+
+namespace {
+
+/// A solid swept by a motion: the solid and what each of its faces sweeps (OpenCASCADE sweeps faces into
+/// solids, not solids; faces that sweep no volume are left out).
+template <typename Sweep>
+TopoDS_Shape swept(const TopoDS_Shape& shape, Sweep sweepFace)
+{
+    TopoDS_Shape result = shape;
+    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+        TopoDS_Shape s;
+        try {
+            s = sweepFace(TopoDS::Face(e.Current()));
+        } catch (const Standard_Failure&) {  // a face across a hinge's axis turns in its own plane: no volume
+            continue;
+        }
+        GProp_GProps area;
+        BRepGProp::SurfaceProperties(e.Current(), area);
+        // Faces along the motion sweep nothing, or a rounding error's sliver.
+        if (std::abs(volumeOf(s)) > 1e-9 * area.Mass() * std::sqrt(area.Mass()))
+            result = fuse(result, s);
+    }
+    return result;
+}
+
+/// Boxes cut in two (or four) by the planes through `axis` along the box's sides wherever it passes through
+/// one: no face of the pieces crosses the axis. A face across its axis revolves into a solid that turns
+/// through itself, which OpenCASCADE cannot unite or cut reliably (parts grown by the gap reach their hinge's
+/// line, small scales).
+std::vector<Coordinates> splitAtAxis(const std::vector<Coordinates>& boxes, const gp_Ax1& axis)
+{
+    std::vector<Coordinates> pieces = boxes;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(axis.Direction().Coord(a + 1)) > 0.5)
+            continue;
+        const double x = axis.Location().Coord(a + 1);
+        std::vector<Coordinates> split;
+        for (const Coordinates& b : pieces)
+            if (b[2 * a] + 1e-6 < x && x < b[2 * a + 1] - 1e-6) {
+                Coordinates low = b, high = b;
+                low[2 * a + 1] = high[2 * a] = x;
+                split.insert(split.end(), {low, high});
+            } else {
+                split.push_back(b);
+            }
+        pieces = split;
+    }
+    return pieces;
+}
+
+/// The plain hinge on which part `carried` turns on `base` in configuration k, or -1.
+int hingeOn(const Model& m, int carried, int base, int k)
+{
+    const int j = jointMoving(m, carried);
+    return j >= 0 && m.joints[j].base == base && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k)
+               ? j
+               : -1;
+}
+
+}  // namespace
+
+std::vector<TopoDS_Shape> turnedThenShifted(const std::vector<Coordinates>& boxes, const gp_Ax1& axis,
+                                            double radians, const gp_Vec& by)
+{
+    std::vector<TopoDS_Shape> swept;
+    for (const Coordinates& piece : splitAtAxis(boxes, axis))
+        swept.push_back(turnedThenShifted(box(piece), axis, radians, by));
+    return swept;
+}
+
+TopoDS_Shape turnedThenShifted(const TopoDS_Shape& shape, const gp_Ax1& axis, double radians,
+                               const gp_Vec& by)
+{
+    TopoDS_Shape result = shape, turned = shape;
+    if (std::abs(radians) > 1e-12) {
+        result = swept(shape,
+                       [&](const TopoDS_Face& f) { return BRepPrimAPI_MakeRevol(f, axis, radians).Shape(); });
+        gp_Trsf turn;
+        turn.SetRotation(axis, radians);
+        turned = moved(shape, turn);
+    }
+    if (by.Magnitude() > 1e-9)
+        result =
+            fuse(result,
+                 swept(turned, [&](const TopoDS_Face& f) { return BRepPrimAPI_MakePrism(f, by).Shape(); }));
+    return result;
+}
+
+std::vector<TopoDS_Shape> sweep(const Model& m, int part, int k, const std::vector<Coordinates>& boxes)
+{
+    int turning = -1, turns = 0;
+    bool pivots = false;
+    for (int j = jointMoving(m, part); j >= 0;
+         j = m.joints[j].base >= 0 ? jointMoving(m, m.joints[j].base) : -1) {
+        const function::JointPose* pose = poseOf(m, j, k);
+        if (!pose)
+            continue;
+        pivots = pivots || m.joints[j].type == Joint::Type::DoublePivot;
+        if (m.joints[j].turns() && std::abs(pose->angle) > 1e-9) {
+            turning = j;
+            ++turns;
+        }
+    }
+    if (!pivots && turns <= 1) {
+        const gp_Trsf half = partMotion(m, part, k, 0.5), whole = partMotion(m, part, k, 1);
+        const gp_Vec by((whole * half.Inverted()).TranslationPart());
+        if (turning < 0)
+            return turnedThenShifted(boxes, gp_Ax1(), 0, by);
+        return turnedThenShifted(boxes, hingeAxis(m, m.joints[turning]),
+                                 poseOf(m, turning, k)->angle * kPi / 180, by);
+    }
+    const TopoDS_Shape shape = solid(boxes);
+    std::vector<TopoDS_Shape> poses;
+    for (int step = 0; step <= 48; ++step)
+        poses.push_back(moved(shape, partMotion(m, part, k, step / 48.0)));
+    return poses;
+}
+
+std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
+                                     const std::vector<Coordinates>& boxes)
+{
+    gp_Vec by(0, 0, 0);
+    if (joint.slides())
+        by.SetCoord(joint.axis + 1, pose.offset);
+    return turnedThenShifted(boxes, hingeAxis(m, joint), pose.angle * kPi / 180, by);
+}
+
+std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
+                                       const std::vector<Coordinates>& boxes)
+{
+    for (const auto& [carried, base, sign] : {std::tuple{b, a, -1}, std::tuple{a, b, 1}})
+        if (const int j = hingeOn(m, carried, base, k); j >= 0)
+            return turnedThenShifted(boxes, hingeAxis(m, m.joints[j]),
+                                     sign * poseOf(m, j, k)->angle * kPi / 180, gp_Vec(0, 0, 0));
+    const TopoDS_Shape shape = solid(boxes);
+    std::vector<TopoDS_Shape> path;
+    for (int step = 1; step <= 40; ++step) {
+        const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
+        path.push_back(moved(shape, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
+    }
+    return path;
+}
+
+}  // namespace fabguide::printable
