@@ -48,10 +48,12 @@ int run(const PrintableArguments& args)
     const printable::Fitted fitted =
         printable::printed(io::readWorkslike(io::readJsonFile(args.input)), {gap}, args.scale, fit);
     if (fit)
-        std::printf("scale %.4g: fits %s mm\n", fitted.scale, args.fit.c_str());
+        std::printf("scale %.4g: fits %s mm%s\n", fitted.scale, args.fit.c_str(),
+                    fitted.turned ? ", turned a quarter about z" : "");
     const function::Model& model = fitted.model;
     const printable::Printable& made = fitted.printable;
-    const printable::Size size = printable::sizeOf(made);
+    const printable::Printable onTheBed = printable::onTheBed(fitted);
+    const printable::Size size = printable::sizeOf(onTheBed);
     std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
     for (const printable::Body& b : made.bodies) {
         GProp_GProps volume;
@@ -64,7 +66,7 @@ int run(const PrintableArguments& args)
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
-    for (const std::string& path : io::writePrintFiles(made, args.output))
+    for (const std::string& path : io::writePrintFiles(onTheBed, args.output))
         std::printf("wrote %s\n", path.c_str());
     return check.invalid.empty() && check.clearance >= gap - 0.01 ? 0 : 1;
 }

@@ -11,6 +11,7 @@
 #include <Bnd_Box.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp_Explorer.hxx>
+#include <gp.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -159,15 +160,18 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
         }
         extent[a] = high - low;
     }
-    // How much larger it could be, 0.01 mm short of each side (meshes are written to a micrometre).
-    auto room = [&](const Size& size) {
+    // How much larger it could be in `bed`, 0.01 mm short of each side (meshes are written to a micrometre).
+    auto room = [](const Size& size, const Size& bed) {
         double r = 1e300;
         for (int a = 0; a < 3; ++a)
-            r = std::min(r, (volume[a] - 0.01) / std::max(size[a], 1e-9));
+            r = std::min(r, (bed[a] - 0.01) / std::max(size[a], 1e-9));
         return r;
     };
     Fitted f;
-    f.scale = std::min(1.0, room(extent));
+    const Size turned{volume[1], volume[0], volume[2]};  // the bed as the model sees it turned a quarter
+    f.turned = std::min(1.0, room(extent, turned)) > std::min(1.0, room(extent, volume)) * (1 + 1e-9);
+    const Size& bed = f.turned ? turned : volume;
+    f.scale = std::min(1.0, room(extent, bed));
     for (int attempt = 0; attempt < 4; ++attempt) {
         f.model = function::scaled(solved, f.scale);
         try {
@@ -178,7 +182,7 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
                  << " x " << volume[2] << " mm";
             throw std::invalid_argument(what.str());
         }
-        const double r = room(sizeOf(f.printable));
+        const double r = room(sizeOf(f.printable), bed);
         if (r >= 1 - 1e-9)
             return f;
         f.scale *= r * (1 - 1e-4);
@@ -187,6 +191,18 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
     what << "the print does not fit the build volume " << volume[0] << " x " << volume[1] << " x "
          << volume[2] << " mm at any scale tried (down to " << f.scale << ")";
     throw std::runtime_error(what.str());
+}
+
+Printable onTheBed(const Fitted& fitted)
+{
+    Printable out = fitted.printable;
+    if (fitted.turned) {
+        gp_Trsf quarter;
+        quarter.SetRotation(gp::OZ(), kPi / 2);
+        for (Body& b : out.bodies)
+            b.shape = moved(b.shape, quarter);
+    }
+    return out;
 }
 
 Fitted printed(const Model& model, const Printer& printer, double scale, const std::optional<Size>& fit)

@@ -47,16 +47,21 @@ using Size = std::array<double, 3>;
 /// The bounding box of the bodies.
 Size sizeOf(const Printable& printable);
 
-/// A model scaled to print on a printer, and its bodies.
+/// A model scaled to print on a printer, and its bodies (as modelled, where its motions are defined).
 struct Fitted {
     double scale = 1;
     function::Model model;
     Printable printable;
+    bool turned = false;  ///< printed turned a quarter about z: the model's x along the bed's depth
 };
 
-/// The solved model at the largest scale, at most 1, whose bodies fit the build volume as modelled (not
-/// turned; the gap stays in mm), 0.01 mm to spare; std::runtime_error when none is found.
+/// The solved model at the largest scale, at most 1, whose bodies fit the build volume (the gap stays in mm),
+/// 0.01 mm to spare, upright as modelled and turned a quarter about z if that lets it print larger;
+/// std::runtime_error when none is found.
 Fitted fitted(const function::Model& solved, const Size& volume, const Printer& printer);
+
+/// The bodies as they go on the printer's bed: turned a quarter about z when the fit says so.
+Printable onTheBed(const Fitted& fitted);
 
 /// The model solved (solvedToPrint), then scaled by `scale`, or fitted to the build volume `fit` when given,
 /// and its bodies.

@@ -69,7 +69,8 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["sweeps"] = sweeps;
     out["notes"] = p.notes;
     out["scale"] = m.scale;
-    out["size"] = printable::sizeOf(p);
+    out["turned"] = m.turned;
+    out["size"] = printable::sizeOf(printable::onTheBed(m));
     if (check) {
         printable::Check c;
         {
@@ -88,7 +89,7 @@ std::vector<std::string> exportPrintable(const py::object& model, double gap, co
 {
     const printable::Fitted m = made(model, gap, scale, fit);
     py::gil_scoped_release release;
-    return io::writePrintFiles(m.printable, folder);
+    return io::writePrintFiles(printable::onTheBed(m), folder);
 }
 
 }  // namespace
@@ -101,10 +102,14 @@ void bindPrintable(py::module_& m)
           "that\n"
           "fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep', 'volume'}], "
           "'sweeps',\n"
-          "'notes', 'scale', 'size' (x, y, z mm), and with check 'clearance' (mm), 'where', 'invalid'}.");
-    m.def("export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
-          py::arg("scale") = 1.0, py::arg("fit") = py::none(),
-          "Write assembly.stl/.3mf/.step and one of each per body into folder; returns the paths.");
+          "'notes', 'scale', 'turned' (a quarter about z to fit), 'size' (x, y, z mm on the bed), and with "
+          "check\n"
+          "'clearance' (mm), 'where', 'invalid'}.");
+    m.def(
+        "export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
+        py::arg("scale") = 1.0, py::arg("fit") = py::none(),
+        "Write assembly.stl/.3mf/.step and one of each per body into folder, as they go on the bed; returns\n"
+        "the paths.");
 }
 
 }  // namespace fabguide::bindings

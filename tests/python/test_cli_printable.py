@@ -154,6 +154,16 @@ def test_a_print_fitted_to_a_build_volume_slices_on_that_bed_as_one_object(fabgu
         config = package.read("Metadata/Slic3r_PE_model.config").decode()
     assert config.count("<object ") == 1
     assert sorted(re.findall(r'type="volume" key="name" value="([^"]+)"', config)) == ["box", "lid", "tray"]
+    # The tablet (320 x 420 mm open) prints larger turned a quarter: its 420 along the bed's 250.
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "tablet", "--fit", "250x210x210")
+    assert run.returncode == 0, run.stdout + run.stderr
+    scale = float(re.search(r"^scale ([0-9.]+): fits 250x210x210 mm, turned a quarter about z$", run.stdout,
+                            re.M).group(1))
+    assert scale == pytest.approx(250 / 420, rel=0.01)
+    assert re.search(r"^size 250\.0 x 19\d\.\d x ", run.stdout, re.M), run.stdout
+    sliced = subprocess.run(["prusa-slicer", "--export-gcode", *bed, "--output", str(tmp_path / "tablet.gcode"),
+                             str(out / "assembly.3mf")], capture_output=True, text=True, timeout=300)
+    assert sliced.returncode == 0, sliced.stdout + sliced.stderr
     # A build volume that is not one is refused by name; one too small for the joints names the scale.
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "250x210")
     assert run.returncode != 0 and "--fit: expected width x depth x height in mm" in run.stderr

@@ -80,7 +80,8 @@ class Printable(properties.Proxy):
         obj.Notes = data["notes"]
         if obj.FitToBuildVolume:
             obj.Scale = data["scale"]
-        obj.PrintSize = "{:.1f} x {:.1f} x {:.1f} mm".format(*data["size"])
+        obj.PrintSize = "{:.1f} x {:.1f} x {:.1f} mm".format(*data["size"]) + (
+            ", turned a quarter on the bed" if data["turned"] else "")
 
 
 CAVITIES = "cavities swept"
