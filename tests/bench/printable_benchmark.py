@@ -24,12 +24,13 @@ def printable(build, name, out, *options):
                          capture_output=True, text=True)
     seconds = time.monotonic() - started
     found = re.search(r"minimum clearance ([0-9.]+) mm", run.stdout)
-    scale = re.search(r"^scale ([0-9.]+):", run.stdout, re.M)
+    scale = re.search(r"^scale ([0-9.]+): fits \S+ mm(, turned)?", run.stdout, re.M)
     size = re.search(r"^size (.*) mm$", run.stdout, re.M)
     return {"ok": run.returncode == 0, "seconds": seconds,
             "bodies": len(re.findall(r"^body ", run.stdout, re.M)),
             "clearance": float(found.group(1)) if found else None,
-            "scale": float(scale.group(1)) if scale else 1.0, "size": size.group(1) if size else "",
+            "scale": float(scale.group(1)) if scale else 1.0, "turned": bool(scale and scale.group(2)),
+            "size": size.group(1) if size else "",
             "notes": re.findall(r"^note: (.*)$", run.stdout, re.M),
             "error": run.stderr.strip().splitlines()[-1] if run.returncode and run.stderr.strip() else ""}
 
@@ -76,8 +77,8 @@ def clearance(result):
 def table(rows):
     lines = ["## Print-in-place (thesis Table 4.1 examples, 4.5)", "",
              "`fabguide printable examples/NAME.workslike.json -o out` (FDM: 0.4 mm gap), then with `--fit {}`: the "
-             "largest scale at which the print fits that build volume as modelled, sliced there by PrusaSlicer "
-             "(`prusa-slicer --export-gcode --bed-shape ... --max-print-height {}` on `assembly.3mf`; 'one object of "
+             "largest scale at which the print fits that build volume upright ('turned': a quarter about z), "
+             "sliced there by PrusaSlicer (`prusa-slicer --export-gcode --bed-shape ... --max-print-height {}` on `assembly.3mf`; 'one object of "
              "N parts' is what PrusaSlicer kept after loading it: the bodies stay where they are printed). "
              "Clearance is the least distance between two bodies as printed and at 32 poses along every "
              "configuration's motion (must be >= the gap). Notes: joints whose round parts stand proud of a "
@@ -86,8 +87,9 @@ def table(rows):
              "| PrusaSlicer |", "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         full, fit = r["full"], r["fitted"]
-        lines.append("| {} | {} | {} | {:.1f} | {:.3g} | {} | {} | {} | {} |".format(
+        lines.append("| {} | {} | {} | {:.1f} | {:.3g}{} | {} | {} | {} | {} |".format(
             r["name"], full["bodies"] or full["error"], clearance(full), full["seconds"], fit["scale"],
+            " turned" if fit["turned"] else "",
             fit["size"], clearance(fit), notes(fit), r["slicer"]))
     return "\n".join(lines)
 
