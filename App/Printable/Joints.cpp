@@ -183,11 +183,15 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
     shapes[joint.base] = cut(shapes[joint.base], span(base, -1, 2 * g + link, reach));
     shapes[joint.base] = fuse(shapes[joint.base], span(base, 0, 2 * g + link + 1, r.pin));
     shapes[joint.part] = fuse(shapes[joint.part], span(pivot, -1 - g, g + link, r.pin));
-    out.bodies.push_back(
-        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
+    out.bodies.push_back({linkName(joint), -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
 }
 
 }  // namespace
+
+std::string linkName(const Joint& joint)
+{
+    return joint.name + " link";
+}
 
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 {
@@ -358,8 +362,7 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
         shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
                                                span(p, 2 * g + link, 2 * g + link + head, r.outer)));
     // The link: a bar with round ends between the pivots, the gap off the faces.
-    out.bodies.push_back(
-        {joint.name + " link", -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
+    out.bodies.push_back({linkName(joint), -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
 }
 
 }  // namespace fabguide::printable

@@ -9,6 +9,9 @@
 
 namespace fabguide::printable {
 
+/// A double pivot's link body: "<joint> link".
+std::string linkName(const Joint& joint);
+
 /// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
 /// yokes hang on), or -1. An edge standing off every other part (the sofa bunk's headrest, hinged 20 mm
 /// behind the seat) hangs on the nearest one within the moving cuboid's thickness; bridge() joins its yokes

@@ -136,6 +136,17 @@ Printable makePrintable(const Model& m, const Printer& printer)
     return out;
 }
 
+std::vector<std::string> bodyNames(const Model& model)
+{
+    std::vector<std::string> names;
+    for (const function::Part& p : model.parts)
+        names.push_back(p.name);
+    for (const Joint& j : model.joints)
+        if (j.type == Joint::Type::DoublePivot)
+            names.push_back(linkName(j));
+    return names;
+}
+
 Size sizeOf(const Printable& printable)
 {
     Bnd_Box bounds;

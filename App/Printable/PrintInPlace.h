@@ -41,6 +41,9 @@ function::Model solvedToPrint(const function::Model& model, double scale);
 /// thin for its geometry at this gap.
 Printable makePrintable(const function::Model& solved, const Printer& printer);
 
+/// The names of the bodies makePrintable makes, in its order: each part's, then each double pivot's link.
+std::vector<std::string> bodyNames(const function::Model& model);
+
 /// Width, depth and height (x, y, z) in mm: of a print's bodies, or of a printer's build volume.
 using Size = std::array<double, 3>;
 

@@ -98,13 +98,16 @@ void bindPrintable(py::module_& m)
 {
     m.def("printable", &printableBodies, py::arg("model"), py::arg("gap") = 0.4, py::arg("check") = true,
           py::arg("scale") = 1.0, py::arg("fit") = py::none(),
-          "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest scale "
-          "that\n"
-          "fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep', 'volume'}], "
-          "'sweeps',\n"
-          "'notes', 'scale', 'turned' (a quarter about z to fit), 'size' (x, y, z mm on the bed), and with "
-          "check\n"
-          "'clearance' (mm), 'where', 'invalid'}.");
+          "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest\n"
+          "scale that fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep',\n"
+          "'volume'}], 'sweeps', 'notes', 'scale', 'turned' (a quarter about z to fit), 'size' (x, y, z\n"
+          "mm on the bed), and with check 'clearance' (mm), 'where', 'invalid'}.");
+    m.def(
+        "printable_body_names",
+        [](const py::object& model) { return printable::bodyNames(io::readWorkslike(toJson(model))); },
+        py::arg("model"),
+        "The names of the bodies printable() makes, in its order, without making them: each part's, then\n"
+        "'<joint> link' per double pivot.");
     m.def(
         "export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
         py::arg("scale") = 1.0, py::arg("fit") = py::none(),

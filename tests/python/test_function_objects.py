@@ -249,3 +249,13 @@ def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc
         assert "Invalid" in reloaded.State and reloaded.Scale == pytest.approx(250 / 543, rel=0.01)
     finally:
         FreeCAD.closeDocument(again.Name)
+
+
+def test_the_printable_body_names_come_without_making_the_bodies(source_dir):
+    # Make Printable creates one Part::Feature per body before the first recompute makes them.
+    with open(os.path.join(source_dir, "examples", "crate-bed.workslike.json")) as f:
+        model = json.load(f)
+    names = fabguide_core.printable_body_names(model)
+    assert names == [b["name"] for b in fabguide_core.printable(model, 0.4, False)["bodies"]]
+    assert names[3:] == ["head pivot left link", "head pivot right link", "foot pivot left link",
+                         "foot pivot right link"]

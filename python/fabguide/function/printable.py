@@ -120,8 +120,7 @@ def create(doc, mech, label=None):
 
 def sync(obj):
     """One Part::Feature per body (named by BodyName), plus one for the swept cavities; returns those added."""
-    names = [b["name"] for b in fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, False,
-                                                         obj.Scale)["bodies"]]
+    names = fabguide_core.printable_body_names(mechanism.model(obj.Mechanism))
     have = {getattr(c, "BodyName", None) for c in obj.Group}
     added = []
     for name in [n for n in names + [CAVITIES] if n not in have]:
