@@ -54,6 +54,16 @@ for path in printable.export(made, os.path.join(OUT, "cabinet", "print")):
         print("  wrote " + os.path.relpath(path, ROOT))
 doc.saveAs(os.path.join(OUT, "cabinet", "cabinet.FCStd"))
 print("  wrote " + os.path.relpath(doc.FileName, ROOT))
+# The same print fitted to a desktop printer's build volume (the saved document keeps it at 1:1).
+made.FitToBuildVolume = True
+doc.recompute()
+if "Invalid" in made.State:
+    sys.exit("the cabinet could not be fitted to the printer: see the messages above")
+print("Cabinet fitted to a {:g} x {:g} x {:g} mm printer: scale {:.3f}, {}, least clearance {:.3f} mm".format(
+    *made.BuildVolume, made.Scale, made.PrintSize, made.MinimumClearance.Value))
+for path in printable.export(made, os.path.join(OUT, "cabinet", "print-desktop")):
+    if path.endswith("assembly.3mf"):
+        print("  wrote " + os.path.relpath(path, ROOT))
 FreeCAD.closeDocument(doc.Name)
 
 
