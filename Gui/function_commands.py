@@ -371,6 +371,7 @@ class ExportPrintable(Command):
         folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the print files",
                                                         os.path.expanduser("~"))
         if folder:
+            doc.recompute()  # what is written is what the Printable shows, made from the mechanism as it is
             try:
                 written = printable.export(made, folder)
             except (ValueError, RuntimeError) as error:

@@ -52,7 +52,7 @@ int run(const PrintableArguments& args)
                     fitted.turned ? ", turned a quarter about z" : "");
     const function::Model& model = fitted.model;
     const printable::Printable& made = fitted.printable;
-    const printable::Printable onTheBed = printable::onTheBed(fitted);
+    const printable::Printable onTheBed = printable::onTheBed(fitted.printable, fitted.turned);
     const printable::Size size = printable::sizeOf(onTheBed);
     std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
     for (const printable::Body& b : made.bodies) {

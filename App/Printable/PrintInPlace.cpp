@@ -204,16 +204,15 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
     throw std::runtime_error(what.str());
 }
 
-Printable onTheBed(const Fitted& fitted)
+Printable onTheBed(Printable printable, bool turned)
 {
-    Printable out = fitted.printable;
-    if (fitted.turned) {
+    if (turned) {
         gp_Trsf quarter;
         quarter.SetRotation(gp::OZ(), kPi / 2);
-        for (Body& b : out.bodies)
+        for (Body& b : printable.bodies)
             b.shape = moved(b.shape, quarter);
     }
-    return out;
+    return printable;
 }
 
 Fitted printed(const Model& model, const Printer& printer, double scale, const std::optional<Size>& fit)

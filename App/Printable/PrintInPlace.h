@@ -63,8 +63,8 @@ struct Fitted {
 /// std::runtime_error when none is found.
 Fitted fitted(const function::Model& solved, const Size& volume, const Printer& printer);
 
-/// The bodies as they go on the printer's bed: turned a quarter about z when the fit says so.
-Printable onTheBed(const Fitted& fitted);
+/// The bodies as they go on the printer's bed: turned a quarter about z when the fit says so (`turned`).
+Printable onTheBed(Printable printable, bool turned);
 
 /// The model solved (solvedToPrint), then scaled by `scale`, or fitted to the build volume `fit` when given,
 /// and its bodies.

@@ -9,6 +9,7 @@
 
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 
@@ -70,7 +71,7 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["notes"] = p.notes;
     out["scale"] = m.scale;
     out["turned"] = m.turned;
-    out["size"] = printable::sizeOf(printable::onTheBed(m));
+    out["size"] = printable::sizeOf(printable::onTheBed(p, m.turned));
     if (check) {
         printable::Check c;
         {
@@ -84,12 +85,23 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     return out;
 }
 
-std::vector<std::string> exportPrintable(const py::object& model, double gap, const std::string& folder,
-                                         double scale, const Fit& fit)
+/// The bodies as made (FreeCAD's Printable shows them), written as they go on the bed.
+std::vector<std::string> writePrintable(const std::vector<py::dict>& bodies, const std::string& folder,
+                                        bool turned)
 {
-    const printable::Fitted m = made(model, gap, scale, fit);
+    printable::Printable p;
+    for (const py::dict& body : bodies) {
+        std::istringstream text(body["brep"].cast<std::string>());
+        TopoDS_Shape shape;
+        BRep_Builder builder;
+        BRepTools::Read(shape, text, builder);
+        if (shape.IsNull())
+            throw io::FormatError("body '" + body["name"].cast<std::string>() +
+                                  "': no shape in its BREP text");
+        p.bodies.push_back({body["name"].cast<std::string>(), -1, -1, shape});
+    }
     py::gil_scoped_release release;
-    return io::writePrintFiles(printable::onTheBed(m), folder);
+    return io::writePrintFiles(printable::onTheBed(std::move(p), turned), folder);
 }
 
 }  // namespace
@@ -109,10 +121,9 @@ void bindPrintable(py::module_& m)
         "The names of the bodies printable() makes, in its order, without making them: each part's, then\n"
         "'<joint> link' per double pivot.");
     m.def(
-        "export_printable", &exportPrintable, py::arg("model"), py::arg("gap"), py::arg("folder"),
-        py::arg("scale") = 1.0, py::arg("fit") = py::none(),
-        "Write assembly.stl/.3mf/.step and one of each per body into folder, as they go on the bed; returns\n"
-        "the paths.");
+        "write_printable", &writePrintable, py::arg("bodies"), py::arg("folder"), py::arg("turned") = false,
+        "Write bodies ([{'name', 'brep'}], as printable() makes them) as assembly.stl/.3mf/.step and one of\n"
+        "each per body into folder, turned a quarter about z when `turned`; returns the paths.");
 }
 
 }  // namespace fabguide::bindings

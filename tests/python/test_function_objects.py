@@ -235,6 +235,17 @@ def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc
     assert size[0] == pytest.approx(250, abs=0.05) and size[1] <= 210 and size[2] <= 210
     assert made.MinimumClearance.Value == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
     assert made.getEditorMode("Scale") == ["ReadOnly"]
+    # Export writes the bodies as made, at once; after an edit it asks for a recompute first, naming the edit.
+    import Part
+    written = printable.export(made, str(tmp_path / "print"))
+    step = Part.read([p for p in written if p.endswith("assembly.step")][0])
+    assert [step.BoundBox.XLength, step.BoundBox.YLength] == pytest.approx(size[:2], abs=0.1)
+    lid = doc.getObjectsByLabel("lid")[0]
+    lid.Height = lid.Height.Value + 5
+    with pytest.raises(printable.PrintableError, match=r"\(lid changed\); recompute first"):
+        printable.export(made, str(tmp_path / "stale"))
+    lid.Height = lid.Height.Value - 5
+    doc.recompute()
     path = str(tmp_path / "fitted.FCStd")
     doc.saveAs(path)
     FreeCAD.closeDocument(doc.Name)
@@ -259,3 +270,21 @@ def test_the_printable_body_names_come_without_making_the_bodies(source_dir):
     assert names == [b["name"] for b in fabguide_core.printable(model, 0.4, False)["bodies"]]
     assert names[3:] == ["head pivot left link", "head pivot right link", "foot pivot left link",
                          "foot pivot right link"]
+
+
+def test_a_printable_turned_to_fit_is_shown_as_modelled_and_exported_turned(doc, source_dir, tmp_path):
+    import Part
+    from fabguide.function import printable
+
+    mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "tablet.workslike.json"))
+    doc.recompute()
+    made = printable.create(doc, mech)
+    made.FitToBuildVolume = True  # 250 x 210 x 210: the 420 mm long open tablet lies along the 250
+    doc.recompute()
+    assert made.TurnedOnBed and made.PrintSize.endswith(", turned a quarter on the bed")
+    assert made.Scale == pytest.approx(250 / 420, rel=0.01)
+    shown = Part.makeCompound([c.Shape for c in made.Group if c.BodyName != printable.CAVITIES]).BoundBox
+    assert shown.YLength == pytest.approx(250, abs=0.05)  # beside the mechanism, as modelled
+    written = printable.export(made, str(tmp_path))
+    exported = Part.read([p for p in written if p.endswith("assembly.step")][0]).BoundBox
+    assert exported.XLength == pytest.approx(250, abs=0.05) and exported.YLength == pytest.approx(shown.XLength)

@@ -32,6 +32,8 @@ class Printable(properties.Proxy):
             "The printer's build volume in mm: width (x), depth (y), height (z); the print is not turned",
             FreeCAD.Vector(250, 210, 210))
         add(obj, "App::PropertyString", "PrintSize", "Result", "Width x depth x height of the print", mode=1)
+        add(obj, "App::PropertyBool", "TurnedOnBed", "Result",
+            "Fitted turned a quarter about z: exported so, shown as modelled", False, mode=1)
         add(obj, "App::PropertyBool", "ShowCavities", "Printable", "Show the volumes swept into cavities", False)
         add(obj, "App::PropertyBool", "CheckMotion", "Printable",
             "Measure the clearance at 32 poses along every configuration's motion", True)
@@ -80,6 +82,7 @@ class Printable(properties.Proxy):
         obj.Notes = data["notes"]
         if obj.FitToBuildVolume:
             obj.Scale = data["scale"]
+        obj.TurnedOnBed = data["turned"]
         obj.PrintSize = "{:.1f} x {:.1f} x {:.1f} mm".format(*data["size"]) + (
             ", turned a quarter on the bed" if data["turned"] else "")
 
@@ -139,5 +142,15 @@ def is_printable(obj):
 
 
 def export(obj, folder):
-    """assembly.stl/.3mf/.step and one of each per body into folder; the paths written."""
-    return fabguide_core.export_printable(mechanism.model(obj.Mechanism), obj.Gap.Value, folder, obj.Scale, fit(obj))
+    """assembly.stl/.3mf/.step and one of each per body into folder, the bodies as made (turned a quarter on the
+    bed when the fit says so); the paths written."""
+    stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State or "Invalid" in o.State]
+    if stale:
+        raise PrintableError("Printable '{}': not made from the mechanism as it stands ({} changed); recompute first"
+                             .format(obj.Label, ", ".join(stale)))
+    made = [c for c in obj.Group if getattr(c, "BodyName", CAVITIES) != CAVITIES]
+    empty = [c.Label for c in made if c.Shape.isNull()]
+    if empty:
+        raise PrintableError("Printable '{}': {} not made yet; recompute it first".format(obj.Label, ", ".join(empty)))
+    bodies = [{"name": c.BodyName, "brep": c.Shape.exportBrepToString()} for c in made]
+    return fabguide_core.write_printable(bodies, folder, obj.TurnedOnBed)
