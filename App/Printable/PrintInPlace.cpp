@@ -54,6 +54,91 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
         }
 }
 
+/// Each part's solid cuboids at their gapped coordinates, less its own cavities.
+std::vector<TopoDS_Shape> partSolids(const Model& m, const std::vector<Coordinates>& at)
+{
+    std::vector<TopoDS_Shape> shapes;
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        TopoDS_Shape s = solid(m, static_cast<int>(p), at);
+        for (int c : m.parts[p].cuboids)
+            if (m.cuboids[c].cavity())
+                s = cut(s, box(m.cuboids[c].coordinates));
+        shapes.push_back(s);
+    }
+    return shapes;
+}
+
+/// Cavities (4.5.1): what each inner part sweeps, with its clearance, leaves the enclosing part.
+void cutCavities(const Model& m, const std::vector<Coordinates>& at, double g,
+                 std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    for (const function::FitInside& f : m.fitInside) {
+        if (f.configuration < 0)
+            continue;
+        for (int p : f.inner) {
+            const std::vector<TopoDS_Shape> swept = sweep(m, p, f.configuration, boxesOf(m, p, at, g));
+            out.sweeps.push_back(compound(swept));
+            shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
+        }
+    }
+}
+
+/// Likewise a part turning on a hinge clears the part its yokes sit on: a thick lid's edge below the axis
+/// sweeps a quarter round into the body.
+void clearHingeBases(const Model& m, const std::vector<Coordinates>& at, double g,
+                     std::vector<TopoDS_Shape>& shapes)
+{
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+        const Joint& joint = m.joints[j];
+        const int other = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
+        for (size_t k = 0; k < m.configurations.size() && other >= 0; ++k)
+            if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
+                shapes[function::partOf(m, other)] =
+                    cut(shapes[function::partOf(m, other)],
+                        hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
+    }
+}
+
+/// Joint geometry (4.5.2): hinges and sliding hinges, double pivots, and rails for slides no cavity guides.
+void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
+               std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+        const Joint& joint = m.joints[j];
+        if (joint.turns())
+            addHinge(m, static_cast<int>(j), at, g, shapes, out);
+        else if (joint.type == Joint::Type::DoublePivot)
+            addDoublePivot(m, static_cast<int>(j), g, shapes, out);
+        else if (std::none_of(m.fitInside.begin(), m.fitInside.end(), [&](const function::FitInside& f) {
+                     return f.cavity >= 0 &&
+                            std::find(f.inner.begin(), f.inner.end(), joint.part) != f.inner.end();
+                 }))
+            addRails(m, static_cast<int>(j), at, g, shapes, out);
+    }
+}
+
+/// The parts' shapes as bodies, before the links, faces merged; a part OpenCASCADE lost is an error, one cut
+/// in pieces a note.
+void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    for (size_t p = 0; p < m.parts.size(); ++p) {
+        ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);
+        unify.Build();
+        int pieces = 0;
+        for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
+            ++pieces;
+        if (pieces == 0 || volumeOf(unify.Shape()) < 1e-6)  // OpenCASCADE lost it without an error
+            throw std::runtime_error(
+                "geometry: nothing is left of part '" + m.parts[p].name +
+                "' after its cavities and joints were cut; try another --gap or --scale");
+        if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
+            out.notes.push_back(m.parts[p].name + ": falls apart into " + std::to_string(pieces) +
+                                " pieces; check which way its neighbours' joints turn");
+        out.bodies.insert(out.bodies.begin() + static_cast<long>(p),
+                          {m.parts[p].name, static_cast<int>(p), -1, unify.Shape()});
+    }
+}
+
 }  // namespace
 
 Model solvedToPrint(const Model& model, double scale)
@@ -73,66 +158,13 @@ Printable makePrintable(const Model& m, const Printer& printer)
     Printable out;
     const double g = printer.gap;
     const std::vector<Coordinates> at = gapped(m, g);
-    std::vector<TopoDS_Shape> shapes;
-    for (size_t p = 0; p < m.parts.size(); ++p) {
-        TopoDS_Shape s = solid(m, static_cast<int>(p), at);
-        for (int c : m.parts[p].cuboids)
-            if (m.cuboids[c].cavity())
-                s = cut(s, box(m.cuboids[c].coordinates));
-        shapes.push_back(s);
-    }
-    // Cavities (4.5.1): what each inner part sweeps, with its clearance, leaves the enclosing part.
-    for (const function::FitInside& f : m.fitInside) {
-        if (f.configuration < 0)
-            continue;
-        for (int p : f.inner) {
-            const std::vector<TopoDS_Shape> swept = sweep(m, p, f.configuration, boxesOf(m, p, at, g));
-            out.sweeps.push_back(compound(swept));
-            shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
-        }
-    }
-    // Likewise a part turning on a hinge clears the part its yokes sit on: a thick lid's edge below the axis
-    // sweeps a quarter round into the body.
-    for (size_t j = 0; j < m.joints.size(); ++j) {
-        const Joint& joint = m.joints[j];
-        const int other = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
-        for (size_t k = 0; k < m.configurations.size() && other >= 0; ++k)
-            if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
-                shapes[function::partOf(m, other)] =
-                    cut(shapes[function::partOf(m, other)],
-                        hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
-    }
-    // Two neighbours that both move (doors meeting in the middle) clear what each sweeps past the other.
+    std::vector<TopoDS_Shape> shapes = partSolids(m, at);
+    cutCavities(m, at, g, shapes, out);
+    clearHingeBases(m, at, g, shapes);
     for (size_t k = 0; k < m.configurations.size(); ++k)
         clearNeighbours(m, static_cast<int>(k), at, g, shapes);
-    for (size_t j = 0; j < m.joints.size(); ++j) {
-        const Joint& joint = m.joints[j];
-        if (joint.turns())
-            addHinge(m, static_cast<int>(j), at, g, shapes, out);
-        else if (joint.type == Joint::Type::DoublePivot)
-            addDoublePivot(m, static_cast<int>(j), g, shapes, out);
-        else if (std::none_of(m.fitInside.begin(), m.fitInside.end(), [&](const function::FitInside& f) {
-                     return f.cavity >= 0 &&
-                            std::find(f.inner.begin(), f.inner.end(), joint.part) != f.inner.end();
-                 }))
-            addRails(m, static_cast<int>(j), at, g, shapes, out);
-    }
-    for (size_t p = 0; p < m.parts.size(); ++p) {
-        ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);
-        unify.Build();
-        int pieces = 0;
-        for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
-            ++pieces;
-        if (pieces == 0 || volumeOf(unify.Shape()) < 1e-6)  // OpenCASCADE lost it without an error
-            throw std::runtime_error(
-                "geometry: nothing is left of part '" + m.parts[p].name +
-                "' after its cavities and joints were cut; try another --gap or --scale");
-        if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
-            out.notes.push_back(m.parts[p].name + ": falls apart into " + std::to_string(pieces) +
-                                " pieces; check which way its neighbours' joints turn");
-        out.bodies.insert(out.bodies.begin() + static_cast<long>(p),
-                          {m.parts[p].name, static_cast<int>(p), -1, unify.Shape()});
-    }
+    addJoints(m, at, g, shapes, out);
+    addBodies(m, shapes, out);
     return out;
 }
 
