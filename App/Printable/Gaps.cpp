@@ -45,7 +45,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
     for (size_t p = 0; p < m.parts.size(); ++p)
         for (int c : m.parts[p].cuboids)
             partOf[c] = static_cast<int>(p);
-    std::vector<std::array<bool, 6>> steps(m.cuboids.size(), std::array<bool, 6>{});
+    std::vector<std::array<double, 6>> steps(m.cuboids.size(), std::array<double, 6>{});
     const double hair = 1e-6;
     for (int k = -1; k < static_cast<int>(m.configurations.size()); ++k) {
         std::vector<Coordinates> posed(m.cuboids.size());
@@ -82,10 +82,11 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                             m.cuboids[b].cavity() &&  // no wall there: the cavity opens
                             std::abs(m.cuboids[b].coordinates[side] -
                                      m.cuboids[m.cuboids[b].within].coordinates[side]) < hair;
-                        if (std::abs(ca[side] - cb[facing]) < hair && !opening)
+                        const double apart = high ? cb[facing] - ca[side] : ca[side] - cb[facing];
+                        if (apart > -hair && apart < gap - hair && !opening)
                             if (const int s = modelledSide(m, partOf[a], static_cast<int>(a), k, side);
                                 s >= 0)
-                                steps[a][s] = true;
+                                steps[a][s] = std::max(steps[a][s], gap - std::max(apart, 0.0));
                     }
                 }
             }
@@ -94,8 +95,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
     for (size_t c = 0; c < m.cuboids.size(); ++c) {
         Coordinates x = m.cuboids[c].coordinates;
         for (int s = 0; s < 6; ++s)
-            if (steps[c][s])
-                x[s] += s % 2 ? -gap : gap;
+            x[s] += s % 2 ? -steps[c][s] : steps[c][s];
         out.push_back(x);
     }
     // Cuboids of one part stay joined: where one face stepped back, the cuboid glued to it follows.
