@@ -95,8 +95,8 @@ void addPrintableCommand(CLI::App& app)
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
     cmd->add_option("--fit", args->fit,
-                    "print at the largest scale (at most 1) that fits this build volume, WxDxH in mm as "
-                    "modelled, e.g. 250x210x210")
+                    "print at the largest scale (at most 1) that fits this build volume, WxDxH in mm, e.g. "
+                    "250x210x210 (upright; turned a quarter about z if that prints larger)")
         ->check(CLI::Validator(
             [](const std::string& text) {
                 return buildVolume(text) ? std::string()
