@@ -29,7 +29,7 @@ class Printable(properties.Proxy):
         add(obj, "App::PropertyBool", "FitToBuildVolume", "Printable",
             "Print at the largest scale (at most 1) that fits the build volume; sets Scale", False)
         add(obj, "App::PropertyVector", "BuildVolume", "Printable",
-            "The printer's build volume in mm: width (x), depth (y), height (z); the print is not turned",
+            "The printer's build volume in mm: width (x), depth (y), height (z); the print may turn a quarter about z",
             FreeCAD.Vector(250, 210, 210))
         add(obj, "App::PropertyString", "PrintSize", "Result", "Width x depth x height of the print", mode=1)
         add(obj, "App::PropertyBool", "TurnedOnBed", "Result",
