@@ -125,28 +125,39 @@ bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, do
     return true;
 }
 
-bool effective(const Design& design, const Eigen::VectorXd& X)
+namespace {
+
+/// E(X) of thesis 5.3.5.1 term by term: calls broken(name) for each effectiveness constraint X breaks, until
+/// it returns false.
+template <typename Broken>
+void visitBroken(const Design& design, const Eigen::VectorXd& X, Broken&& broken)
 {
     for (const DesignConstraint& bound : design.bounds)
-        if (bound.expression.value(X) > 1e-7)
-            return false;
+        if (bound.expression.value(X) > 1e-7 && !broken(bound.name))
+            return;
     for (const InnerVolume& volume : design.innerVolumes)
         for (size_t b = 0; b < design.boards.size(); ++b)
-            if (intrudes(volume, static_cast<int>(b), X))
-                return false;
-    return true;
+            if (intrudes(volume, static_cast<int>(b), X) &&
+                !broken(volume.name + " (entered by " + design.boards[b].id + ")"))
+                return;
+}
+
+}  // namespace
+
+bool effective(const Design& design, const Eigen::VectorXd& X)
+{
+    bool holds = true;
+    visitBroken(design, X, [&](const std::string&) { return holds = false; });
+    return holds;
 }
 
 std::vector<std::string> ineffective(const Design& design, const Eigen::VectorXd& X)
 {
     std::vector<std::string> broken;
-    for (const DesignConstraint& bound : design.bounds)
-        if (bound.expression.value(X) > 1e-7)
-            broken.push_back(bound.name);
-    for (const InnerVolume& volume : design.innerVolumes)
-        for (size_t b = 0; b < design.boards.size(); ++b)
-            if (intrudes(volume, static_cast<int>(b), X))
-                broken.push_back(volume.name + " (entered by " + design.boards[b].id + ")");
+    visitBroken(design, X, [&](std::string name) {
+        broken.push_back(std::move(name));
+        return true;
+    });
     return broken;
 }
 
