@@ -102,6 +102,15 @@ Linear sum(const std::vector<Linear>& terms)
     return total;
 }
 
+/// Edge snapping (5.1) of boards a and b added to the design; false when they do not touch (nothing added).
+bool addSnapping(Design& design, int a, int b)
+{
+    const material::Snapping snap = material::snapping(design, a, b);
+    design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
+    design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
+    return !snap.equalities.empty();
+}
+
 /// One entry of "constraints" being read: the design it adds to, its fields, and the design's values now.
 struct ConstraintReader {
     Design& design;
@@ -178,12 +187,9 @@ struct ConstraintReader {
         const std::vector<int> parts = partsOf(design, c, 2);
         if (parts.size() != 2)
             throw FormatError(c.pathOf("parts") + ": snap takes two parts");
-        const material::Snapping snap = material::snapping(design, parts[0], parts[1]);
-        if (snap.equalities.empty())
+        if (!addSnapping(design, parts[0], parts[1]))
             throw FormatError(path + ": " + design.boards[parts[0]].id + " and " +
                               design.boards[parts[1]].id + " do not touch");
-        design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
-        design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
     }
     void rangeKind(const std::string& path)
     {
@@ -298,11 +304,8 @@ void addSettingConstraints(const Fields& settings, double thickness, Design& des
     if (!settings.flag("snap", true))
         return;
     for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
-        for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b) {
-            const material::Snapping snap = material::snapping(design, a, b);
-            design.equalities.insert(design.equalities.end(), snap.equalities.begin(), snap.equalities.end());
-            design.bounds.insert(design.bounds.end(), snap.bounds.begin(), snap.bounds.end());
-        }
+        for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b)
+            addSnapping(design, a, b);
 }
 
 void readInnerVolumes(const Fields& root, Design& design)
