@@ -11,6 +11,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 import fabguide_core
+from fabguide import cuboids
 from fabguide.material import design, parametric
 from fabguide_gui import resources, viewproviders
 
@@ -346,8 +347,7 @@ class SuggestPanel:
                 continue
             box = self.doc.getObjectsByLabel(item.text())[0]
             size = by_id[item.text()]["size"]
-            thin = size.index(min(size))
-            for axis in (a for a in range(3) if a != thin):
+            for axis in cuboids.in_plane(size):
                 ref = "{}.size.{}".format(item.text(), "xyz"[axis])
                 obj = design.add_constraint(self.design, "fixed", "Locked " + ref, Refs=[ref], Value=size[axis])
                 viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
@@ -360,21 +360,22 @@ class SuggestPanel:
         self.apply()
         self.start()
 
-    def accept(self):
+    def end_search(self):
+        """Stops the search and waits for it: the panel is going."""
         self.closed = True
         self.stop()
         if self.thread:
             self.thread.join()
+
+    def accept(self):
+        self.end_search()
         if self.chosen is not None:
             self.apply()
         FreeCADGui.Control.closeDialog()
         return True
 
     def reject(self):
-        self.closed = True
-        self.stop()
-        if self.thread:
-            self.thread.join()
+        self.end_search()
         self.preview(self.original)
         FreeCADGui.Control.closeDialog()
         return True

@@ -25,6 +25,12 @@ def coordinates(box):
     return [c for a in range(3) for c in (base[a], base[a] + sizes[a])]
 
 
+def in_plane(sizes):
+    """A board's two in-plane axes, x before y before z: all but the axis of its thinnest side."""
+    thin = sizes.index(min(sizes))
+    return [a for a in range(3) if a != thin]
+
+
 def set_coordinates(box, values, tolerance=1e-9):
     """Moves and sizes the box to [left, right, near, far, bottom, top]; returns whether anything changed."""
     current = coordinates(box)

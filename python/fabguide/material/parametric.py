@@ -55,8 +55,7 @@ def sizes(obj):
     out = []
     for box in design.boxes(obj):
         lengths = [getattr(box, name).Value for name in cuboids.SIZES]
-        thin = lengths.index(min(lengths))
-        out += [lengths[a] for a in range(3) if a != thin]
+        out += [lengths[a] for a in cuboids.in_plane(lengths)]
     return out
 
 
