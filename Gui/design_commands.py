@@ -80,11 +80,8 @@ class DesignFromBoxes(Command):
                 m for m in all_in(doc, master_board.is_master_board) if abs(m.Thickness.Value - thickness) < 1e-6]
             if not masters:
                 masters = [master_board.create(doc, thickness=thickness)]
-                viewproviders.ViewProviderMasterBoard(masters[0].ViewObject)
             obj = design.create(doc, boxes, masters)
-            viewproviders.ViewProviderFlatpackDesign(obj.ViewObject)
-            for box in boxes:
-                box.ViewObject.ShapeColor = viewproviders.BOARD_COLOUR
+            decorate(obj)
             doc.recompute()
         if "Invalid" in obj.State:
             tell("{}: {}".format(obj.Label, obj.Status or "see the report view"))
@@ -109,7 +106,7 @@ class ImportFlatpack(Command):
 
 
 def decorate(obj):
-    """View providers for a design and what it holds (after an import)."""
+    """View providers for a design and what it holds, its boxes in the board colour."""
     viewproviders.ViewProviderFlatpackDesign(obj.ViewObject)
     for box in design.boxes(obj):
         box.ViewObject.ShapeColor = viewproviders.BOARD_COLOUR
