@@ -217,7 +217,9 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
     if (!json.contains("poses") || !json["poses"].is_object())
         throw FormatError(c.pathOf("poses") + ": must map joint names to angles (degrees) or offsets (mm)");
-    for (const auto& [name, value] : json["poses"].items()) {
+    for (const auto& item : json["poses"].items()) {
+        const std::string& name = item.key();
+        const nlohmann::json& value = item.value();
         const std::string here = c.pathOf("poses") + "." + name;
         const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
                                         [&](const function::Joint& j) { return j.name == name; });
