@@ -6,17 +6,15 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from fabguide.function import configuration, joints, mechanism
-from fabguide_gui import function_viewproviders as vp
+from fabguide_gui import editing, function_viewproviders as vp
 from fabguide_gui.posing import Poser
 
 NEW = "New configuration"
 
 
-def close_panel():
-    """Leaves edit mode if the panel came from there (its unsetEdit closes the dialog), else closes it."""
-    if FreeCADGui.ActiveDocument and FreeCADGui.ActiveDocument.getInEdit():
-        FreeCADGui.ActiveDocument.resetEdit()
-    else:
+def close_panel(doc):
+    """Leaves edit mode in doc if the panel came from there (its unsetEdit closes the dialog), else closes it."""
+    if not editing.end_edit(doc):
         FreeCADGui.Control.closeDialog()
 
 
@@ -156,7 +154,7 @@ class ConfigurationsPanel:
 
     def close(self):
         self.cleanup()
-        close_panel()
+        close_panel(self.mech.Document)
 
     def cleanup(self):
         """Stops the animation and removes the preview from the 3-D view (idempotent)."""

@@ -8,7 +8,7 @@ import FreeCADGui
 
 from fabguide import cuboids
 from fabguide.function import joints, mechanism, parts, printable, relationships, workslike_file
-from fabguide_gui import function_viewproviders as vp
+from fabguide_gui import editing, function_viewproviders as vp
 from fabguide_gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
 
 
@@ -284,7 +284,7 @@ class Configurations(Command):
     def run(self, doc):
         mech = the_one(doc, mechanism.is_mechanism, "mechanism to pose")
         if mech is not None:
-            FreeCADGui.ActiveDocument.setEdit(mech.Name)
+            editing.edit(mech)
 
 
 class ImportWorkslike(Command):

@@ -4,7 +4,7 @@ import os
 
 import FreeCADGui
 
-from fabguide_gui import resources
+from fabguide_gui import editing, resources
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
 
@@ -40,13 +40,13 @@ class LayoutPanel:
 
     def accept(self):
         self.layout.Document.commitTransaction()
-        FreeCADGui.ActiveDocument.resetEdit()
+        editing.end_edit(self.layout.Document)
         return True
 
     def reject(self):
         document = self.layout.Document
         document.abortTransaction()
         document.recompute()
-        FreeCADGui.ActiveDocument.resetEdit()
+        editing.end_edit(document)
         return True
 

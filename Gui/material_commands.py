@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from fabguide.material import board, layout, master_board, techdraw
-from fabguide_gui import viewproviders
+from fabguide_gui import editing, viewproviders
 from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
 
 
@@ -85,7 +85,7 @@ class MakeLayout(Command):
             obj = layout.create(doc, boards, masters)
             viewproviders.ViewProviderLayout(obj.ViewObject)
             doc.recompute()
-        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        editing.edit(obj)
 
 
 class ExportCutSheets(Command):

@@ -121,7 +121,7 @@ class RelationshipPanel:
             self.solve()
         self.uncolour()
         self.rel.Document.commitTransaction()
-        close_panel()
+        close_panel(self.rel.Document)
         FreeCAD.Console.PrintMessage("{}: {}\n".format(self.rel.Label, self.rel.Status))
         return True
 
@@ -129,7 +129,7 @@ class RelationshipPanel:
         self.uncolour()
         self.rel.Document.abortTransaction()
         self.rel.Document.recompute()
-        close_panel()
+        close_panel(self.rel.Document)
         return True
 
     def getStandardButtons(self):

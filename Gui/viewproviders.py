@@ -2,7 +2,7 @@
 import FreeCADGui
 
 from fabguide import properties
-from fabguide_gui import resources
+from fabguide_gui import editing, resources
 
 SHEET_COLOUR = (0.91, 0.83, 0.65)  # the master boards in a layout: raw wood
 PART_COLOUR = (0.24, 0.49, 0.79)   # the parts laid out on them
@@ -28,7 +28,7 @@ class EditedByDoubleClick:
     """Mixin for view providers whose setEdit opens a task panel."""
 
     def doubleClicked(self, vobj):
-        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name)
+        editing.edit(vobj.Object)
         return True
 
 
@@ -112,7 +112,7 @@ class ViewProviderVolume(ViewProvider):
     (FreeCAD's transform dragger); its Length, Width and Height are in the property view."""
 
     def doubleClicked(self, vobj):
-        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 1)  # 1: Transform
+        editing.edit(vobj.Object, 1)  # 1: Transform
         return True
 
     def getIcon(self):
