@@ -146,7 +146,7 @@ std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count)
 {
     constexpr double window = 0.03, distinct = 1.0;  // usage; mm
-    const int all = static_cast<int>(pool.size());  // read before the move: argument order is unspecified
+    const int all = static_cast<int>(pool.size());   // read before the move: argument order is unspecified
     pool = keepBest(std::move(pool), all);
     std::vector<Suggestion> chosen;
     if (pool.empty() || pool.front().design.wastage >= start.wastage)
