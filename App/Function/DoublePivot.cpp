@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 namespace fabguide::function {
 
@@ -194,15 +195,19 @@ std::optional<std::pair<double, double>> leastChange(Placement& p, const Range& 
     upper[0] = range.highA;
     lower[1] = range.lowB;
     upper[1] = range.highB;
-    alglib::minnlcstate state;
-    alglib::minnlccreate(2, x0, state);
-    alglib::minnlcsetbc(state, lower, upper);
-    alglib::minnlcsetnlc(state, static_cast<int>(p.poses.size()), 0);
-    alglib::minnlcsetcond(state, 1e-10, 200);
-    alglib::minnlcsetalgoslp(state);  // 3x faster than SQP on these two-variable problems
-    alglib::minnlcoptimize(state, evaluate, nullptr, &p);
     alglib::minnlcreport report;
-    alglib::minnlcresults(state, result, report);
+    try {
+        alglib::minnlcstate state;
+        alglib::minnlccreate(2, x0, state);
+        alglib::minnlcsetbc(state, lower, upper);
+        alglib::minnlcsetnlc(state, static_cast<int>(p.poses.size()), 0);
+        alglib::minnlcsetcond(state, 1e-10, 200);
+        alglib::minnlcsetalgoslp(state);  // 3x faster than SQP on these two-variable problems
+        alglib::minnlcoptimize(state, evaluate, nullptr, &p);
+        alglib::minnlcresults(state, result, report);
+    } catch (const alglib::ap_error& e) {  // no third-party exception leaves the core
+        throw std::runtime_error("placing a double pivot failed: " + e.msg);
+    }
     if (report.terminationtype <= 0 || !keepsLength(p, result[0], result[1]))
         return std::nullopt;
     return std::pair{result[0], result[1]};

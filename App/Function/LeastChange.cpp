@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace fabguide::function {
 
@@ -52,48 +53,52 @@ std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
     const int n = static_cast<int>(target.size());
     if (n == 0)
         return {violation(target, rows) <= tolerance, target};
-    alglib::minqpstate state;
-    alglib::minqpcreate(n, state);
-    // Σ (x − t)² = xᵀx − 2tᵀx + const: Hessian 2I, linear term −2t (ALGLIB minimises ½xᵀAx + bᵀx).
-    alglib::sparsematrix hessian;
-    alglib::sparsecreate(n, n, n, hessian);
-    alglib::real_1d_array linear, scale, x0;
-    linear.setlength(n);
-    scale.setlength(n);
-    x0.setlength(n);
-    for (int i = 0; i < n; ++i) {
-        alglib::sparseset(hessian, i, i, 2.0);
-        linear[i] = -2 * target[i];
-        scale[i] = 1;
-        x0[i] = start ? (*start)[i] : target[i];
-    }
-    alglib::sparseconverttocrs(hessian);
-    alglib::minqpsetquadratictermsparse(state, hessian, true);
-    alglib::minqpsetlinearterm(state, linear);
-    alglib::minqpsetscale(state, scale);
-    alglib::minqpsetstartingpoint(state, x0);
-    const int k = static_cast<int>(rows.size());
-    if (k > 0) {
-        alglib::sparsematrix c;
-        alglib::sparsecreate(k, n, c);
-        alglib::real_1d_array lower, upper;
-        lower.setlength(k);
-        upper.setlength(k);
-        for (int r = 0; r < k; ++r) {
-            for (const auto& [variable, coefficient] : rows[r].terms)
-                alglib::sparseadd(c, r, variable, coefficient);
-            lower[r] = rows[r].lower;
-            upper[r] = rows[r].upper;
-        }
-        alglib::sparseconverttocrs(c);
-        alglib::minqpsetlc2(state, c, lower, upper, k);
-    }
-    // 1e-12: looser stopping tolerances can report success with errors up to 0.1 mm (DESIGN.md).
-    alglib::minqpsetalgosparseipm(state, 1e-12);
-    alglib::minqpoptimize(state);
     alglib::real_1d_array result;
     alglib::minqpreport report;
-    alglib::minqpresults(state, result, report);
+    try {
+        alglib::minqpstate state;
+        alglib::minqpcreate(n, state);
+        // Σ (x − t)² = xᵀx − 2tᵀx + const: Hessian 2I, linear term −2t (ALGLIB minimises ½xᵀAx + bᵀx).
+        alglib::sparsematrix hessian;
+        alglib::sparsecreate(n, n, n, hessian);
+        alglib::real_1d_array linear, scale, x0;
+        linear.setlength(n);
+        scale.setlength(n);
+        x0.setlength(n);
+        for (int i = 0; i < n; ++i) {
+            alglib::sparseset(hessian, i, i, 2.0);
+            linear[i] = -2 * target[i];
+            scale[i] = 1;
+            x0[i] = start ? (*start)[i] : target[i];
+        }
+        alglib::sparseconverttocrs(hessian);
+        alglib::minqpsetquadratictermsparse(state, hessian, true);
+        alglib::minqpsetlinearterm(state, linear);
+        alglib::minqpsetscale(state, scale);
+        alglib::minqpsetstartingpoint(state, x0);
+        const int k = static_cast<int>(rows.size());
+        if (k > 0) {
+            alglib::sparsematrix c;
+            alglib::sparsecreate(k, n, c);
+            alglib::real_1d_array lower, upper;
+            lower.setlength(k);
+            upper.setlength(k);
+            for (int r = 0; r < k; ++r) {
+                for (const auto& [variable, coefficient] : rows[r].terms)
+                    alglib::sparseadd(c, r, variable, coefficient);
+                lower[r] = rows[r].lower;
+                upper[r] = rows[r].upper;
+            }
+            alglib::sparseconverttocrs(c);
+            alglib::minqpsetlc2(state, c, lower, upper, k);
+        }
+        // 1e-12: looser stopping tolerances can report success with errors up to 0.1 mm (DESIGN.md).
+        alglib::minqpsetalgosparseipm(state, 1e-12);
+        alglib::minqpoptimize(state);
+        alglib::minqpresults(state, result, report);
+    } catch (const alglib::ap_error& e) {  // no third-party exception leaves the core
+        throw std::runtime_error("the least-change solve failed: " + e.msg);
+    }
     Eigen::VectorXd x(n);
     for (int i = 0; i < n; ++i)
         x[i] = result[i];
