@@ -342,6 +342,7 @@ void checkSatisfied(const Design& design)
 
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
 {
+    checkNumbers(document);
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};

@@ -1,5 +1,7 @@
 #include "IO/Json.h"
 
+#include "IO/Output.h"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -13,24 +15,67 @@ std::string show(double x)
     return out.str();
 }
 
+namespace {
+
+/// The path of the first value of `value` that checkNumbers refuses, with why, or "".
+std::string refused(const nlohmann::json& value, int depth)
+{
+    if (depth > kDeepestNesting)
+        return ": nested more than " + std::to_string(kDeepestNesting) + " levels deep";
+    if (value.is_number()) {
+        const double x = value.get<double>();
+        return std::abs(x) <= kLargestNumber ? "" : ": " + value.dump() + " is beyond ±1000000";
+    }
+    if (value.is_array())
+        for (size_t k = 0; k < value.size(); ++k)
+            if (std::string why = refused(value[k], depth + 1); !why.empty())
+                return "[" + std::to_string(k) + "]" + why;
+    if (value.is_object())
+        for (const auto& item : value.items())
+            if (std::string why = refused(item.value(), depth + 1); !why.empty())
+                return "." + item.key() + why;
+    return "";
+}
+
+}  // namespace
+
+void checkNumbers(const nlohmann::json& document)
+{
+    std::string why = refused(document, 0);
+    if (!why.empty())
+        throw FormatError(why[0] == '.' ? why.substr(1) : "document" + why);
+}
+
 nlohmann::json readJsonFile(const std::string& path)
 {
     std::ifstream in(path);
     if (!in)
         throw FormatError(path + ": cannot open file");
+    nlohmann::json document;
     try {
-        return nlohmann::json::parse(in);
+        document = nlohmann::json::parse(in);
     } catch (const nlohmann::json::parse_error& e) {
         throw FormatError(path + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
+    } catch (const nlohmann::json::exception& e) {  // e.g. 1e999: "number overflow"
+        std::string what = e.what();
+        throw FormatError(path + ": not valid JSON (" + what.substr(what.find(']') + 2) + ")");
     }
+    try {
+        checkNumbers(document);
+    } catch (const FormatError& e) {
+        throw FormatError(path + ": " + e.what());
+    }
+    return document;
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& value)
 {
-    std::ofstream out(path);
-    out << value.dump(2) << "\n";
-    if (!out)
-        throw FormatError(path + ": cannot write file");
+    writeAtomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary);
+        out << value.dump(2) << "\n";
+        if (!out.flush())
+            throw FormatError(path + ": cannot write file");
+    });
 }
 
 Fields::Fields(const nlohmann::json& object, std::string path) : object_(object), path_(std::move(path))
@@ -78,8 +123,9 @@ int Fields::integer(const std::string& key, std::optional<int> fallback) const
             throw FormatError(pathOf(key) + ": missing (a whole number is required)");
         return *fallback;
     }
-    if (!value->is_number_integer())
-        throw FormatError(pathOf(key) + ": must be a whole number, got " + value->dump());
+    if (!value->is_number_integer() || std::abs(value->get<double>()) > kLargestNumber)
+        throw FormatError(pathOf(key) + ": must be a whole number of at most " + show(kLargestNumber) +
+                          ", got " + value->dump());
     return value->get<int>();
 }
 

@@ -18,6 +18,17 @@ struct FormatError : std::runtime_error {
 /// A number as people write it in messages: 0, -3, 0.25.
 std::string show(double x);
 
+/// The largest magnitude a number in a model file may have, and the deepest nesting: 10^6 is 1 km in mm, and
+/// beyond it lie only typing slips and hostile files that would overflow the solvers' arithmetic.
+constexpr double kLargestNumber = 1e6;
+constexpr int kDeepestNesting = 32;
+
+/// Throws FormatError naming the first number beyond ±kLargestNumber (e.g. "parts[3].outline[2][0]: 1e+12 is
+/// beyond ±1e+06") or the first value nested deeper than kDeepestNesting. Every reader of a model calls it
+/// first.
+void checkNumbers(const nlohmann::json& document);
+
+/// The document in `path`; FormatError naming the file when it is missing, not JSON, or fails checkNumbers.
 nlohmann::json readJsonFile(const std::string& path);
 void writeJsonFile(const std::string& path, const nlohmann::json& value);
 

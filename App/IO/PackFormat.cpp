@@ -160,6 +160,7 @@ std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& docume
 
 material::PackProblem readPackProblem(const nlohmann::json& document)
 {
+    checkNumbers(document);
     const Fields root(document, "");
     root.header("fabguide.pack", kPackFormatVersion);
     material::PackProblem problem;
@@ -175,6 +176,7 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
 
 material::PackProblem readStripInstance(const nlohmann::json& document)
 {
+    checkNumbers(document);
     const Fields root(document, "");
     const nlohmann::json& objects = root.array("Objects");
     if (objects.empty())
@@ -204,6 +206,7 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
 material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
                             PartNames names)
 {
+    checkNumbers(document);
     const Fields root(document, "");
     material::Layout layout;
     const nlohmann::json& boards = root.array("boards");
@@ -243,6 +246,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
 
 std::vector<material::Board3> readBoards3(const nlohmann::json& document)
 {
+    checkNumbers(document);
     if (!document.is_array())
         throw FormatError("boards: must be a list of boards");
     std::vector<material::Board3> boards;

@@ -239,6 +239,8 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         } else {
             (joint->turns() ? pose.angle : pose.offset) = value.get<double>();
         }
+        if (std::abs(pose.angle) > 360)  // a configuration turns a joint once at most
+            throw FormatError(here + ": an angle of at most 360 degrees either way, got " + show(pose.angle));
         configuration.poses.push_back(pose);
     }
     model.configurations.push_back(configuration);
@@ -508,6 +510,7 @@ nlohmann::json partNames(const function::Model& model, const std::vector<int>& p
 
 function::Model readWorkslike(const nlohmann::json& document)
 {
+    checkNumbers(document);
     const Fields root(document, "");
     root.header("fabguide.workslike", kWorkslikeFormatVersion);
     function::Model model;
