@@ -10,10 +10,10 @@ MaterialSpace::MaterialSpace(std::vector<MasterBoard> boards, PackSettings setti
                              std::vector<PartKind> parts)
     : boards_(std::move(boards)), settings_(settings), parts_(std::move(parts))
 {
+    const PackProblem sized = problem(Eigen::VectorXd::Ones(2 * static_cast<Eigen::Index>(parts_.size())));
+    checkSettings(sized);  // before the quantities are expanded
     for (size_t k = 0; k < parts_.size(); ++k)
         kindOf_.insert(kindOf_.end(), std::max(0, parts_[k].quantity), static_cast<int>(k));
-    const PackProblem sized = problem(Eigen::VectorXd::Ones(2 * static_cast<Eigen::Index>(parts_.size())));
-    checkSettings(sized);
     stock_ = rasterise(sized).stock;
 }
 

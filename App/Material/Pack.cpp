@@ -3,6 +3,8 @@
 #include "Material/Raster.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace fabguide::material {
@@ -26,6 +28,38 @@ RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
     return part;
 }
 
+namespace {
+
+/// Whether `part` fits on `board` (trim removed) in one of its orientations, by its bounding box.
+bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& s, bool strip)
+{
+    const double w = board.width - 2 * s.trim, h = strip ? HUGE_VAL : board.height - 2 * s.trim;
+    for (int rotation : part.orientations) {
+        const bool turned = rotation % 180 != 0;
+        if ((turned ? part.height() : part.width()) <= w + 1e-9 &&
+            (turned ? part.width() : part.height()) <= h + 1e-9)
+            return true;
+    }
+    return false;
+}
+
+std::string number(const char* format, double n)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, format, n);
+    return text;
+}
+std::string mm(double n)
+{
+    return number("%.6g", n);
+}
+std::string cells(double n)
+{
+    return number("%.3g", n);
+}
+
+}  // namespace
+
 void checkSettings(const PackProblem& problem)
 {
     const PackSettings& s = problem.settings;
@@ -37,6 +71,36 @@ void checkSettings(const PackProblem& problem)
         throw std::invalid_argument("boards: at least one master board is needed");
     if (problem.parts.empty())
         throw std::invalid_argument("parts: nothing to lay out");
+    // Sizes are checked before anything is rasterised: the grid is what takes time and memory.
+    for (size_t k = 0; k < problem.boards.size(); ++k) {
+        const MasterBoard& b = problem.boards[k];
+        const double grid = (b.width / s.resolution) * (problem.strip ? 1.0 : b.height / s.resolution);
+        if (b.width > kLongest || (!problem.strip && b.height > kLongest) || grid > kMostCells)
+            throw std::invalid_argument("boards[" + std::to_string(k) + "] ('" + b.name +
+                                        "'): " + mm(b.width) + " x " + mm(b.height) + " mm is " +
+                                        cells(grid) + " grid cells at settings.resolution " +
+                                        mm(s.resolution) + " mm; FabGuide lays out boards of up to " +
+                                        mm(kLongest) + " mm and " + cells(kMostCells) + " cells");
+    }
+    long units = 0;
+    double partArea = 0;
+    for (const PartSpec& part : problem.parts) {
+        units += part.quantity;
+        partArea += part.quantity * geometry::area(part.outline);
+        if (units > kMostUnits)
+            throw std::invalid_argument("parts: more than " + std::to_string(kMostUnits) +
+                                        " parts to lay out (quantities added up)");
+        if (std::none_of(problem.boards.begin(), problem.boards.end(),
+                         [&](const MasterBoard& b) { return fitsOn(part, b, s, problem.strip); }))
+            throw PackingError("part '" + part.id + "' (" + mm(part.width()) + " x " + mm(part.height()) +
+                               " mm) is larger than every master board");
+    }
+    double boardArea = 0;
+    for (const MasterBoard& b : problem.boards)
+        boardArea += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
+    if (partArea > boardArea)
+        throw PackingError("not enough master boards: the parts cover " + mm(partArea / 1e6) +
+                           " m², the boards only " + mm(boardArea / 1e6) + " m²");
 }
 
 namespace {

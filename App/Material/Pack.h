@@ -74,7 +74,14 @@ struct Layout {
     double wasteArea() const { return sheetArea - partArea; }
 };
 
-/// Throws std::invalid_argument naming a bad setting, or when there are no boards or no parts.
+/// What a workshop could use: boards up to 20 m long and 2·10^8 grid cells (a 5 x 10 m sheet at 0.5 mm), and
+/// 200,000 parts to lay out.
+constexpr double kLongest = 20000, kMostCells = 2e8;
+constexpr long kMostUnits = 200000;
+
+/// Throws std::invalid_argument naming a bad setting, a board beyond kLongest / kMostCells, more than
+/// kMostUnits parts, or no boards or parts; PackingError naming a part larger than every master board.
+/// Takes no more than a pass over the parts: it runs before anything is rasterised.
 void checkSettings(const PackProblem& problem);
 
 /// A part's allowed orientations rasterised at the settings' resolution with kerf + spacing as clearance,
