@@ -3,6 +3,7 @@
 #include "IO/CutSheetFiles.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
+#include "IO/Output.h"
 #include "IO/PackFormat.h"
 
 #include <cstdio>
@@ -36,6 +37,8 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
 
 void run(const OptimiseArguments& args)
 {
+    io::checkWritableFolder(args.output);  // before the search, not after
+    io::OutputBatch files;
     const nlohmann::json document = io::readJsonFile(args.input);
     const io::FlatpackDesign flatpack = io::readFlatpack(document);
     const material::ConstrainedDesign design(flatpack.design);
@@ -75,6 +78,7 @@ void run(const OptimiseArguments& args)
     std::printf("seconds       %.2f%s\n", exploration.seconds,
                 exploration.stopped ? " (stopped at the time limit)" : "");
     io::writeJsonFile((out / "summary.json").string(), summary);
+    files.commit();
 }
 
 }  // namespace
@@ -89,14 +93,14 @@ void addOptimiseCommand(CLI::App& app)
     cmd->add_option("-o,--output", args->output, "folder for the suggestions and summary.json")->required();
     cmd->add_option("--seed", args->options.seed, "same seed, same suggestions")->capture_default_str();
     cmd->add_option("--threads", args->options.threads, "exploration threads")
-        ->check(CLI::PositiveNumber)
+        ->check(CLI::Range(1, 256))
         ->capture_default_str();
     cmd->add_option("--time-limit", args->options.timeLimit, "seconds")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Range(0.0, 86400.0))
         ->capture_default_str();
     cmd->add_option("--rounds", args->options.rounds,
                     "G: rounds of ordering exploration and design improvement")
-        ->check(CLI::PositiveNumber)
+        ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     cmd->add_flag("--unguided", args->unguided,
                   "shrink random part sizes instead of the layout's locking chains (the thesis' baseline)");

@@ -2,6 +2,7 @@
 #include "Cli/Commands.h"
 #include "IO/CutSheetFiles.h"
 #include "IO/Json.h"
+#include "IO/Output.h"
 #include "IO/PackFormat.h"
 
 #include <cstdio>
@@ -24,6 +25,13 @@ struct PackArguments {
 
 void run(const PackArguments& args)
 {
+    io::checkWritableFile(args.output);
+    for (const std::string* folder : {&args.svgFolder, &args.dxfFolder})
+        if (!folder->empty())
+            io::checkWritableFolder(*folder);
+    if (!args.csvFile.empty())
+        io::checkWritableFile(args.csvFile);
+    io::OutputBatch files;
     const nlohmann::json document = io::readJsonFile(args.input);
     const material::PackProblem problem =
         args.strip ? io::readStripInstance(document) : io::readPackProblem(document);
@@ -44,6 +52,7 @@ void run(const PackArguments& args)
     for (const std::string& path :
          io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder, args.csvFile))
         std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
+    files.commit();
 }
 
 }  // namespace
@@ -66,13 +75,13 @@ void addPackCommand(CLI::App& app)
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");
     cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
     cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Range(0.0, 86400.0))
         ->capture_default_str();
     args->search.iterations = std::numeric_limits<long>::max();
     cmd->add_option("--iterations", args->search.iterations,
                     "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)");
     cmd->add_option("--memory", args->search.memory, "late-acceptance history of the ordering search")
-        ->check(CLI::PositiveNumber)
+        ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->callback([args] { run(*args); });
 }

@@ -2,6 +2,7 @@
 // 3MF and STEP.
 #include "Cli/Commands.h"
 #include "IO/Json.h"
+#include "IO/Output.h"
 #include "IO/PrintFiles.h"
 #include "IO/WorkslikeFormat.h"
 #include "Printable/Checks.h"
@@ -43,6 +44,8 @@ const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
 int run(const PrintableArguments& args)
 {
+    io::checkWritableFolder(args.output);  // before minutes of geometry, not after
+    io::OutputBatch files;
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
     const std::optional<printable::Size> fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
     const printable::Fitted fitted =
@@ -68,6 +71,7 @@ int run(const PrintableArguments& args)
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
     for (const std::string& path : io::writePrintFiles(onTheBed, args.output))
         std::printf("wrote %s\n", path.c_str());
+    files.commit();
     return check.invalid.empty() && check.clearance >= gap - 0.01 ? 0 : 1;
 }
 
@@ -89,10 +93,10 @@ void addPrintableCommand(CLI::App& app)
         ->check(CLI::IsMember({"fdm", "resin"}))
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(0.01, 10.0));
     auto* scale =
         cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
-            ->check(CLI::PositiveNumber)
+            ->check(CLI::Range(0.001, 100.0))
             ->capture_default_str();
     cmd->add_option("--fit", args->fit,
                     "print at the largest scale (at most 1) that fits this build volume, WxDxH in mm, e.g. "

@@ -3,6 +3,7 @@
 #include "Cli/Commands.h"
 #include "Function/Pose.h"
 #include "IO/Json.h"
+#include "IO/Output.h"
 #include "IO/WorkslikeFormat.h"
 
 #include <algorithm>
@@ -60,6 +61,8 @@ void printChanges(const function::Model& before, const function::Model& after)
 
 int run(const SolveArguments& args)
 {
+    if (!args.output.empty())
+        io::checkWritableFile(args.output);
     const function::Model model = io::readWorkslike(io::readJsonFile(args.input));
     const function::SolveResult result = function::solve(model);
     auto status = [&](const std::string& name) {

@@ -2,6 +2,7 @@
 // formats of docs/formats.md; errors name the file and the offending field.
 #include "Cli/Commands.h"
 #include "Core/Version.h"
+#include "IO/Output.h"
 
 #include <Standard_Failure.hxx>
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv)
     fabguide::cli::addSolveCommand(app);
     fabguide::cli::addPrintableCommand(app);
     fabguide::cli::addOptimiseCommand(app);
+    fabguide::io::removeTemporariesOnInterrupt();  // SIGINT / SIGTERM: exit 130 / 143, no half-written file
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -28,6 +30,10 @@ int main(int argc, char** argv)
     } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
         std::cerr << "fabguide: geometry error: " << e.GetMessageString() << " (" << e.DynamicType()->Name()
                   << ")\n";
+        return 1;
+    } catch (...) {
+        std::cerr
+            << "fabguide: internal error (an unknown exception); please report it with the input file\n";
         return 1;
     }
     return 0;

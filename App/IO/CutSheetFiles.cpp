@@ -1,6 +1,7 @@
 #include "IO/CutSheetFiles.h"
 
 #include "IO/Json.h"
+#include "IO/Output.h"
 #include "IO/Xml.h"
 
 #include <dxflib/dl_dxf.h>
@@ -14,12 +15,16 @@ namespace fabguide::io {
 
 namespace {
 
-std::ofstream create(const std::string& path)
+/// Writes the text `write(out)` puts out into `path`, atomically (IO/Output.h).
+template <typename Write>
+void writeText(const std::string& path, Write&& write)
 {
-    std::ofstream out(path);
-    if (!out)
-        throw FormatError(path + ": cannot write file");
-    return out;
+    writeAtomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary);
+        write(out);
+        if (!out.flush())
+            throw FormatError(path + ": cannot write file");
+    });
 }
 
 std::string quoteCsv(const std::string& text)
@@ -133,16 +138,13 @@ std::string svg(const material::CutSheet& sheet, double stroke)
 
 void writeSvg(const material::CutSheet& sheet, const std::string& path)
 {
-    std::ofstream out = create(path);
-    out << svg(sheet);
-    if (!out)
-        throw FormatError(path + ": cannot write file");
+    writeText(path, [&](std::ostream& out) { out << svg(sheet); });
 }
 
-void writeDxf(const material::CutSheet& sheet, const std::string& path)
+void writeDxf(const material::CutSheet& sheet, const std::string& path, const std::string& file)
 {
     DL_Dxf dxf;
-    std::unique_ptr<DL_WriterA> dw(dxf.out(path.c_str(), DL_Codes::AC1015));
+    std::unique_ptr<DL_WriterA> dw(dxf.out(file.c_str(), DL_Codes::AC1015));
     if (!dw)
         throw FormatError(path + ": cannot write file");
     dxf.writeHeader(*dw);
@@ -216,13 +218,12 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path)
 
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path)
 {
-    std::ofstream out = create(path);
-    out << "part,quantity,width,height,thickness,material,board\n";
-    for (const material::CutListRow& row : rows)
-        out << quoteCsv(row.part) << "," << row.quantity << "," << row.width << "," << row.height << ","
-            << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << "\n";
-    if (!out)
-        throw FormatError(path + ": cannot write file");
+    writeText(path, [&](std::ostream& out) {
+        out << "part,quantity,width,height,thickness,material,board\n";
+        for (const material::CutListRow& row : rows)
+            out << quoteCsv(row.part) << "," << row.quantity << "," << row.width << "," << row.height << ","
+                << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << "\n";
+    });
 }
 
 std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
@@ -239,7 +240,8 @@ std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& shee
         if (extension == "svg")
             writeSvg(sheets[s], paths.back());
         else
-            writeDxf(sheets[s], paths.back());
+            writeAtomically(paths.back(),
+                            [&](const std::string& file) { writeDxf(sheets[s], paths.back(), file); });
     }
     return paths;
 }

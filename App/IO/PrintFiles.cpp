@@ -1,5 +1,7 @@
 #include "IO/PrintFiles.h"
 
+#include "IO/Output.h"
+
 #include "IO/Xml.h"
 
 #include <zip.h>
@@ -116,11 +118,36 @@ std::string fileName(const std::string& name)
 
 void writeStl(const std::vector<printable::Body>& bodies, const std::string& path)
 {
-    StlAPI_Writer writer;
-    writer.ASCIIMode() = false;
-    if (!writer.Write(meshed(bodies), path.c_str()))
+    writeAtomically(path, [&](const std::string& file) {
+        StlAPI_Writer writer;
+        writer.ASCIIMode() = false;
+        if (!writer.Write(meshed(bodies), file.c_str()))
+            throw std::runtime_error("cannot write " + path);
+    });
+}
+
+namespace {
+
+/// A zip package of (name, text) entries in `file` (`path` named in errors).
+void writeZip(const std::string (&files)[4][2], const std::string& path, const std::string& file)
+{
+    int error = 0;
+    zip_t* zip = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    if (!zip)
+        throw std::runtime_error("cannot write " + path);
+    for (const auto& [name, text] : files) {
+        zip_source_t* source = zip_source_buffer(zip, text.data(), text.size(), 0);
+        if (!source || zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE) < 0) {
+            zip_source_free(source);
+            zip_discard(zip);
+            throw std::runtime_error("cannot write " + path);
+        }
+    }
+    if (zip_close(zip) < 0)
         throw std::runtime_error("cannot write " + path);
 }
+
+}  // namespace
 
 void write3mf(const std::vector<printable::Body>& bodies, const std::string& path)
 {
@@ -157,20 +184,7 @@ void write3mf(const std::vector<printable::Body>& bodies, const std::string& pat
          "Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/></Relationships>\n"},
         {"3D/3dmodel.model", model.str()},
         {"Metadata/Slic3r_PE_model.config", prusaSlicerConfig(name, bodies, counts)}};
-    int error = 0;
-    zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-    if (!zip)
-        throw std::runtime_error("cannot write " + path);
-    for (const auto& [name, text] : files) {
-        zip_source_t* source = zip_source_buffer(zip, text.data(), text.size(), 0);
-        if (!source || zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE) < 0) {
-            zip_source_free(source);
-            zip_discard(zip);
-            throw std::runtime_error("cannot write " + path);
-        }
-    }
-    if (zip_close(zip) < 0)
-        throw std::runtime_error("cannot write " + path);
+    writeAtomically(path, [&](const std::string& file) { writeZip(files, path, file); });
 }
 
 void writeStep(const std::vector<printable::Body>& bodies, const std::string& path)
@@ -182,10 +196,12 @@ void writeStep(const std::vector<printable::Body>& bodies, const std::string& pa
         builder.Add(all, b.shape);
     Message::DefaultMessenger()->RemovePrinters(
         STANDARD_TYPE(Message_PrinterOStream));  // no transfer statistics
-    STEPControl_Writer writer;
-    if (writer.Transfer(all, STEPControl_AsIs) != IFSelect_RetDone ||
-        writer.Write(path.c_str()) != IFSelect_RetDone)
-        throw std::runtime_error("cannot write " + path);
+    writeAtomically(path, [&](const std::string& file) {
+        STEPControl_Writer writer;
+        if (writer.Transfer(all, STEPControl_AsIs) != IFSelect_RetDone ||
+            writer.Write(file.c_str()) != IFSelect_RetDone)
+            throw std::runtime_error("cannot write " + path);
+    });
 }
 
 std::vector<std::string> writePrintFiles(const printable::Printable& printable, const std::string& folder)

@@ -1,0 +1,190 @@
+#include "IO/Output.h"
+
+#include "IO/Json.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <vector>
+
+#include <unistd.h>
+
+namespace fabguide::io {
+
+namespace {
+
+struct File {
+    std::string temporary, path;
+    bool written = false;
+};
+
+/// The files under temporary names. The signal handler reads the list only while no thread changes it.
+struct Pending {
+    std::vector<File> files;
+    int batches = 0;
+    std::mutex mutex;
+    std::atomic<bool> changing{false};
+};
+Pending& pending()
+{
+    static Pending instance;
+    return instance;
+}
+
+/// The list taken for a change: other threads wait on the mutex, the signal handler on `changing`, and
+/// SIGINT / SIGTERM are held in this thread (its handler would wait on itself).
+class Changing {
+public:
+    Changing() : guard_(pending().mutex)
+    {
+        sigset_t both;
+        sigemptyset(&both);
+        sigaddset(&both, SIGINT);
+        sigaddset(&both, SIGTERM);
+        pthread_sigmask(SIG_BLOCK, &both, &before_);
+        pending().changing = true;
+    }
+    ~Changing()
+    {
+        pending().changing = false;
+        pthread_sigmask(SIG_SETMASK, &before_, nullptr);
+    }
+    Changing(const Changing&) = delete;
+    Changing& operator=(const Changing&) = delete;
+
+private:
+    std::lock_guard<std::mutex> guard_;
+    sigset_t before_;
+};
+
+/// Renames `file` into place; false if that failed (the temporary is then removed).
+bool rename(const File& file)
+{
+    if (std::rename(file.temporary.c_str(), file.path.c_str()) == 0)
+        return true;
+    std::remove(file.temporary.c_str());
+    return false;
+}
+
+void removeAll()
+{
+    for (const File& file : pending().files)
+        std::remove(file.temporary.c_str());
+    pending().files.clear();
+}
+
+extern "C" void onInterrupt(int signal)
+{
+    while (pending().changing)  // another thread is changing the list: it finishes soon
+        ;
+    for (const File& file : pending().files)  // unlink and _exit are async-signal-safe
+        unlink(file.temporary.c_str());
+    _exit(128 + signal);
+}
+
+std::string temporaryFor(const std::string& path)
+{
+    const std::filesystem::path p(path);
+    return (p.parent_path() / ("." + p.filename().string() + ".partial-" + std::to_string(getpid())))
+        .string();
+}
+
+}  // namespace
+
+void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write)
+{
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::create_directories(folder, error) && error)
+        throw FormatError(folder.string() + ": cannot create folder (" + error.message() + ")");
+    const File file{temporaryFor(path), path};
+    {
+        Changing changing;
+        pending().files.push_back(file);
+    }
+    const auto forget = [&] {
+        Changing changing;
+        auto& files = pending().files;
+        for (auto it = files.begin(); it != files.end(); ++it)
+            if (it->temporary == file.temporary) {
+                files.erase(it);
+                break;
+            }
+    };
+    try {
+        write(file.temporary);
+    } catch (...) {
+        std::remove(file.temporary.c_str());
+        forget();
+        throw;
+    }
+    {
+        Changing changing;
+        if (pending().batches > 0) {
+            for (File& f : pending().files)
+                f.written = f.written || f.temporary == file.temporary;
+            return;
+        }
+    }
+    const bool renamed = rename(file);
+    forget();
+    if (!renamed)
+        throw FormatError(path + ": cannot write file");
+}
+
+OutputBatch::OutputBatch()
+{
+    Changing changing;
+    ++pending().batches;
+}
+
+OutputBatch::~OutputBatch()
+{
+    Changing changing;
+    if (--pending().batches == 0)
+        removeAll();
+}
+
+void OutputBatch::commit()
+{
+    Changing changing;
+    for (const File& file : pending().files)
+        if (file.written && !rename(file)) {
+            removeAll();
+            throw FormatError(file.path + ": cannot write file");
+        }
+    pending().files.clear();
+}
+
+void removeTemporariesOnInterrupt()
+{
+    struct sigaction action = {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+void checkWritableFolder(const std::string& folder)
+{
+    std::error_code error;
+    std::filesystem::path p = std::filesystem::absolute(folder, error);
+    while (p.has_relative_path() && !std::filesystem::exists(p, error))
+        p = p.parent_path();  // the nearest folder that exists is where the new ones would be made
+    if (!std::filesystem::is_directory(p, error))
+        throw FormatError(folder + ": not a folder (" + p.string() + " is a file)");
+    if (access(p.c_str(), W_OK | X_OK) != 0)
+        throw FormatError(folder + ": cannot write there (" + p.string() + " is not writable)");
+}
+
+void checkWritableFile(const std::string& file)
+{
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error))
+        throw FormatError(file + ": is a folder, not a file to write");
+    checkWritableFolder(std::filesystem::absolute(file, error).parent_path().string());
+}
+
+}  // namespace fabguide::io

@@ -1,0 +1,38 @@
+// Output files that are never seen half-written: each is written under a temporary name beside its final one
+// and renamed into place, at once, or, while an OutputBatch is open, all together when the batch commits, so
+// a run stopped at any moment leaves the files of the run before it, never a truncated or mixed set.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace fabguide::io {
+
+/// Calls write(temporary) for a temporary name beside `path` (its folder made if need be), then renames it to
+/// `path`: at once, or when the open OutputBatch commits. The temporary is removed if write throws, or if the
+/// process is interrupted.
+void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
+
+/// The output of one command: files written while it is open are renamed when it commits; those not
+/// committed are removed when it closes (an error, an exception).
+class OutputBatch {
+public:
+    OutputBatch();
+    ~OutputBatch();
+    OutputBatch(const OutputBatch&) = delete;
+    OutputBatch& operator=(const OutputBatch&) = delete;
+    /// Renames every file written into place, an interruption held off until the last is renamed.
+    void commit();
+};
+
+/// On SIGINT or SIGTERM: removes every temporary file not yet renamed and exits with 128 + the signal
+/// (130, 143). Installed by the command-line tool.
+void removeTemporariesOnInterrupt();
+
+/// Throws FormatError naming `folder` unless it exists as a folder we may write in, or can be made.
+void checkWritableFolder(const std::string& folder);
+
+/// Throws FormatError naming `file` unless it is not a folder and its folder passes checkWritableFolder.
+void checkWritableFile(const std::string& file);
+
+}  // namespace fabguide::io
