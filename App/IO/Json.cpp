@@ -18,30 +18,32 @@ std::string show(double x)
 namespace {
 
 /// The path of the first value of `value` that checkNumbers refuses, with why, or "".
-std::string refused(const nlohmann::json& value, int depth)
+std::string refused(const nlohmann::json& value, double largest, int depth)
 {
     if (depth > kDeepestNesting)
         return ": nested more than " + std::to_string(kDeepestNesting) + " levels deep";
     if (value.is_number()) {
         const double x = value.get<double>();
-        return std::abs(x) <= kLargestNumber ? "" : ": " + value.dump() + " is beyond ±1000000";
+        return std::abs(x) <= largest
+                   ? ""
+                   : ": " + value.dump() + " is beyond ±" + std::to_string(static_cast<long long>(largest));
     }
     if (value.is_array())
         for (size_t k = 0; k < value.size(); ++k)
-            if (std::string why = refused(value[k], depth + 1); !why.empty())
+            if (std::string why = refused(value[k], largest, depth + 1); !why.empty())
                 return "[" + std::to_string(k) + "]" + why;
     if (value.is_object())
         for (const auto& item : value.items())
-            if (std::string why = refused(item.value(), depth + 1); !why.empty())
+            if (std::string why = refused(item.value(), largest, depth + 1); !why.empty())
                 return "." + item.key() + why;
     return "";
 }
 
 }  // namespace
 
-void checkNumbers(const nlohmann::json& document)
+void checkNumbers(const nlohmann::json& document, double largest)
 {
-    std::string why = refused(document, 0);
+    std::string why = refused(document, largest, 0);
     if (!why.empty())
         throw FormatError(why[0] == '.' ? why.substr(1) : "document" + why);
 }

@@ -19,14 +19,14 @@ struct FormatError : std::runtime_error {
 std::string show(double x);
 
 /// The largest magnitude a number in a model file may have, and the deepest nesting: 10^6 is 1 km in mm, and
-/// beyond it lie only typing slips and hostile files that would overflow the solvers' arithmetic.
-constexpr double kLargestNumber = 1e6;
+/// beyond it lie only typing slips and hostile files that would overflow the solvers' arithmetic. Layout
+/// files also hold areas in mm², up to kLargestArea.
+constexpr double kLargestNumber = 1e6, kLargestArea = 1e12;
 constexpr int kDeepestNesting = 32;
 
-/// Throws FormatError naming the first number beyond ±kLargestNumber (e.g. "parts[3].outline[2][0]: 1e+12 is
-/// beyond ±1e+06") or the first value nested deeper than kDeepestNesting. Every reader of a model calls it
-/// first.
-void checkNumbers(const nlohmann::json& document);
+/// Throws FormatError naming the first number beyond ±largest (e.g. "parts[3].outline[2][0]: 1e12 is beyond
+/// ±1000000") or the first value nested deeper than kDeepestNesting. Every reader of a model calls it first.
+void checkNumbers(const nlohmann::json& document, double largest = kLargestNumber);
 
 /// The document in `path`; FormatError naming the file when it is missing, not JSON, or fails checkNumbers.
 nlohmann::json readJsonFile(const std::string& path);

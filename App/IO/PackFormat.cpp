@@ -206,7 +206,7 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
 material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
                             PartNames names)
 {
-    checkNumbers(document);
+    checkNumbers(document, kLargestArea);  // its metrics are areas
     const Fields root(document, "");
     material::Layout layout;
     const nlohmann::json& boards = root.array("boards");

@@ -58,6 +58,14 @@ std::string cells(double n)
     return number("%.3g", n);
 }
 
+/// "not enough master boards: part 'a' and 3 more do not fit <where>"
+PackingError notEnoughBoards(const std::string& part, long more, const std::string& where)
+{
+    return PackingError("not enough master boards: part '" + part + "' " +
+                        (more ? "and " + std::to_string(more) + " more do not fit " : "does not fit ") +
+                        where);
+}
+
 }  // namespace
 
 void checkSettings(const PackProblem& problem)
@@ -82,25 +90,30 @@ void checkSettings(const PackProblem& problem)
                                         mm(s.resolution) + " mm; FabGuide lays out boards of up to " +
                                         mm(kLongest) + " mm and " + cells(kMostCells) + " cells");
     }
-    long units = 0;
+    double boardArea = 0;
+    for (const MasterBoard& b : problem.boards)
+        boardArea += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
+    long units = 0, over = 0;  // over: units past the boards' area, in the order given
     double partArea = 0;
+    const PartSpec* first = nullptr;
     for (const PartSpec& part : problem.parts) {
         units += part.quantity;
-        partArea += part.quantity * geometry::area(part.outline);
         if (units > kMostUnits)
             throw std::invalid_argument("parts: more than " + std::to_string(kMostUnits) +
                                         " parts to lay out (quantities added up)");
         if (std::none_of(problem.boards.begin(), problem.boards.end(),
                          [&](const MasterBoard& b) { return fitsOn(part, b, s, problem.strip); }))
-            throw PackingError("part '" + part.id + "' (" + mm(part.width()) + " x " + mm(part.height()) +
-                               " mm) is larger than every master board");
+            throw PackingError("part '" + part.id + "' is larger than every master board (" +
+                               mm(part.width()) + " x " + mm(part.height()) + " mm)");
+        const double area = geometry::area(part.outline);
+        for (int k = 0; k < part.quantity && !over; ++k)
+            if ((partArea += area) > boardArea)
+                first = &part, over = part.quantity - k;
+        if (over && first != &part)
+            over += part.quantity;
     }
-    double boardArea = 0;
-    for (const MasterBoard& b : problem.boards)
-        boardArea += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
-    if (partArea > boardArea)
-        throw PackingError("not enough master boards: the parts cover " + mm(partArea / 1e6) +
-                           " m², the boards only " + mm(boardArea / 1e6) + " m²");
+    if (over)
+        throw notEnoughBoards(first->id, over - 1, "in the boards' " + mm(boardArea / 1e6) + " m²");
 }
 
 namespace {
@@ -175,14 +188,9 @@ RasterProblem rasterise(const PackProblem& problem)
 
 Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster)
 {
-    if (!grid.unplaced.empty()) {
-        const std::string first = "'" + raster.parts[grid.unplaced.front()].name + "'";
-        const size_t more = grid.unplaced.size() - 1;
-        throw PackingError("not enough master boards: " +
-                           (more ? "part " + first + " and " + std::to_string(more) + " more do not fit"
-                                 : "part " + first + " does not fit") +
-                           " on the boards available");
-    }
+    if (!grid.unplaced.empty())
+        throw notEnoughBoards(raster.parts[grid.unplaced.front()].name,
+                              static_cast<long>(grid.unplaced.size()) - 1, "on the boards available");
     const PackSettings& settings = problem.settings;
     const double clearance = settings.kerf + settings.spacing;
     Layout layout;
