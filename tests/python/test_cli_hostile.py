@@ -1,0 +1,170 @@
+"""The command-line tool fails safely on what a careless or hostile user gives it: sizes and counts beyond what
+a workshop could use, numbers that overflow, unwritable outputs, and interruptions at any moment. Each ends
+with exit 1 and one line naming the file and field, within a second and a little memory, or (SIGINT/SIGTERM)
+with 130/143 and the files of the run before it untouched."""
+import copy
+import json
+import os
+import random
+import resource
+import shutil
+import signal
+import subprocess
+import time
+
+import pytest
+
+PACK = {"format": "fabguide.pack", "version": 1, "boards": [{"width": 2440, "height": 1220}],
+        "parts": [{"id": "shelf", "width": 300, "height": 400}]}
+
+
+def changed(document, path, value):
+    """document with the field at path (a list of keys and indices) set to value."""
+    result = copy.deepcopy(document)
+    target = result
+    for key in path[:-1]:
+        target = target[key]
+    target[path[-1]] = value
+    return result
+
+
+def run(cli, *args, timeout=60):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    start = time.monotonic()
+    result = subprocess.run([cli, *args], capture_output=True, text=True, timeout=timeout)
+    result.seconds = time.monotonic() - start
+    result.peak_kb = max(before, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+    return result
+
+
+# (name, document, words the error must contain). Sizes a workshop cannot use, counts that once took GBs.
+HOSTILE_PACKS = [
+    ("a part 1 km long", changed(PACK, ["parts", 0, "width"], 1e6), "'shelf' is larger than every master board (1e+06 x 400"),
+    ("a part 10 km long", changed(PACK, ["parts", 0, "width"], 1e7), "parts[0].width: 10000000.0 is beyond"),
+    ("a quantity of 2^31-1", changed(PACK, ["parts", 0, "quantity"], 2**31 - 1), "parts[0].quantity: 2147483647"),
+    ("a quantity of 2^32+1", changed(PACK, ["parts", 0, "quantity"], 2**32 + 1), "parts[0].quantity: 4294967297"),
+    ("more parts than the boards hold", changed(PACK, ["parts", 0, "quantity"], 150000), "not enough master boards"),
+    ("a 100 m board", changed(changed(PACK, ["boards", 0, "width"], 1e5), ["boards", 0, "height"], 1e5),
+     "boards[0] ('board'): 100000 x 100000 mm"),
+    ("a 1 µm grid", changed(PACK, ["settings"], {"resolution": 0.001}), "grid cells at settings.resolution 0.001"),
+    ("a negative count", changed(PACK, ["boards", 0, "count"], -5), "boards[0].count"),
+    ("nesting 40 deep", changed(PACK, ["parts", 0, "holes"], json.loads("[" * 40 + "]" * 40)), "nested more than"),
+]
+
+
+@pytest.mark.parametrize("name,document,words", HOSTILE_PACKS, ids=[c[0] for c in HOSTILE_PACKS])
+def test_pack_refuses_sizes_beyond_a_workshop_at_once(fabguide_cli, tmp_path, name, document, words):
+    source = tmp_path / "hostile.pack.json"
+    source.write_text(json.dumps(document))
+    result = run(fabguide_cli, "pack", str(source), "-o", str(tmp_path / "layout.json"))
+    assert result.returncode == 1, (name, result.stdout, result.stderr)
+    assert words in result.stderr, result.stderr
+    assert result.stderr.count("\n") == 1 and "terminate" not in result.stderr
+    assert result.seconds < 1.0 and result.peak_kb < 200_000, (result.seconds, result.peak_kb)
+    assert not (tmp_path / "layout.json").exists()
+
+
+def test_a_number_that_overflows_names_the_file(fabguide_cli, tmp_path):
+    source = tmp_path / "overflow.pack.json"
+    source.write_text(json.dumps(PACK).replace('"width": 300', '"width": 1e999'))
+    result = run(fabguide_cli, "pack", str(source), "-o", str(tmp_path / "layout.json"))
+    assert result.returncode == 1
+    assert "overflow.pack.json: not valid JSON (number overflow" in result.stderr, result.stderr
+
+
+@pytest.mark.parametrize("field,value,words", [
+    (["minimum_size"], 1e155, "minimum_size: 1e+155 is beyond"),
+    (["parts", 0, "cuboids", 0, "max"], [1e12, 10, 10], "parts[0].cuboids[0].max[0]: 1000000000000.0 is beyond"),
+])
+def test_solve_refuses_numbers_that_would_break_the_solver(fabguide_cli, source_dir, tmp_path, field, value, words):
+    model = json.load(open(os.path.join(source_dir, "examples", "box-with-lid.workslike.json")))
+    source = tmp_path / "hostile.workslike.json"
+    source.write_text(json.dumps(changed(model, field, value)))
+    result = run(fabguide_cli, "solve", str(source))
+    assert result.returncode == 1 and words in result.stderr, result.stderr
+
+
+def test_a_hinge_angle_beyond_a_turn_is_refused_by_name(fabguide_cli, source_dir, tmp_path):
+    model = json.load(open(os.path.join(source_dir, "examples", "box-with-lid.workslike.json")))
+    joint = next(iter(model["configurations"][0]["poses"]))
+    model["configurations"][0]["poses"][joint] = 1e5
+    source = tmp_path / "spin.workslike.json"
+    source.write_text(json.dumps(model))
+    for command in (["solve", str(source)], ["printable", str(source), "-o", str(tmp_path / "print")]):
+        result = run(fabguide_cli, *command)
+        assert result.returncode == 1, result.stdout
+        assert "configurations[0].poses.{}: an angle of at most 360 degrees".format(joint) in result.stderr
+        assert result.seconds < 1.0
+
+
+def test_command_line_ranges_are_checked_in_plain_numbers(fabguide_cli, source_dir, tmp_path):
+    source = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
+    result = run(fabguide_cli, "optimise", source, "-o", str(tmp_path), "--time-limit", "1e308")
+    assert result.returncode != 0 and "--time-limit" in result.stderr
+    assert len(result.stderr) < 300, result.stderr  # not DBL_MAX in 300 digits
+
+
+def test_an_unwritable_output_is_refused_before_the_search(fabguide_cli, source_dir, tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("in the way")
+    source = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
+    result = run(fabguide_cli, "optimise", source, "-o", str(blocker / "out"), "--time-limit", "30")
+    assert result.returncode == 1 and "a-file/out: not a folder" in result.stderr, result.stderr
+    assert result.seconds < 1.0  # refused before 30 s of search, not after
+    result = run(fabguide_cli, "pack", os.path.join(source_dir, "examples", "bookshelf.pack.json"),
+                 "-o", str(tmp_path))
+    assert result.returncode == 1 and "is a folder, not a file to write" in result.stderr
+
+
+def test_an_interrupted_search_leaves_the_last_results_and_exits_130_or_143(fabguide_cli, source_dir, tmp_path):
+    source = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
+    out = tmp_path / "suggestions"
+    assert run(fabguide_cli, "optimise", source, "-o", str(out), "--time-limit", "1").returncode == 0
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    for sig, code in ((signal.SIGTERM, 143), (signal.SIGINT, 130)):
+        search = subprocess.Popen([fabguide_cli, "optimise", source, "-o", str(out), "--time-limit", "30",
+                                   "--rounds", "1000"],
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(1.0)
+        search.send_signal(sig)
+        assert search.wait(timeout=10) == code
+        assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+
+
+def test_a_run_killed_while_writing_leaves_one_whole_set_of_files(fabguide_cli, source_dir, tmp_path):
+    """Two layouts of different jobs to the same files; the second killed at random moments while it works and
+    writes: the files are always all of the first or all of the second, never truncated, mixed or left over."""
+    jobs = []
+    for k, quantity in enumerate((40, 60)):
+        job = changed(changed(PACK, ["parts", 0, "quantity"], quantity), ["boards", 0, "count"], -1)
+        path = tmp_path / "job{}.pack.json".format(k)
+        path.write_text(json.dumps(job))
+        jobs.append(path)
+
+    def pack(job, folder):
+        return subprocess.Popen([fabguide_cli, "pack", str(job), "-o", str(folder / "layout.json"),
+                                 "--svg", str(folder / "svg"), "--dxf", str(folder / "dxf"),
+                                 "--csv", str(folder / "cutlist.csv"), "--iterations", "3000", "--time-limit", "30"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+    def files(folder):
+        return {p.relative_to(folder): p.read_bytes() for p in folder.rglob("*") if p.is_file()}
+
+    sets = []
+    for job in jobs:
+        folder = tmp_path / ("set-" + job.name)
+        start = time.monotonic()
+        assert pack(job, folder).wait(timeout=60) == 0
+        sets.append((files(folder), time.monotonic() - start))
+    first, second = sets[0][0], sets[1][0]
+    assert first != second
+    rng = random.Random(7)
+    for trial in range(40):
+        folder = tmp_path / "trial{}".format(trial)
+        shutil.copytree(tmp_path / ("set-" + jobs[0].name), folder)
+        run_ = pack(jobs[1], folder)
+        time.sleep(rng.uniform(0, sets[1][1] * 1.1))
+        run_.send_signal(signal.SIGTERM)
+        # -15: killed while the program loads, before its handler is installed and before it touches a file
+        assert run_.wait(timeout=10) in (0, 143, -signal.SIGTERM)
+        assert files(folder) in (first, second), "trial {}: a mixed or broken set".format(trial)
