@@ -1,5 +1,7 @@
 """`make demo`, second half, run by FreeCAD's GUI under Xvfb: renders the solved cabinet saved by tools/demo.py,
-as modelled and with its doors and flap stowed and its drawer open (thesis Fig. 4.16), into PNGs."""
+as modelled and with its doors and flap stowed and its drawer open (thesis Fig. 4.16), into PNGs, seen from the
+isometric direction. It writes to the process' own stdout and stderr: FreeCAD 1.0's GUI shows print() only in its
+report view."""
 import os
 import traceback
 
@@ -25,6 +27,7 @@ def render():
     function_viewproviders.show_conflicts(mech)
     Gui.updateGui()
     view = Gui.getDocument(doc.Name).activeView()
+    view.setAnimationEnabled(False)  # FreeCAD 1.0 animates the camera: a render would catch it half-way
     view.viewIsometric()
     view.fitAll()
     view.saveImage(os.path.join(OUT, "cabinet.png"), 1200, 900, "White")
@@ -48,7 +51,7 @@ def render():
     view.fitAll()
     Gui.updateGui()
     view.saveImage(os.path.join(OUT, "cabinet-printable.png"), 1200, 900, "White")
-    print("wrote build/demo/cabinet/cabinet.png, cabinet-stowed.png and cabinet-printable.png")
+    os.write(1, b"wrote build/demo/cabinet/cabinet.png, cabinet-stowed.png and cabinet-printable.png\n")
 
 
 def main():
@@ -56,7 +59,7 @@ def main():
     try:
         render()
     except BaseException:
-        traceback.print_exc()
+        os.write(2, "".join("demo: " + line + "\n" for line in traceback.format_exc().splitlines()).encode())
         status = 1
     os._exit(status)
 

@@ -20,7 +20,7 @@ SOURCE = os.environ["FABGUIDE_SOURCE_DIR"]
 
 def import_the_cabinet():
     Gui.activateWorkbench("FabGuideWorkbench")
-    doc = FreeCAD.newDocument("Cabinet")
+    doc = guitest.new_document("Cabinet")
     state["cabinet"] = doc
     guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cabinet.workslike.json"),
                      "FabGuide_ImportWorkslike")
@@ -31,8 +31,7 @@ def import_the_cabinet():
     hinge = doc.getObjectsByLabel("left door hinge")[0]
     assert hinge.ViewObject.Proxy.coordinates.point.getNum() == 4  # its edge and its slide axis drawn
     assert doc.getObjectsByLabel("upper compartment")[0].ViewObject.Transparency == 75
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     print("3-D view: " + guitest.view_image("function_cabinet"))
     state["mech"] = mech
 
@@ -60,7 +59,7 @@ def the_configurations_panel_shows_the_doors_stowed():
 
 
 def a_clamshell_from_plain_boxes_with_the_commands():
-    doc = FreeCAD.newDocument("Clamshell")
+    doc = guitest.new_document("Clamshell")
     state["doc"] = doc
     doc.UndoMode = 1
     body, lid = doc.addObject("Part::Box", "Body"), doc.addObject("Part::Box", "Lid")
@@ -101,8 +100,7 @@ def a_clamshell_from_plain_boxes_with_the_commands():
     cover = [o for o in mech.Group if relationships.is_relationship(o)][0]
     assert cover.Configuration == closed and cover.Status == "Satisfied", cover.Status
     assert lid.Length.Value == body.Length.Value, "just cover: as wide as the body"
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     print("3-D view: " + guitest.view_image("function_clamshell"))
     state.update(mech=mech, cover=cover, body=body, lid=lid)
 
@@ -140,7 +138,7 @@ def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
 
 
 def the_crate_bed_folds_along_its_four_bar_motion():
-    doc = FreeCAD.newDocument("CrateBed")
+    doc = guitest.new_document("CrateBed")
     guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "crate-bed.workslike.json"),
                      "FabGuide_ImportWorkslike")
     mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
@@ -178,7 +176,7 @@ def a_double_pivot_from_two_picked_points():
 
 
 def the_cellphone_made_printable_in_its_colours():
-    doc = FreeCAD.newDocument("Phone")
+    doc = guitest.new_document("Phone")
     guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cellphone.workslike.json"),
                      "FabGuide_ImportWorkslike")
     mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
@@ -191,8 +189,7 @@ def the_cellphone_made_printable_in_its_colours():
     screen = [c for c in made.Group if c.BodyName == "screen part"][0]
     assert abs(screen.ViewObject.ShapeColor[2] - 0.8) < 0.01, "printed in its part's colour"
     assert not [o.Label for o in doc.Objects if "Touched" in o.State]
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     print("3-D view: " + guitest.view_image("function_cellphone_printable"))
     folder = tempfile.mkdtemp()
     original = QtGui.QFileDialog.getExistingDirectory

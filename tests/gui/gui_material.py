@@ -14,7 +14,7 @@ state = {}
 
 def model_and_workbench():
     Gui.activateWorkbench("FabGuideWorkbench")
-    doc = FreeCAD.newDocument("Shelf")
+    doc = guitest.new_document("Shelf")
     sizes = [("Side", (18, 300, 800), (0, 0, 0)), ("Side", (18, 300, 800), (582, 0, 0))]
     sizes += [("Shelf", (564, 300, 18), (18, 0, 100 + 300 * i)) for i in range(3)]
     for label, (x, y, z), at in sizes:
@@ -56,8 +56,7 @@ def master_board_and_layout_open_the_usage_panel():
     panels = [w for w in QtGui.QApplication.allWidgets() if w.objectName() == "LayoutPanel" and w.isVisible()]
     assert len(panels) == 1, "the layout task panel is open"
     state["layout"] = layout
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     QtGui.QApplication.processEvents()
     colours = layout.ViewObject.DiffuseColor
     assert len(colours) == len(layout.Shape.Faces) and colours[0] != colours[-1], "sheets and parts coloured"

@@ -28,7 +28,7 @@ def box(label, size, at):
 
 def boxes_become_a_design_with_live_usage():
     Gui.activateWorkbench("FabGuideWorkbench")
-    state["doc"] = doc = FreeCAD.newDocument("Table")
+    state["doc"] = doc = guitest.new_document("Table")
     parts = [box("top", (720, 450, 12), (0, 0, 400)), box("left", (12, 450, 400), (0, 0, 0)),
              box("right", (12, 450, 400), (708, 0, 0)), box("shelf", (696, 260, 12), (12, 95, 140))]
     doc.recompute()
@@ -98,8 +98,7 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     doc, d = state["doc"], state["design"]
     before = design.parts_of(d)
     usage_before = d.Usage
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     Gui.Selection.clearSelection()
     Gui.runCommand("FabGuide_Suggest")
     from fabguide_gui import design_commands
@@ -133,7 +132,7 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
 
 def import_and_export_a_flatpack_design():
     Gui.Control.closeDialog()
-    doc = FreeCAD.newDocument("Shelf")
+    doc = guitest.new_document("Shelf")
     source = os.path.join(os.environ["FABGUIDE_SOURCE_DIR"], "examples", "parrot-shelf.flatpack.json")
     guitest.with_file_dialog("getOpenFileName", source, "FabGuide_ImportFlatpack")
     designs = [o for o in doc.Objects if design.is_design(o)]
@@ -143,8 +142,7 @@ def import_and_export_a_flatpack_design():
     constraints = [o for o in shelf.Group if design.is_constraint(o)]
     assert len(constraints) == 7 and all(c.Status == design.SATISFIED for c in constraints)
     assert [o.ViewObject.Proxy.getIcon().endswith("FabGuide_Ground.svg") for o in constraints][0]
-    Gui.activeDocument().activeView().viewIsometric()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     print("3-D view: " + guitest.view_image("flatpack_parrot_shelf"))
     with tempfile.TemporaryDirectory() as folder:
         path = os.path.join(folder, "shelf.flatpack.json")
@@ -156,7 +154,7 @@ def import_and_export_a_flatpack_design():
 
 def suggest_changes_the_spreadsheet_of_a_parametric_design():
     Gui.Control.closeDialog()
-    state["doc"] = doc = FreeCAD.newDocument("Box")
+    state["doc"] = doc = guitest.new_document("Box")
     sheet = doc.addObject("Spreadsheet::Sheet", "Params")
     for cell, alias, v in (("A1", "side", "300"), ("A2", "height", "170")):
         sheet.set(cell, v)

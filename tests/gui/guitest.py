@@ -8,6 +8,7 @@ import sys
 import time
 import traceback
 
+import FreeCAD
 import FreeCADGui
 from PySide import QtCore
 
@@ -26,6 +27,27 @@ def settle(seconds=0.3):
         time.sleep(0.01)
 
 
+def new_document(name):
+    """A new document, made the active one in App and Gui: FreeCAD 1.0 re-activates the document of the current
+    selection on the next event loop after newDocument, so the selection is cleared and activation forced."""
+    FreeCADGui.Selection.clearSelection()
+    doc = FreeCAD.newDocument(name)
+    settle(0.1)
+    FreeCAD.setActiveDocument(doc.Name)
+    FreeCADGui.setActiveDocument(doc.Name)
+    return doc
+
+
+def isometric():
+    """The active 3-D view from the isometric direction, fitted, with no camera animation (on by default in 1.0: a
+    render right after viewIsometric would catch the camera half-way)."""
+    view = FreeCADGui.activeDocument().activeView()
+    view.setAnimationEnabled(False)
+    view.viewIsometric()
+    view.fitAll()
+    FreeCADGui.updateGui()
+
+
 def screenshot(name):
     """Grab the FreeCAD window (panels, toolbars) into $FABGUIDE_SCREENSHOTS/name.png; returns the path.
     The 3-D view is OpenGL, which a window grab leaves blank: see view_image."""
@@ -40,8 +62,10 @@ def screenshot(name):
 def view_image(name, width=1200, height=900):
     """Render the active 3-D view into $FABGUIDE_SCREENSHOTS/name.png; returns the path."""
     path = _path(name)
+    view = FreeCADGui.activeDocument().activeView()
+    view.setAnimationEnabled(False)
     FreeCADGui.updateGui()
-    FreeCADGui.activeDocument().activeView().saveImage(path, width, height, "White")
+    view.saveImage(path, width, height, "White")
     if not os.path.isfile(path):
         raise RuntimeError("could not save 3-D view " + path)
     return path

@@ -23,3 +23,11 @@ def test_failing_step_fails_the_test(source_dir, tmp_path):
     result = run(source_dir, tmp_path, "def broken_step():\n    assert 1 == 2\nguitest.run([broken_step])\n")
     assert result.returncode == 1
     assert "AssertionError" in result.stdout
+
+
+def test_a_clean_step_passes(source_dir, tmp_path):
+    """FreeCAD's own start-up messages (on 0.20 and 1.0) are not taken for the workbench's errors."""
+    result = run(source_dir, tmp_path, "import FreeCAD\n"
+                 "def fine():\n    FreeCAD.Console.PrintMessage('all good\\n')\nguitest.run([fine])\n")
+    assert result.returncode == 0, result.stdout
+    assert "all good" in result.stdout  # the log's messages are shown: 1.0 prints them nowhere else
