@@ -4,11 +4,24 @@
 #   make demo     ... then install the workbench into FreeCAD and run it on a bundled example
 #   make install  ... then install the workbench (MOD_DIR=... to choose the folder)
 #   make bench    ... then regenerate docs/benchmarks.md
+# and what CI runs besides `make test` (.ci/run):
+#   make test-debian13   `make test` inside a Debian 13 chroot (FreeCAD 1.0, OCCT 7.8), made by tools/in-debian13
+#   make demo-debian13   `make demo` there
+#   make test-clang      the C++ tests built with clang, warnings as errors, into build-clang/
+#   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
+#   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
+SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
 MOD_DIR ?=
+FUZZ_SECONDS ?= 60
+# The clang builds check the code, not its speed: -O1 compiles in half the time of -O3 and keeps the sanitizers fast.
+CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFABGUIDE_WERROR=ON
+SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) -DFABGUIDE_SANITIZE=ON >/dev/null
+CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
-.PHONY: all deps test demo install bench format clean
+.PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
+	clang-deps
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -26,7 +39,30 @@ install: all
 
 demo: install
 		freecadcmd -c "import runpy; runpy.run_path('tools/demo.py', run_name='__main__')"
-	QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a -s "-screen 0 1280x1024x24" freecad tools/demo_view.py 2>&1 | grep "^wrote"
+	QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a -s "-screen 0 1280x1024x24" freecad tools/demo_view.py 2>&1 | \
+	  { grep -E "^(wrote|demo: )" || true; }; test $${PIPESTATUS[0]} -eq 0
+
+test-debian13:
+	tools/in-debian13 make test
+
+demo-debian13:
+	tools/in-debian13 make demo
+
+clang-deps:
+	@tools/install-deps clang
+
+test-clang: clang-deps
+	cmake -S . -B build-clang -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) >/dev/null
+	$(call CPP_CHECK,build-clang,fabguide)
+
+test-sanitize: clang-deps
+	$(SANITIZE_CONFIGURE)
+	$(call CPP_CHECK,build-sanitize,fuzz_pack fuzz_workslike fuzz_flatpack)
+
+fuzz: clang-deps
+	$(SANITIZE_CONFIGURE)
+	cmake --build build-sanitize -j$(JOBS) --target fuzz_pack fuzz_workslike fuzz_flatpack
+	tests/fuzz/run $(FUZZ_SECONDS) build-sanitize
 
 bench: all
 	python3 tests/bench/benchmarks.py
@@ -35,4 +71,4 @@ format:
 	clang-format -i $$(find App python/bindings tests -name '*.cpp' -o -name '*.h')
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) build-clang build-sanitize
