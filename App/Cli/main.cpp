@@ -11,16 +11,16 @@
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"FabGuide: fabrication guided by function and material usage"};
-    app.set_version_flag("--version", fabguide::version());
-    app.require_subcommand(1);
-    fabguide::cli::addVersionCommand(app);
-    fabguide::cli::addPackCommand(app);
-    fabguide::cli::addSolveCommand(app);
-    fabguide::cli::addPrintableCommand(app);
-    fabguide::cli::addOptimiseCommand(app);
     fabguide::io::removeTemporariesOnInterrupt();  // SIGINT / SIGTERM: exit 130 / 143, no half-written file
+    CLI::App app{"FabGuide: fabrication guided by function and material usage"};
     try {
+        app.set_version_flag("--version", fabguide::version());
+        app.require_subcommand(1);
+        fabguide::cli::addVersionCommand(app);
+        fabguide::cli::addPackCommand(app);
+        fabguide::cli::addSolveCommand(app);
+        fabguide::cli::addPrintableCommand(app);
+        fabguide::cli::addOptimiseCommand(app);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);

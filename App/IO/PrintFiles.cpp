@@ -42,7 +42,7 @@ TopoDS_Shape meshed(const std::vector<printable::Body>& bodies)
     builder.MakeCompound(all);
     for (const printable::Body& b : bodies)
         builder.Add(all, b.shape);
-    BRepMesh_IncrementalMesh(all, 0.02, false, 0.2, true);
+    const BRepMesh_IncrementalMesh meshing(all, 0.02, false, 0.2, true);  // triangulates the faces in place
     return all;
 }
 

@@ -1,7 +1,11 @@
-// libFuzzer harness: *.flatpack.json read, its constraints checked, and, when small, laid out.
+// libFuzzer harness: *.flatpack.json read, its constraints checked, and, when small, laid out once and each
+// part size changed once.
 #include "FuzzSupport.h"
 #include "IO/FlatpackFormat.h"
-#include "Material/MinWastage.h"
+#include "Material/DesignSpace.h"
+#include "Material/MaterialSpace.h"
+
+#include <numeric>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -19,7 +23,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
             return;
         const m::ConstrainedDesign design(flatpack.design);
         const m::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
-        m::layOut(design, material, 1);
+        const Eigen::VectorXd sizes = design.sizes(design.start());
+        std::vector<int> order(material.raster(sizes).parts.size());
+        std::iota(order.begin(), order.end(), 0);
+        material.dock(sizes, order);  // one docking pass: the search repeats it
+        // CHANGEPARTSIZES one cell up on each size, the step of every exploration (thesis 5.4.2)
+        for (Eigen::Index k = 0; k < sizes.size(); ++k)
+            design.changePartSizes(design.start(), Eigen::VectorXd::Unit(sizes.size(), k) * 0.5);
     });
     return 0;
 }
