@@ -28,14 +28,19 @@ std::string refused(const nlohmann::json& value, double largest, int depth)
                    ? ""
                    : ": " + value.dump() + " is beyond ±" + std::to_string(static_cast<long long>(largest));
     }
+    // A path past a few levels only buries the message: a too-deep value is named by where its nesting
+    // starts.
+    const auto within = [&](const std::string& step, const std::string& why) {
+        return depth > 3 && why[0] == ':' && why.find("nested") != std::string::npos ? why : step + why;
+    };
     if (value.is_array())
         for (size_t k = 0; k < value.size(); ++k)
             if (std::string why = refused(value[k], largest, depth + 1); !why.empty())
-                return "[" + std::to_string(k) + "]" + why;
+                return within("[" + std::to_string(k) + "]", why);
     if (value.is_object())
         for (const auto& item : value.items())
             if (std::string why = refused(item.value(), largest, depth + 1); !why.empty())
-                return "." + item.key() + why;
+                return within("." + item.key(), why);
     return "";
 }
 
