@@ -19,7 +19,7 @@ using Point = std::array<double, 2>;
 
 Point turn(const Point& p, const Point& centre, double degrees)
 {
-    const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+    const auto [c, s] = cosSin(degrees);
     const double du = p[0] - centre[0], dw = p[1] - centre[1];
     return {centre[0] + du * c - dw * s, centre[1] + du * s + dw * c};
 }

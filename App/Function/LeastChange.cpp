@@ -45,6 +45,85 @@ Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<Linear
     return violation(candidate, rows) <= violation(x, rows) + 1e-9 ? candidate : x;
 }
 
+/// Which bound of a row x meets (within the tolerance), if any: the row is active there.
+const double* activeBound(const LinearConstraint& row, const Eigen::VectorXd& x, double tolerance)
+{
+    double value = 0;
+    for (const auto& [variable, coefficient] : row.terms)
+        value += coefficient * x[variable];
+    return std::abs(value - row.lower) <= tolerance   ? &row.lower
+           : std::abs(value - row.upper) <= tolerance ? &row.upper
+                                                      : nullptr;
+}
+
+/// Coordinates the solve makes equal come out equal to the last bit (issue 13): a coordinate within the
+/// tolerance of the user's value is the user's value; the coordinates that active constraints x_i − x_j = d
+/// (and x_i = d) tie together are set from one value: a fixed one, else one the user's, else their mean;
+/// then every coordinate is rounded to the nanometre.
+/// Kept only if every constraint still holds within the tolerance.
+Eigen::VectorXd snapped(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
+                        const Eigen::VectorXd& x, double tolerance)
+{
+    const int n = static_cast<int>(x.size());
+    Eigen::VectorXd y = x;
+    for (int i = 0; i < n; ++i)
+        if (std::abs(y[i] - target[i]) <= tolerance)
+            y[i] = target[i];
+    // Union-find with offsets: y[i] = y[root] + offset[i], paths compressed.
+    std::vector<int> parent(n);
+    std::vector<double> offset(n, 0.0), fixed(n, std::numeric_limits<double>::quiet_NaN());
+    for (int i = 0; i < n; ++i)
+        parent[i] = i;
+    auto find = [&](int i) {
+        double total = 0;
+        int root = i;
+        for (; parent[root] != root; root = parent[root])
+            total += offset[root];
+        for (int next; i != root; i = next) {  // point the path at the root
+            next = parent[i];
+            const double rest = total - offset[i];
+            parent[i] = root;
+            offset[i] = total;
+            total = rest;
+        }
+        return root;
+    };
+    for (const LinearConstraint& row : rows) {
+        const double* bound = activeBound(row, y, tolerance);
+        if (!bound)
+            continue;
+        if (row.terms.size() == 1)
+            fixed[row.terms[0].first] = *bound / row.terms[0].second;  // a lock
+        if (row.terms.size() != 2 || row.terms[0].second != -row.terms[1].second ||
+            std::abs(row.terms[0].second) != 1)
+            continue;
+        const auto [i, j] = row.terms[0].second > 0 ? std::pair{row.terms[0].first, row.terms[1].first}
+                                                    : std::pair{row.terms[1].first, row.terms[0].first};
+        const int ri = find(i), rj = find(j);  // y[i] − y[j] = bound
+        if (ri != rj) {
+            parent[ri] = rj;
+            offset[ri] = offset[j] + *bound - offset[i];
+        }
+    }
+    std::vector<double> sum(n, 0.0), anchor(n, std::numeric_limits<double>::quiet_NaN());
+    std::vector<int> count(n, 0);
+    for (int i = 0; i < n; ++i) {
+        const int root = find(i);
+        sum[root] += y[i] - offset[i];
+        ++count[root];
+        if (!std::isnan(fixed[i]))
+            anchor[root] = fixed[i] - offset[i];
+        else if (std::isnan(anchor[root]) && y[i] == target[i])
+            anchor[root] = y[i] - offset[i];
+    }
+    for (int i = 0; i < n; ++i) {
+        const int root = find(i);
+        y[i] = (std::isnan(anchor[root]) ? sum[root] / count[root] : anchor[root]) + offset[i];
+        y[i] = std::round(y[i] * 1e9) / 1e9;  // and no 1e-15 residue of the arithmetic: a nanometre grid
+    }
+    return violation(y, rows) <= tolerance ? y : x;
+}
+
 /// One QP solve; (solved, x).
 std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
                                          const std::vector<LinearConstraint>& rows,
@@ -104,7 +183,7 @@ std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
         x[i] = result[i];
     if (report.terminationtype <= 0 || violation(x, rows) > tolerance)
         return {false, x};
-    return {true, polished(target, rows, x, tolerance)};
+    return {true, snapped(target, rows, polished(target, rows, x, tolerance), tolerance)};
 }
 
 std::vector<LinearConstraint> without(const std::vector<LinearConstraint>& rows,

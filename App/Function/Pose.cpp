@@ -17,12 +17,14 @@ int axisOf(Side side)
     return static_cast<int>(side) / 2;
 }
 
+/// Zero terms are left out, so a quarter turn keeps faces equal to the last bit.
 Expression sum(std::initializer_list<std::pair<double, const Expression*>> parts)
 {
     Expression total;
     for (const auto& [times, e] : parts) {
         for (const auto& [c, face] : e->terms)
-            total.terms.push_back({times * c, face});
+            if (times * c != 0)
+                total.terms.push_back({times * c, face});
         total.constant += times * e->constant;
     }
     return total;
@@ -35,7 +37,7 @@ Expression sum(std::initializer_list<std::pair<double, const Expression*>> parts
 Box turned(int a, const Expression& pu, const Expression& pw, double degrees, const Box& box)
 {
     const int u = (a + 1) % 3, w = (a + 2) % 3;
-    const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+    const auto [c, s] = cosSin(degrees);
     Box result = box;
     for (bool high : {false, true}) {
         auto corner = [&](int axis, double coefficient) {
@@ -68,6 +70,16 @@ Box moved(const Joint& joint, const JointPose& pose, Box box)
 }
 
 }  // namespace
+
+std::pair<double, double> cosSin(double degrees)
+{
+    const double quarters = degrees / 90;
+    if (quarters == std::round(quarters)) {
+        const int q = static_cast<int>(((static_cast<long long>(quarters) % 4) + 4) % 4);
+        return {q == 0 ? 1 : q == 2 ? -1 : 0, q == 1 ? 1 : q == 3 ? -1 : 0};
+    }
+    return {std::cos(degrees * kPi / 180), std::sin(degrees * kPi / 180)};
+}
 
 int jointMoving(const Model& model, int part)
 {

@@ -4,6 +4,8 @@
 
 #include "Function/Model.h"
 
+#include <utility>
+
 namespace fabguide::function {
 
 /// The side `face.side` of the bounding box of cuboid `face.cuboid` in configuration `configuration`
@@ -23,6 +25,9 @@ const JointPose* poseOf(const Model& model, int joint, int configuration);
 /// The first joint of part p's chain (its own, then its base's, out to the ground) that configuration k
 /// poses, or -1: the part stands still there.
 int jointMovingIn(const Model& model, int part, int configuration);
+
+/// cos and sin of an angle in degrees, exact at multiples of 90° (std::cos(π/2) is 6e-17, not 0).
+std::pair<double, double> cosSin(double degrees);
 
 /// The value of an expression for the model's current coordinates.
 double evaluate(const Model& model, const Expression& expression);
