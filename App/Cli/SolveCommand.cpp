@@ -90,6 +90,8 @@ int run(const SolveArguments& args)
             std::fprintf(stderr, "  %s\n", note.c_str());
         return 1;
     }
+    for (const std::string& note : result.notes)
+        std::printf("note: %s\n", note.c_str());
     printChanges(model, result.model);
     if (args.poses)
         printPoses(result.model);

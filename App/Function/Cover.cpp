@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 
 namespace fabguide::function {
 
@@ -40,46 +42,100 @@ double centre(const Model& model, const Face& f, int axis, int configuration)
            2;
 }
 
-/// Whether a cavity's side lies on its solid's same side: an opening, which can be covered.
-bool opening(const Model& model, int cavity, int side)
+/// A covering face and a covered face that face each other, overlapping by half the smaller face, `gap`
+/// apart.
+struct Candidate {
+    Face covering, covered;
+    double gap = 0;
+    bool opening = false;
+};
+
+std::vector<Candidate> candidates(const Model& model, const std::vector<int>& covering,
+                                  const std::vector<int>& covered, int configuration)
 {
-    const Cuboid& c = model.cuboids[cavity];
-    return std::abs(c.coordinates[side] - model.cuboids[c.within].coordinates[side]) < 1e-6;
+    std::vector<Candidate> found;
+    for (int p : covering)
+        for (int a : model.parts[p].cuboids)
+            for (int sa = 0; sa < 6 && !model.cuboids[a].cavity(); ++sa)
+                for (int q : covered)
+                    for (int b : model.parts[q].cuboids) {
+                        const bool cavity = model.cuboids[b].cavity();
+                        if (cavity && !isOpening(model, b, sa ^ 1))
+                            continue;
+                        const Face fa{a, static_cast<Side>(sa)}, fb{b, static_cast<Side>(sa ^ 1)};  // facing
+                        const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
+                        const double ou = overlap(model, fa, fb, u, configuration),
+                                     ov = overlap(model, fa, fb, v, configuration);
+                        const double smaller = std::min(
+                            extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
+                            extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
+                        if (ou > 0 && ov > 0 && ou * ov > smaller / 2)
+                            found.push_back({fa, fb,
+                                             std::abs(at(model, a, sa, configuration) -
+                                                      at(model, b, sa ^ 1, configuration)),
+                                             cavity});
+                    }
+    return found;
+}
+
+/// The links of one covering face within `distance`: to openings if it has any, else to solids.
+void link(const std::vector<Candidate>& all, const Face& face, double distance,
+          std::vector<std::pair<Face, Face>>& pairs)
+{
+    for (bool openings : {true, false}) {
+        for (const Candidate& c : all)
+            if (c.covering == face && c.opening == openings && c.gap <= distance)
+                pairs.push_back({c.covering, c.covered});
+        if (!pairs.empty() && pairs.back().first == face)
+            return;
+    }
+}
+
+std::string show(double mm)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", mm);
+    return text;
 }
 
 }  // namespace
 
-std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std::vector<int>& covering,
-                                                   const std::vector<int>& covered, int configuration,
-                                                   double distance)
+InferredCover inferCover(const Model& model, const std::vector<int>& covering,
+                         const std::vector<int>& covered, int configuration, double distance)
 {
-    std::vector<std::pair<Face, Face>> pairs;
-    for (int p : covering)
-        for (int a : model.parts[p].cuboids)
-            for (int sa = 0; sa < 6 && !model.cuboids[a].cavity(); ++sa)
-                for (bool cavities : {true, false})  // an opening first: then not the wall around it
-                    for (int q : covered)
-                        for (int b : model.parts[q].cuboids) {
-                            if (model.cuboids[b].cavity() != cavities ||
-                                (cavities && !opening(model, b, sa ^ 1)) ||
-                                (!cavities && !pairs.empty() &&
-                                 pairs.back().first == Face{a, static_cast<Side>(sa)}))
-                                continue;
-                            const Face fa{a, static_cast<Side>(sa)},
-                                fb{b, static_cast<Side>(sa ^ 1)};  // facing
-                            const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
-
-                            const double gap = std::abs(at(model, a, sa, configuration) -
-                                                        at(model, b, sa ^ 1, configuration));
-                            const double ou = overlap(model, fa, fb, u, configuration),
-                                         ov = overlap(model, fa, fb, v, configuration);
-                            const double smaller = std::min(
-                                extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
-                                extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
-                            if (gap <= distance && ou > 0 && ov > 0 && ou * ov > smaller / 2)
-                                pairs.push_back({fa, fb});
-                        }
-    return pairs;
+    const std::vector<Candidate> all = candidates(model, covering, covered, configuration);
+    InferredCover result;
+    std::vector<Face> faces;
+    for (const Candidate& c : all)
+        if (std::find(faces.begin(), faces.end(), c.covering) == faces.end())
+            faces.push_back(c.covering);
+    for (const Face& f : faces)
+        link(all, f, distance, result.pairs);
+    // Every part named takes part: one left out is linked by its nearest candidate, and noted.
+    auto linked = [&](int part, bool isCovering) {
+        return std::any_of(result.pairs.begin(), result.pairs.end(), [&](const auto& pair) {
+            return partOf(model, (isCovering ? pair.first : pair.second).cuboid) == part;
+        });
+    };
+    for (bool isCovering : {true, false})
+        for (int part : isCovering ? covering : covered) {
+            if (linked(part, isCovering))
+                continue;
+            const Candidate* nearest = nullptr;
+            for (const Candidate& c : all)
+                if (partOf(model, (isCovering ? c.covering : c.covered).cuboid) == part &&
+                    (!nearest || c.gap < nearest->gap || (c.gap == nearest->gap && c.opening)))
+                    nearest = &c;
+            if (!nearest) {
+                result.unlinked.push_back(part);
+                continue;
+            }
+            result.pairs.push_back({nearest->covering, nearest->covered});
+            result.notes.push_back(model.parts[part].name + ": " + show(nearest->gap) + " mm from " +
+                                   faceName(model, isCovering ? nearest->covered : nearest->covering) +
+                                   ", beyond the " + show(distance) + " mm face distance; linked to it");
+        }
+    return result;
 }
 
 std::vector<CoverComponent> components(const std::vector<std::pair<Face, Face>>& pairs)

@@ -10,13 +10,21 @@
 
 namespace fabguide::function {
 
-/// The corresponding-faces graph M (4.3.1): each covering face is linked to every covered face that faces it,
-/// parallel, at most `distance` away, overlapping it by more than half the smaller face's area in their
-/// plane. Unlike the thesis' greedy pass a covered face may take several covering faces (two doors, one
-/// opening). Of a cavity only an opening can be covered: a side that lies on its solid's side.
-std::vector<std::pair<Face, Face>> inferCoverPairs(const Model& model, const std::vector<int>& covering,
-                                                   const std::vector<int>& covered, int configuration,
-                                                   double distance);
+/// The corresponding-faces graph M (4.3.1) and what it took to link every part named.
+struct InferredCover {
+    std::vector<std::pair<Face, Face>> pairs;  ///< (covering face, covered face)
+    InferenceNotes notes;                      ///< parts linked beyond the distance
+    std::vector<int> unlinked;                 ///< parts with no face facing the other side at all
+};
+
+/// Each covering face is linked to every covered face that faces it, parallel, at most `distance` away,
+/// overlapping it by more than half the smaller face's area in their plane. Unlike the thesis' greedy pass a
+/// covered face may take several covering faces (two doors, one opening). Of a cavity only an opening can be
+/// covered, and a covering face linked to an opening is not linked to the wall around it. A part named but
+/// left with no link within the distance (a door drawn 7 mm off at 5 mm) is linked by its nearest facing
+/// faces and noted: every part the user named takes part.
+InferredCover inferCover(const Model& model, const std::vector<int>& covering,
+                         const std::vector<int>& covered, int configuration, double distance);
 
 /// A connected component of M: the covering and the covered faces that must lie in one plane.
 struct CoverComponent {

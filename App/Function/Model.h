@@ -106,6 +106,10 @@ struct Geometric {
     int configuration = -1;  ///< where its quantities are measured (-1: as modelled)
 };
 
+/// What inference (4.3) had to stretch to link every part the user named in a relationship, one sentence
+/// each ("right door: 7 mm from upper.near, beyond the 5 mm face distance; linked"); reported by the solve.
+using InferenceNotes = std::vector<std::string>;
+
 /// Support (thesis 4.2.3): each pair (a, b) of the corresponding-faces graph puts the bottom of cuboid b on
 /// the top of cuboid a, overlapping in the supporting plane; parts that only support stand on one ground.
 struct Support {
@@ -113,6 +117,7 @@ struct Support {
     std::vector<int> supporting, supported;  ///< parts
     std::vector<std::pair<int, int>> pairs;  ///< (supporting cuboid, supported cuboid)
     int configuration = -1;
+    InferenceNotes notes;
 };
 
 /// Fit inside (thesis 4.2.2, eq. 4.3–4.4): in the configuration, every solid cuboid of the inner parts lies
@@ -143,6 +148,7 @@ struct Cover {
     std::vector<std::pair<Face, Face>> pairs;  ///< the graph M: (covering face, covered face)
     bool just = false;
     int configuration = -1;
+    InferenceNotes notes;
 };
 
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.
@@ -163,9 +169,15 @@ struct Model {
     std::vector<Lock> locks;
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces
+    double minimumWall = 1;  ///< mm, the least wall around a cavity on a side that is not an opening
 };
 
 /// "lid.top": how a face is named in files and messages.
 std::string faceName(const Model& model, const Face& face);
+
+/// Whether side `side` of a cavity is an opening (4.1.1), which stays on its solid's face: it lies there as
+/// modelled, within half the minimum wall (a rough drawing's mouth a hair short of the face), or a cover
+/// names it as a covered face (a door covers it). Other sides keep the minimum wall.
+bool isOpening(const Model& model, int cavity, int side);
 
 }  // namespace fabguide::function

@@ -4,10 +4,13 @@
 #include "Function/DoublePivot.h"
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
+#include "Function/Separation.h"
 
 #include <algorithm>
 #include <limits>
+#include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace fabguide::function {
 
@@ -47,6 +50,36 @@ void order(std::vector<LinearConstraint>& rows, const Model& model, const std::s
         return;
     auto [terms, bound] = difference(model, {{{1.0, low}}, 0}, {{{1.0, high}}, 0}, configuration);
     rows.push_back({terms, equal ? bound : -kInfinity, bound, name});
+}
+
+/// A cavity stays within its solid cuboid (thesis 4.1.1), its openings on the solid's faces; its other sides
+/// keep the minimum wall inside them ("wall: well", named so a conflict can blame it).
+void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, int solid)
+{
+    for (int k = 0; k < 6; ++k) {
+        const double sign = k % 2 ? 1 : -1;  // cavity − solid, outwards
+        const std::vector<std::pair<int, double>> terms{{6 * cavity + k, sign}, {6 * solid + k, -sign}};
+        const bool opening = isOpening(model, cavity, k);
+        rows.push_back({terms, opening ? 0 : -kInfinity, 0, ""});
+        if (!opening && model.minimumWall > 0)
+            rows.push_back({terms, -kInfinity, -model.minimumWall, "wall: " + model.cuboids[cavity].name});
+    }
+}
+
+/// The constraints that keep a pair clear (Separation.h), in its configuration.
+void separate(std::vector<LinearConstraint>& rows, const Model& model, const Separation& s)
+{
+    const std::string name = separationName(model, s);
+    if (s.cavity < 0) {
+        order(rows, model, name, s.configuration, Face{s.a, static_cast<Side>(2 * s.axis + 1)},
+              Face{s.b, static_cast<Side>(2 * s.axis)}, false);
+        return;
+    }
+    for (int k = 0; k < 6; ++k)
+        if (!isOpening(model, s.cavity, k)) {
+            const Face held{s.a, static_cast<Side>(k)}, wall{s.cavity, static_cast<Side>(k)};
+            order(rows, model, name, s.configuration, k % 2 ? held : wall, k % 2 ? wall : held, false);
+        }
 }
 
 /// Whether cuboid c of an inner part must lie inside (a partial fit names the portion that must).
@@ -92,11 +125,29 @@ void coverConstraints(std::vector<LinearConstraint>& rows, const Model& model, c
     }
 }
 
+/// How far side `side` of a cavity lies inside its solid's same side (negative: beyond it).
+double depthInside(const Model& model, int cavity, int side)
+{
+    const Cuboid& c = model.cuboids[cavity];
+    return (side % 2 ? -1 : 1) * (c.coordinates[side] - model.cuboids[c.within].coordinates[side]);
+}
+
 }  // namespace
 
 std::string faceName(const Model& model, const Face& face)
 {
     return model.cuboids[face.cuboid].name + "." + sideName(face.side);
+}
+
+bool isOpening(const Model& model, int cavity, int side)
+{
+    if (depthInside(model, cavity, side) <= std::max(1e-6, model.minimumWall / 2))
+        return true;
+    const Face face{cavity, static_cast<Side>(side)};
+    return std::any_of(model.cover.begin(), model.cover.end(), [&](const Cover& c) {
+        return std::any_of(c.pairs.begin(), c.pairs.end(),
+                           [&](const auto& pair) { return pair.second == face; });
+    });
 }
 
 std::vector<LinearConstraint> constraints(const Model& model)
@@ -107,11 +158,7 @@ std::vector<LinearConstraint> constraints(const Model& model)
             rows.push_back(
                 {{{6 * c + 2 * a + 1, 1.0}, {6 * c + 2 * a, -1.0}}, model.minimumSize, kInfinity, ""});
         if (const int solid = model.cuboids[c].within; solid >= 0)
-            for (int a = 0; a < 3; ++a) {  // a cavity stays within its solid cuboid (thesis 4.1.1)
-                rows.push_back({{{6 * solid + 2 * a, 1.0}, {6 * c + 2 * a, -1.0}}, -kInfinity, 0, ""});
-                rows.push_back(
-                    {{{6 * c + 2 * a + 1, 1.0}, {6 * solid + 2 * a + 1, -1.0}}, -kInfinity, 0, ""});
-            }
+            walls(rows, model, c, solid);
     }
     for (const Flush& f : model.flush) {  // thesis 4.2.4: the two faces coplanar
         if (axis(f.a.side) != axis(f.b.side))
@@ -202,8 +249,45 @@ Model scaled(Model model, double factor)
                 x *= factor;
         }
     model.minimumSize *= factor;
+    model.minimumWall *= factor;
     return model;
 }
+
+namespace {
+
+Model withCoordinates(Model model, const Eigen::VectorXd& x)
+{
+    for (size_t c = 0; c < model.cuboids.size(); ++c)
+        for (int k = 0; k < 6; ++k)
+            model.cuboids[c].coordinates[k] = x[6 * c + k];
+    return model;
+}
+
+/// Pairs of cuboids in configurations, as keys of the separations already made.
+using PairKey = std::tuple<int, int, int>;
+
+/// The separations of the pairs that come near in `model` and have none yet (`margin` as nearPairs),
+/// inferred on the model as drawn. Returns how many it added.
+size_t separateNear(const Model& drawn, const Model& model, double margin, std::set<PairKey>& seen,
+                    std::vector<Separation>& separations)
+{
+    const size_t before = separations.size();
+    for (int k = -1; k < static_cast<int>(model.configurations.size()); ++k)
+        for (const auto& [a, b] : nearPairs(model, k, margin)) {
+            Separation s;
+            if (seen.insert({a, b, k}).second && inferSeparation(drawn, a, b, k, s))
+                separations.push_back(s);
+        }
+    return separations.size() - before;
+}
+
+void addNotes(std::vector<std::string>& notes, const std::string& name, const InferenceNotes& more)
+{
+    for (const std::string& note : more)
+        notes.push_back(name + ": " + note);
+}
+
+}  // namespace
 
 SolveResult solve(const Model& model)
 {
@@ -211,18 +295,36 @@ SolveResult solve(const Model& model)
     for (size_t c = 0; c < model.cuboids.size(); ++c)
         for (int k = 0; k < 6; ++k)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
-    const LeastChangeResult r = solveLeastChange(target, constraints(model));
-    SolveResult result{r.solved, model, r.conflict, r.violation, {}};
-    for (size_t c = 0; c < model.cuboids.size() && r.solved; ++c)
-        for (int k = 0; k < 6; ++k)
-            result.model.cuboids[c].coordinates[k] = r.x[6 * c + k];
+    const std::vector<LinearConstraint> relationships = constraints(model);
+    LeastChangeResult r = solveLeastChange(target, relationships);
+    // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
+    // in that solution, the arrangement the relationships give; pairs the solve then brings together are
+    // added round by round (constraint generation: the pairs stay few).
+    const Model arranged = r.solved ? withCoordinates(model, r.x) : model;
+    std::set<PairKey> seen;
+    std::vector<Separation> separations;
+    separateNear(arranged, arranged, model.minimumSize, seen, separations);
+    for (int round = 0; r.solved && round < 8; ++round) {
+        std::vector<LinearConstraint> rows = relationships;
+        for (const Separation& s : separations)
+            separate(rows, model, s);
+        if (violation(r.x, rows) > 1e-6)
+            r = solveLeastChange(target, rows, &r.x);
+        if (!r.solved || separateNear(arranged, withCoordinates(model, r.x), -1e-6, seen, separations) == 0)
+            break;
+    }
+    SolveResult result{r.solved, r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation, {}};
+    for (const Cover& c : model.cover)
+        addNotes(result.notes, c.name, c.notes);
+    for (const Support& s : model.support)
+        addNotes(result.notes, s.name, s.notes);
     if (!r.solved)
         return result;
     // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
     const std::vector<Unplaced> unplaced = placePivots(result.model);
     if (unplaced.empty())
         return result;
-    SolveResult failed{false, model, {}, r.violation, {}};
+    SolveResult failed{false, model, {}, r.violation, result.notes};
     for (const Unplaced& u : unplaced) {
         failed.conflict.push_back(u.joint);
         failed.notes.push_back(u.joint + ": " + u.reason);

@@ -268,6 +268,26 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
     }
 }
 
+int axisNamed(const nlohmann::json& value, const std::string& path, const char* shape)
+{
+    const auto axis = value.is_string()
+                          ? std::find(std::begin(kAxes), std::end(kAxes), value.get<std::string>())
+                          : std::end(kAxes);
+    if (axis == std::end(kAxes))
+        throw FormatError(path + ": must be " + shape + ", got " + value.dump());
+    return static_cast<int>(axis - std::begin(kAxes));
+}
+
+/// An array of axes ["x", "z"] as 0, 2.
+std::vector<int> axisList(const Fields& fields, const std::string& key)
+{
+    const nlohmann::json& names = fields.array(key);
+    std::vector<int> axes;
+    for (size_t k = 0; k < names.size(); ++k)
+        axes.push_back(axisNamed(names[k], at(fields.pathOf(key), k), "\"x\", \"y\" or \"z\""));
+    return axes;
+}
+
 std::vector<int> partList(const function::Model& model, const Fields& r, const std::string& key)
 {
     const nlohmann::json& names = r.array(key);
@@ -280,6 +300,19 @@ std::vector<int> partList(const function::Model& model, const Fields& r, const s
         parts.push_back(partNamed(model, names[k].get<std::string>(), at(r.pathOf(key), k)));
     }
     return parts;
+}
+
+/// Where a relationship names part `part`: "relationships[2].covering[1] ('right door')".
+std::string named(const function::Model& model, const Fields& r, std::initializer_list<const char*> keys,
+                  int part)
+{
+    for (const char* key : keys) {
+        const nlohmann::json& names = r.array(key);
+        for (size_t k = 0; k < names.size(); ++k)
+            if (names[k] == model.parts[part].name)
+                return at(r.pathOf(key), k) + " ('" + model.parts[part].name + "')";
+    }
+    return "'" + model.parts[part].name + "'";
 }
 
 /// A relationship's "pairs" [["a.side", "b.side"], …] as face pairs; `shape` is what each must look like.
@@ -301,13 +334,17 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
                               int configuration)
 {
     function::Support s{
-        name, partList(model, r, "supporting"), partList(model, r, "supported"), {}, configuration};
+        name, partList(model, r, "supporting"), partList(model, r, "supported"), {}, configuration, {}};
     if (!r.has("pairs")) {
         const double distance = r.number("distance", 100.0, 0.0);
-        s.pairs = function::inferSupportPairs(model, s.supporting, s.supported, configuration, distance);
-        if (s.pairs.empty())
-            throw FormatError(r.pathOf("supported") + ": no supported bottom face within " + show(distance) +
-                              " mm above a supporting top face");
+        function::InferredSupport inferred =
+            function::inferSupport(model, s.supporting, s.supported, configuration, distance);
+        if (!inferred.unlinked.empty())
+            throw FormatError(
+                named(model, r, {"supporting", "supported"}, inferred.unlinked.front()) +
+                ": no bottom face of a supported part lies above a top face of a supporting one");
+        s.pairs = std::move(inferred.pairs);
+        s.notes = std::move(inferred.notes);
         return s;
     }
     const auto pairs = facePairs(model, r, "[\"supporting.top\", \"supported.bottom\"]");
@@ -375,10 +412,16 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
     for (size_t k = 0; k < just.size(); ++k) {
         const std::string here = at(r.pathOf("just"), k);
         if (just[k].is_string()) {
-            const auto axis = std::find(std::begin(kAxes), std::end(kAxes), just[k].get<std::string>());
-            if (axis == std::end(kAxes))
-                throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
-            axes.push_back(static_cast<int>(axis - std::begin(kAxes)));
+            axes.push_back(
+                axisNamed(just[k], here, "\"x\", \"y\", \"z\", a pair of faces or {\"part\", \"axes\"}"));
+        } else if (just[k].is_object()) {  // one inner part just fits on its own
+            const Fields each(just[k], here);
+            const int part = partNamed(model, each.text("part"), each.pathOf("part"));
+            if (std::find(f.inner.begin(), f.inner.end(), part) == f.inner.end())
+                throw FormatError(each.pathOf("part") + ": '" + each.text("part") + "' is not an inner part");
+            const auto inferred = function::inferJust(model, {part}, f.enclosing, f.cavity,
+                                                      axisList(each, "axes"), configuration);
+            f.just.insert(f.just.end(), inferred.begin(), inferred.end());
         } else if (just[k].is_array() && just[k].size() == 2) {
             f.just.push_back({face(model, just[k][0], here + "[0]"), face(model, just[k][1], here + "[1]")});
         } else {
@@ -396,13 +439,17 @@ function::Cover readCover(const function::Model& model, const Fields& r, const s
                           int configuration)
 {
     function::Cover c{name, partList(model, r, "covering"), partList(model, r, "covered"),
-                      {},   r.flag("just", false),          configuration};
+                      {},   r.flag("just", false),          configuration,
+                      {}};
     if (!r.has("pairs")) {
         const double distance = r.number("distance", 5.0, 0.0);
-        c.pairs = function::inferCoverPairs(model, c.covering, c.covered, configuration, distance);
-        if (c.pairs.empty())
-            throw FormatError(r.pathOf("covered") + ": no covered face faces a covering face within " +
-                              show(distance) + " mm, overlapping it by half");
+        function::InferredCover inferred =
+            function::inferCover(model, c.covering, c.covered, configuration, distance);
+        if (!inferred.unlinked.empty())
+            throw FormatError(named(model, r, {"covering", "covered"}, inferred.unlinked.front()) +
+                              ": no face of it faces a face of the other side, overlapping it by half");
+        c.pairs = std::move(inferred.pairs);
+        c.notes = std::move(inferred.notes);
         return c;
     }
     c.pairs = facePairs(model, r, "[\"covering face\", \"covered face\"]");
@@ -515,6 +562,7 @@ function::Model readWorkslike(const nlohmann::json& document)
     root.header("fabguide.workslike", kWorkslikeFormatVersion);
     function::Model model;
     model.minimumSize = root.number("minimum_size", 1.0, 0.0);
+    model.minimumWall = root.number("minimum_wall", 1.0, 0.0);
     const nlohmann::json& parts = root.array("parts");
     for (size_t p = 0; p < parts.size(); ++p) {
         const Fields part(parts[p], at("parts", p));
@@ -693,6 +741,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
     nlohmann::json out = {{"format", "fabguide.workslike"},
                           {"version", kWorkslikeFormatVersion},
                           {"minimum_size", model.minimumSize},
+                          {"minimum_wall", model.minimumWall},
                           {"parts", parts},
                           {"joints", joints},
                           {"configurations", configurations},

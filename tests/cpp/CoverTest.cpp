@@ -13,12 +13,9 @@ using function::Face;
 using function::Side;
 using nlohmann::json;
 
-namespace {
+using testsupport::cuboidPart;
 
-json cuboidPart(const std::string& name, std::array<double, 3> min, std::array<double, 3> max)
-{
-    return {{"name", name}, {"cuboids", {{{"name", name}, {"min", min}, {"max", max}}}}};
-}
+namespace {
 
 /// A clamshell: the lid modelled open behind the body, hinged on its near-top edge; "closed" turns it 180°
 /// onto the body, where it lands 3 mm low, a little small and off-centre.
@@ -138,14 +135,31 @@ TEST(Cover, ALidTooSmallToCoverIsAConflictNamingWhatHoldsItSmall)
                                                     "lock: body.right"}));
 }
 
-TEST(Cover, ErrorsNameTheField)
+TEST(Cover, APartBeyondTheFaceDistanceIsLinkedAndNoted)
 {
     json d = clamshell(false);
     d["relationships"][0].erase("configuration");  // open, the lid's near face is 2 mm behind the body
     d["relationships"][0]["distance"] = 1;
+    const function::Model m = io::readWorkslike(d);
+    ASSERT_EQ(m.cover[0].pairs.size(), 1u);
+    EXPECT_EQ(function::faceName(m, m.cover[0].pairs[0].first), "lid.near");
+    EXPECT_EQ(
+        m.cover[0].notes,
+        (function::InferenceNotes{"lid: 2 mm from body.far, beyond the 1 mm face distance; linked to it"}));
+    const function::SolveResult r = function::solve(m);
+    ASSERT_TRUE(r.solved);
+    EXPECT_EQ(r.notes, (std::vector<std::string>{"lid covers the body: " + m.cover[0].notes[0]}));
+}
+
+TEST(Cover, ErrorsNameTheField)
+{
+    json d = clamshell(false);
+    d["relationships"][0].erase("configuration");  // open, the lid's near face is 2 mm behind the body
+    d["parts"][1]["cuboids"][0]["min"][0] = 100;   // … and beside it: no face of the lid faces the body's
+    d["parts"][1]["cuboids"][0]["max"][0] = 150;
     EXPECT_EQ(testsupport::workslikeError(d),
-              "relationships[0].covered: no covered face faces a covering face within 1 mm, overlapping it "
-              "by half");
+              "relationships[0].covering[0] ('lid'): no face of it faces a face "
+              "of the other side, overlapping it by half");
     d = clamshell(false);
     d["relationships"][0]["pairs"] = json::array({json::array({"lid.bottom", "body.near"})});
     EXPECT_EQ(testsupport::workslikeError(d),

@@ -88,8 +88,10 @@ TEST(FitInside, ErrorsNameTheFieldAndTheFormatRoundTrips)
     EXPECT_EQ(testsupport::workslikeError(d), "relationships[0].enclosing: a part cannot fit inside itself");
     d = chest();
     d["relationships"][0]["just"] = {"w"};
-    EXPECT_EQ(testsupport::workslikeError(d),
-              "relationships[0].just[0]: must be \"x\", \"y\", \"z\" or a pair of faces");
+    EXPECT_EQ(
+        testsupport::workslikeError(d),
+        "relationships[0].just[0]: must be \"x\", \"y\", \"z\", a pair of faces or {\"part\", \"axes\"}, got "
+        "\"w\"");
     d = chest();
     d["relationships"][0]["apart"] = json::array({json::array({"low drawer", "q", "high drawer"})});
     EXPECT_EQ(testsupport::workslikeError(d),

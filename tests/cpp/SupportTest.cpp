@@ -65,17 +65,34 @@ TEST(Support, PairsCanBeGivenAndAreWrittenBack)
     EXPECT_EQ(io::workslikeToJson(io::readWorkslike(written)), written);
 }
 
+TEST(Support, LegsShortOrSunkAreLinkedAndNoted)
+{
+    json d = table();
+    d["relationships"][0]["distance"] = 40;
+    d["parts"][1]["cuboids"][0]["max"][2] = 590;  // leg1 110 mm short of the top
+    d["parts"][2]["cuboids"][0]["max"][2] = 703;  // leg2 sunk 3 mm into it
+    const function::Model m = io::readWorkslike(d);
+    EXPECT_EQ(m.support[0].pairs, (std::vector<std::pair<int, int>>{{2, 0}, {3, 0}, {1, 0}}));
+    EXPECT_EQ(m.support[0].notes,
+              (function::InferenceNotes{
+                  "leg1: 110 mm below top.bottom, beyond the 40 mm support distance; linked to it"}));
+    const function::SolveResult r = function::solve(m);
+    ASSERT_TRUE(r.solved);
+    for (int leg = 1; leg <= 3; ++leg)  // every leg ends under the top, none inside it
+        EXPECT_EQ(at(r.model, leg, Side::Top), at(r.model, 0, Side::Bottom));
+}
+
 TEST(Support, ErrorsNameTheField)
 {
     json d = table();
     d["relationships"][0]["supported"] = {"tabletop"};
     EXPECT_EQ(testsupport::workslikeError(d), "relationships[0].supported[0]: no part named 'tabletop'");
     d = table();
-    d["relationships"][0]["distance"] = 1;
-    d["parts"][0]["cuboids"][0]["min"][2] = 750;  // the top lifted 50 mm off its legs
-    d["parts"][0]["cuboids"][0]["max"][2] = 770;
+    d["parts"][0]["cuboids"][0]["min"][2] = -100;  // the top under its legs
+    d["parts"][0]["cuboids"][0]["max"][2] = -80;
     EXPECT_EQ(testsupport::workslikeError(d),
-              "relationships[0].supported: no supported bottom face within 1 mm above a supporting top face");
+              "relationships[0].supporting[0] ('leg1'): no bottom face of a "
+              "supported part lies above a top face of a supporting one");
     d = table();
     d["relationships"][0]["pairs"] = json::array({json::array({"top.bottom", "leg1.top"})});
     EXPECT_EQ(testsupport::workslikeError(d),

@@ -4,9 +4,27 @@
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
+#include <array>
 #include <string>
 
 namespace fabguide::testsupport {
+
+/// A *.workslike.json cuboid, a cavity if `cavity`.
+inline nlohmann::json cuboid(const std::string& name, std::array<double, 3> min, std::array<double, 3> max,
+                             bool cavity = false)
+{
+    nlohmann::json c = {{"name", name}, {"min", min}, {"max", max}};
+    if (cavity)
+        c["cavity"] = true;
+    return c;
+}
+
+/// A part of one cuboid of its name.
+inline nlohmann::json cuboidPart(const std::string& name, std::array<double, 3> min,
+                                 std::array<double, 3> max)
+{
+    return {{"name", name}, {"cuboids", {cuboid(name, min, max)}}};
+}
 
 /// The FormatError message reading `document` as a *.workslike.json gives, or "" if it reads.
 inline std::string workslikeError(const nlohmann::json& document)

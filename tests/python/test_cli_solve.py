@@ -11,7 +11,7 @@ def test_example_solves_and_every_relationship_holds(fabguide_cli, source_dir, t
     out = tmp_path / "solved.workslike.json"
     run = solve(fabguide_cli, source_dir + "/examples/box-with-lid.workslike.json", "-o", str(out))
     assert run.returncode == 0, run.stderr
-    assert run.stdout.count("satisfied") == 9 and "part lid" in run.stdout
+    assert run.stdout.count("satisfied") == 10 and "part lid" in run.stdout
     solved = json.load(out.open())
     assert solved["report"]["solved"] and solved["report"]["violation"] < 1e-6
     cuboids = {c["name"]: c for p in solved["parts"] for c in p["cuboids"]}

@@ -1,0 +1,165 @@
+// Parts kept apart, openings kept open, walls kept, results exact (issue 13).
+#include "Function/Separation.h"
+#include "Function/Solve.h"
+#include "IO/WorkslikeFormat.h"
+
+#include "WorkslikeTestSupport.h"
+
+#include <gtest/gtest.h>
+
+using namespace fabguide;
+using function::Side;
+using nlohmann::json;
+using testsupport::cuboid;
+using testsupport::cuboidPart;
+
+namespace {
+
+double at(const function::Model& m, const std::string& name, Side side)
+{
+    for (const function::Cuboid& c : m.cuboids)
+        if (c.name == name)
+            return c.at(side);
+    throw std::invalid_argument(name);
+}
+
+/// A carcass with an opening at the front and a door drawn 2 mm into it, a bit off the opening.
+json doorIntoCarcass()
+{
+    return {{"parts",
+             {{{"name", "carcass"},
+               {"cuboids",
+                {cuboid("carcass", {0, 0, 0}, {600, 400, 900}),
+                 cuboid("opening", {18, 0, 18}, {582, 382, 882}, true)}}},
+              cuboidPart("door", {20, -16, 16}, {585, 2, 880})}},
+            {"relationships",
+             {{{"type", "cover"},
+               {"name", "door covers the opening"},
+               {"covering", {"door"}},
+               {"covered", {"carcass"}},
+               {"just", true}}}}};
+}
+
+}  // namespace
+
+TEST(Separation, ADoorDrawnIntoItsCarcassEndsOnItsFaceAndTheOpeningStaysOpen)
+{
+    const function::SolveResult r = function::solve(io::readWorkslike(doorIntoCarcass()));
+    ASSERT_TRUE(r.solved) << testing::PrintToString(r.conflict);
+    EXPECT_EQ(at(r.model, "door", Side::Far), at(r.model, "carcass", Side::Near));  // to the last bit
+    EXPECT_EQ(at(r.model, "opening", Side::Near), at(r.model, "carcass", Side::Near));
+    EXPECT_EQ(at(r.model, "door", Side::Left), at(r.model, "opening", Side::Left));  // just covers
+    EXPECT_EQ(at(r.model, "door", Side::Top), at(r.model, "opening", Side::Top));
+}
+
+TEST(Separation, OverlappingPartsMoveApartByTheLeastChange)
+{
+    const json d = {
+        {"parts", {cuboidPart("a", {0, 0, 0}, {100, 50, 50}), cuboidPart("b", {97, 10, 0}, {200, 40, 50})}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    EXPECT_EQ(at(r.model, "a", Side::Right), 98.5);  // 1.5 mm each along x, the least overlap
+    EXPECT_EQ(at(r.model, "b", Side::Left), 98.5);
+    EXPECT_EQ(at(r.model, "b", Side::Near), 10);  // nothing else moves
+}
+
+TEST(Separation, PartsTheSolveBringsTogetherAreKeptApartToo)
+{
+    json d = {
+        {"parts", {cuboidPart("a", {0, 0, 0}, {10, 10, 10}), cuboidPart("b", {20, 0, 0}, {30, 10, 10})}},
+        {"relationships",
+         {{{"type", "geometric"},
+           {"name", "a 25 wide"},
+           {"left", "a.width"},
+           {"right", json::array()},
+           {"offset", 25}}}},
+        {"locks", {"a.left"}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    EXPECT_EQ(at(r.model, "a", Side::Right), 25);
+    EXPECT_EQ(at(r.model, "b", Side::Left), 25);  // its side pushed back, not passed through
+    EXPECT_EQ(at(r.model, "b", Side::Right), 30);
+}
+
+TEST(Separation, LockedPartsThatOverlapAreAConflictNamingThem)
+{
+    json d = {{"parts", {cuboidPart("a", {0, 0, 0}, {10, 10, 10}), cuboidPart("b", {8, 0, 0}, {20, 10, 10})}},
+              {"locks", {"a.right", "b.left"}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_FALSE(r.solved);
+    EXPECT_EQ(r.conflict, (std::vector<std::string>{"lock: a.right", "lock: b.left", "no overlap: a, b"}));
+}
+
+TEST(Separation, ADrawerInACompartmentStaysInsideItButThroughTheMouth)
+{
+    // Drawn 3 mm through the back wall and pulled out 100 mm in "open".
+    json d = {{"parts",
+               {{{"name", "chest"},
+                 {"cuboids",
+                  {cuboid("chest", {0, 0, 0}, {400, 300, 200}),
+                   cuboid("bay", {10, 0, 10}, {390, 290, 190}, true)}}},
+                cuboidPart("drawer", {12, 0, 12}, {388, 293, 150})}},
+              {"joints", {{{"name", "runner"}, {"type", "slide"}, {"part", "drawer"}, {"axis", "y"}}}},
+              {"configurations", {{{"name", "open"}, {"poses", {{"runner", -100}}}}}}};
+    const function::Model m = io::readWorkslike(d);
+    function::Separation s;
+    ASSERT_TRUE(function::inferSeparation(m, 0, 2, -1, s));  // the chest and the drawer
+    EXPECT_EQ(s.a, 2);  // the drawer in the bay: less to change than pulling it out of the chest
+    EXPECT_EQ(s.cavity, 1);
+    const function::SolveResult r = function::solve(m);
+    ASSERT_TRUE(r.solved);
+    EXPECT_LE(at(r.model, "drawer", Side::Far), at(r.model, "bay", Side::Far));
+    EXPECT_EQ(at(r.model, "bay", Side::Near), 0);  // its mouth stays on the face
+    EXPECT_GE(at(r.model, "chest", Side::Far) - at(r.model, "bay", Side::Far), 1);  // a wall behind it
+}
+
+TEST(Separation, AWallCannotBeEatenBelowTheMinimum)
+{
+    json d = {{"parts",
+               {{{"name", "box"},
+                 {"cuboids",
+                  {cuboid("box", {0, 0, 0}, {100, 60, 40}), cuboid("well", {5, 5, 5}, {95, 55, 40}, true)}}},
+                cuboidPart("tray", {0.5, 8, 10}, {99.5, 52, 30})}},  // 0.5 mm walls at most
+              {"relationships",
+               {{{"type", "fit_inside"},
+                 {"name", "tray in the well"},
+                 {"inner", {"tray"}},
+                 {"enclosing", "box"},
+                 {"cavity", "well"}}}},
+              {"locks", {"box.left", "box.right", "tray.left", "tray.right"}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_FALSE(r.solved);
+    EXPECT_EQ(r.conflict, (std::vector<std::string>{"wall: well", "tray in the well", "lock: box.right",
+                                                    "lock: tray.right"}));  // the right side is enough
+}
+
+TEST(Separation, AnInnerPartOfAFitInsideMayLieInTheEnclosingSolid)
+{
+    // Print-in-place sweeps its room out (thesis 4.5.1): the tray inside a solid box is no overlap.
+    json d = {
+        {"parts",
+         {cuboidPart("box", {0, 0, 0}, {100, 60, 40}), cuboidPart("tray", {10, 10, 10}, {90, 50, 30})}},
+        {"relationships",
+         {{{"type", "fit_inside"}, {"name", "tray in the box"}, {"inner", {"tray"}}, {"enclosing", "box"}}}}};
+    const function::Model m = io::readWorkslike(d);
+    EXPECT_TRUE(function::nearPairs(m, -1, 1).empty());
+    const function::SolveResult r = function::solve(m);
+    ASSERT_TRUE(r.solved);
+    EXPECT_EQ(r.model.cuboids[1].coordinates, m.cuboids[1].coordinates);
+}
+
+TEST(Separation, PosesTurnedByOtherThanQuartersAreNotExact)
+{
+    json d = {
+        {"parts",
+         {cuboidPart("body", {0, 0, 0}, {100, 60, 40}), cuboidPart("lid", {0, 0, 40}, {100, 60, 45})}},
+        {"joints",
+         {{{"name", "hinge"}, {"type", "hinge"}, {"part", "lid"}, {"edge", {"lid.far", "lid.bottom"}}}}},
+        {"configurations",
+         {{{"name", "up"}, {"poses", {{"hinge", -90}}}}, {{"name", "ajar"}, {"poses", {{"hinge", -30}}}}}}};
+    const function::Model m = io::readWorkslike(d);
+    EXPECT_TRUE(function::exactlyPosed(m, 1, -1));
+    EXPECT_TRUE(function::exactlyPosed(m, 1, 0));
+    EXPECT_FALSE(function::exactlyPosed(m, 1, 1));
+    EXPECT_TRUE(function::exactlyPosed(m, 0, 1));
+}
