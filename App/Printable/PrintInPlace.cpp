@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -215,7 +216,10 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
     f.turned = std::min(1.0, room(extent, turned)) > std::min(1.0, room(extent, volume)) * (1 + 1e-9);
     const Size& bed = f.turned ? turned : volume;
     f.scale = std::min(1.0, room(extent, bed));
-    for (int attempt = 0; attempt < 4; ++attempt) {
+    // Joints do not scale with the part (least pins, the gap): rescale by the room left until the print
+    // fits with less than 0.1 % to spare, keeping the largest that fits.
+    std::optional<Fitted> fits;
+    for (int attempt = 0; attempt < 5; ++attempt) {
         f.model = function::scaled(solved, f.scale);
         try {
             f.printable = makePrintable(f.model, printer);
@@ -226,10 +230,17 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
             throw std::invalid_argument(what.str());
         }
         const double r = room(sizeOf(f.printable), bed);
-        if (r >= 1 - 1e-9)
-            return f;
-        f.scale *= r * (1 - 1e-4);
+        if (r < 1 - 1e-9 && fits)
+            return *fits;  // grown past the bed: the last that fitted
+        if (r >= 1 - 1e-9) {
+            fits = f;
+            if (r < 1 + 1e-3 || f.scale >= 1)
+                return f;
+        }
+        f.scale = std::min(1.0, f.scale * r * (1 - 1e-4));
     }
+    if (fits)
+        return *fits;
     std::ostringstream what;
     what << "the print does not fit the build volume " << volume[0] << " x " << volume[1] << " x "
          << volume[2] << " mm at any scale tried (down to " << f.scale << ")";

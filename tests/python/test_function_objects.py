@@ -227,11 +227,11 @@ def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc
     doc.recompute()
     made = printable.create(doc, mech)
     doc.recompute()
-    assert made.Scale == 1 and made.PrintSize.startswith("543.0 x")  # a 540 mm toolbox and its hinge
+    assert made.Scale == 1 and made.PrintSize.startswith("541.6 x")  # a 539 mm toolbox and its hinge
     made.FitToBuildVolume = True  # 250 x 210 x 210 mm by default
     doc.recompute()
     size = [float(v) for v in made.PrintSize.split(" mm")[0].split(" x ")]
-    assert made.Scale == pytest.approx(250 / 543, rel=0.01)
+    assert made.Scale == pytest.approx(250 / 541.6, rel=0.01)
     assert size[0] == pytest.approx(250, abs=0.05) and size[1] <= 210 and size[2] <= 210
     assert made.MinimumClearance.Value == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
     assert made.getEditorMode("Scale") == ["ReadOnly"]
@@ -252,12 +252,12 @@ def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc
     again = FreeCAD.openDocument(path)
     try:
         reloaded = [o for o in again.Objects if printable.is_printable(o)][0]
-        assert reloaded.FitToBuildVolume and reloaded.Scale == pytest.approx(250 / 543, rel=0.01)
+        assert reloaded.FitToBuildVolume and reloaded.Scale == pytest.approx(250 / 541.6, rel=0.01)
         reloaded.BuildVolume = FreeCAD.Vector(250, 0, 210)
         with pytest.raises(printable.PrintableError, match="BuildVolume must be greater than 0"):
             printable.fit(reloaded)
         again.recompute()
-        assert "Invalid" in reloaded.State and reloaded.Scale == pytest.approx(250 / 543, rel=0.01)
+        assert "Invalid" in reloaded.State and reloaded.Scale == pytest.approx(250 / 541.6, rel=0.01)
     finally:
         FreeCAD.closeDocument(again.Name)
 
