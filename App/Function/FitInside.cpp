@@ -2,6 +2,7 @@
 
 #include "Function/Pose.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace fabguide::function {
@@ -20,16 +21,23 @@ bool isHigh(Side side)
 
 }  // namespace
 
-Face extremeFace(const Model& model, int part, Side side, int configuration)
+Face extremeFace(const Model& model, int part, Side side, int configuration, const std::vector<int>& portion)
 {
-    Face best{model.parts[part].cuboids.front(), side};  // the reader puts a solid cuboid first
-    for (int c : model.parts[part].cuboids) {
-        if (model.cuboids[c].cavity())
+    const auto& cuboids = model.parts[part].cuboids;
+    const bool partial = std::any_of(cuboids.begin(), cuboids.end(), [&](int c) {
+        return std::find(portion.begin(), portion.end(), c) != portion.end();
+    });
+    Face best{cuboids.front(), side};  // the reader puts a solid cuboid first
+    bool found = false;
+    for (int c : cuboids) {
+        if (model.cuboids[c].cavity() ||
+            (partial && std::find(portion.begin(), portion.end(), c) == portion.end()))
             continue;
         const Face face{c, side};
         const double value = at(model, face, configuration), current = at(model, best, configuration);
-        if (isHigh(side) ? value > current : value < current)
+        if (!found || (isHigh(side) ? value > current : value < current))
             best = face;
+        found = true;
     }
     return best;
 }
@@ -70,21 +78,21 @@ Face wall(const Model& model, int enclosing, int cavity, Side side, int configur
     return cavity >= 0 ? Face{cavity, side} : extremeFace(model, enclosing, side, configuration);
 }
 
-std::vector<std::pair<Face, Face>> inferJust(const Model& model, const std::vector<int>& inner, int enclosing,
-                                             int cavity, const std::vector<int>& axes, int configuration)
+std::vector<std::pair<Face, Face>> inferJust(const Model& model, const FitInside& f,
+                                             const std::vector<int>& inner, const std::vector<int>& axes)
 {
     std::vector<std::pair<Face, Face>> just;
+    const int k = f.configuration;
     for (int axis : axes)
         for (Side side : {static_cast<Side>(2 * axis), static_cast<Side>(2 * axis + 1)}) {
-            Face extreme = extremeFace(model, inner.front(), side, configuration);
+            Face extreme = extremeFace(model, inner.front(), side, k, f.portion);
             for (int part : inner) {
-                const Face face = extremeFace(model, part, side, configuration);
-                const double value = at(model, face, configuration),
-                             current = at(model, extreme, configuration);
+                const Face face = extremeFace(model, part, side, k, f.portion);
+                const double value = at(model, face, k), current = at(model, extreme, k);
                 if (isHigh(side) ? value > current : value < current)
                     extreme = face;
             }
-            just.push_back({extreme, wall(model, enclosing, cavity, side, configuration)});
+            just.push_back({extreme, wall(model, f.enclosing, f.cavity, side, k)});
         }
     return just;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace fabguide::function {
 
@@ -49,24 +50,64 @@ Box turned(int a, const Expression& pu, const Expression& pw, double degrees, co
     return result;
 }
 
-/// A hinge turns about its edge as modelled; a double pivot's configuration turns the part about its pole.
-Box moved(const Joint& joint, const JointPose& pose, Box box)
+/// How a posed joint moves its part: a turn by `degrees` about the coordinate axis `a` through (pu, pw) in
+/// the plane of the axes after it, then a shift along `shiftAxis` (-1: none). A hinge turns about its edge as
+/// modelled; a double pivot's configuration turns the part about its pole.
+struct Move {
+    bool turns = false;
+    int a = 0;
+    Expression pu, pw;
+    double degrees = 0;
+    int shiftAxis = -1;
+    double shift = 0;
+};
+
+Move moveOf(const Joint& joint, const JointPose& pose)
 {
+    Move m;
     if (joint.type == Joint::Type::DoublePivot) {
-        const int a = axisOf(joint.pivotFace.side);
-        return turned(a, {{}, pose.pole[(a + 1) % 3]}, {{}, pose.pole[(a + 2) % 3]}, pose.angle, box);
+        m.turns = true;
+        m.a = axisOf(joint.pivotFace.side);
+        m.pu = {{}, pose.pole[(m.a + 1) % 3]};
+        m.pw = {{}, pose.pole[(m.a + 2) % 3]};
+    } else if (joint.turns()) {
+        m.turns = true;
+        m.a = 3 - axisOf(joint.edgeA.side) - axisOf(joint.edgeB.side);
+        const bool aFirst = axisOf(joint.edgeA.side) == (m.a + 1) % 3;
+        m.pu = {{{1.0, aFirst ? joint.edgeA : joint.edgeB}}, 0};
+        m.pw = {{{1.0, aFirst ? joint.edgeB : joint.edgeA}}, 0};
     }
-    if (joint.turns()) {
-        const int a = 3 - axisOf(joint.edgeA.side) - axisOf(joint.edgeB.side);
-        const Face& fu = axisOf(joint.edgeA.side) == (a + 1) % 3 ? joint.edgeA : joint.edgeB;
-        const Face& fw = axisOf(joint.edgeA.side) == (a + 2) % 3 ? joint.edgeA : joint.edgeB;
-        box = turned(a, {{{1.0, fu}}, 0}, {{{1.0, fw}}, 0}, pose.angle, box);
-    }
+    m.degrees = pose.angle;
     if (joint.slides()) {
-        box[2 * joint.axis].constant += pose.offset;
-        box[2 * joint.axis + 1].constant += pose.offset;
+        m.shiftAxis = joint.axis;
+        m.shift = pose.offset;
+    }
+    return m;
+}
+
+Box moved(const Move& m, Box box)
+{
+    if (m.turns)
+        box = turned(m.a, m.pu, m.pw, m.degrees, box);
+    if (m.shiftAxis >= 0) {
+        box[2 * m.shiftAxis].constant += m.shift;
+        box[2 * m.shiftAxis + 1].constant += m.shift;
     }
     return box;
+}
+
+/// The moves that place a cuboid's part in a configuration: its own joint's first, then its base's, out to
+/// the ground (thesis 4.1.2, J(Θ)).
+std::vector<Move> chain(const Model& model, int cuboid, int configuration)
+{
+    std::vector<Move> moves;
+    if (configuration < 0)
+        return moves;
+    for (int j = jointMoving(model, partOf(model, cuboid)); j >= 0;
+         j = model.joints[j].base < 0 ? -1 : jointMoving(model, model.joints[j].base))
+        if (const JointPose* pose = poseOf(model, j, configuration))
+            moves.push_back(moveOf(model.joints[j], *pose));
+    return moves;
 }
 
 }  // namespace
@@ -127,14 +168,50 @@ Expression posed(const Model& model, const Face& face, int configuration)
     Box box;
     for (int k = 0; k < 6; ++k)
         box[k] = {{{1.0, Face{face.cuboid, static_cast<Side>(k)}}}, 0};
-    if (configuration < 0)
-        return box[static_cast<int>(face.side)];
-    // The part's own joint first, then its base's, out to the ground (thesis 4.1.2, J(Θ)).
-    for (int j = jointMoving(model, partOf(model, face.cuboid)); j >= 0;
-         j = model.joints[j].base < 0 ? -1 : jointMoving(model, model.joints[j].base))
-        if (const JointPose* pose = poseOf(model, j, configuration))
-            box = moved(model.joints[j], *pose, box);
+    for (const Move& m : chain(model, face.cuboid, configuration))
+        box = moved(m, box);
     return box[static_cast<int>(face.side)];
+}
+
+Expression projected(const Model& model, int cuboid, int configuration, Direction d, bool high)
+{
+    // q = T(x) = R(x − p) + p + t: q·d = x·Rᵀd − p·Rᵀd + p·d + t·d, outermost move first.
+    Expression e;
+    const std::vector<Move> moves = chain(model, cuboid, configuration);
+    for (auto m = moves.rbegin(); m != moves.rend(); ++m) {
+        if (m->shiftAxis >= 0)
+            e.constant += m->shift * d[m->shiftAxis];
+        if (!m->turns)
+            continue;
+        const int u = (m->a + 1) % 3, w = (m->a + 2) % 3;
+        const auto [c, s] = cosSin(m->degrees);
+        Direction back = d;
+        back[u] = c * d[u] + s * d[w];
+        back[w] = -s * d[u] + c * d[w];
+        e = sum({{1, &e}, {d[u] - back[u], &m->pu}, {d[w] - back[w], &m->pw}});
+        d = back;
+    }
+    for (int i = 0; i < 3; ++i)  // the cuboid as modelled: its extreme corner along d
+        if (d[i] != 0)
+            e.terms.push_back({d[i], Face{cuboid, static_cast<Side>(2 * i + ((d[i] > 0) == high ? 1 : 0))}});
+    return e;
+}
+
+std::array<Direction, 3> posedAxes(const Model& model, int cuboid, int configuration)
+{
+    std::array<Direction, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    for (const Move& m : chain(model, cuboid, configuration)) {
+        if (!m.turns)
+            continue;
+        const int u = (m.a + 1) % 3, w = (m.a + 2) % 3;
+        const auto [c, s] = cosSin(m.degrees);
+        for (Direction& v : axes) {
+            const double vu = v[u], vw = v[w];
+            v[u] = c * vu - s * vw;
+            v[w] = s * vu + c * vw;
+        }
+    }
+    return axes;
 }
 
 double evaluate(const Model& model, const Expression& expression)

@@ -4,6 +4,7 @@
 
 #include "Function/Model.h"
 
+#include <array>
 #include <utility>
 
 namespace fabguide::function {
@@ -12,6 +13,18 @@ namespace fabguide::function {
 /// (-1: as modelled), as Σ coefficient × coordinate + constant. A part moves by its joint and its base's.
 /// After a turn by other than a multiple of 90°, a further turn bounds the first turn's box: conservative.
 Expression posed(const Model& model, const Face& face, int configuration);
+
+/// A direction in space (x, y, z).
+using Direction = std::array<double, 3>;
+
+/// The least (or, `high`, the greatest) of d · q over the points q of cuboid `cuboid` in the configuration,
+/// as an expression in the coordinates: exact for any chain of turns and slides (each move's turn carried
+/// back onto the direction, the extreme of the cuboid as modelled is a corner). The separating-axis test of
+/// two posed cuboids is linear in the coordinates along a fixed direction.
+Expression projected(const Model& model, int cuboid, int configuration, Direction d, bool high);
+
+/// The directions of a cuboid's x, y and z axes in the configuration (turned with its part).
+std::array<Direction, 3> posedAxes(const Model& model, int cuboid, int configuration);
 
 /// The part a cuboid belongs to.
 int partOf(const Model& model, int cuboid);

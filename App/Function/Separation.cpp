@@ -43,6 +43,20 @@ double outside(const Model& model, const Box& inner, int cavity, int configurati
     return total;
 }
 
+Direction cross(const Direction& u, const Direction& v)
+{
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+/// Of unit length, or zero when shorter than 1e-9 (parallel axes have no cross product).
+Direction normalised(const Direction& d)
+{
+    const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (length < 1e-9)
+        return {0, 0, 0};
+    return {d[0] / length, d[1] / length, d[2] / length};
+}
+
 bool overlaps(const Box& a, const Box& b)
 {
     for (int axis = 0; axis < 3; ++axis)
@@ -92,42 +106,55 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
     return pairs;
 }
 
-bool inferSeparation(const Model& drawn, int a, int b, int configuration, Separation& separation)
+Separation inferSeparation(const Model& arranged, int a, int b, int configuration)
 {
-    const Box boxA = boxOf(drawn, a, configuration), boxB = boxOf(drawn, b, configuration);
-    // Apart along an axis: the order that overlaps least (4.3.2's farthest apart).
+    const bool exact = exactlyPosed(arranged, partOf(arranged, a), configuration) &&
+                       exactlyPosed(arranged, partOf(arranged, b), configuration);
+    // The separating-axis test (4.2.2's packing, made exact for turned parts): the order that overlaps least.
+    std::vector<Direction> directions{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (!exact) {
+        const auto axesA = posedAxes(arranged, a, configuration),
+                   axesB = posedAxes(arranged, b, configuration);
+        directions.insert(directions.end(), axesA.begin(), axesA.end());
+        directions.insert(directions.end(), axesB.begin(), axesB.end());
+        for (const Direction& u : axesA)
+            for (const Direction& v : axesB)
+                if (const Direction n = normalised(cross(u, v)); n != Direction{0, 0, 0})
+                    directions.push_back(n);
+    }
+    Separation best;
     double least = std::numeric_limits<double>::infinity();
-    for (int axis = 0; axis < 3; ++axis)
-        for (bool aFirst : {true, false}) {
-            const Box& low = aFirst ? boxA : boxB;
-            const Box& high = aFirst ? boxB : boxA;
-            if (const double overlap = low[2 * axis + 1] - high[2 * axis]; overlap < least) {
+    for (const Direction& d : directions)
+        for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}}) {
+            const double overlap = evaluate(arranged, projected(arranged, low, configuration, d, true)) -
+                                   evaluate(arranged, projected(arranged, high, configuration, d, false));
+            if (overlap < least - 1e-9) {
                 least = overlap;
-                separation = {aFirst ? a : b, aFirst ? b : a, axis, -1, configuration};
+                best = {low, high, configuration, -1, d};
             }
         }
-    const bool exact = exactlyPosed(drawn, partOf(drawn, a), configuration) &&
-                       exactlyPosed(drawn, partOf(drawn, b), configuration);
     if (!exact)
-        return least <= 0;
+        return best;
     // Or inside a cavity of the other's cuboid, if that changes less (a drawer in its compartment).
     double cost = std::max(0.0, least);
     for (const auto& [held, holder] : {std::pair{a, b}, std::pair{b, a}}) {
-        const Box box = held == a ? boxA : boxB;
-        for (int c = 0; c < static_cast<int>(drawn.cuboids.size()); ++c)
-            if (drawn.cuboids[c].within == holder && overlaps(box, boxOf(drawn, c, configuration)))
-                if (const double change = outside(drawn, box, c, configuration); change < cost) {
+        const Box box = boxOf(arranged, held, configuration);
+        for (int c = 0; c < static_cast<int>(arranged.cuboids.size()); ++c)
+            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration)))
+                if (const double change = outside(arranged, box, c, configuration); change < cost) {
                     cost = change;
-                    separation = {held, holder, 0, c, configuration};
+                    best = {held, holder, configuration, c, {}};
                 }
     }
-    return true;
+    return best;
 }
 
 std::string separationName(const Model& model, const Separation& separation)
 {
     const int a = partOf(model, separation.a), b = partOf(model, separation.b);
-    return "no overlap: " + model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name;
+    const std::string where =
+        separation.configuration < 0 ? "" : " in '" + model.configurations[separation.configuration].name + "'";
+    return "no overlap: " + model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name + where;
 }
 
 }  // namespace fabguide::function

@@ -5,17 +5,20 @@
 #pragma once
 
 #include "Function/Model.h"
+#include "Function/Pose.h"
 
 #include <utility>
 #include <vector>
 
 namespace fabguide::function {
 
-/// How two solid cuboids of different parts stay clear in a configuration (-1: as modelled): `a`'s high side
-/// at most `b`'s low side along `axis`; or, when `cavity` >= 0, `a` inside that cavity of `b`'s part on every
-/// side that is not an opening. `a` and `b` are as drawn, whichever comes first.
+/// How two solid cuboids of different parts stay clear in a configuration (-1: as modelled): `a` wholly on
+/// the low side of `b` along `direction` (an axis, or for parts turned by other than quarter turns any axis
+/// of the separating-axis test); or, when `cavity` >= 0, `a` inside that cavity of `b`'s part on every side
+/// that is not an opening.
 struct Separation {
-    int a = 0, b = 0, axis = 0, cavity = -1, configuration = -1;
+    int a = 0, b = 0, configuration = -1, cavity = -1;
+    Direction direction{1, 0, 0};
 };
 
 /// Whether every turn that places the part in the configuration is by a multiple of 90°: its posed box is
@@ -27,13 +30,14 @@ bool exactlyPosed(const Model& model, int part, int configuration);
 /// inner and enclosing parts of a fit inside, whose room print-in-place sweeps out (thesis 4.5.1).
 std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration, double margin);
 
-/// The least change that keeps a and b clear, judged on `drawn` (the model as the user drew it): the
-/// separating axis and order with the least overlap, or a cavity of one part that holds the other with less
-/// to change. Returns false (nothing to keep) when a pose is not exact and the bounding boxes already overlap
-/// as drawn: the bound says nothing then.
-bool inferSeparation(const Model& drawn, int a, int b, int configuration, Separation& separation);
+/// The least change that keeps a and b clear, judged on `arranged` (the model as its relationships arrange
+/// it): of the separating axes of the two posed cuboids (x, y, z; for turned parts also their own axes and
+/// the cross products), the one and the order that overlap least; or a cavity of one part that holds the
+/// other with less to change (poses of quarter turns only).
+Separation inferSeparation(const Model& arranged, int a, int b, int configuration);
 
-/// "no overlap: door, carcass": the name its constraints take, one per pair of parts.
+/// "no overlap: carcass, door in 'open'": the name its constraints take, one per pair of parts and
+/// configuration (none for the parts as modelled).
 std::string separationName(const Model& model, const Separation& separation);
 
 }  // namespace fabguide::function

@@ -70,9 +70,15 @@ void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, 
 void separate(std::vector<LinearConstraint>& rows, const Model& model, const Separation& s)
 {
     const std::string name = separationName(model, s);
-    if (s.cavity < 0) {
-        order(rows, model, name, s.configuration, Face{s.a, static_cast<Side>(2 * s.axis + 1)},
-              Face{s.b, static_cast<Side>(2 * s.axis)}, false);
+    if (s.cavity < 0) {  // a's projection on the direction at most b's
+        const Expression a = projected(model, s.a, s.configuration, s.direction, true),
+                         b = projected(model, s.b, s.configuration, s.direction, false);
+        LinearConstraint row{{}, -kInfinity, b.constant - a.constant, name};
+        for (const auto& [c, face] : a.terms)
+            row.terms.push_back({variable(face), c});
+        for (const auto& [c, face] : b.terms)
+            row.terms.push_back({variable(face), -c});
+        rows.push_back(row);
         return;
     }
     for (int k = 0; k < 6; ++k)
@@ -274,9 +280,8 @@ size_t separateNear(const Model& drawn, const Model& model, double margin, std::
     const size_t before = separations.size();
     for (int k = -1; k < static_cast<int>(model.configurations.size()); ++k)
         for (const auto& [a, b] : nearPairs(model, k, margin)) {
-            Separation s;
-            if (seen.insert({a, b, k}).second && inferSeparation(drawn, a, b, k, s))
-                separations.push_back(s);
+            if (seen.insert({a, b, k}).second)
+                separations.push_back(inferSeparation(drawn, a, b, k));
         }
     return separations.size() - before;
 }

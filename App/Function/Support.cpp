@@ -18,27 +18,36 @@ double at(const Model& model, int cuboid, Side side, int configuration)
     return evaluate(model, posed(model, Face{cuboid, side}, configuration));
 }
 
-/// Horizontal gap between two cuboids' footprints (0 when they overlap).
-double gap(const Model& model, int a, int b, int configuration)
-{
-    double squared = 0;
-    for (const auto& [low, high] : {std::pair{Side::Left, Side::Right}, std::pair{Side::Near, Side::Far}}) {
-        const double d = std::max(at(model, a, low, configuration) - at(model, b, high, configuration),
-                                  at(model, b, low, configuration) - at(model, a, high, configuration));
-        if (d > 0)
-            squared += d * d;
-    }
-    return std::sqrt(squared);
-}
-
 struct Candidate {
     int a = 0, b = 0;
-    double rise = 0, gap = 0;  ///< b's bottom above a's top; footprints apart
+    double rise = 0;     ///< b's bottom above a's top
+    double gap = 0;      ///< between the footprints (0 when they overlap)
+    bool above = false;  ///< the footprints overlap by more than half the smaller one
+    /// Nearer: right above first, then nearest vertically, then horizontally.
     bool operator<(const Candidate& other) const
     {
-        return std::tuple{std::abs(rise), gap} < std::tuple{std::abs(other.rise), other.gap};
+        return std::tuple{!above, std::abs(rise), gap} <
+               std::tuple{!other.above, std::abs(other.rise), other.gap};
     }
 };
+
+Candidate candidate(const Model& model, int a, int b, int configuration)
+{
+    Candidate c{a, b, at(model, b, Side::Bottom, configuration) - at(model, a, Side::Top, configuration)};
+    double squared = 0, shared = 1, areaA = 1, areaB = 1;
+    for (const auto& [low, high] : {std::pair{Side::Left, Side::Right}, std::pair{Side::Near, Side::Far}}) {
+        const double aLow = at(model, a, low, configuration), aHigh = at(model, a, high, configuration),
+                     bLow = at(model, b, low, configuration), bHigh = at(model, b, high, configuration);
+        const double d = std::max(aLow - bHigh, bLow - aHigh);
+        squared += d > 0 ? d * d : 0;
+        shared *= std::max(0.0, -d);
+        areaA *= aHigh - aLow;
+        areaB *= bHigh - bLow;
+    }
+    c.gap = std::sqrt(squared);
+    c.above = shared > std::min(areaA, areaB) / 2;
+    return c;
+}
 
 std::vector<Candidate> candidates(const Model& model, const std::vector<int>& supporting,
                                   const std::vector<int>& supported, int configuration)
@@ -50,10 +59,11 @@ std::vector<Candidate> candidates(const Model& model, const std::vector<int>& su
                 for (int b : model.parts[q].cuboids) {
                     if (model.cuboids[a].cavity() || model.cuboids[b].cavity())
                         continue;
-                    const double bottom = at(model, b, Side::Bottom, configuration);
-                    const double rise = bottom - at(model, a, Side::Top, configuration);
-                    if (rise >= -(at(model, b, Side::Top, configuration) - bottom) / 2)
-                        found.push_back({a, b, rise, gap(model, a, b, configuration)});
+                    const Candidate c = candidate(model, a, b, configuration);
+                    const double height =
+                        at(model, b, Side::Top, configuration) - at(model, b, Side::Bottom, configuration);
+                    if (c.rise >= -height / 2)
+                        found.push_back(c);
                 }
     return found;
 }
@@ -97,10 +107,15 @@ InferredSupport inferSupport(const Model& model, const std::vector<int>& support
                 continue;
             }
             result.pairs.push_back({best->a, best->b});
+            const bool beyond = std::abs(best->rise) > distance;
             result.notes.push_back(model.parts[part].name + ": " + show(std::abs(best->rise)) + " mm " +
-                                   (best->rise > 0 ? "below " : "into ") +
-                                   faceName(model, {best->b, Side::Bottom}) + ", beyond the " +
-                                   show(distance) + " mm support distance; linked to it");
+                                   (isSupporting ? (best->rise > 0 ? "below " : "into ")
+                                                 : (best->rise > 0 ? "above " : "sunk by ")) +
+                                   (isSupporting ? faceName(model, {best->b, Side::Bottom})
+                                                 : faceName(model, {best->a, Side::Top})) +
+                                   (beyond ? ", beyond the " + show(distance) + " mm support distance"
+                                           : ", its faces nearer to others") +
+                                   "; linked to it");
         }
     return result;
 }

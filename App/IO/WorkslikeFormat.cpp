@@ -419,8 +419,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
             const int part = partNamed(model, each.text("part"), each.pathOf("part"));
             if (std::find(f.inner.begin(), f.inner.end(), part) == f.inner.end())
                 throw FormatError(each.pathOf("part") + ": '" + each.text("part") + "' is not an inner part");
-            const auto inferred = function::inferJust(model, {part}, f.enclosing, f.cavity,
-                                                      axisList(each, "axes"), configuration);
+            const auto inferred = function::inferJust(model, f, {part}, axisList(each, "axes"));
             f.just.insert(f.just.end(), inferred.begin(), inferred.end());
         } else if (just[k].is_array() && just[k].size() == 2) {
             f.just.push_back({face(model, just[k][0], here + "[0]"), face(model, just[k][1], here + "[1]")});
@@ -428,7 +427,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
             throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
         }
     }
-    const auto inferred = function::inferJust(model, f.inner, f.enclosing, f.cavity, axes, configuration);
+    const auto inferred = function::inferJust(model, f, f.inner, axes);
     f.just.insert(f.just.end(), inferred.begin(), inferred.end());
     return f;
 }

@@ -102,8 +102,7 @@ TEST(Separation, ADrawerInACompartmentStaysInsideItButThroughTheMouth)
               {"joints", {{{"name", "runner"}, {"type", "slide"}, {"part", "drawer"}, {"axis", "y"}}}},
               {"configurations", {{{"name", "open"}, {"poses", {{"runner", -100}}}}}}};
     const function::Model m = io::readWorkslike(d);
-    function::Separation s;
-    ASSERT_TRUE(function::inferSeparation(m, 0, 2, -1, s));  // the chest and the drawer
+    const function::Separation s = function::inferSeparation(m, 0, 2, -1);  // the chest and the drawer
     EXPECT_EQ(s.a, 2);  // the drawer in the bay: less to change than pulling it out of the chest
     EXPECT_EQ(s.cavity, 1);
     const function::SolveResult r = function::solve(m);

@@ -79,7 +79,7 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
     run = subprocess.run([fabguide_cli, "printable", str(path), "-o", str(tmp_path / "out")], capture_output=True,
                          text=True, timeout=600)
     assert run.returncode == 1 and not (tmp_path / "out" / "assembly.stl").exists()
-    assert "'open drawer keeps 10 mm inside', 'no overlap: body, drawer' cannot hold together" in run.stderr
+    assert "'open drawer keeps 10 mm inside', 'no overlap: body, drawer in 'open'' cannot hold together" in run.stderr
 
 
 def test_the_box_with_a_lid_prints_its_drawer_in_its_bay(fabguide_cli, source_dir, tmp_path):
