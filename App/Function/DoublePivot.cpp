@@ -17,11 +17,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 using Point = std::array<double, 2>;
 
+/// p turned about centre by the angle whose cosine and sine are c and s.
+Point turn(const Point& p, const Point& centre, double c, double s)
+{
+    const double du = p[0] - centre[0], dw = p[1] - centre[1];
+    return {centre[0] + du * c - dw * s, centre[1] + du * s + dw * c};
+}
+
 Point turn(const Point& p, const Point& centre, double degrees)
 {
     const auto [c, s] = cosSin(degrees);
-    const double du = p[0] - centre[0], dw = p[1] - centre[1];
-    return {centre[0] + du * c - dw * s, centre[1] + du * s + dw * c};
+    return turn(p, centre, c, s);
 }
 
 double squared(const Point& a, const Point& b)
@@ -154,11 +160,13 @@ bool collides(const Placement& p, double a, double b)
         const auto [link, part] = fourBarAngles(pivot, base, p.pole(pose), pose.angle);
         for (int step = 1; step <= 32; ++step) {
             const double t = step / 32.0;
+            const auto [cPart, sPart] = cosSin(t * part);
+            const auto [cLink, sLink] = cosSin(t * link);
             for (const auto& r : moving) {
                 std::array<Point, 4> corners{Point{r[0], r[1]}, Point{r[2], r[1]}, Point{r[2], r[3]},
                                              Point{r[0], r[3]}};
                 for (Point& q : corners)  // about the part's pivot, then carried round by the link
-                    q = turn(turn(q, pivot, t * part), base, t * link);
+                    q = turn(turn(q, pivot, cPart, sPart), base, cLink, sLink);
                 for (const auto& box : fixed)
                     if (std::min(r[5], box[5]) - std::max(r[4], box[4]) > 1e-6 && overlap(corners, box, 1e-6))
                         return true;

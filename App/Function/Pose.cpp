@@ -115,7 +115,7 @@ std::vector<Move> chain(const Model& model, int cuboid, int configuration)
 std::pair<double, double> cosSin(double degrees)
 {
     const double quarters = degrees / 90;
-    if (quarters == std::round(quarters)) {
+    if (std::abs(quarters) < 1e15 && quarters == static_cast<double>(static_cast<long long>(quarters))) {
         const int q = static_cast<int>(((static_cast<long long>(quarters) % 4) + 4) % 4);
         return {q == 0 ? 1 : q == 2 ? -1 : 0, q == 1 ? 1 : q == 3 ? -1 : 0};
     }
