@@ -148,11 +148,14 @@ def axis_points(joint):
 
 
 def show_conflicts(mech):
-    """Boxes of the parts named by conflicting relationships in red; all others in their own colour."""
+    """Boxes of the parts named by conflicting relationships, or blamed by the conflict (parts that would
+    overlap, walls too thin), in red; all others in their own colour."""
     red = set()
     for rel in mechanism.members(mech, relationships.is_relationship):
         if rel.Status.startswith("Conflict"):
             red.update(b.Name for p in relationship_parts(rel) for b in parts.boxes(p))
+    blamed = set(getattr(mech, "Blamed", []))  # overlapping parts, thin walls
+    red.update(b.Name for p in mechanism.members(mech, parts.is_part) if p.Label in blamed for b in parts.boxes(p))
     for box in mechanism.boxes(mech):
         if box.ViewObject:
             colour = CONFLICT_COLOUR if box.Name in red else box.ViewObject.ShapeColor[:3]

@@ -16,8 +16,8 @@ namespace {
 /// The interior-point solution is optimal only to ~1e-5 mm. Polishing: project the target exactly onto the
 /// constraints active at x (A x = b), x* = x + v − Aᵀλ with v = target − x and λ = argmin ‖Aᵀλ − v‖ by
 /// conjugate gradients on the least-squares problem (indifferent to the redundant constraints that are
-/// common; sparse QR took 2.6 s at 1000 cuboids), started from the solver's Lagrange multipliers (λ is half of
-/// them at the optimum; ALGLIB's sign is found by trying both); kept only if no constraint gets worse.
+/// common; sparse QR took 2.6 s at 1000 cuboids), started from the solver's Lagrange multipliers (λ is half
+/// of them at the optimum; ALGLIB's sign is found by trying both); kept only if no constraint gets worse.
 Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
                          const Eigen::VectorXd& x, const std::vector<double>& multipliers, double tolerance)
 {
@@ -30,7 +30,8 @@ Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<Linear
         if (std::abs(value - rows[r].lower) > tolerance && std::abs(value - rows[r].upper) > tolerance)
             continue;
         for (const auto& [variable, coefficient] : rows[r].terms)
-            entries.emplace_back(variable, static_cast<int>(guess.size()), coefficient);  // Aᵀ: variables × rows
+            entries.emplace_back(variable, static_cast<int>(guess.size()),
+                                 coefficient);  // Aᵀ: variables × rows
         guess.push_back(multipliers[r] / 2);
     }
     const int active = static_cast<int>(guess.size());

@@ -152,9 +152,11 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
 std::string separationName(const Model& model, const Separation& separation)
 {
     const int a = partOf(model, separation.a), b = partOf(model, separation.b);
-    const std::string where =
-        separation.configuration < 0 ? "" : " in '" + model.configurations[separation.configuration].name + "'";
-    return "no overlap: " + model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name + where;
+    const std::string where = separation.configuration < 0
+                                  ? ""
+                                  : " in '" + model.configurations[separation.configuration].name + "'";
+    return "no overlap: " + model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name +
+           where;
 }
 
 }  // namespace fabguide::function

@@ -286,6 +286,29 @@ size_t separateNear(const Model& drawn, const Model& model, double margin, std::
     return separations.size() - before;
 }
 
+/// The parts that the overlaps and walls in a conflict concern, each named once.
+std::vector<std::string> blamedParts(const Model& model, const std::vector<Separation>& separations,
+                                     const std::vector<std::string>& conflict)
+{
+    std::vector<std::string> names;
+    auto blame = [&](int cuboid) {
+        const std::string& name = model.parts[partOf(model, cuboid)].name;
+        if (std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+    };
+    for (const std::string& source : conflict) {
+        for (const Separation& s : separations)
+            if (separationName(model, s) == source) {
+                blame(s.a);
+                blame(s.b);
+            }
+        for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c)
+            if (model.cuboids[c].cavity() && source == "wall: " + model.cuboids[c].name)
+                blame(c);
+    }
+    return names;
+}
+
 void addNotes(std::vector<std::string>& notes, const std::string& name, const InferenceNotes& more)
 {
     for (const std::string& note : more)
@@ -318,7 +341,8 @@ SolveResult solve(const Model& model)
         if (!r.solved || separateNear(arranged, withCoordinates(model, r.x), -1e-6, seen, separations) == 0)
             break;
     }
-    SolveResult result{r.solved, r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation, {}};
+    SolveResult result{r.solved, r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation,
+                       {},       blamedParts(model, separations, r.conflict)};
     for (const Cover& c : model.cover)
         addNotes(result.notes, c.name, c.notes);
     for (const Support& s : model.support)
@@ -329,7 +353,7 @@ SolveResult solve(const Model& model)
     const std::vector<Unplaced> unplaced = placePivots(result.model);
     if (unplaced.empty())
         return result;
-    SolveResult failed{false, model, {}, r.violation, result.notes};
+    SolveResult failed{false, model, {}, r.violation, result.notes, {}};
     for (const Unplaced& u : unplaced) {
         failed.conflict.push_back(u.joint);
         failed.notes.push_back(u.joint + ": " + u.reason);

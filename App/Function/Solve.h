@@ -26,6 +26,7 @@ struct SolveResult {
     std::vector<std::string> conflict;  ///< relationships (or double pivots) that cannot hold together
     double violation = 0;
     std::vector<std::string> notes;  ///< why, where the names alone do not say
+    std::vector<std::string> parts;  ///< parts a conflict blames beyond its relationships' (overlaps, walls)
 };
 
 /// The model at `factor` times its size (a works-like prototype printed at 1:5): coordinates, slide offsets,

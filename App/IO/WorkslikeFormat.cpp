@@ -750,7 +750,8 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         out["report"] = {{"solved", result->solved},
                          {"conflict", result->conflict},
                          {"violation", result->violation},
-                         {"notes", result->notes}};
+                         {"notes", result->notes},
+                         {"parts", result->parts}};
     return out;
 }
 

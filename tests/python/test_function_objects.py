@@ -144,7 +144,7 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
     doc.recompute()
     assert mech.Label == "box-with-lid" and mech.Status == "Solved", mech.Status
     statuses = {r.Label: r.Status for r in mech.Group if relationships.is_relationship(r)}
-    assert len(statuses) == 9 and set(statuses.values()) == {"Satisfied"}
+    assert len(statuses) == 10 and set(statuses.values()) == {"Satisfied"}
     with open(path) as f:
         expected = fabguide_core.solve(json.load(f))
     out = str(tmp_path / "out.workslike.json")
@@ -157,6 +157,34 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
         for c in p["cuboids"]:
             assert c["min"] + c["max"] == pytest.approx(solved[c["name"]]["min"] + solved[c["name"]]["max"], abs=1e-5)
     assert touched(doc) == []
+
+
+def test_parts_are_kept_apart_and_parts_that_must_overlap_are_blamed(doc):
+    a, b = box(doc, "A", (0, 0, 0), (100, 50, 50)), box(doc, "B", (97, 10, 0), (200, 40, 50))  # 3 mm into A
+    doc.recompute()
+    mech = mechanism.create(doc)
+    mech.Group = [parts.create(doc, [a], "Part A"), parts.create(doc, [b], "Part B")]
+    doc.recompute()
+    assert mech.Status == "Solved" and mech.Blamed == []
+    assert cuboids.coordinates(a)[1] == 98.5 and cuboids.coordinates(b)[0] == 98.5  # 1.5 mm each, exactly
+    mech.Locks = ["A.right"]
+    b.Placement.Base.x = 90  # the user pushes B into A, whose side is locked
+    doc.recompute()
+    assert mech.Status == "Conflict: lock: A.right, lock: B.left, no overlap: Part A, Part B", mech.Status
+    assert mech.Blamed == ["Part A", "Part B"]
+
+
+def test_a_door_beyond_the_face_distance_takes_part_and_says_so(doc):
+    carcass, door = box(doc, "Carcass", (0, 0, 0), (400, 300, 600)), box(doc, "Door", (0, -25, 0), (400, -7, 600))
+    doc.recompute()
+    mech = mechanism.create(doc)
+    front, back = parts.create(doc, [door], "Front"), parts.create(doc, [carcass], "Back")
+    cover = relationships.create(doc, "cover", "Door closes", Covering=[front], Covered=[back], Just=True)
+    mech.Group = [front, back, cover]
+    doc.recompute()
+    assert mech.Status == "Solved"
+    assert cover.Status == "Satisfied; Front: 7 mm from Carcass.near, beyond the 5 mm face distance; linked to it"
+    assert cuboids.coordinates(door)[3] == cuboids.coordinates(carcass)[2]  # on the face, exactly
 
 
 def test_the_cabinet_imports_with_cavities_and_an_edit_widens_both_doors(doc, source_dir):

@@ -25,6 +25,8 @@ class Mechanism(properties.Proxy):
     def define(self, obj):
         add = properties.add
         add(obj, "App::PropertyLength", "MinimumSize", "Mechanism", "Smallest size of a box along any axis", 1)
+        add(obj, "App::PropertyLength", "MinimumWall", "Mechanism",
+            "Least wall around a cavity on its sides that are not openings", 1)
         add(obj, "App::PropertyStringList", "Locks", "Mechanism",
             "Coordinates that keep their value, e.g. 'Body.top' (box label . side)")
         add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
@@ -34,6 +36,8 @@ class Mechanism(properties.Proxy):
         add(obj, "App::PropertyString", "Status", "Result", "Solved, or the relationships in conflict", mode=1)
         add(obj, "App::PropertyFloat", "Violation", "Result", "Largest constraint violation after the solve, mm",
             mode=1)
+        add(obj, "App::PropertyStringList", "Blamed", "Result",
+            "Parts a conflict blames besides its relationships' (overlapping parts, thin walls)", mode=1)
         add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
 
     def execute(self, obj):
@@ -74,6 +78,7 @@ def model(obj, locks=()):
     try:
         return {
             "format": "fabguide.workslike", "version": 1, "minimum_size": obj.MinimumSize.Value,
+            "minimum_wall": obj.MinimumWall.Value,
             "parts": [parts.as_dict(p) for p in members(obj, parts.is_part)],
             "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
             "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
@@ -96,12 +101,16 @@ def solve(obj):
     conflict = report["conflict"]
     by_name = {r["name"]: r for r in solved["relationships"]}
     for rel in members(obj, relationships.is_relationship):
-        status = (SATISFIED if report["solved"] else
+        status = (satisfied(rel, report["notes"]) if report["solved"] else
                   "Conflict: " + ", ".join(n for n in conflict if n != rel.Label) if rel.Label in conflict else "")
         if rel.Status != status:
             rel.Status = status
         relationships.keep_pairs(rel, by_name.get(rel.Label, {}))
     obj.Violation = report["violation"]
+    if obj.Blamed != report["parts"]:
+        obj.Blamed = report["parts"]
+    for note in report["notes"] if report["solved"] else []:
+        FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, note))
     if not report["solved"]:
         obj.Status = "Conflict: " + ", ".join(conflict)
         FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
@@ -112,6 +121,16 @@ def solve(obj):
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
+
+
+def satisfied(rel, notes):
+    """"Satisfied", and what inference had to stretch to link every part the relationship names; the graph it
+    inferred is kept in Pairs (keep_pairs), and so is the note while those pairs stay."""
+    prefix = rel.Label + ": "
+    own = [n[len(prefix):] for n in notes if n.startswith(prefix)]
+    if not own and getattr(rel, "Pairs", None) and rel.Status.startswith(SATISFIED + "; "):
+        return rel.Status
+    return "; ".join([SATISFIED] + own)
 
 
 def place_pivots(obj, solved):

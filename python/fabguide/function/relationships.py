@@ -43,12 +43,16 @@ class FitInside(Relationship):
             "Partial fit: the boxes of the inner parts that must fit (a drawer's tray, not its front); empty: all")
         for axis, size in zip("XYZ", ("width", "depth", "height")):
             add(obj, "App::PropertyBool", "Just" + axis, "Fit inside", "Just fits in {} (along {})".format(size, axis))
+        add(obj, "App::PropertyBool", "JustEach", "Fit inside",
+            "Each inner part just fits on its own along the ticked axes (stacked trays without play), "
+            "not only the inner parts taken together")
 
     def fields(self, obj):
         if obj.Enclosing is None:
             raise ValueError("Fit inside '{}': choose the Enclosing part".format(obj.Label))
-        out = {"inner": labels(obj.Inner), "enclosing": obj.Enclosing.Label,
-               "just": [a.lower() for a in "XYZ" if getattr(obj, "Just" + a)]}
+        axes = [a.lower() for a in "XYZ" if getattr(obj, "Just" + a)]
+        just = [{"part": p, "axes": axes} for p in labels(obj.Inner)] if obj.JustEach and axes else axes
+        out = {"inner": labels(obj.Inner), "enclosing": obj.Enclosing.Label, "just": just}
         if obj.Cavity is not None:
             out["cavity"] = obj.Cavity.Label
         if obj.Portion:

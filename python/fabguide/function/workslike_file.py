@@ -12,6 +12,7 @@ def import_model(doc, data, label="Mechanism"):
     """A Mechanism (not yet recomputed) built from a *.workslike.json dict."""
     mech = mechanism.create(doc, label)
     mech.MinimumSize = data.get("minimum_size", 1)
+    mech.MinimumWall = data.get("minimum_wall", 1)
     boxes, made_parts, made_joints, made_configurations, members = {}, {}, {}, {}, []
     for p in data.get("parts", []):
         for c in p["cuboids"]:
@@ -92,11 +93,13 @@ def relationship_fields(r, made_parts, boxes, rename):
         return dict(Supporting=[made_parts[n] for n in r["supporting"]],
                     Supported=[made_parts[n] for n in r["supported"]], **pairs(r))
     if kind == "fit_inside":
+        just = r.get("just", [])
+        each = [a for a in just if isinstance(a, dict)]  # {"part", "axes"}: that part just fits on its own
         axes = {a if isinstance(a, str) else "xyz"[cuboids.SIDES.index(a[0].rsplit(".", 1)[1]) // 2]
-                for a in r.get("just", [])}
+                for a in just if not isinstance(a, dict)} | {a for e in each for a in e.get("axes", [])}
         return dict(Inner=[made_parts[n] for n in r["inner"]], Enclosing=made_parts[r["enclosing"]],
                     Cavity=boxes.get(r.get("cavity")), Portion=[boxes[n] for n in r.get("portion", [])],
-                    **{"Just" + a.upper(): True for a in axes})
+                    JustEach=bool(each), **{"Just" + a.upper(): True for a in axes})
     if kind == "flush":
         return dict(Faces=[box_face(boxes, n) for n in r["faces"]])
     return dict(Left=quantities(r["left"]), Right=quantities(r["right"]), Offset=r.get("offset", 0),
