@@ -143,37 +143,116 @@ bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& bo
 /// Whether the part hits its base, or any other part standing still, at one of 32 poses along the four-bar
 /// motion to each pose, with the pivots moved by (a, b): solid cuboids, in the pivot plane, where they share
 /// depth along the normal (the thesis checked the base only).
+/// The base and every part standing still in configuration k, but `part`: their rectangles in the plane.
+std::vector<std::array<double, 6>> standingStill(const Model& model, int part, const PivotPlane& plane, int k)
+{
+    std::vector<std::array<double, 6>> fixed;
+    for (size_t q = 0; q < model.parts.size(); ++q)
+        if (static_cast<int>(q) != part && jointMovingIn(model, static_cast<int>(q), k) < 0) {
+            const auto r = rectangles(model, static_cast<int>(q), plane);
+            fixed.insert(fixed.end(), r.begin(), r.end());
+        }
+    return fixed;
+}
+
+/// Whether any of the part's rectangles, each corner moved by `place`, overlaps a fixed one where they share
+/// depth along the normal.
+template <typename Place>
+bool hits(const std::vector<std::array<double, 6>>& moving, const std::vector<std::array<double, 6>>& fixed,
+          Place place)
+{
+    for (const auto& r : moving) {
+        std::array<Point, 4> corners{Point{r[0], r[1]}, Point{r[2], r[1]}, Point{r[2], r[3]},
+                                     Point{r[0], r[3]}};
+        for (Point& q : corners)
+            q = place(q);
+        for (const auto& box : fixed)
+            if (std::min(r[5], box[5]) - std::max(r[4], box[4]) > 1e-6 && overlap(corners, box, 1e-6))
+                return true;
+    }
+    return false;
+}
+
 bool collides(const Placement& p, double a, double b)
 {
     const Point pivot = p.pivotA(a), base = p.pivotB(b);
     const auto moving = rectangles(p.model, p.joint.part, p.plane);
     for (size_t i = 0; i < p.poses.size(); ++i) {
         const JointPose& pose = p.poses[i];
-        std::vector<std::array<double, 6>>
-            fixed;  // the base and every part standing still in this configuration
-        for (size_t q = 0; q < p.model.parts.size(); ++q)
-            if (static_cast<int>(q) != p.joint.part &&
-                jointMovingIn(p.model, static_cast<int>(q), p.configurations[i]) < 0) {
-                const auto r = rectangles(p.model, static_cast<int>(q), p.plane);
-                fixed.insert(fixed.end(), r.begin(), r.end());
-            }
+        const auto fixed = standingStill(p.model, p.joint.part, p.plane, p.configurations[i]);
         const auto [link, part] = fourBarAngles(pivot, base, p.pole(pose), pose.angle);
         for (int step = 1; step <= 32; ++step) {
             const double t = step / 32.0;
-            const auto [cPart, sPart] = cosSin(t * part);
-            const auto [cLink, sLink] = cosSin(t * link);
-            for (const auto& r : moving) {
-                std::array<Point, 4> corners{Point{r[0], r[1]}, Point{r[2], r[1]}, Point{r[2], r[3]},
-                                             Point{r[0], r[3]}};
-                for (Point& q : corners)  // about the part's pivot, then carried round by the link
-                    q = turn(turn(q, pivot, cPart, sPart), base, cLink, sLink);
-                for (const auto& box : fixed)
-                    if (std::min(r[5], box[5]) - std::max(r[4], box[4]) > 1e-6 && overlap(corners, box, 1e-6))
-                        return true;
-            }
+            const std::pair<double, double> byPart = cosSin(t * part), byLink = cosSin(t * link);
+            // about the part's pivot, then carried round by the link
+            if (hits(moving, fixed, [&](const Point& q) {
+                    return turn(turn(q, pivot, byPart.first, byPart.second), base, byLink.first,
+                                byLink.second);
+                }))
+                return true;
         }
     }
     return false;
+}
+
+/// Where the circles about c1 (radius r1) and c2 (r2) meet: none, or two points (one twice when they touch).
+std::vector<Point> meet(const Point& c1, double r1, const Point& c2, double r2)
+{
+    const double d = std::sqrt(squared(c1, c2));
+    if (d < 1e-12 || d > r1 + r2 + 1e-9 || d < std::abs(r1 - r2) - 1e-9)
+        return {};
+    const double along = (d * d + r1 * r1 - r2 * r2) / (2 * d),
+                 across = std::sqrt(std::max(0.0, r1 * r1 - along * along));
+    const Point e{(c2[0] - c1[0]) / d, (c2[1] - c1[1]) / d}, m{c1[0] + along * e[0], c1[1] + along * e[1]};
+    return {Point{m[0] - across * e[1], m[1] + across * e[0]},
+            Point{m[0] + across * e[1], m[1] - across * e[0]}};
+}
+
+/// A four-bar (issue 13.5): links `first` and `second` both move their part against one base. In each
+/// configuration that poses them, the first link turns the shorter way to its place; the second pivot follows
+/// on the branch it starts on (the meeting point of its two circles nearest its last place). Why it fails, or
+/// "" when the part arrives where the configuration puts it, clear of the parts standing still.
+std::string fourBarMotion(const Model& model, const Joint& first, const Joint& second, int k)
+{
+    const PivotPlane one = pivotPlane(model, first), two = pivotPlane(model, second);
+    const JointPose& pose = *poseOf(model, static_cast<int>(&first - model.joints.data()), k);
+    const Point pole{pose.pole[one.u], pose.pole[one.w]};
+    const Point a1 = one.pivot, b1 = one.basePivot, a2 = two.pivot, b2 = two.basePivot;
+    const double r1 = std::sqrt(squared(a1, b1)), r2 = std::sqrt(squared(a2, b2)),
+                 coupler = std::sqrt(squared(a1, a2));
+    const Point end1 = turn(a1, pole, pose.angle), end2 = turn(a2, pole, pose.angle);
+    const double from = std::atan2(a1[1] - b1[1], a1[0] - b1[0]);
+    const double sweep = std::remainder(std::atan2(end1[1] - b1[1], end1[0] - b1[0]) - from, 2 * kPi);
+    const auto moving = rectangles(model, first.part, one);
+    const auto fixed = standingStill(model, first.part, one, k);
+    const std::string where = "the four-bar of '" + first.name + "' and '" + second.name + "' ";
+    Point follower = a2;
+    const int steps = 64;
+    for (int step = 1; step <= steps; ++step) {
+        const double angle = from + sweep * step / steps;
+        const Point leader{b1[0] + r1 * std::cos(angle), b1[1] + r1 * std::sin(angle)};
+        const std::vector<Point> places = meet(b2, r2, leader, coupler);
+        if (places.empty())
+            return where + "locks " + std::to_string(100 * step / steps) + " % of the way to '" +
+                   model.configurations[k].name + "': its links cannot stay joined";
+        follower = squared(places[0], follower) <= squared(places[1], follower) ? places[0] : places[1];
+        const double turned = (std::atan2(follower[1] - leader[1], follower[0] - leader[0]) -
+                               std::atan2(a2[1] - a1[1], a2[0] - a1[0])) *
+                              180 / kPi;
+        const std::pair<double, double> by = cosSin(turned);
+        const auto place = [&](const Point& q) {
+            const Point r = turn(q, a1, by.first, by.second);
+            return Point{r[0] + leader[0] - a1[0], r[1] + leader[1] - a1[1]};
+        };
+        if (hits(moving, fixed, place))
+            return where + "takes '" + model.parts[first.part].name + "' into a part standing still " +
+                   std::to_string(100 * step / steps) + " % of the way to '" + model.configurations[k].name +
+                   "'";
+    }
+    if (std::sqrt(squared(follower, end2)) > 1e-3)
+        return where + "reaches '" + model.configurations[k].name +
+               "' only on its other assembly branch: move a pivot, or pose it the other way round";
+    return "";
 }
 
 /// Whether pivots moved by (a, b) keep the link's length in every pose, within 1e-6 mm.
@@ -267,6 +346,43 @@ std::optional<std::pair<double, double>> clearPlacement(const Placement& p, cons
     return best;
 }
 
+/// The other double pivot that makes a four-bar with `joint` (same part and base, pivots elsewhere in the
+/// plane), or nullptr. Links on both sides, one over the other, are one double pivot, each checked on its
+/// own.
+const Joint* fourBarPartner(const Model& model, const Joint& joint)
+{
+    if (joint.type != Joint::Type::DoublePivot)
+        return nullptr;
+    const PivotPlane one = pivotPlane(model, joint);
+    for (const Joint& other : model.joints) {
+        if (&other == &joint || other.type != Joint::Type::DoublePivot || other.part != joint.part ||
+            other.base != joint.base)
+            continue;
+        const PivotPlane two = pivotPlane(model, other);
+        if (other.pivotFace.side == joint.pivotFace.side && squared(one.pivot, two.pivot) >= 1 &&
+            squared(one.basePivot, two.basePivot) >= 1)
+            return &other;
+    }
+    return nullptr;
+}
+
+/// Each four-bar, by its first link and its partner, in every configuration that poses it.
+void checkFourBars(const Model& model, std::vector<Unplaced>& failed)
+{
+    for (size_t i = 0; i < model.joints.size(); ++i) {
+        const Joint* partner = fourBarPartner(model, model.joints[i]);
+        if (!partner || partner < &model.joints[i])
+            continue;  // each four-bar once, from its first link
+        for (int k = 0; k < static_cast<int>(model.configurations.size()); ++k)
+            if (poseOf(model, static_cast<int>(i), k))
+                if (const std::string why = fourBarMotion(model, model.joints[i], *partner, k);
+                    !why.empty()) {
+                    failed.push_back({model.joints[i].name, why});
+                    break;
+                }
+    }
+}
+
 }  // namespace
 
 std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point& pole, double degrees)
@@ -322,7 +438,8 @@ std::vector<Unplaced> placePivots(Model& model)
         const Range range{lowA, highA, lowB, highB};
         const auto reachable = leastChange(p, range);
         auto placed = reachable;
-        if (!placed || collides(p, placed->first, placed->second))
+        // A four-bar's links move together: its motion is checked as one linkage below (checkFourBars).
+        if (!fourBarPartner(model, joint) && (!placed || collides(p, placed->first, placed->second)))
             placed = clearPlacement(p, range);
         if (!placed) {
             failed.push_back(
@@ -336,6 +453,8 @@ std::vector<Unplaced> placePivots(Model& model)
         joint.pivot[p.axisA] += placed->first;
         joint.basePivot[p.axisB] += placed->second;
     }
+    if (failed.empty())
+        checkFourBars(model, failed);
     return failed;
 }
 

@@ -124,3 +124,22 @@ TEST(DoublePivot, ItsBaseMustStandStillWhereItIsPosed)
               "configurations[0].poses: 'foot pivot left' needs its base 'bed' to stand still, but 'castor' "
               "moves it");
 }
+
+TEST(FourBar, TwoLinksOfOnePartMoveAsOneLinkageAndStayOnTheirBranch)
+{
+    const std::string data = std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/workslike/";
+    // Posed where the four-bar arrives when its front link turns 40°: placed as modelled.
+    function::Model same = io::readWorkslike(io::readJsonFile(data + "fold-down-table.workslike.json"));
+    EXPECT_TRUE(function::placePivots(same).empty());
+    // Posed where it could be assembled only on its other branch: it cannot get there without coming apart.
+    function::Model other =
+        io::readWorkslike(io::readJsonFile(data + "contradictory/four-bar-other-branch.workslike.json"));
+    const std::vector<function::Unplaced> unplaced = function::placePivots(other);
+    ASSERT_EQ(unplaced.size(), 1u);
+    EXPECT_EQ(unplaced[0].joint, "front link");
+    EXPECT_NE(
+        unplaced[0].reason.find("the four-bar of 'front link' and 'back link' reaches 'folded' only on its "
+                                "other assembly branch"),
+        std::string::npos)
+        << unplaced[0].reason;
+}
