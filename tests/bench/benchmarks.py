@@ -1,7 +1,7 @@
 """Regenerates docs/benchmarks.md from the build tree (`make bench`): strip packing against the known
 optima, core timings (Google Benchmark: docking pass, works-like solve) and Docking vs Bottom-Left
-(thesis Fig. 5.20a), zero-waste design exploration (Table 5.1, Fig. 5.20c-d), print-in-place on the Table 4.1
-examples."""
+(thesis Fig. 5.20a), zero-waste design exploration (Table 5.1, Fig. 5.20c-d), the sloppy works-like suite,
+print-in-place on the Table 4.1 examples."""
 import datetime
 import json
 import os
@@ -16,6 +16,7 @@ sys.path.insert(0, HERE)
 import optimise_benchmark  # noqa: E402
 import printable_benchmark  # noqa: E402
 import strip_benchmark  # noqa: E402
+import workslike_suite_benchmark  # noqa: E402
 
 
 def cpu_model():
@@ -58,6 +59,7 @@ def main():
                     platform.machine()),
                 "", strip_benchmark.table(strip, 1.0), "", core_timings(), "", docking_study(), "",
                 optimise_benchmark.table(optimise_benchmark.run(BUILD)), "",
+                workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",
                 printable_benchmark.table(printable_benchmark.run(BUILD)), ""]
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as page:
         page.write("\n".join(sections))

@@ -219,6 +219,39 @@ def export_writes_a_model_the_core_solves():
         assert fabguide_core.solve(json.load(f))["report"]["solved"]
 
 
+def a_sloppy_kitchen_cabinet_solves_with_its_notes_and_overlaps_in_red():
+    """A user's rough model (tests/data): the right door drawn 7 mm off its opening takes part and says so;
+    then a panel pushed into the locked carcass, and held there, is a conflict that turns both red."""
+    doc = guitest.new_document("Kitchen")
+    guitest.with_file_dialog("getOpenFileName",
+                             os.path.join(SOURCE, "tests", "data", "workslike", "kitchen-wall-cabinet.workslike.json"),
+                             "FabGuide_ImportWorkslike")
+    mech = [o for o in doc.Objects if mechanism.is_mechanism(o)][0]
+    assert mech.Status == "Solved", mech.Status
+    cover = doc.getObjectsByLabel("doors close the cabinet")[0]
+    assert cover.Status == ("Satisfied; right door part: 7 mm from right compartment.near, beyond the 5 mm face "
+                            "distance; linked to it"), cover.Status
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(cover)
+    guitest.isometric()
+    print("window: " + guitest.screenshot("function_sloppy_kitchen"))
+    door, carcass = doc.getObjectsByLabel("left door")[0], doc.getObjectsByLabel("carcass")[0]
+    doc.openTransaction("Push the door in")
+    mech.Group = [o for o in mech.Group if o != cover]  # no longer a door that covers: a panel in front
+    door.Placement.Base.y += 10  # 10 mm into the carcass, whose front is locked
+    mech.Locks = list(mech.Locks) + ["left door.near", "left door.far"]
+    doc.recompute()
+    doc.commitTransaction()
+    assert "no overlap: carcass part, left door part" in mech.Status, mech.Status
+    assert set(mech.Blamed) == {"carcass part", "left door part"}, mech.Blamed
+    red = door.ViewObject.DiffuseColor[0]
+    assert abs(red[0] - 0.85) < 0.01 and red[1] < 0.25, red
+    print("3-D view: " + guitest.view_image("function_overlap_conflict"))
+    doc.undo()
+    doc.recompute()
+    assert mech.Status == "Solved", mech.Status
+
+
 guitest.run([
     import_the_cabinet,
     the_configurations_panel_shows_the_doors_stowed,
@@ -229,4 +262,5 @@ guitest.run([
     export_writes_a_model_the_core_solves,
     the_crate_bed_folds_along_its_four_bar_motion,
     the_cellphone_made_printable_in_its_colours,
+    a_sloppy_kitchen_cabinet_solves_with_its_notes_and_overlaps_in_red,
 ])
