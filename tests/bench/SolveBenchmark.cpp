@@ -80,18 +80,24 @@ BENCHMARK(DragRow)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
 /// A fixture as modelled (rough, so the solve has work to do), from examples/ or tests/data/workslike/.
 void SolveFixture(benchmark::State& state, const char* file)
 {
-    const function::Model model = io::readWorkslike(io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/" + file));
+    const function::Model model =
+        io::readWorkslike(io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/" + file));
     for (auto _ : state)
         if (!function::solve(model).solved)
             state.SkipWithError("not solved");
 }
 BENCHMARK_CAPTURE(SolveFixture, cabinet, "examples/cabinet.workslike.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(SolveFixture, box_with_lid, "examples/box-with-lid.workslike.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(SolveFixture, cellphone, "examples/cellphone.workslike.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(SolveFixture, crate_bar, "examples/crate-bar.workslike.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(SolveFixture, crate_bed, "examples/crate-bed.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, box_with_lid, "examples/box-with-lid.workslike.json")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, cellphone, "examples/cellphone.workslike.json")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, crate_bar, "examples/crate-bar.workslike.json")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, crate_bed, "examples/crate-bed.workslike.json")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, printer, "examples/printer.workslike.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(SolveFixture, sofa_bunk, "examples/sofa-bunk.workslike.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(SolveFixture, sofa_bunk, "examples/sofa-bunk.workslike.json")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, tablet, "examples/tablet.workslike.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(SolveFixture, toolbox, "examples/toolbox.workslike.json")->Unit(benchmark::kMillisecond);
 // 24 sloppy cabinets (48 parts) with doors opened in two configurations, one at 85°: the parts kept apart.
