@@ -32,7 +32,13 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
     nlohmann::json svgs = nlohmann::json::array();
     for (const std::string& path : io::writeCutSheets(layout, problem, (out / name).string(), "", ""))
         svgs.push_back(std::filesystem::relative(path, out).string());
-    return {{"layout", name + ".layout.json"}, {"svg", svgs}};
+    const material::MaterialSpace::Figures f = material.figures(d.layout, d.sizes);
+    return {{"layout", name + ".layout.json"},
+            {"svg", svgs},
+            {"usage", 1 - d.wastage},
+            {"sheets", f.sheets},
+            {"waste_m2", f.waste},
+            {"largest_offcut", f.offcut}};
 }
 
 void run(const OptimiseArguments& args)
@@ -58,8 +64,10 @@ void run(const OptimiseArguments& args)
                               {"seconds", exploration.seconds},
                               {"stopped", exploration.stopped},
                               {"suggestions", nlohmann::json::array()}};
-    std::printf("usage before  %.4f  (%zu parts)\n", exploration.usageBefore(),
-                flatpack.design.boards.size());
+    const material::MaterialSpace::Figures before =
+        material.figures(exploration.start.layout, exploration.start.sizes);
+    std::printf("usage before  %.4f  (%zu parts)  %d sheets, waste %.3f m2\n", exploration.usageBefore(),
+                flatpack.design.boards.size(), before.sheets, before.waste);
     for (size_t k = 0; k < exploration.suggestions.size(); ++k) {
         const material::Suggestion& s = exploration.suggestions[k];
         const std::string name = "suggestion-" + std::to_string(k + 1);
@@ -70,8 +78,10 @@ void run(const OptimiseArguments& args)
         entry["file"] = name + ".flatpack.json";
         entry["path_length"] = s.path.size();
         summary["suggestions"].push_back(entry);
-        std::printf("suggestion %zu  %.4f -> %.4f  %s\n", k + 1, exploration.usageBefore(), s.usage(),
-                    (out / entry["file"].get<std::string>()).c_str());
+        const material::MaterialSpace::Figures after = material.figures(s.result.layout, s.result.sizes);
+        std::printf("suggestion %zu  %.4f -> %.4f  %d -> %d sheets, waste %.3f -> %.3f m2  %s\n", k + 1,
+                    exploration.usageBefore(), s.usage(), before.sheets, after.sheets, before.waste,
+                    after.waste, (out / entry["file"].get<std::string>()).c_str());
     }
     if (exploration.suggestions.empty())
         std::printf("no design variation found that wastes less\n");

@@ -50,6 +50,16 @@ struct Candidate {
     bool opening = false;
 };
 
+/// Whether a face is at least half as large as its cuboid's largest: a door's front or back, a lid's top or
+/// bottom, not the edge of a board, which covers nothing.
+bool broad(const Model& model, const Face& f, int configuration)
+{
+    double area[3];
+    for (int n = 0; n < 3; ++n)
+        area[n] = extent(model, f, (n + 1) % 3, configuration) * extent(model, f, (n + 2) % 3, configuration);
+    return 2 * area[axisOf(f.side)] >= std::max({area[0], area[1], area[2]});
+}
+
 std::vector<Candidate> candidates(const Model& model, const std::vector<int>& covering,
                                   const std::vector<int>& covered, int configuration)
 {
@@ -57,24 +67,26 @@ std::vector<Candidate> candidates(const Model& model, const std::vector<int>& co
     for (int p : covering)
         for (int a : model.parts[p].cuboids)
             for (int sa = 0; sa < 6 && !model.cuboids[a].cavity(); ++sa)
-                for (int q : covered)
-                    for (int b : model.parts[q].cuboids) {
-                        const bool cavity = model.cuboids[b].cavity();
-                        if (cavity && !isOpening(model, b, sa ^ 1))
-                            continue;
-                        const Face fa{a, static_cast<Side>(sa)}, fb{b, static_cast<Side>(sa ^ 1)};  // facing
-                        const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
-                        const double ou = overlap(model, fa, fb, u, configuration),
-                                     ov = overlap(model, fa, fb, v, configuration);
-                        const double smaller = std::min(
-                            extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
-                            extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
-                        if (ou > 0 && ov > 0 && ou * ov > smaller / 2)
-                            found.push_back({fa, fb,
-                                             std::abs(at(model, a, sa, configuration) -
-                                                      at(model, b, sa ^ 1, configuration)),
-                                             cavity});
-                    }
+                if (broad(model, Face{a, static_cast<Side>(sa)}, configuration))
+                    for (int q : covered)
+                        for (int b : model.parts[q].cuboids) {
+                            const bool cavity = model.cuboids[b].cavity();
+                            if (cavity && !isOpening(model, b, sa ^ 1))
+                                continue;
+                            const Face fa{a, static_cast<Side>(sa)},
+                                fb{b, static_cast<Side>(sa ^ 1)};  // facing
+                            const int n = sa / 2, u = (n + 1) % 3, v = (n + 2) % 3;
+                            const double ou = overlap(model, fa, fb, u, configuration),
+                                         ov = overlap(model, fa, fb, v, configuration);
+                            const double smaller = std::min(
+                                extent(model, fa, u, configuration) * extent(model, fa, v, configuration),
+                                extent(model, fb, u, configuration) * extent(model, fb, v, configuration));
+                            if (ou > 0 && ov > 0 && ou * ov > smaller / 2)
+                                found.push_back({fa, fb,
+                                                 std::abs(at(model, a, sa, configuration) -
+                                                          at(model, b, sa ^ 1, configuration)),
+                                                 cavity});
+                        }
     return found;
 }
 
@@ -170,37 +182,51 @@ std::vector<CoverComponent> components(const std::vector<std::pair<Face, Face>>&
     return result;
 }
 
-Packing packing(const Model& model, const std::vector<Face>& faces, int configuration)
+Packing packing(const Model& model, const std::vector<Face>& faces, int configuration, double align)
 {
     Packing result;
     const int n = axisOf(faces.front().side);
-    const double threshold = model.minimumSize;  // overlaps below it do not order two faces
+    const size_t count = faces.size();
     for (int k : {(n + 1) % 3, (n + 2) % 3}) {
         const int other = 3 - n - k;
-        // b's predecessors along k: faces that overlap it across k, more than along k, and lie before it.
-        std::vector<bool> first(faces.size(), true), last(faces.size(), true);
-        for (size_t b = 0; b < faces.size(); ++b) {
-            int nearest = -1;
-            for (size_t a = 0; a < faces.size(); ++a) {
-                const double across = overlap(model, faces[a], faces[b], other, configuration);
-                if (a == b || across <= threshold ||
-                    overlap(model, faces[a], faces[b], k, configuration) >= across ||
-                    centre(model, faces[a], k, configuration) >= centre(model, faces[b], k, configuration))
+        // a before b along k: side by side (overlapping across k by half the narrower, not a few millimetres
+        // of a rough drawing), overlapping less along k, a's centre first.
+        auto before = [&](size_t a, size_t b) {
+            const double across = overlap(model, faces[a], faces[b], other, configuration);
+            const double narrower = std::min(extent(model, faces[a], other, configuration),
+                                             extent(model, faces[b], other, configuration));
+            return a != b && across > std::max(model.minimumSize, narrower / 2) &&
+                   overlap(model, faces[a], faces[b], k, configuration) < across &&
+                   centre(model, faces[a], k, configuration) < centre(model, faces[b], k, configuration);
+        };
+        // Every two faces with none between them meet (a wide drawer front over two doors meets both), and
+        // their sides across that lie within `align` of each other line up (seams drawn a few mm apart are
+        // one seam, which leaves no hole at a four-way corner); a face with none before (after) it is at that
+        // end.
+        std::vector<std::vector<bool>> order(count, std::vector<bool>(count));
+        for (size_t a = 0; a < count; ++a)
+            for (size_t b = 0; b < count; ++b)
+                order[a][b] = before(a, b);
+        for (size_t f = 0; f < count; ++f) {
+            bool hasPrevious = false, hasNext = false;
+            for (size_t g = 0; g < count; ++g) {
+                hasPrevious = hasPrevious || order[g][f];
+                hasNext = hasNext || order[f][g];
+                bool between = false;
+                for (size_t c = 0; c < count && order[f][g] && !between; ++c)
+                    between = order[f][c] && order[c][g];
+                if (!order[f][g] || between)
                     continue;
-                if (nearest < 0 || centre(model, faces[a], k, configuration) >
-                                       centre(model, faces[nearest], k, configuration))
-                    nearest = static_cast<int>(a);
+                result.neighbours.push_back({faces[f], faces[g], k});
+                for (int side : {2 * other, 2 * other + 1})
+                    if (std::abs(at(model, faces[f].cuboid, side, configuration) -
+                                 at(model, faces[g].cuboid, side, configuration)) <= align)
+                        result.aligned.push_back({Face{faces[f].cuboid, static_cast<Side>(side)},
+                                                  Face{faces[g].cuboid, static_cast<Side>(side)}});
             }
-            if (nearest >= 0) {
-                result.neighbours.push_back({faces[nearest], faces[b], k});
-                first[b] = false;
-                last[nearest] = false;
-            }
-        }
-        for (size_t f = 0; f < faces.size(); ++f) {
-            if (first[f])
+            if (!hasPrevious)
                 result.ends[2 * k].push_back(faces[f]);
-            if (last[f])
+            if (!hasNext)
                 result.ends[2 * k + 1].push_back(faces[f]);
         }
     }

@@ -33,15 +33,18 @@ struct CoverComponent {
 std::vector<CoverComponent> components(const std::vector<std::pair<Face, Face>>& pairs);
 
 /// A plane sweep over coplanar faces (4.3.1, Fig. 4.11): along each in-plane axis, the neighbours (a's high
-/// side meets b's low side) and the faces at either end, which share the end's coordinate.
+/// side meets b's low side: every two faces side by side, in order, with no face between them), their sides
+/// across that lie within `align` mm of each other (lined up: one seam), and the faces at either end, which
+/// share the end's coordinate.
 struct Packing {
     struct Neighbours {
         Face a, b;
         int axis = 0;
     };
     std::vector<Neighbours> neighbours;
+    std::vector<std::pair<Face, Face>> aligned;  ///< sides made equal
     std::array<std::vector<Face>, 6> ends;  ///< by Side: faces at the low / high end of each in-plane axis
 };
-Packing packing(const Model& model, const std::vector<Face>& faces, int configuration);
+Packing packing(const Model& model, const std::vector<Face>& faces, int configuration, double align);
 
 }  // namespace fabguide::function

@@ -30,6 +30,12 @@ Point turn(const Point& p, const Point& centre, double degrees)
     return turn(p, centre, c, s);
 }
 
+/// Rounded to the nanometre, as the cuboids are (no 1e-12 residue on a pivot placed at a face's edge).
+double nanometres(double mm)
+{
+    return std::round(mm * 1e9) / 1e9;
+}
+
 double squared(const Point& a, const Point& b)
 {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
@@ -450,8 +456,8 @@ std::vector<Unplaced> placePivots(Model& model)
                                          "in every configuration"});
             continue;
         }
-        joint.pivot[p.axisA] += placed->first;
-        joint.basePivot[p.axisB] += placed->second;
+        joint.pivot[p.axisA] = nanometres(joint.pivot[p.axisA] + placed->first);
+        joint.basePivot[p.axisB] = nanometres(joint.basePivot[p.axisB] + placed->second);
     }
     if (failed.empty())
         checkFourBars(model, failed);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <set>
 #include <stdexcept>
 
 namespace fabguide::function {
@@ -130,14 +132,19 @@ Eigen::VectorXd snapped(const Eigen::VectorXd& target, const std::vector<LinearC
     return violation(y, rows) <= tolerance ? y : x;
 }
 
-/// One QP solve; (solved, x).
-std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
-                                         const std::vector<LinearConstraint>& rows,
-                                         const Eigen::VectorXd* start, double tolerance)
+/// One QP solve: whether it solved, x, and the solver's Lagrange multipliers of the rows.
+struct QP {
+    bool solved = false;
+    Eigen::VectorXd x;
+    std::vector<double> multipliers;
+};
+
+QP solveQP(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
+           const Eigen::VectorXd* start, double tolerance)
 {
     const int n = static_cast<int>(target.size());
     if (n == 0)
-        return {violation(target, rows) <= tolerance, target};
+        return {violation(target, rows) <= tolerance, target, std::vector<double>(rows.size(), 0.0)};
     alglib::real_1d_array result;
     alglib::minqpreport report;
     try {
@@ -187,20 +194,22 @@ std::pair<bool, Eigen::VectorXd> solveQP(const Eigen::VectorXd& target,
     Eigen::VectorXd x(n);
     for (int i = 0; i < n; ++i)
         x[i] = result[i];
-    if (report.terminationtype <= 0 || violation(x, rows) > tolerance)
-        return {false, x};
     std::vector<double> multipliers(rows.size(), 0.0);
     for (size_t r = 0; r < rows.size() && static_cast<long>(r) < report.laglc.length(); ++r)
         multipliers[r] = report.laglc[r];
-    return {true, snapped(target, rows, polished(target, rows, x, multipliers, tolerance), tolerance)};
+    if (report.terminationtype <= 0 || violation(x, rows) > tolerance)
+        return {false, x, multipliers};
+    return {true, snapped(target, rows, polished(target, rows, x, multipliers, tolerance), tolerance),
+            multipliers};
 }
 
 std::vector<LinearConstraint> without(const std::vector<LinearConstraint>& rows,
                                       const std::vector<std::string>& sources)
 {
+    const std::set<std::string> gone(sources.begin(), sources.end());
     std::vector<LinearConstraint> kept;
     for (const LinearConstraint& row : rows)
-        if (std::find(sources.begin(), sources.end(), row.source) == sources.end() || row.source.empty())
+        if (row.source.empty() || !gone.count(row.source))
             kept.push_back(row);
     return kept;
 }
@@ -229,22 +238,40 @@ LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
         result.x = target;
         return result;
     }
-    auto [solved, x] = solveQP(target, constraints, start, tolerance);
-    result.solved = solved;
-    result.x = solved ? x : target;
+    const QP qp = solveQP(target, constraints, start, tolerance);
+    result.solved = qp.solved;
+    result.x = qp.solved ? qp.x : target;
     result.violation = violation(result.x, constraints);
-    if (solved)
+    if (qp.solved)
         return result;
 
-    // Deletion filter: drop each source in turn; if the rest still conflicts it was not needed.
+    // Deletion filter: drop each source in turn; if the rest still conflicts it was not needed. The sources
+    // whose rows the infeasible solve gave no multiplier are tried first all at once (one solve instead of
+    // hundreds when a large model has one small conflict).
     std::vector<std::string> sources;
-    for (const LinearConstraint& row : constraints)
-        if (!row.source.empty() && std::find(sources.begin(), sources.end(), row.source) == sources.end())
-            sources.push_back(row.source);
+    std::map<std::string, double> weight;  // largest |multiplier| of a source's rows
+    for (size_t r = 0; r < constraints.size(); ++r) {
+        const std::string& source = constraints[r].source;
+        if (source.empty())
+            continue;
+        if (!weight.count(source))
+            sources.push_back(source);
+        weight[source] = std::max(weight[source], std::abs(qp.multipliers[r]));
+    }
+    double largest = 0;
+    for (const auto& [source, w] : weight)
+        largest = std::max(largest, w);
     std::vector<std::string> dropped;
+    for (const std::string& source : sources)
+        if (weight[source] <= 1e-6 * largest)
+            dropped.push_back(source);
+    if (dropped.empty() || solveQP(target, without(constraints, dropped), nullptr, tolerance).solved)
+        dropped.clear();  // the multipliers did not tell: one by one
     for (const std::string& source : sources) {
+        if (std::find(dropped.begin(), dropped.end(), source) != dropped.end())
+            continue;
         dropped.push_back(source);
-        if (solveQP(target, without(constraints, dropped), nullptr, tolerance).first) {
+        if (solveQP(target, without(constraints, dropped), nullptr, tolerance).solved) {
             dropped.pop_back();  // needed for the conflict
             result.conflict.push_back(source);
         }

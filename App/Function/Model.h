@@ -149,6 +149,7 @@ struct Cover {
     bool just = false;
     int configuration = -1;
     InferenceNotes notes;
+    double distance = 5;  ///< mm: faces this far apart correspond, seams this far apart are one
 };
 
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace fabguide::function {
@@ -22,14 +23,26 @@ Box boxOf(const Model& model, int cuboid, int configuration)
     return box;
 }
 
-/// The pairs of parts that a fit inside lets overlap: its inner parts and the enclosing part.
-std::set<std::pair<int, int>> fitting(const Model& model)
+/// The fit insides' (inner part, enclosing part) pairs, with the configurations they are measured in.
+std::map<std::pair<int, int>, std::set<int>> fitting(const Model& model)
 {
-    std::set<std::pair<int, int>> pairs;
+    std::map<std::pair<int, int>, std::set<int>> pairs;
     for (const FitInside& f : model.fitInside)
         for (int p : f.inner)
-            pairs.insert(std::minmax(p, f.enclosing));
+            pairs[{p, f.enclosing}].insert(f.configuration);
     return pairs;
+}
+
+/// Whether box a lies at least half inside box b.
+bool mostlyInside(const Box& a, const Box& b)
+{
+    double inside = 1, volume = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        inside *=
+            std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
+        volume *= a[2 * axis + 1] - a[2 * axis];
+    }
+    return 2 * inside >= volume;
 }
 
 /// How far `inner` reaches out of cavity c on the sides that are not openings.
@@ -89,13 +102,24 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
             boxes[c] = boxOf(model, c, configuration);
         }
     std::sort(solids.begin(), solids.end(), [&](int a, int b) { return boxes[a][0] < boxes[b][0]; });
-    const std::set<std::pair<int, int>> exempt = fitting(model);
+    const auto fits = fitting(model);
+    // A fit inside's inner and enclosing parts may overlap: print-in-place cuts the room the inner parts
+    // sweep (thesis 4.5.1). Where the fit is measured, only an inner cuboid carved out of an enclosing one (a
+    // tray in a solid box) may: one between a frame's posts stays clear of them.
+    const auto exempt = [&](int a, int b, int pa, int pb) {
+        for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
+            const auto found = fits.find({partOf(model, inner), partOf(model, enclosing)});
+            if (found != fits.end())
+                return !found->second.count(configuration) || mostlyInside(boxes[inner], boxes[enclosing]);
+        }
+        return pa == pb;
+    };
     std::vector<std::pair<int, int>> pairs;
     for (size_t i = 0; i < solids.size(); ++i)
         for (size_t k = i + 1; k < solids.size() && boxes[solids[k]][0] < boxes[solids[i]][1] + margin; ++k) {
             const int a = solids[i], b = solids[k];
             const int pa = partOf(model, a), pb = partOf(model, b);
-            bool near = pa != pb && !exempt.count(std::minmax(pa, pb));
+            bool near = !exempt(a, b, pa, pb);
             for (int axis = 1; axis < 3 && near; ++axis)
                 near = std::min(boxes[a][2 * axis + 1], boxes[b][2 * axis + 1]) -
                            std::max(boxes[a][2 * axis], boxes[b][2 * axis]) >

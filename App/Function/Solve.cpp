@@ -107,12 +107,14 @@ void coverConstraints(std::vector<LinearConstraint>& rows, const Model& model, c
         for (const auto* faces : {&component.covering, &component.covered})
             for (const Face& f : *faces)
                 rule(f, plane, true);
-        const Packing covering = packing(model, component.covering, c.configuration),
-                      covered = packing(model, component.covered, c.configuration);
+        const Packing covering = packing(model, component.covering, c.configuration, c.distance),
+                      covered = packing(model, component.covered, c.configuration, c.distance);
         for (const Packing* p : {&covering, &covered}) {
             for (const Packing::Neighbours& n : p->neighbours)  // no gap, no overlap
                 rule(Face{n.a.cuboid, static_cast<Side>(2 * n.axis + 1)},
                      Face{n.b.cuboid, static_cast<Side>(2 * n.axis)}, true);
+            for (const auto& [a, b] : p->aligned)  // one seam
+                rule(a, b, true);
             for (int k = 0; k < 6; ++k)  // the outermost faces aligned
                 for (const Face& f : p->ends[k])
                     rule(Face{f.cuboid, static_cast<Side>(k)},
@@ -280,6 +282,9 @@ size_t separateNear(const Model& drawn, const Model& model, double margin, std::
     const size_t before = separations.size();
     for (int k = -1; k < static_cast<int>(model.configurations.size()); ++k)
         for (const auto& [a, b] : nearPairs(model, k, margin)) {
+            if (k >= 0 && jointMovingIn(model, partOf(model, a), k) < 0 &&
+                jointMovingIn(model, partOf(model, b), k) < 0)
+                continue;  // neither moves there: kept apart as modelled
             if (seen.insert({a, b, k}).second)
                 separations.push_back(inferSeparation(drawn, a, b, k));
         }

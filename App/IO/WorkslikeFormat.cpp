@@ -439,9 +439,9 @@ function::Cover readCover(const function::Model& model, const Fields& r, const s
 {
     function::Cover c{name, partList(model, r, "covering"), partList(model, r, "covered"),
                       {},   r.flag("just", false),          configuration,
-                      {}};
+                      {},   r.number("distance", 5.0, 0.0)};
     if (!r.has("pairs")) {
-        const double distance = r.number("distance", 5.0, 0.0);
+        const double distance = c.distance;
         function::InferredCover inferred =
             function::inferCover(model, c.covering, c.covered, configuration, distance);
         if (!inferred.unlinked.empty())
@@ -702,7 +702,8 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                                                  {"covering", partNames(model, c.covering)},
                                                  {"covered", partNames(model, c.covered)},
                                                  {"pairs", pairs},
-                                                 {"just", c.just}},
+                                                 {"just", c.just},
+                                                 {"distance", c.distance}},
                                                 c.configuration));
     }
     for (const function::Lock& lock : model.locks)

@@ -1,6 +1,7 @@
 #include "Material/ImproveDesign.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -17,7 +18,8 @@ DesignLayout laidOut(const Explorer& explorer, const Eigen::VectorXd& X, LayOut&
     const Eigen::VectorXd sizes = explorer.design.sizes(X);
     GridLayout layout = layOut(sizes);
     const double wastage = explorer.material.wastage(layout, sizes);
-    return {X, sizes, std::move(layout), wastage};
+    const int sheets = static_cast<int>(layout.stock.size());
+    return {X, sizes, std::move(layout), wastage, sheets};
 }
 
 }  // namespace
@@ -57,24 +59,24 @@ void growParts(Explorer& explorer, DesignLayout& best, DesignLayout& current)
         for (int size : sizes) {
             if (explorer.stopped())
                 return;
-            // Grow once, then on while the wastage drops (lines 5-15); keep the least-wastage growth.
+            // Grow once, then on while the score drops (lines 5-15); keep the least-score growth.
             std::optional<DesignLayout> grown;
             for (DesignLayout at = current;;) {
                 const auto X = changePartSize(explorer, at.X, size, +1);
                 if (!X)
                     break;
                 DesignLayout next = explorer.slid(at, *X);
-                if (next.wastage > (grown ? grown->wastage : 1.0 - 1e-12))
+                if (grown ? next.score() > grown->score() : std::isinf(next.score()))
                     next = explorer.docked(*X);  // sliding lost (or failed): dock again (line 11)
-                if (grown && next.wastage >= grown->wastage)
+                if (grown && next.score() >= grown->score())
                     break;
                 grown = next;
                 at = std::move(next);
             }
-            if (grown && grown->wastage < current.wastage) {
+            if (grown && grown->score() < current.score()) {
                 current = std::move(*grown);
                 improvement = true;
-                if (current.wastage < best.wastage) {
+                if (current.score() < best.score()) {
                     best = current;
                     explorer.improved(best);
                 }
@@ -249,9 +251,9 @@ DesignLayout improveDesign(Explorer& explorer, const DesignLayout& start, int it
         if (!X)
             break;
         current = explorer.slid(best, *X);
-        if (current.wastage >= 1)
+        if (std::isinf(current.score()))
             current = explorer.docked(*X);
-        if (current.wastage < best.wastage) {
+        if (current.score() < best.score()) {
             best = current;
             explorer.improved(best);
         }

@@ -6,17 +6,22 @@
 
 #include <atomic>
 #include <chrono>
+#include <limits>
 #include <random>
 #include <vector>
 
 namespace fabguide::material {
 
-/// A design X, its part sizes s(X), its layout and the layout's wastage W.
+/// A design X, its part sizes s(X), its layout, the layout's wastage W (5.2.3) and the master boards it uses.
 struct DesignLayout {
     Eigen::VectorXd X;
     Eigen::VectorXd sizes;
     GridLayout layout;
     double wastage = 1;
+    int sheets = 0;
+    /// What the search minimises, the maker's measure (issue 14): fewer sheets bought first, then the thesis'
+    /// wastage, which favours compact layouts (large offcuts); infinite when a part is left over.
+    double score() const { return wastage >= 1 ? std::numeric_limits<double>::infinity() : sheets + wastage; }
 };
 
 /// What the design search works with: D, the material space, the docking order O, its random source, the

@@ -171,6 +171,27 @@ double MaterialSpace::wastage(const GridLayout& layout, const Eigen::VectorXd& s
     return 1.0 - parts / bounding;
 }
 
+MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const
+{
+    const double tau = settings_.resolution;
+    Figures f;
+    f.sheets = static_cast<int>(layout.stock.size());
+    double bought = 0, parts = 0;
+    for (size_t s = 0; s < layout.stock.size(); ++s) {
+        const BoardStock& board = stock_[layout.stock[s]];
+        bought += board.width * tau * board.height * tau;
+        const std::array<double, 2> beside{(board.width - layout.usedWidth[s]) * tau, board.height * tau},
+            above{board.width * tau, (board.height - layout.usedHeight[s]) * tau};
+        for (const auto& strip : {beside, above})
+            if (strip[0] * strip[1] > f.offcut[0] * f.offcut[1])
+                f.offcut = strip;
+    }
+    for (int kind : kindOf_)
+        parts += sizes[2 * kind] * sizes[2 * kind + 1];
+    f.waste = (bought - parts) / 1e6;
+    return f;
+}
+
 Layout MaterialSpace::inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const
 {
     const PackProblem sized = problem(sizes);

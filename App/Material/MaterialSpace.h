@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 namespace fabguide::material {
 
 class MaterialSpace {
@@ -34,6 +36,15 @@ public:
     /// W(L): 1 - part area / summed bounding rectangles of the sheets' layouts (5.2.3), 1 when a unit is
     /// unplaced.
     double wastage(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
+
+    /// What a maker reads off a layout (issue 14): master boards used, m² of them not in parts, and the
+    /// largest offcut left whole (the strip beside or above a sheet's layout, width × height in mm).
+    struct Figures {
+        int sheets = 0;
+        double waste = 0;
+        std::array<double, 2> offcut{};
+    };
+    Figures figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 
     /// The layout in millimetres, for files and thumbnails.
     Layout inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const;

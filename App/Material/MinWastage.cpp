@@ -39,13 +39,19 @@ std::uint64_t seedOf(std::uint64_t seed, int round, int task)
     return z ^ (z >> 31);
 }
 
+/// Seconds left until `deadline` (0 when past it).
+double secondsTo(Clock::time_point deadline)
+{
+    return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
+}
+
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
-                         std::uint64_t seed)
+                         std::uint64_t seed, Clock::time_point deadline)
 {
     const RasterProblem units = material.raster(sizes);
     OrderingSearchOptions options;
     options.iterations = static_cast<long>(units.parts.size() * units.parts.size());  // |D(X)|², 5.4.3
-    options.timeLimit = 1e9;
+    options.timeLimit = secondsTo(deadline);  // the search's own time limit, and no longer
     options.seed = seed;
     return exploreOrderings(units.parts, std::move(order), material.stock(), options);
 }
@@ -60,7 +66,7 @@ Entry improve(const DesignSpace& design, const MaterialSpace& material, const En
     std::vector<int> order = from.order;
     if (!keepOrder)
         std::shuffle(order.begin(), order.end(), explorer.random);
-    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed));
+    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed, deadline));
     const DesignLayout start = explorer.docked(from.design.X);
     Entry out{improveDesign(explorer, start, options.improveIterations), explorer.order, from.path};
     out.path.insert(out.path.end(), explorer.path.begin(), explorer.path.end());
@@ -129,7 +135,7 @@ void runAll(int count, int threads, Task&& task, const std::function<void(int)>&
 std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
 {
     std::stable_sort(entries.begin(), entries.end(),
-                     [](const Entry& a, const Entry& b) { return a.design.wastage < b.design.wastage; });
+                     [](const Entry& a, const Entry& b) { return a.design.score() < b.design.score(); });
     std::vector<Entry> kept;
     for (Entry& e : entries) {
         const bool known = std::any_of(kept.begin(), kept.end(), [&](const Entry& k) {
@@ -142,23 +148,30 @@ std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
 }
 
 /// Farthest-point choice (5.3.3): the best design, then repeatedly the design farthest in part lengths from
-/// those chosen, among designs within `window` of the best usage that improve on the start.
+/// those chosen, among designs within `window` of the best score that score better than the start (so never
+/// on more sheets) and differ from it (a better layout of the same design is no suggestion).
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count)
 {
-    constexpr double window = 0.03, distinct = 1.0;  // usage; mm
+    constexpr double window = 0.03, distinct = 1.0;  // score (a sheet is 1); mm
     const int all = static_cast<int>(pool.size());   // read before the move: argument order is unspecified
     pool = keepBest(std::move(pool), all);
+    pool.erase(std::remove_if(pool.begin(), pool.end(),
+                              [&](const Entry& e) {
+                                  return e.design.score() >= start.score() ||
+                                         (e.design.sizes - start.sizes).norm() < distinct;
+                              }),
+               pool.end());
     std::vector<Suggestion> chosen;
-    if (pool.empty() || pool.front().design.wastage >= start.wastage)
+    if (pool.empty())
         return chosen;
-    const double worst = pool.front().design.wastage + window;
+    const double worst = pool.front().design.score() + window;
     std::vector<bool> taken(pool.size(), false);
     for (int k = 0; k < count; ++k) {
         int pick = -1;
         double farthest = distinct;
         for (size_t i = 0; i < pool.size(); ++i) {
             const DesignLayout& d = pool[i].design;
-            if (taken[i] || d.wastage > worst || d.wastage >= start.wastage)
+            if (taken[i] || d.score() > worst)
                 continue;
             double nearest = std::numeric_limits<double>::infinity();
             for (const Suggestion& s : chosen)
@@ -178,14 +191,15 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
 
 }  // namespace
 
-DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed)
+DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
+                    double seconds)
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
     const RasterProblem units = material.raster(sizes);
     OrderingSearchOptions options;
     options.iterations = static_cast<long>(units.parts.size() * units.parts.size());
-    options.timeLimit = 10;  // the iterations end it first
+    options.timeLimit = seconds;
     options.seed = seed;
     GridLayout layout = searchFromStarts(units.parts, material.stock(), options);
     if (!layout.unplaced.empty())
@@ -193,7 +207,8 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
                            material.parts()[material.kindOf()[layout.unplaced.front()]].id +
                            "' is left over; add a board or make the design smaller");
     const double wastage = material.wastage(layout, sizes);
-    return {X, sizes, std::move(layout), wastage};
+    const int sheets = static_cast<int>(layout.stock.size());
+    return {X, sizes, std::move(layout), wastage, sheets};
 }
 
 Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
@@ -203,11 +218,12 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
                                         std::chrono::duration<double>(std::max(0.0, options.timeLimit)));
     Exploration exploration;
-    exploration.start = layOut(design, material, options.seed);
+    // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
+    exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4));
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
     const int total = options.rounds * options.tasksPerRound;
-    double bestUsage = exploration.usageBefore();
+    DesignLayout best = exploration.start;
     for (int round = 0; round < options.rounds; ++round) {
         std::vector<Entry> results(options.tasksPerRound);
         const auto task = [&](int t) {
@@ -217,9 +233,10 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         };
         const auto finished = [&](int t) {
             ++exploration.designsImproved;
-            bestUsage = std::max(bestUsage, 1 - results[t].design.wastage);
+            if (results[t].design.score() < best.score())
+                best = results[t].design;
             if (options.progress)
-                options.progress(static_cast<double>(exploration.designsImproved) / total, bestUsage);
+                options.progress(static_cast<double>(exploration.designsImproved) / total, 1 - best.wastage);
         };
         runAll(options.tasksPerRound, options.threads, task, finished);
         pool.insert(pool.end(), results.begin(), results.end());

@@ -21,7 +21,7 @@ struct MinWastageOptions {
     double timeLimit = 8;    ///< seconds; the search ends with what it has found
     bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
     const std::atomic<bool>* cancel = nullptr;
-    /// Called on the caller's thread after each task: fraction done, best usage so far.
+    /// Called on the caller's thread after each task: fraction done, usage of the best design so far.
     std::function<void(double, double)> progress;
 };
 
@@ -42,13 +42,16 @@ struct Exploration {
 };
 
 /// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
-/// |parts|² swaps each). Throws PackingError naming a part left over when the design does not fit.
-DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed);
+/// |parts|² swaps each, for at most `seconds`). Throws PackingError naming a part left over when the design
+/// does not fit.
+DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
+                    double seconds = 10);
 
-/// Algorithm 7. Every suggestion comes from CHANGEPARTSIZES, so it keeps the design's constraints; the
-/// suggestions are the least-wastage design found and then, among designs within 0.03 of its usage, those
-/// farthest (in part lengths) from the ones already chosen. Fewer when the search found no other distinct
-/// improving design.
+/// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first). Every suggestion comes from
+/// CHANGEPARTSIZES, so it keeps the design's constraints; the suggestions are the best-scoring design found
+/// and then, among designs within 0.03 of its score, those farthest (in part lengths) from the ones already
+/// chosen. None needs more sheets than the design as it is, none is the design unchanged; fewer when the
+/// search found no other distinct improving design.
 Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                        const MinWastageOptions& options);
 

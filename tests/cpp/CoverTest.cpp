@@ -100,7 +100,7 @@ TEST(Cover, TwoDoorsArePackedSideBySideOverTheCarcassFront)
     const function::Model model = io::readWorkslike(d);
     ASSERT_EQ(model.cover[0].pairs.size(), 2u);  // both doors' backs on the carcass' front
     const function::Packing p =
-        function::packing(model, {model.cover[0].pairs[0].first, model.cover[0].pairs[1].first}, -1);
+        function::packing(model, {model.cover[0].pairs[0].first, model.cover[0].pairs[1].first}, -1, 5);
     ASSERT_EQ(p.neighbours.size(), 1u);
     EXPECT_EQ(p.neighbours[0].axis, 0);
     EXPECT_EQ(model.cuboids[p.neighbours[0].a.cuboid].name, "left door");
@@ -138,17 +138,25 @@ TEST(Cover, ALidTooSmallToCoverIsAConflictNamingWhatHoldsItSmall)
 TEST(Cover, APartBeyondTheFaceDistanceIsLinkedAndNoted)
 {
     json d = clamshell(false);
-    d["relationships"][0].erase("configuration");  // open, the lid's near face is 2 mm behind the body
-    d["relationships"][0]["distance"] = 1;
+    d["relationships"][0]["distance"] = 1;  // closed, the lid lands 3 mm into the body
     const function::Model m = io::readWorkslike(d);
     ASSERT_EQ(m.cover[0].pairs.size(), 1u);
-    EXPECT_EQ(function::faceName(m, m.cover[0].pairs[0].first), "lid.near");
+    EXPECT_EQ(function::faceName(m, m.cover[0].pairs[0].first), "lid.bottom");
     EXPECT_EQ(
         m.cover[0].notes,
-        (function::InferenceNotes{"lid: 2 mm from body.far, beyond the 1 mm face distance; linked to it"}));
+        (function::InferenceNotes{"lid: 3 mm from body.top, beyond the 1 mm face distance; linked to it"}));
     const function::SolveResult r = function::solve(m);
     ASSERT_TRUE(r.solved);
     EXPECT_EQ(r.notes, (std::vector<std::string>{"lid covers the body: " + m.cover[0].notes[0]}));
+}
+
+TEST(Cover, TheEdgeOfABoardCoversNothing)
+{
+    json d = clamshell(false);
+    d["relationships"][0].erase("configuration");  // open, only the lid's 7 mm edge faces the body
+    EXPECT_EQ(testsupport::workslikeError(d),
+              "relationships[0].covering[0] ('lid'): no face of it faces a face "
+              "of the other side, overlapping it by half");
 }
 
 TEST(Cover, ErrorsNameTheField)

@@ -614,13 +614,18 @@ def rect_subtract(a, c):
 
 def infer_cover_pairs(model, r, configuration):
     """The checker's own reading of a cover without pairs: facing faces within `distance`, overlapping by
-    half the smaller face; a covering face linked to an opening is not linked to the wall around it."""
+    half the smaller face; a covering face linked to an opening is not linked to the wall around it; the edge of
+    a board (a face less than half its cuboid's largest) covers nothing."""
     distance = float(r.get("distance", 5))
     pairs = []
     for p in r["covering"]:
         for a in model.solids(p):
             ba = model.posed(a, configuration).bbox
+            size = [ba[1][i] - ba[0][i] for i in range(3)]
+            areas = [size[(n + 1) % 3] * size[(n + 2) % 3] for n in range(3)]
             for sa in range(6):
+                if 2 * areas[sa // 2] < max(areas):
+                    continue
                 found = {True: [], False: []}
                 for q in r["covered"]:
                     for b in model.part_cuboids[q]:
