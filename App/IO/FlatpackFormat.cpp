@@ -389,6 +389,12 @@ nlohmann::json withParts(nlohmann::json document, const Design& design, const Ei
         document["parts"][i]["position"] = parts[i]["position"];
         document["parts"][i]["size"] = parts[i]["size"];
     }
+    // Inner volumes move with their boards (5.1: the shelf space travels with the shelf).
+    const std::vector<material::DesignBoard> boards = design.boardsAt(X);
+    for (size_t i = 0; i < design.innerVolumes.size(); ++i) {
+        const Eigen::Vector3d at = boards[design.innerVolumes[i].on].centre + design.innerVolumes[i].offset;
+        document["inner_volumes"][i]["position"] = {at.x(), at.y(), at.z()};
+    }
     return document;
 }
 

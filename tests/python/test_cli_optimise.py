@@ -37,6 +37,25 @@ def test_the_coffee_table_gets_three_suggestions_that_waste_less(fabguide_cli, s
     assert "usage before  {:.4f}".format(summary["usage_before"]) in run.stdout
 
 
+def test_suggestions_need_no_more_sheets_and_reload_with_their_inner_volumes(fabguide_cli, source_dir, tmp_path):
+    for name in ("parrot-shelf", "shelf-and-chest"):  # an inner volume on a board that moves; two sheets
+        out = tmp_path / name
+        run = optimise(fabguide_cli, os.path.join(source_dir, "examples", name + ".flatpack.json"), out,
+                       "--seed", "1", "--threads", "2", "--time-limit", "6")
+        assert run.returncode == 0, run.stderr
+        summary = json.loads((out / "summary.json").read_text())
+        before = summary["before"]
+        assert before["sheets"] >= 1 and before["waste_m2"] > 0 and len(before["largest_offcut"]) == 2
+        assert summary["suggestions"], name
+        for s in summary["suggestions"]:
+            assert s["sheets"] <= before["sheets"]
+            design = json.loads((out / s["file"]).read_text())
+            assert design["parts"] != json.loads(open(os.path.join(source_dir, "examples", name + ".flatpack.json"))
+                                                 .read())["parts"]
+            again = optimise(fabguide_cli, str(out / s["file"]), out / ("again-" + s["file"]), "--time-limit", "1")
+            assert again.returncode == 0, again.stderr  # accept a suggestion and go on designing from it
+
+
 def test_the_same_seed_gives_the_same_suggestions(fabguide_cli, source_dir, tmp_path):
     path = os.path.join(source_dir, "examples", "parrot-shelf.flatpack.json")
     for name, threads in (("one", "1"), ("two", "2")):
