@@ -365,6 +365,8 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     readInnerVolumes(root, design);
     if (root.has("outer_volume"))
         readOuterVolume(design, document["outer_volume"]);
+    const std::vector<material::DesignConstraint> apart = material::keptApart(design);
+    design.bounds.insert(design.bounds.end(), apart.begin(), apart.end());
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
     return result;

@@ -217,4 +217,45 @@ Snapping snapping(const Design& design, int a, int b, double tolerance)
     return kept;
 }
 
+std::vector<DesignConstraint> keptApart(const Design& design, double margin)
+{
+    const Eigen::VectorXd X = design.variables();
+    const int n = static_cast<int>(design.boards.size());
+    std::vector<int> byLeft(n);
+    for (int b = 0; b < n; ++b)
+        byLeft[b] = b;
+    std::sort(byLeft.begin(), byLeft.end(),
+              [&](int a, int b) { return lowerFace(a, 0).value(X) < lowerFace(b, 0).value(X); });
+    std::vector<DesignConstraint> bounds;
+    const char* names = "xyz";
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1;
+             j < n && lowerFace(byLeft[j], 0).value(X) < upperFace(byLeft[i], 0).value(X) + margin; ++j) {
+            const int a = std::min(byLeft[i], byLeft[j]), b = std::max(byLeft[i], byLeft[j]);
+            // Most apart: the axis and order with the widest gap (touching is a gap of 0).
+            double widest = -std::numeric_limits<double>::infinity();
+            Linear keep;
+            int along = 0;
+            for (int axis = 0; axis < 3; ++axis)
+                for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}})
+                    if (const double gap = lowerFace(high, axis).value(X) - upperFace(low, axis).value(X);
+                        gap > widest) {
+                        widest = gap;
+                        keep = upperFace(low, axis) - lowerFace(high, axis);  // <= 0, or a touch's hair
+                        along = axis;
+                    }
+            if (widest < -1e-6 || widest > margin)
+                continue;  // overlapping as designed (not ours to part), or far apart
+            bounds.push_back({std::string("apart: ") + design.boards[a].id + "/" + design.boards[b].id +
+                                  " along " + names[along],
+                              keep + constant(std::min(0.0, widest))});
+        }
+    double ground = std::numeric_limits<double>::infinity();
+    for (int b = 0; b < n; ++b)
+        ground = std::min(ground, lowerFace(b, 2).value(X));
+    for (int b = 0; b < n; ++b)
+        bounds.push_back({"above ground: " + design.boards[b].id, constant(ground) - lowerFace(b, 2)});
+    return bounds;
+}
+
 }  // namespace fabguide::material
