@@ -32,13 +32,10 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
     nlohmann::json svgs = nlohmann::json::array();
     for (const std::string& path : io::writeCutSheets(layout, problem, (out / name).string(), "", ""))
         svgs.push_back(std::filesystem::relative(path, out).string());
-    const material::MaterialSpace::Figures f = material.figures(d.layout, d.sizes);
-    return {{"layout", name + ".layout.json"},
-            {"svg", svgs},
-            {"usage", 1 - d.wastage},
-            {"sheets", f.sheets},
-            {"waste_m2", f.waste},
-            {"largest_offcut", f.offcut}};
+    nlohmann::json entry = io::measures(d);
+    entry["layout"] = name + ".layout.json";
+    entry["svg"] = svgs;
+    return entry;
 }
 
 void run(const OptimiseArguments& args)
@@ -78,7 +75,7 @@ void run(const OptimiseArguments& args)
         entry["file"] = name + ".flatpack.json";
         entry["path_length"] = s.path.size();
         summary["suggestions"].push_back(entry);
-        const material::MaterialSpace::Figures after = material.figures(s.result.layout, s.result.sizes);
+        const material::MaterialSpace::Figures& after = s.result.figures;
         std::printf("suggestion %zu  %.4f -> %.4f  %d -> %d sheets, waste %.3f -> %.3f m2  %s\n", k + 1,
                     exploration.usageBefore(), s.usage(), before.sheets, after.sheets, before.waste,
                     after.waste, (out / entry["file"].get<std::string>()).c_str());

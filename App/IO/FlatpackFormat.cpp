@@ -400,6 +400,14 @@ nlohmann::json withParts(nlohmann::json document, const Design& design, const Ei
     return document;
 }
 
+nlohmann::json measures(const material::DesignLayout& d)
+{
+    return {{"usage", 1 - d.wastage},
+            {"sheets", d.figures.sheets},
+            {"waste_m2", d.figures.waste},
+            {"largest_offcut", d.figures.offcut}};
+}
+
 nlohmann::json suggestionDocument(const nlohmann::json& document, const Design& design,
                                   const material::Suggestion& suggestion, size_t steps)
 {

@@ -28,8 +28,13 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied 
 /// The parts at design vector X: [{"id", "position" (lower corner), "size"}].
 nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X);
 
-/// `document` with its parts moved and resized to X; constraints and volumes as they were.
+/// `document` with its parts moved and resized to X, its inner volumes moved with their boards; constraints
+/// and the outer volume as they were.
 nlohmann::json withParts(nlohmann::json document, const material::Design& design, const Eigen::VectorXd& X);
+
+/// What a maker reads off a laid-out design (issue 14): {"usage" (thesis 5.2.3), "sheets", "waste_m2",
+/// "largest_offcut": [w, h] mm}.
+nlohmann::json measures(const material::DesignLayout& d);
 
 /// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage" and
 /// "path": [{"usage", "parts"}] from the user's design to the suggestion, at most `steps` of them (evenly

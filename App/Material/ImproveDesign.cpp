@@ -15,14 +15,20 @@ namespace {
 template <typename LayOut>
 DesignLayout laidOut(const Explorer& explorer, const Eigen::VectorXd& X, LayOut&& layOut)
 {
-    const Eigen::VectorXd sizes = explorer.design.sizes(X);
+    Eigen::VectorXd sizes = explorer.design.sizes(X);
     GridLayout layout = layOut(sizes);
-    const double wastage = explorer.material.wastage(layout, sizes);
-    const int sheets = static_cast<int>(layout.stock.size());
-    return {X, sizes, std::move(layout), wastage, sheets};
+    return designLayout(explorer.material, X, std::move(sizes), std::move(layout));
 }
 
 }  // namespace
+
+DesignLayout designLayout(const MaterialSpace& material, const Eigen::VectorXd& X, Eigen::VectorXd sizes,
+                          GridLayout layout)
+{
+    const double wastage = material.wastage(layout, sizes);
+    const MaterialSpace::Figures figures = material.figures(layout, sizes);
+    return {X, std::move(sizes), std::move(layout), wastage, figures};
+}
 
 DesignLayout Explorer::docked(const Eigen::VectorXd& X) const
 {

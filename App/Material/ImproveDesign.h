@@ -12,17 +12,24 @@
 
 namespace fabguide::material {
 
-/// A design X, its part sizes s(X), its layout, the layout's wastage W (5.2.3) and the master boards it uses.
+/// A design X, its part sizes s(X), its layout, the layout's wastage W (5.2.3) and what a maker reads off it.
 struct DesignLayout {
     Eigen::VectorXd X;
     Eigen::VectorXd sizes;
     GridLayout layout;
     double wastage = 1;
-    int sheets = 0;
-    /// What the search minimises, the maker's measure (issue 14): fewer sheets bought first, then the thesis'
-    /// wastage, which favours compact layouts (large offcuts); infinite when a part is left over.
-    double score() const { return wastage >= 1 ? std::numeric_limits<double>::infinity() : sheets + wastage; }
+    MaterialSpace::Figures figures;
+    /// What the search minimises (issue 14): fewer sheets bought first, then the thesis' wastage, which
+    /// favours compact layouts; infinite when a part is left over.
+    double score() const
+    {
+        return wastage >= 1 ? std::numeric_limits<double>::infinity() : figures.sheets + wastage;
+    }
 };
+
+/// X laid out as `layout`: its sizes, wastage and figures.
+DesignLayout designLayout(const MaterialSpace& material, const Eigen::VectorXd& X, Eigen::VectorXd sizes,
+                          GridLayout layout);
 
 /// What the design search works with: D, the material space, the docking order O, its random source, the
 /// designs that improved on the best so far (the path a suggestion's slider follows) and a stop flag and a

@@ -188,6 +188,7 @@ MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Ei
     }
     for (int kind : kindOf_)
         parts += sizes[2 * kind] * sizes[2 * kind + 1];
+    f.bought = bought / 1e6;
     f.waste = (bought - parts) / 1e6;
     return f;
 }

@@ -41,7 +41,8 @@ public:
     /// largest offcut left whole (the strip beside or above a sheet's layout, width × height in mm).
     struct Figures {
         int sheets = 0;
-        double waste = 0;
+        double bought = 0;  ///< m² of master boards
+        double waste = 0;   ///< m²
         std::array<double, 2> offcut{};
     };
     Figures figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const;

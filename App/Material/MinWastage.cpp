@@ -1,12 +1,14 @@
 #include "Material/MinWastage.h"
 
 #include <algorithm>
+#include <cmath>
 #include <condition_variable>
 #include <exception>
 #include <limits>
 #include <mutex>
 #include <numeric>
 #include <thread>
+#include <tuple>
 
 namespace fabguide::material {
 
@@ -147,35 +149,58 @@ std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
     return kept;
 }
 
-/// Farthest-point choice (5.3.3): the best design, then repeatedly the design farthest in part lengths from
-/// those chosen, among designs within `window` of the best score that score better than the start (so never
-/// on more sheets) and differ from it (a better layout of the same design is no suggestion).
+/// Whether a maker would take `d` over `start`: fewer sheets, or as many and less waste (parts that use
+/// more of what is bought), or the same waste and a larger offcut.
+bool better(const DesignLayout& d, const DesignLayout& start)
+{
+    constexpr double hair = 1e-4;  // m²
+    const auto& a = d.figures;
+    const auto& b = start.figures;
+    if (std::isinf(d.score()) || a.sheets != b.sheets)
+        return a.sheets < b.sheets && !std::isinf(d.score());
+    if (std::abs(a.waste - b.waste) > hair)
+        return a.waste < b.waste;
+    return a.offcut[0] * a.offcut[1] > b.offcut[0] * b.offcut[1] * (1 + 1e-6);
+}
+
+/// The maker's order: sheets, then waste, then the largest offcut (larger first).
+bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
+{
+    return std::tuple{a.figures.sheets, a.figures.waste, -a.figures.offcut[0] * a.figures.offcut[1]} <
+           std::tuple{b.figures.sheets, b.figures.waste, -b.figures.offcut[0] * b.figures.offcut[1]};
+}
+
+/// Farthest-point choice (5.3.3) among the designs a maker would take over the user's (never on more sheets,
+/// never the design unchanged): the best in the maker's order, then repeatedly the design farthest in part
+/// lengths from those chosen, among those on as many sheets within 3 % of the sheets' area of its waste.
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count)
 {
-    constexpr double window = 0.03, distinct = 1.0;  // score (a sheet is 1); mm
+    constexpr double window = 0.03, distinct = 1.0;  // of the bought area; mm
     const int all = static_cast<int>(pool.size());   // read before the move: argument order is unspecified
     pool = keepBest(std::move(pool), all);
     pool.erase(std::remove_if(pool.begin(), pool.end(),
                               [&](const Entry& e) {
-                                  return e.design.score() >= start.score() ||
+                                  return !better(e.design, start) ||
                                          (e.design.sizes - start.sizes).norm() < distinct;
                               }),
                pool.end());
+    std::stable_sort(pool.begin(), pool.end(),
+                     [](const Entry& a, const Entry& b) { return ranksBefore(a.design, b.design); });
     std::vector<Suggestion> chosen;
     if (pool.empty())
         return chosen;
-    const double worst = pool.front().design.score() + window;
+    const MaterialSpace::Figures& best = pool.front().design.figures;
     std::vector<bool> taken(pool.size(), false);
     for (int k = 0; k < count; ++k) {
         int pick = -1;
         double farthest = distinct;
         for (size_t i = 0; i < pool.size(); ++i) {
-            const DesignLayout& d = pool[i].design;
-            if (taken[i] || d.score() > worst)
+            const MaterialSpace::Figures& f = pool[i].design.figures;
+            if (taken[i] || f.sheets != best.sheets || f.waste > best.waste + window * best.bought)
                 continue;
             double nearest = std::numeric_limits<double>::infinity();
             for (const Suggestion& s : chosen)
-                nearest = std::min(nearest, (s.result.sizes - d.sizes).norm());
+                nearest = std::min(nearest, (s.result.sizes - pool[i].design.sizes).norm());
             if (chosen.empty() ? pick < 0 : nearest > farthest) {
                 pick = static_cast<int>(i);
                 farthest = chosen.empty() ? distinct : nearest;
@@ -206,9 +231,7 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
         throw PackingError("the design does not fit on the master boards: part '" +
                            material.parts()[material.kindOf()[layout.unplaced.front()]].id +
                            "' is left over; add a board or make the design smaller");
-    const double wastage = material.wastage(layout, sizes);
-    const int sheets = static_cast<int>(layout.stock.size());
-    return {X, sizes, std::move(layout), wastage, sheets};
+    return designLayout(material, X, sizes, std::move(layout));
 }
 
 Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,

@@ -24,14 +24,15 @@ struct CancelToken {
     std::atomic<bool> flag{false};
 };
 
-/// A design's layout: usage, the layout dict and the pack problem dict it refers to.
+/// A design's layout: its measures (usage, sheets, waste_m2, largest_offcut), the layout dict and the pack
+/// problem dict it refers to.
 nlohmann::json layoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
 {
     const material::PackProblem problem = material.problem(d.sizes);
-    return {
-        {"usage", 1 - d.wastage},
-        {"layout", io::layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, io::PartNames::Ids)},
-        {"problem", io::problemToJson(problem)}};
+    nlohmann::json out = io::measures(d);
+    out["layout"] = io::layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, io::PartNames::Ids);
+    out["problem"] = io::problemToJson(problem);
+    return out;
 }
 
 /// An exploration as a dict: {usage_before, before, seconds, stopped, suggestions: [{usage, layout, problem,

@@ -13,16 +13,16 @@ def optimise(fabguide_cli, path, out, *options):
                           text=True, timeout=120)
 
 
-def test_the_coffee_table_gets_three_suggestions_that_waste_less(fabguide_cli, source_dir, tmp_path):
+def test_the_coffee_table_gets_suggestions_that_waste_less(fabguide_cli, source_dir, tmp_path):
     run = optimise(fabguide_cli, os.path.join(source_dir, "examples", "coffee-table.flatpack.json"), tmp_path,
                    "--seed", "1", "--threads", "2")
     assert run.returncode == 0, run.stderr
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert set(summary) >= {"usage_before", "suggestions", "seconds"}
-    assert len(summary["suggestions"]) == 3
+    assert 1 <= len(summary["suggestions"]) <= 3
     assert summary["seconds"] < 10
     for s in summary["suggestions"]:
-        assert s["usage_after"] > summary["usage_before"]
+        assert s["sheets"] == 1 and s["waste_m2"] < summary["before"]["waste_m2"]  # one sheet, used better
         design = json.loads((tmp_path / s["file"]).read_text())
         # The suggestion is a design the core reads back: every constraint holds, the usage is as reported.
         laid = fabguide_core.lay_out_design(design)
