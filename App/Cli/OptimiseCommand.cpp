@@ -21,7 +21,11 @@ struct OptimiseArguments {
     bool unguided = false;
 };
 
-/// Layout JSON and SVG cut sheets of one design into out/<name>.layout.json and out/<name>/sheet-N.svg.
+/// An offcut narrower than this (mm) is sawdust, not a board for the next job.
+constexpr double kLeastOffcut = 100;
+
+/// Layout JSON and SVG cut sheets of one design into out/<name>.layout.json and out/<name>/sheet-N.svg, and
+/// its offcuts as master boards into out/<name>.offcuts.json.
 nlohmann::json writeLayout(const material::MaterialSpace& material, const material::DesignLayout& d,
                            const std::filesystem::path& out, const std::string& name)
 {
@@ -32,9 +36,14 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
     nlohmann::json svgs = nlohmann::json::array();
     for (const std::string& path : io::writeCutSheets(layout, problem, (out / name).string(), "", ""))
         svgs.push_back(std::filesystem::relative(path, out).string());
+    nlohmann::json boards = nlohmann::json::array();  // what is left, for the next job
+    for (const material::MasterBoard& board : material.offcuts(d.layout, kLeastOffcut))
+        boards.push_back(io::boardToJson(board));
+    io::writeJsonFile((out / (name + ".offcuts.json")).string(), {{"boards", boards}});
     nlohmann::json entry = io::measures(d);
     entry["layout"] = name + ".layout.json";
     entry["svg"] = svgs;
+    entry["offcuts"] = name + ".offcuts.json";
     return entry;
 }
 

@@ -1,8 +1,10 @@
 #include "Material/MaterialSpace.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <optional>
+#include <string>
 
 namespace fabguide::material {
 
@@ -191,6 +193,26 @@ MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Ei
     f.bought = bought / 1e6;
     f.waste = (bought - parts) / 1e6;
     return f;
+}
+
+std::vector<MasterBoard> MaterialSpace::offcuts(const GridLayout& layout, double least) const
+{
+    const double tau = settings_.resolution, trim = settings_.trim;
+    std::vector<MasterBoard> out;
+    for (size_t s = 0; s < layout.stock.size(); ++s) {
+        const MasterBoard& sheet = boards_[layout.stock[s]];
+        // The layout starts inside the trim: what lies beyond its right (top) edge is left whole.
+        const double right = trim + layout.usedWidth[s] * tau, top = trim + layout.usedHeight[s] * tau;
+        const std::pair<double, double> strips[] = {{sheet.width, sheet.height - top},
+                                                    {sheet.width - right, top}};
+        const char* where[] = {"above", "beside"};
+        for (int k = 0; k < 2; ++k)
+            if (strips[k].first >= least && strips[k].second >= least)
+                out.push_back({sheet.name + " offcut " + std::to_string(s + 1) + " " + where[k],
+                               sheet.material, std::floor(strips[k].first), std::floor(strips[k].second),
+                               sheet.thickness, 1, sheet.grain});
+    }
+    return out;
 }
 
 Layout MaterialSpace::inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const

@@ -47,6 +47,11 @@ public:
     };
     Figures figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 
+    /// The leftovers of a layout's sheets as master boards for the next job (issue 14): per sheet the strip
+    /// above its layout (the sheet's full width) and the strip beside it (up to the layout's top), each kept
+    /// when both its sides are at least `least` mm; whole millimetres, the next job trims them itself.
+    std::vector<MasterBoard> offcuts(const GridLayout& layout, double least) const;
+
     /// The layout in millimetres, for files and thumbnails.
     Layout inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 

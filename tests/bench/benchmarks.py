@@ -58,7 +58,7 @@ def main():
                     datetime.date.today().isoformat(), cpu_model(), os.cpu_count(), platform.system(),
                     platform.machine()),
                 "", strip_benchmark.table(strip, 1.0), "", core_timings(), "", docking_study(), "",
-                optimise_benchmark.table(optimise_benchmark.run(BUILD)), "",
+                optimise_benchmark.table(optimise_benchmark.run(BUILD), optimise_benchmark.suite(BUILD)), "",
                 workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",
                 printable_benchmark.table(printable_benchmark.run(BUILD)), ""]
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as page:

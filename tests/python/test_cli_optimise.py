@@ -46,6 +46,9 @@ def test_suggestions_need_no_more_sheets_and_reload_with_their_inner_volumes(fab
         summary = json.loads((out / "summary.json").read_text())
         before = summary["before"]
         assert before["sheets"] >= 1 and before["waste_m2"] > 0 and len(before["largest_offcut"]) == 2
+        for entry in [before] + summary["suggestions"]:  # leftovers as master boards for the next job
+            offcuts = json.loads((out / entry["offcuts"]).read_text())["boards"]
+            assert all(b["width"] >= 100 and b["height"] >= 100 and b["thickness"] == 12 for b in offcuts)
         assert summary["suggestions"], name
         for s in summary["suggestions"]:
             assert s["sheets"] <= before["sheets"]
