@@ -57,9 +57,10 @@ struct Explorer {
     void improved(const DesignLayout& best) { path.push_back(best); }
 };
 
-/// GROWPARTS (Algorithm 10): each part size in random order grows one grid cell at a time (sliding the
-/// layout, docking again when sliding loses) for as long as the wastage drops; a growth that ends below the
-/// current wastage is kept. Repeats while some growth was kept. `best` follows the least wastage seen.
+/// GROWPARTS (Algorithm 10): each part size in random order (at most 24 per pass, a random subset of a large
+/// design's) grows one grid cell at a time (sliding the layout, docking again when sliding loses) for as long
+/// as the score drops; a growth that ends below the current score is kept. Repeats while some growth was
+/// kept. `best` follows the least score seen.
 void growParts(Explorer& explorer, DesignLayout& best, DesignLayout& current);
 
 /// SELECTPARTSIZESTOSHRINK (Algorithm 12): the locking chains of the layout (units touching from the right

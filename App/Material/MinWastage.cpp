@@ -41,6 +41,11 @@ std::uint64_t seedOf(std::uint64_t seed, int round, int task)
     return z ^ (z >> 31);
 }
 
+Clock::duration seconds(double s)
+{
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
 /// Seconds left until `deadline` (0 when past it).
 double secondsTo(Clock::time_point deadline)
 {
@@ -68,7 +73,11 @@ Entry improve(const DesignSpace& design, const MaterialSpace& material, const En
     std::vector<int> order = from.order;
     if (!keepOrder)
         std::shuffle(order.begin(), order.end(), explorer.random);
-    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed, deadline));
+    // The ordering search takes at most half of a task's share of the time limit: the design change the rest.
+    const double share = options.timeLimit * std::max(1, options.threads) /
+                         std::max(1, options.rounds * options.tasksPerRound);
+    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed,
+                                           std::min(deadline, Clock::now() + seconds(share / 2))));
     const DesignLayout start = explorer.docked(from.design.X);
     Entry out{improveDesign(explorer, start, options.improveIterations), explorer.order, from.path};
     out.path.insert(out.path.end(), explorer.path.begin(), explorer.path.end());
