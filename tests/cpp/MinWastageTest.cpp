@@ -73,7 +73,8 @@ TEST_F(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
 
 TEST_F(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
 {
-    Explorer explorer{design, material, {}, std::mt19937_64(3), nullptr, {}, {}};
+    Explorer explorer{
+        design, material, {}, std::mt19937_64(3), nullptr, std::chrono::steady_clock::time_point::max(), {}};
     const DesignLayout start = layOut(design, material, 1);
     const std::vector<int> sizes = selectPartSizesToShrink(explorer, start);
     ASSERT_FALSE(sizes.empty());
