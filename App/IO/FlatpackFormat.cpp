@@ -250,6 +250,17 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
     if (board.quantity < 1)
         throw FormatError(part.pathOf("quantity") + ": must be at least 1");
     board.size.minCoeff(&board.normal);
+    if (part.has(
+            "grain")) {  // "x", "y" or "z": the grain runs along that axis of the model; "free": no grain
+        const std::string grain = part.text("grain");
+        const char* axes[] = {"x", "y", "z"};
+        const auto axis = std::find(std::begin(axes), std::end(axes), grain);
+        if (grain != "free" && (axis == std::end(axes) || axis - std::begin(axes) == board.normal))
+            throw FormatError(part.pathOf("grain") +
+                              ": must be \"free\" or an axis in the board's plane, got \"" + grain + "\"");
+        board.followsGrain = grain != "free";
+        board.grainAxis = grain == "free" ? -1 : static_cast<int>(axis - std::begin(axes));
+    }
     if (board.size.minCoeff() <= 0)
         throw FormatError(part.pathOf("size") + ": every side must be longer than 0");
     if (std::abs(board.size[board.normal] - thickness) > 1e-6)

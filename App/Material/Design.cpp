@@ -8,9 +8,10 @@ namespace fabguide::material {
 
 std::array<int, 2> DesignBoard::inPlane() const
 {
-    return normal == 0   ? std::array<int, 2>{1, 2}
-           : normal == 1 ? std::array<int, 2>{0, 2}
-                         : std::array<int, 2>{0, 1};
+    const std::array<int, 2> axes = normal == 0   ? std::array<int, 2>{1, 2}
+                                    : normal == 1 ? std::array<int, 2>{0, 2}
+                                                  : std::array<int, 2>{0, 1};
+    return grainAxis == axes[1] ? std::array<int, 2>{axes[1], axes[0]} : axes;
 }
 
 double Linear::value(const Eigen::VectorXd& X) const

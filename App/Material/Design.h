@@ -19,8 +19,11 @@ struct DesignBoard {
     int normal = 2;  ///< axis of the thickness: 0 x, 1 y, 2 z
     int quantity = 1;
     bool followsGrain = false;
+    int grainAxis =
+        -1;  ///< the axis (0 x, 1 y, 2 z) the grain runs along in the model; -1: the first in-plane
     /// The in-plane axes: the board's width in material space runs along the first, its height along the
-    /// second (thesis 5.2.2: w = l^x, h = l^y in the part's own frame).
+    /// second (thesis 5.2.2: w = l^x, h = l^y in the part's own frame); the grain axis first when it is set,
+    /// so a board that follows the grain has it along its length whichever way it stands (issue 14).
     std::array<int, 2> inPlane() const;
 };
 

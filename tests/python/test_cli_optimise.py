@@ -59,6 +59,34 @@ def test_suggestions_need_no_more_sheets_and_reload_with_their_inner_volumes(fab
             assert again.returncode == 0, again.stderr  # accept a suggestion and go on designing from it
 
 
+def test_grain_runs_along_the_axis_a_part_names(fabguide_cli, tmp_path):
+    """A bookcase's 1800 mm sides on 1220 x 2440 sheets whose grain runs along their height: with the grain along
+    the side's length (z) they are laid along the sheet; 'follow_grain' (the first in-plane axis, y, 300 mm)
+    cannot be cut from these sheets."""
+    design = {"format": "fabguide.flatpack", "version": 1,
+              "boards": [{"name": "birch", "width": 1220, "height": 2440, "thickness": 18, "count": 2,
+                          "grain": "height"}],
+              "settings": {"resolution": 1, "kerf": 0.2, "spacing": 3},
+              "parts": [{"id": "side", "position": [0, 0, 0], "size": [18, 300, 1800], "grain": "z"},
+                        {"id": "shelf", "position": [18, 0, 900], "size": [582, 300, 18], "grain": "x"}]}
+    path = tmp_path / "bookcase.flatpack.json"
+    path.write_text(json.dumps(design))
+    run = optimise(fabguide_cli, str(path), tmp_path / "out", "--time-limit", "1")
+    assert run.returncode == 0, run.stderr
+    placed = {p["part"]: p for p in json.loads((tmp_path / "out" / "before.layout.json").read_text())["placements"]}
+    assert placed["side"]["height"] == 1800 and placed["side"]["rotation"] in (90, 270)  # along the sheet's grain
+    assert placed["shelf"]["height"] == 582 and placed["shelf"]["rotation"] in (90, 270)
+    for part in design["parts"]:
+        part["follow_grain"] = part.pop("grain") is not None
+    path.write_text(json.dumps(design))
+    run = optimise(fabguide_cli, str(path), tmp_path / "old", "--time-limit", "1")
+    assert run.returncode == 1 and "part 'side' is larger than every master board" in run.stderr
+    design["parts"][0]["grain"] = "w"
+    path.write_text(json.dumps(design))
+    run = optimise(fabguide_cli, str(path), tmp_path / "bad", "--time-limit", "1")
+    assert run.returncode == 1 and 'parts[0].grain: must be "free" or an axis in the board\'s plane' in run.stderr
+
+
 def test_the_same_seed_gives_the_same_suggestions(fabguide_cli, source_dir, tmp_path):
     path = os.path.join(source_dir, "examples", "parrot-shelf.flatpack.json")
     for name, threads in (("one", "1"), ("two", "2")):
