@@ -44,6 +44,13 @@ def layout_pixmap(layout, size=THUMB):
     return pixmap
 
 
+def card_text(k, suggestion, before):
+    """A suggestion as a maker reads it: sheets bought, then waste against the design now."""
+    change = (suggestion["waste_m2"] / before["waste_m2"] - 1) if before["waste_m2"] > 0 else 0.0
+    return "{}: {} sheet(s), waste {:.2f} m² ({:+.0%})".format(k + 1, suggestion["sheets"], suggestion["waste_m2"],
+                                                              change)
+
+
 class Boxes:
     """Suggestions as boards' sizes and places (a design of boxes with constraints)."""
 
@@ -277,9 +284,12 @@ class SuggestPanel:
             painter.end()
             button.setIcon(QtGui.QIcon(icon))
             button.setIconSize(icon.size())
-            button.setText("{}: {:.3f} ({:+.1f})".format(k + 1, s["usage"], 100 * (s["usage"] - result["usage_before"])))
-            button.setToolTip("Suggestion {}: usage {:.3f}, {:+.1f} points over the design now".format(
-                k + 1, s["usage"], 100 * (s["usage"] - result["usage_before"])))
+            button.setText(card_text(k, s, result["before"]))
+            button.setToolTip("Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut "
+                              "{:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})".format(
+                                  k + 1, s["sheets"], result["before"]["sheets"], s["waste_m2"],
+                                  result["before"]["waste_m2"], *s["largest_offcut"], s["usage"],
+                                  result["usage_before"]))
             self.cards.addButton(button, k)
             self.grid.addWidget(button, k, 0)
         self.cards.button(0).setChecked(True)
