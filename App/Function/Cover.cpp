@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <string>
 
@@ -103,13 +102,6 @@ void link(const std::vector<Candidate>& all, const Face& face, double distance,
     }
 }
 
-std::string show(double mm)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", mm);
-    return text;
-}
-
 }  // namespace
 
 InferredCover inferCover(const Model& model, const std::vector<int>& covering,
@@ -143,9 +135,10 @@ InferredCover inferCover(const Model& model, const std::vector<int>& covering,
                 continue;
             }
             result.pairs.push_back({nearest->covering, nearest->covered});
-            result.notes.push_back(model.parts[part].name + ": " + show(nearest->gap) + " mm from " +
+            result.notes.push_back(model.parts[part].name + ": " + millimetres(nearest->gap) + " mm from " +
                                    faceName(model, isCovering ? nearest->covered : nearest->covering) +
-                                   ", beyond the " + show(distance) + " mm face distance; linked to it");
+                                   ", beyond the " + millimetres(distance) +
+                                   " mm face distance; linked to it");
         }
     return result;
 }

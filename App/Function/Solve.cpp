@@ -7,6 +7,7 @@
 #include "Function/Separation.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -145,6 +146,13 @@ double depthInside(const Model& model, int cavity, int side)
 std::string faceName(const Model& model, const Face& face)
 {
     return model.cuboids[face.cuboid].name + "." + sideName(face.side);
+}
+
+std::string millimetres(double mm)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", mm);
+    return text;
 }
 
 bool isOpening(const Model& model, int cavity, int side)

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -68,13 +67,6 @@ std::vector<Candidate> candidates(const Model& model, const std::vector<int>& su
     return found;
 }
 
-std::string show(double mm)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", mm);
-    return text;
-}
-
 }  // namespace
 
 InferredSupport inferSupport(const Model& model, const std::vector<int>& supporting,
@@ -108,12 +100,13 @@ InferredSupport inferSupport(const Model& model, const std::vector<int>& support
             }
             result.pairs.push_back({best->a, best->b});
             const bool beyond = std::abs(best->rise) > distance;
-            result.notes.push_back(model.parts[part].name + ": " + show(std::abs(best->rise)) + " mm " +
+            result.notes.push_back(model.parts[part].name + ": " + millimetres(std::abs(best->rise)) +
+                                   " mm " +
                                    (isSupporting ? (best->rise > 0 ? "below " : "into ")
                                                  : (best->rise > 0 ? "above " : "sunk by ")) +
                                    (isSupporting ? faceName(model, {best->b, Side::Bottom})
                                                  : faceName(model, {best->a, Side::Top})) +
-                                   (beyond ? ", beyond the " + show(distance) + " mm support distance"
+                                   (beyond ? ", beyond the " + millimetres(distance) + " mm support distance"
                                            : ", its faces nearer to others") +
                                    "; linked to it");
         }

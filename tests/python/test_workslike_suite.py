@@ -40,6 +40,16 @@ def crashed(run):
     return run.returncode < 0 or run.returncode > 1 or "Traceback" in run.stderr or "terminate called" in run.stderr
 
 
+def check_solved(out, path):
+    """The independent checker's verdict on a solved file against the model it came from."""
+    with open(out) as f:
+        solved = json.load(f)
+    with open(path) as f:
+        original = json.load(f)
+    problems, warnings = workslike_checker.check_all(solved, original)
+    assert problems == [], summary(problems, warnings)
+
+
 def summary(problems, warnings=()):
     return "\n".join(["%d problems:" % len(problems)] + ["  " + p for p in problems[:40]] +
                      ["%d warnings:" % len(warnings)] + ["  " + w for w in list(warnings)[:10]])
@@ -81,12 +91,7 @@ def test_suite_model(fabguide_cli, model, tmp_path):
     assert not crashed(run), "crashed (exit %d):\n%s" % (run.returncode, run.stderr[-2000:])
     if expected["solvable"]:
         assert run.returncode == 0, "a designer can solve this, the solver says:\n" + run.stderr[-3000:]
-        with open(out) as f:
-            solved = json.load(f)
-        with open(path) as f:
-            original = json.load(f)
-        problems, warnings = workslike_checker.check_all(solved, original)
-        assert problems == [], summary(problems, warnings)
+        check_solved(out, path)
     else:
         assert run.returncode == 1, "contradictory, but the solver exits %d:\n%s%s" % (run.returncode, run.stdout,
                                                                                       run.stderr)
@@ -122,9 +127,4 @@ def test_thesis_example_passes_the_checker(fabguide_cli, example, tmp_path):
     out = tmp_path / "solved.workslike.json"
     run = solve(fabguide_cli, path, out)
     assert run.returncode == 0 and not crashed(run), run.stderr[-2000:]
-    with open(out) as f:
-        solved = json.load(f)
-    with open(path) as f:
-        original = json.load(f)
-    problems, warnings = workslike_checker.check_all(solved, original)
-    assert problems == [], summary(problems, warnings)
+    check_solved(out, path)
