@@ -110,8 +110,9 @@ Snapping snapping(const Design& design, int a, int b, double tolerance = 1e-6);
 
 /// Physical validity (issue 14) as bounds of the exploration, not filters after it: boards that do not
 /// overlap in the design never do ("apart: a/b", each pair kept on the side of the axis it is most apart
-/// along, for pairs that come within `margin` mm; a sweep, not all pairs), and no board goes below the
+/// along, for pairs within `margin` mm: in furniture, every pair, since a rail may grow 300 mm towards a
+/// shelf; a sweep beyond), and no board goes below the
 /// design's lowest face ("above ground: a").
-std::vector<DesignConstraint> keptApart(const Design& design, double margin = 200);
+std::vector<DesignConstraint> keptApart(const Design& design, double margin = 3000);
 
 }  // namespace fabguide::material

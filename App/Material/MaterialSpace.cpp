@@ -173,18 +173,24 @@ double MaterialSpace::wastage(const GridLayout& layout, const Eigen::VectorXd& s
     return 1.0 - parts / bounding;
 }
 
+std::array<std::array<double, 2>, 2> MaterialSpace::strips(const GridLayout& layout, size_t s) const
+{
+    const MasterBoard& sheet = boards_[layout.stock[s]];
+    // The layout starts inside the trim: what lies beyond its right (top) edge is left whole.
+    const double tau = settings_.resolution, trim = settings_.trim;
+    const double right = trim + layout.usedWidth[s] * tau, top = trim + layout.usedHeight[s] * tau;
+    return {{{sheet.width, sheet.height - top}, {sheet.width - right, top}}};
+}
+
 MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const
 {
-    const double tau = settings_.resolution;
     Figures f;
     f.sheets = static_cast<int>(layout.stock.size());
     double bought = 0, parts = 0;
     for (size_t s = 0; s < layout.stock.size(); ++s) {
-        const BoardStock& board = stock_[layout.stock[s]];
-        bought += board.width * tau * board.height * tau;
-        const std::array<double, 2> beside{(board.width - layout.usedWidth[s]) * tau, board.height * tau},
-            above{board.width * tau, (board.height - layout.usedHeight[s]) * tau};
-        for (const auto& strip : {beside, above})
+        const MasterBoard& sheet = boards_[layout.stock[s]];
+        bought += sheet.width * sheet.height;  // the whole sheet is bought, trim and all
+        for (const auto& strip : strips(layout, s))
             if (strip[0] * strip[1] > f.offcut[0] * f.offcut[1])
                 f.offcut = strip;
     }
@@ -197,19 +203,15 @@ MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Ei
 
 std::vector<MasterBoard> MaterialSpace::offcuts(const GridLayout& layout, double least) const
 {
-    const double tau = settings_.resolution, trim = settings_.trim;
     std::vector<MasterBoard> out;
     for (size_t s = 0; s < layout.stock.size(); ++s) {
         const MasterBoard& sheet = boards_[layout.stock[s]];
-        // The layout starts inside the trim: what lies beyond its right (top) edge is left whole.
-        const double right = trim + layout.usedWidth[s] * tau, top = trim + layout.usedHeight[s] * tau;
-        const std::pair<double, double> strips[] = {{sheet.width, sheet.height - top},
-                                                    {sheet.width - right, top}};
+        const auto both = strips(layout, s);
         const char* where[] = {"above", "beside"};
         for (int k = 0; k < 2; ++k)
-            if (strips[k].first >= least && strips[k].second >= least)
+            if (both[k][0] >= least && both[k][1] >= least)
                 out.push_back({sheet.name + " offcut " + std::to_string(s + 1) + " " + where[k],
-                               sheet.material, std::floor(strips[k].first), std::floor(strips[k].second),
+                               sheet.material, std::floor(both[k][0]), std::floor(both[k][1]),
                                sheet.thickness, 1, sheet.grain});
     }
     return out;

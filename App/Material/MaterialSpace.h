@@ -62,6 +62,10 @@ public:
     const std::vector<int>& kindOf() const { return kindOf_; }
 
 private:
+    /// Sheet s's strips left whole above its layout (the full width) and beside it (up to the layout's top),
+    /// mm.
+    std::array<std::array<double, 2>, 2> strips(const GridLayout& layout, size_t s) const;
+
     std::vector<MasterBoard> boards_;
     PackSettings settings_;
     std::vector<PartKind> parts_;

@@ -46,6 +46,10 @@ Clock::duration seconds(double s)
     return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
 }
 
+/// Seconds a design's own layout may search on when a short share of the time limit left a part over, and
+/// the seconds a suggestion's fresh layout is given to show that it reopens (the former covers the latter).
+constexpr double kSearchOn = 10, kReopenCheck = 2;
+
 /// Seconds left until `deadline` (0 when past it).
 double secondsTo(Clock::time_point deadline)
 {
@@ -182,7 +186,9 @@ bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
 /// Farthest-point choice (5.3.3) among the designs a maker would take over the user's (never on more sheets,
 /// never the design unchanged): the best in the maker's order, then repeatedly the design farthest in part
 /// lengths from those chosen, among those on as many sheets within 3 % of the sheets' area of its waste.
-std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count)
+template <typename Reopens>
+std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count,
+                                Reopens&& reopens)
 {
     constexpr double window = 0.03, distinct = 1.0;  // of the bought area; mm
     const int all = static_cast<int>(pool.size());   // read before the move: argument order is unspecified
@@ -218,9 +224,30 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
         if (pick < 0)
             break;
         taken[pick] = true;
+        if (!reopens(pool[pick].design)) {
+            --k;  // not one the user could go on with: the next
+            continue;
+        }
         chosen.push_back({pool[pick].design, pool[pick].path});
     }
     return chosen;
+}
+
+}  // namespace
+
+namespace {
+
+/// The layout command's ordering search on part sizes (best-fit and decreasing-extent starts, |parts|² swaps
+/// each, for at most `seconds`).
+GridLayout searched(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
+                    double seconds)
+{
+    const RasterProblem units = material.raster(sizes);
+    OrderingSearchOptions options;
+    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());
+    options.timeLimit = seconds;
+    options.seed = seed;
+    return searchFromStarts(units.parts, material.stock(), options);
 }
 
 }  // namespace
@@ -230,12 +257,9 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
-    const RasterProblem units = material.raster(sizes);
-    OrderingSearchOptions options;
-    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());
-    options.timeLimit = seconds;
-    options.seed = seed;
-    GridLayout layout = searchFromStarts(units.parts, material.stock(), options);
+    GridLayout layout = searched(material, sizes, seed, seconds);
+    if (!layout.unplaced.empty() && seconds < kSearchOn)  // a short share of a time limit: search on first
+        layout = searched(material, sizes, seed, kSearchOn);
     if (!layout.unplaced.empty())
         throw PackingError("the design does not fit on the master boards: part '" +
                            material.parts()[material.kindOf()[layout.unplaced.front()]].id +
@@ -247,8 +271,9 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                        const MinWastageOptions& options)
 {
     const auto started = Clock::now();
-    const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
-                                        std::chrono::duration<double>(std::max(0.0, options.timeLimit)));
+    // The search has 85 % of the time limit; the rest shows that suggestions reopen.
+    const auto end = started + seconds(std::max(0.0, options.timeLimit));
+    const auto deadline = started + seconds(0.85 * std::max(0.0, options.timeLimit));
     Exploration exploration;
     // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
     exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4));
@@ -278,7 +303,14 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         if (exploration.stopped)
             break;
     }
-    exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions);
+    // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must fit it
+    // on as few sheets. The exploration's slides reach tight layouts a fresh search may not.
+    const auto reopens = [&](const DesignLayout& d) {
+        const GridLayout fresh = searched(material, d.sizes, options.seed,
+                                          std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
+        return fresh.unplaced.empty() && static_cast<int>(fresh.stock.size()) <= d.figures.sheets;
+    };
+    exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions, reopens);
     exploration.seconds = std::chrono::duration<double>(Clock::now() - started).count();
     return exploration;
 }

@@ -42,8 +42,8 @@ struct Exploration {
 };
 
 /// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
-/// |parts|² swaps each, for at most `seconds`). Throws PackingError naming a part left over when the design
-/// does not fit.
+/// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over). Throws PackingError
+/// naming a part left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
                     double seconds = 10);
 
