@@ -283,8 +283,8 @@ Model withCoordinates(Model model, const Eigen::VectorXd& x)
 using PairKey = std::tuple<int, int, int>;
 
 /// The separations of the pairs that come near in `model` and have none yet (`margin` as nearPairs),
-/// inferred on the model as drawn. Returns how many it added.
-size_t separateNear(const Model& drawn, const Model& model, double margin, std::set<PairKey>& seen,
+/// inferred on `arranged` (the model as its relationships arrange it). Returns how many it added.
+size_t separateNear(const Model& arranged, const Model& model, double margin, std::set<PairKey>& seen,
                     std::vector<Separation>& separations)
 {
     const size_t before = separations.size();
@@ -294,7 +294,7 @@ size_t separateNear(const Model& drawn, const Model& model, double margin, std::
                 jointMovingIn(model, partOf(model, b), k) < 0)
                 continue;  // neither moves there: kept apart as modelled
             if (seen.insert({a, b, k}).second)
-                separations.push_back(inferSeparation(drawn, a, b, k));
+                separations.push_back(inferSeparation(arranged, a, b, k));
         }
     return separations.size() - before;
 }
