@@ -15,6 +15,17 @@ namespace fabguide::function {
 
 namespace {
 
+/// Which bound of a row x meets (within the tolerance), if any: the row is active there.
+const double* activeBound(const LinearConstraint& row, const Eigen::VectorXd& x, double tolerance)
+{
+    double value = 0;
+    for (const auto& [variable, coefficient] : row.terms)
+        value += coefficient * x[variable];
+    return std::abs(value - row.lower) <= tolerance   ? &row.lower
+           : std::abs(value - row.upper) <= tolerance ? &row.upper
+                                                      : nullptr;
+}
+
 /// The interior-point solution is optimal only to ~1e-5 mm. Polishing: project the target exactly onto the
 /// constraints active at x (A x = b), x* = x + v − Aᵀλ with v = target − x and λ = argmin ‖Aᵀλ − v‖ by
 /// conjugate gradients on the least-squares problem (indifferent to the redundant constraints that are
@@ -26,10 +37,7 @@ Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<Linear
     std::vector<Eigen::Triplet<double>> entries;
     std::vector<double> guess;
     for (size_t r = 0; r < rows.size(); ++r) {
-        double value = 0;
-        for (const auto& [variable, coefficient] : rows[r].terms)
-            value += coefficient * x[variable];
-        if (std::abs(value - rows[r].lower) > tolerance && std::abs(value - rows[r].upper) > tolerance)
+        if (!activeBound(rows[r], x, tolerance))
             continue;
         for (const auto& [variable, coefficient] : rows[r].terms)
             entries.emplace_back(variable, static_cast<int>(guess.size()),
@@ -51,17 +59,6 @@ Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<Linear
     const Eigen::VectorXd lambda = cgls.solveWithGuess(v, start);
     Eigen::VectorXd candidate = x + v - transposed * lambda;
     return violation(candidate, rows) <= violation(x, rows) + 1e-9 ? candidate : x;
-}
-
-/// Which bound of a row x meets (within the tolerance), if any: the row is active there.
-const double* activeBound(const LinearConstraint& row, const Eigen::VectorXd& x, double tolerance)
-{
-    double value = 0;
-    for (const auto& [variable, coefficient] : row.terms)
-        value += coefficient * x[variable];
-    return std::abs(value - row.lower) <= tolerance   ? &row.lower
-           : std::abs(value - row.upper) <= tolerance ? &row.upper
-                                                      : nullptr;
 }
 
 /// Coordinates the solve makes equal come out equal to the last bit (issue 13): a coordinate within the

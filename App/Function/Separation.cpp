@@ -108,7 +108,7 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
     // tray in a solid box) may: one between a frame's posts stays clear of them.
     const auto exempt = [&](int a, int b, int pa, int pb) {
         for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
-            const auto found = fits.find({partOf(model, inner), partOf(model, enclosing)});
+            const auto found = fits.find(inner == a ? std::pair{pa, pb} : std::pair{pb, pa});
             if (found != fits.end())
                 return !found->second.count(configuration) || mostlyInside(boxes[inner], boxes[enclosing]);
         }

@@ -98,6 +98,17 @@ int partNamed(const function::Model& model, const std::string& name, const std::
 
 const char* kAxes[] = {"x", "y", "z"};
 
+/// An axis named "x", "y" or "z" as 0, 1, 2; else an error at `path` saying what it must be (`shape`).
+int axisNamed(const nlohmann::json& value, const std::string& path, const char* shape)
+{
+    const auto axis = value.is_string()
+                          ? std::find(std::begin(kAxes), std::end(kAxes), value.get<std::string>())
+                          : std::end(kAxes);
+    if (axis == std::end(kAxes))
+        throw FormatError(path + ": must be " + shape + ", got " + value.dump());
+    return static_cast<int>(axis - std::begin(kAxes));
+}
+
 const std::map<std::string, function::Joint::Type> kJointTypes{
     {"hinge", function::Joint::Type::Hinge},
     {"slide", function::Joint::Type::Slide},
@@ -199,11 +210,7 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
             throw FormatError(j.pathOf("edge") + ": the two faces are parallel, they meet at no edge");
     }
     if (joint.slides()) {
-        const std::string axis = j.text("axis");
-        const auto found = std::find(std::begin(kAxes), std::end(kAxes), axis);
-        if (found == std::end(kAxes))
-            throw FormatError(j.pathOf("axis") + ": must be \"x\", \"y\" or \"z\", got \"" + axis + "\"");
-        joint.axis = static_cast<int>(found - std::begin(kAxes));
+        joint.axis = axisNamed(j.text("axis"), j.pathOf("axis"), "\"x\", \"y\" or \"z\"");
     }
     model.joints.push_back(joint);
 }
@@ -266,16 +273,6 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
                                   "' move one part and must be posed alike");
         }
     }
-}
-
-int axisNamed(const nlohmann::json& value, const std::string& path, const char* shape)
-{
-    const auto axis = value.is_string()
-                          ? std::find(std::begin(kAxes), std::end(kAxes), value.get<std::string>())
-                          : std::end(kAxes);
-    if (axis == std::end(kAxes))
-        throw FormatError(path + ": must be " + shape + ", got " + value.dump());
-    return static_cast<int>(axis - std::begin(kAxes));
 }
 
 /// An array of axes ["x", "z"] as 0, 2.

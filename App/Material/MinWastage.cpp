@@ -56,15 +56,22 @@ double secondsTo(Clock::time_point deadline)
     return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
 }
 
+/// The ordering search's settings for `parts` units: |D(X)|² swaps (5.4.3), for at most `limit` seconds.
+OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double limit)
+{
+    OrderingSearchOptions options;
+    options.iterations = static_cast<long>(parts * parts);
+    options.timeLimit = limit;
+    options.seed = seed;
+    return options;
+}
+
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
                          std::uint64_t seed, Clock::time_point deadline)
 {
     const RasterProblem units = material.raster(sizes);
-    OrderingSearchOptions options;
-    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());  // |D(X)|², 5.4.3
-    options.timeLimit = secondsTo(deadline);  // the search's own time limit, and no longer
-    options.seed = seed;
-    return exploreOrderings(units.parts, std::move(order), material.stock(), options);
+    return exploreOrderings(units.parts, std::move(order), material.stock(),
+                            orderingSearch(units.parts.size(), seed, secondsTo(deadline)));
 }
 
 /// One task of a round: EXPLOREORDERINGS from the entry's order (shuffled unless `keepOrder`), then
@@ -243,11 +250,7 @@ GridLayout searched(const MaterialSpace& material, const Eigen::VectorXd& sizes,
                     double seconds)
 {
     const RasterProblem units = material.raster(sizes);
-    OrderingSearchOptions options;
-    options.iterations = static_cast<long>(units.parts.size() * units.parts.size());
-    options.timeLimit = seconds;
-    options.seed = seed;
-    return searchFromStarts(units.parts, material.stock(), options);
+    return searchFromStarts(units.parts, material.stock(), orderingSearch(units.parts.size(), seed, seconds));
 }
 
 }  // namespace

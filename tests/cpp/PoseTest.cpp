@@ -140,6 +140,10 @@ TEST(Pose, AJointCarriesThePartsHangingOnItsPart)
     d["joints"][0].erase("base");
     d["joints"][1]["part"] = "lid";
     EXPECT_EQ(testsupport::workslikeError(d), "joints[1].part: 'lid' is already moved by joint 'hinge'");
+    d = hingedLid("lid.far", "lid.bottom", 0);
+    d["joints"][0]["type"] = "sliding_hinge";
+    d["joints"][0]["axis"] = "w";
+    EXPECT_EQ(testsupport::workslikeError(d), "joints[0].axis: must be \"x\", \"y\" or \"z\", got \"w\"");
 }
 
 TEST(Pose, RelationshipsHoldInTheirConfigurationAfterTheSolve)
