@@ -1,13 +1,34 @@
 #include "Material/DesignSpace.h"
 
 #include "Material/Correction.h"
+#include "Material/LeastDesign.h"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace fabguide::material {
+
+Eigen::VectorXd DesignSpace::least(const Eigen::VectorXd& from,
+                                   std::chrono::steady_clock::time_point deadline) const
+{
+    constexpr int passes = 2;
+    Eigen::VectorXd X = from;
+    for (int pass = 0; pass < passes; ++pass) {
+        const Eigen::VectorXd before = sizes(X);
+        for (int size = 0; size < before.size() && std::chrono::steady_clock::now() < deadline; ++size) {
+            Eigen::VectorXd change = Eigen::VectorXd::Zero(before.size());
+            change[size] = -0.5 * sizes(X)[size];
+            if (const auto next = changePartSizes(X, change))
+                X = *next;
+        }
+        if ((sizes(X) - before).lpNorm<Eigen::Infinity>() < 1)
+            break;
+    }
+    return X;
+}
 
 ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
 {
@@ -33,6 +54,21 @@ std::optional<Eigen::VectorXd> ConstrainedDesign::changePartSizes(const Eigen::V
     if (corrected.alpha <= 0)
         return std::nullopt;
     return corrected.X;
+}
+
+std::optional<Eigen::VectorXd> ConstrainedDesign::between(const Eigen::VectorXd& from,
+                                                          const Eigen::VectorXd& to, double t) const
+{
+    Eigen::VectorXd X = from + t * (to - from);
+    if (!effective(design_, X) || !unsatisfied(design_, X).empty())
+        return std::nullopt;
+    return X;
+}
+
+Eigen::VectorXd ConstrainedDesign::least(const Eigen::VectorXd& X,
+                                         std::chrono::steady_clock::time_point) const
+{
+    return leastDesign(design_, X).value_or(X);
 }
 
 ParametricDesign::ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,

@@ -4,6 +4,7 @@
 
 #include "Material/Design.h"
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -30,6 +31,14 @@ public:
     /// sizes kept where the design allows; nullopt when the design cannot move that way at all.
     virtual std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
                                                            const Eigen::VectorXd& change) const = 0;
+    /// The design a fraction t of the way from valid design `from` to valid design `to` (t in [0, 1]);
+    /// nullopt when it breaks a constraint (the design space need not be convex).
+    virtual std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                                   double t) const = 0;
+    /// The least design from X (every part as small as the design allows, for saving a sheet): here each
+    /// part size in turn shrunk by half through CHANGEPARTSIZES, in up to two passes, until `deadline`.
+    virtual Eigen::VectorXd least(const Eigen::VectorXd& X,
+                                  std::chrono::steady_clock::time_point deadline) const;
 };
 
 /// A design of boards with design and effectiveness constraints: a size change is the change vector u of
@@ -42,6 +51,12 @@ public:
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
     std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
                                                    const Eigen::VectorXd& change) const override;
+    /// Linear constraints hold on the way; an inner volume may not (a board passing by it).
+    std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                           double t) const override;
+    /// leastDesign's linear programme (X when it fails).
+    Eigen::VectorXd least(const Eigen::VectorXd& X,
+                          std::chrono::steady_clock::time_point deadline) const override;
     const Design& design() const { return design_; }
     /// The design variable behind part size s_i (a board's length along one of its in-plane axes).
     int variableOfSize(int size) const
@@ -67,6 +82,12 @@ public:
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
     std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
                                                    const Eigen::VectorXd& change) const override;
+    /// Parameter bounds are a box: every point on the way is within them.
+    std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                           double t) const override
+    {
+        return from + t * (to - from);
+    }
 
 private:
     std::vector<PartKind> parts_;

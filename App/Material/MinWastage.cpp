@@ -1,5 +1,7 @@
 #include "Material/MinWastage.h"
 
+#include "Material/FewerSheets.h"
+
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
@@ -54,16 +56,6 @@ constexpr double kSearchOn = 10, kReopenCheck = 2;
 double secondsTo(Clock::time_point deadline)
 {
     return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
-}
-
-/// The ordering search's settings for `parts` units: |D(X)|² swaps (5.4.3), for at most `limit` seconds.
-OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double limit)
-{
-    OrderingSearchOptions options;
-    options.iterations = static_cast<long>(parts * parts);
-    options.timeLimit = limit;
-    options.seed = seed;
-    return options;
 }
 
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
@@ -190,67 +182,65 @@ bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
            std::tuple{b.figures.sheets, b.figures.waste, -b.figures.offcut[0] * b.figures.offcut[1]};
 }
 
-/// Farthest-point choice (5.3.3) among the designs a maker would take over the user's (never on more sheets,
-/// never the design unchanged): the best in the maker's order, then repeatedly the design farthest in part
-/// lengths from those chosen, among those on as many sheets within 3 % of the sheets' area of its waste.
+constexpr double kWindow = 0.03;   // of the bought area: suggestions after the first waste at most that more
+constexpr double kDistinct = 1.0;  // mm of part lengths between two designs that differ
+
+/// The next suggestion (5.3.3's farthest-point choice, on the maker's terms) of `pool`, sorted in the maker's
+/// order, not yet taken: the first; then the design nearest the user's on as many sheets as the first (the
+/// least change that gets there); then the design farthest in part lengths from those chosen, among those on
+/// as many sheets within kWindow of its waste. -1 when there is none.
+int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
+             const std::vector<Suggestion>& chosen, const DesignLayout& start)
+{
+    int pick = -1;
+    double value = 0;  // the pick's distance to the user's design (second), or to the nearest chosen (after)
+    for (size_t i = 0; i < pool.size(); ++i) {
+        if (taken[i])
+            continue;
+        if (chosen.empty())
+            return static_cast<int>(i);
+        const DesignLayout& d = pool[i].design;
+        const MaterialSpace::Figures& best = chosen.front().result.figures;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Suggestion& s : chosen)
+            nearest = std::min(nearest, (s.result.sizes - d.sizes).norm());
+        if (d.figures.sheets != best.sheets || nearest < kDistinct)
+            continue;
+        const double change = (d.sizes - start.sizes).norm();
+        if (chosen.size() == 1 ? pick < 0 || change < value
+                               : d.figures.waste <= best.waste + kWindow * best.bought && nearest > value) {
+            pick = static_cast<int>(i);
+            value = chosen.size() == 1 ? change : nearest;
+        }
+    }
+    return pick;
+}
+
+/// The suggestions: of the designs a maker would take over the user's (never on more sheets, never the
+/// design unchanged), `count` chosen by nextPick that reopen.
 template <typename Reopens>
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count,
                                 Reopens&& reopens)
 {
-    constexpr double window = 0.03, distinct = 1.0;  // of the bought area; mm
-    const int all = static_cast<int>(pool.size());   // read before the move: argument order is unspecified
+    const int all = static_cast<int>(pool.size());  // read before the move: argument order is unspecified
     pool = keepBest(std::move(pool), all);
     pool.erase(std::remove_if(pool.begin(), pool.end(),
                               [&](const Entry& e) {
                                   return !better(e.design, start) ||
-                                         (e.design.sizes - start.sizes).norm() < distinct;
+                                         (e.design.sizes - start.sizes).norm() < kDistinct;
                               }),
                pool.end());
     std::stable_sort(pool.begin(), pool.end(),
                      [](const Entry& a, const Entry& b) { return ranksBefore(a.design, b.design); });
     std::vector<Suggestion> chosen;
-    if (pool.empty())
-        return chosen;
-    const MaterialSpace::Figures& best = pool.front().design.figures;
     std::vector<bool> taken(pool.size(), false);
-    for (int k = 0; k < count; ++k) {
-        int pick = -1;
-        double farthest = distinct;
-        for (size_t i = 0; i < pool.size(); ++i) {
-            const MaterialSpace::Figures& f = pool[i].design.figures;
-            if (taken[i] || f.sheets != best.sheets || f.waste > best.waste + window * best.bought)
-                continue;
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const Suggestion& s : chosen)
-                nearest = std::min(nearest, (s.result.sizes - pool[i].design.sizes).norm());
-            if (chosen.empty() ? pick < 0 : nearest > farthest) {
-                pick = static_cast<int>(i);
-                farthest = chosen.empty() ? distinct : nearest;
-            }
-        }
-        if (pick < 0)
-            break;
+    for (int pick;
+         static_cast<int>(chosen.size()) < count && (pick = nextPick(pool, taken, chosen, start)) >= 0;) {
         taken[pick] = true;
-        if (!reopens(pool[pick].design)) {
-            --k;  // not one the user could go on with: the next
-            continue;
-        }
-        chosen.push_back({pool[pick].design, pool[pick].path});
+        if (reopens(pool[pick].design))  // else not one the user could go on with: the next
+            chosen.push_back({pool[pick].design, pool[pick].path});
     }
     return chosen;
-}
-
-}  // namespace
-
-namespace {
-
-/// The layout command's ordering search on part sizes (best-fit and decreasing-extent starts, |parts|² swaps
-/// each, for at most `seconds`).
-GridLayout searched(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
-                    double seconds)
-{
-    const RasterProblem units = material.raster(sizes);
-    return searchFromStarts(units.parts, material.stock(), orderingSearch(units.parts.size(), seed, seconds));
 }
 
 }  // namespace
@@ -260,9 +250,9 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
-    GridLayout layout = searched(material, sizes, seed, seconds);
+    GridLayout layout = searchedLayout(material, sizes, seed, seconds);
     if (!layout.unplaced.empty() && seconds < kSearchOn)  // a short share of a time limit: search on first
-        layout = searched(material, sizes, seed, kSearchOn);
+        layout = searchedLayout(material, sizes, seed, kSearchOn);
     if (!layout.unplaced.empty())
         throw PackingError("the design does not fit on the master boards: part '" +
                            material.parts()[material.kindOf()[layout.unplaced.front()]].id +
@@ -282,8 +272,15 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4));
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
+    // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.
+    for (DesignLayout& d : fewerSheets(design, material, exploration.start, options.seed,
+                                       std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)))) {
+        pool.push_back({d, orderOf(d.layout), {exploration.start, d}});
+        entries.push_back(pool.back());
+    }
+    entries = keepBest(std::move(entries), options.keep);
     const int total = options.rounds * options.tasksPerRound;
-    DesignLayout best = exploration.start;
+    DesignLayout best = entries.front().design;
     for (int round = 0; round < options.rounds; ++round) {
         std::vector<Entry> results(options.tasksPerRound);
         const auto task = [&](int t) {
@@ -309,8 +306,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must fit it
     // on as few sheets. The exploration's slides reach tight layouts a fresh search may not.
     const auto reopens = [&](const DesignLayout& d) {
-        const GridLayout fresh = searched(material, d.sizes, options.seed,
-                                          std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
+        const GridLayout fresh = searchedLayout(material, d.sizes, options.seed,
+                                                std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
         return fresh.unplaced.empty() && static_cast<int>(fresh.stock.size()) <= d.figures.sheets;
     };
     exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions, reopens);

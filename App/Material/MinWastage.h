@@ -47,11 +47,12 @@ struct Exploration {
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
                     double seconds = 10);
 
-/// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first). Every suggestion comes from
-/// CHANGEPARTSIZES, so it keeps the design's constraints; the suggestions are the best-scoring design found
-/// and then, among designs within 0.03 of its score, those farthest (in part lengths) from the ones already
-/// chosen. None needs more sheets than the design as it is, none is the design unchanged; fewer when the
-/// search found no other distinct improving design.
+/// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first), after FEWERSHEETS (a fifth of the
+/// time limit) whose designs the rounds improve on. Every suggestion keeps the design's constraints (it comes
+/// from CHANGEPARTSIZES, or between the design and its least one); the suggestions are the best in the
+/// maker's order, the least change on as many sheets, then the designs farthest (in part lengths) from those
+/// chosen within 3 % of the bought area of its waste. None needs more sheets than the design as it is, none
+/// is the design unchanged, each reopens; fewer when the search found no other distinct improving design.
 Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                        const MinWastageOptions& options);
 

@@ -20,6 +20,15 @@ LayoutCost cost(const GridLayout& layout, const std::vector<BoardStock>& stock, 
     return total;
 }
 
+OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds)
+{
+    OrderingSearchOptions options;
+    options.iterations = static_cast<long>(parts * parts);
+    options.timeLimit = seconds;
+    options.seed = seed;
+    return options;
+}
+
 std::vector<int> decreasingExtentOrder(const std::vector<RasterPart>& parts)
 {
     auto extent = [&](int i) {

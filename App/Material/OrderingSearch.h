@@ -37,6 +37,9 @@ struct OrderingSearchOptions {
     int memory = 1;          ///< late-acceptance history length; 1 = the thesis' acceptance rule
 };
 
+/// The thesis' ordering search for `parts` units: |parts|² swaps (5.4.3), for at most `seconds`.
+OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds);
+
 /// The order in which the thesis' Bottom-Left inserts parts: decreasing largest extent (5.3.1).
 std::vector<int> decreasingExtentOrder(const std::vector<RasterPart>& parts);
 

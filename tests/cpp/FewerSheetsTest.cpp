@@ -1,0 +1,116 @@
+// Saving a sheet (issue 14): the least design's linear programme and FEWERSHEETS on a suite bookcase that
+// needs two sheets as drawn and one when its shelves are a little shallower.
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
+#include "Material/FewerSheets.h"
+#include "Material/LeastDesign.h"
+#include "Material/MinWastage.h"
+
+#include <gtest/gtest.h>
+
+using namespace fabguide;
+using namespace fabguide::material;
+
+namespace {
+
+io::FlatpackDesign suiteDesign(const std::string& name)
+{
+    return io::readFlatpack(io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/flatpack/" +
+                                             name + ".flatpack.json"));
+}
+
+double area(const DesignSpace& design, const Eigen::VectorXd& X)
+{
+    const Eigen::VectorXd s = design.sizes(X);
+    double a = 0;
+    for (int i = 0; i < s.size(); i += 2)
+        a += design.parts()[i / 2].quantity * s[i] * s[i + 1];
+    return a;
+}
+
+/// X keeps every design and effectiveness constraint of `design`.
+void expectValid(const Design& design, const Eigen::VectorXd& X)
+{
+    EXPECT_TRUE(unsatisfied(design, X).empty()) << unsatisfied(design, X).front();
+    EXPECT_TRUE(ineffective(design, X).empty()) << ineffective(design, X).front();
+}
+
+}  // namespace
+
+TEST(LeastDesignTest, ShrinksEveryPartToWhatItsConstraintsAllow)
+{
+    const io::FlatpackDesign f = suiteDesign("bookcase-1800");
+    const Eigen::VectorXd X = f.design.variables();
+    const auto least = leastDesign(f.design, X);
+    ASSERT_TRUE(least);
+    expectValid(f.design, *least);
+    const ConstrainedDesign design(f.design);
+    EXPECT_LT(area(design, *least), 0.8 * area(design, X));
+    // The top narrower, but not below what the binders on the bottom (800 mm wide) leave; thicknesses stay.
+    EXPECT_LT((*least)[sizeVariable(2, 0)], 864 - 1);
+    EXPECT_GE((*least)[sizeVariable(2, 0)], 800);
+    for (size_t b = 0; b < f.design.boards.size(); ++b) {
+        const int normal = f.design.boards[b].normal;
+        EXPECT_EQ((*least)[sizeVariable(static_cast<int>(b), normal)],
+                  X[sizeVariable(static_cast<int>(b), normal)]);
+    }
+    // Every design on the way is valid too (linear constraints; boards stay on their side of inner volumes).
+    for (double t : {0.25, 0.5, 0.75})
+        EXPECT_TRUE(design.between(X, *least, t)) << t;
+}
+
+TEST(FewerSheetsTest, FindsTheLeastShrinkThatSavesASheet)
+{
+    const io::FlatpackDesign f = suiteDesign("bookcase-1800");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    ASSERT_EQ(start.figures.sheets, 2);
+    const auto found =
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+    ASSERT_EQ(found.size(), 1u);
+    const DesignLayout& saved = found.front();
+    EXPECT_EQ(saved.figures.sheets, 1);
+    EXPECT_TRUE(saved.layout.unplaced.empty());
+    expectValid(f.design, saved.X);
+    // Nearer the design than the least one: some part keeps more than its least size.
+    const Eigen::VectorXd least = design.least(start.X, std::chrono::steady_clock::time_point::max());
+    EXPECT_GT(area(design, saved.X), area(design, least) + 1e4);
+    EXPECT_LT(area(design, saved.X), area(design, start.X));
+}
+
+TEST(FewerSheetsTest, FindsNothingWhereTheLeastDesignNeedsAsManySheets)
+{
+    // The cube unit's boards are held by equal lengths and a fixed outer size: shrunk they still need two.
+    const io::FlatpackDesign f = suiteDesign("cube-unit-3x3");
+    const ConstrainedDesign design(f.design);
+    const MaterialSpace material(f.boards, f.settings, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    ASSERT_EQ(start.figures.sheets, 2);
+    EXPECT_TRUE(
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5))
+            .empty());
+}
+
+TEST(FewerSheetsTest, ParametricDesignsShrinkThroughChangePartSizes)
+{
+    // Two 1000 x h panels, h in [300, 700] from 500: two sheets of 1000 x 600 as designed, one at h <= 294.
+    const ParametricDesign design(
+        {{"panel", 2}},
+        [](const Eigen::VectorXd& x) {
+            Eigen::VectorXd s(2);
+            s << 1000, x[0];
+            return s;
+        },
+        Eigen::VectorXd::Constant(1, 500), Eigen::VectorXd::Constant(1, 250),
+        Eigen::VectorXd::Constant(1, 700));
+    const MaterialSpace material({{"mdf", "mdf", 1000, 600, 12, 3}}, {1.0, 0, 0, 0}, design.parts());
+    const DesignLayout start = layOut(design, material, 1);
+    ASSERT_EQ(start.figures.sheets, 2);
+    const auto found =
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found.front().figures.sheets, 1);
+    EXPECT_LE(found.front().X[0], 300);
+    EXPECT_GE(found.front().X[0], 250);
+}
