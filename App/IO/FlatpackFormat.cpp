@@ -238,7 +238,8 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
                           "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
 }
 
-material::DesignBoard readPart(const nlohmann::json& json, const std::string& path, double thickness)
+material::DesignBoard readPart(const nlohmann::json& json, const std::string& path,
+                               const std::vector<double>& thicknesses)
 {
     const Fields part(json, path);
     material::DesignBoard board;
@@ -263,9 +264,16 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
     }
     if (board.size.minCoeff() <= 0)
         throw FormatError(part.pathOf("size") + ": every side must be longer than 0");
-    if (std::abs(board.size[board.normal] - thickness) > 1e-6)
+    if (std::none_of(thicknesses.begin(), thicknesses.end(),
+                     [&](double t) { return material::ofThickness(board.size[board.normal], t); })) {
+        std::string all;
+        for (size_t k = 0; k < thicknesses.size(); ++k)
+            if (std::find(thicknesses.begin(), thicknesses.begin() + k, thicknesses[k]) ==
+                thicknesses.begin() + k)
+                all += (all.empty() ? "" : ", ") + show(thicknesses[k]);
         throw FormatError(part.pathOf("size") + ": its thinnest side " + show(board.size[board.normal]) +
-                          " must be the board thickness " + show(thickness));
+                          " must be the thickness of a master board (" + all + ")");
+    }
     return board;
 }
 
@@ -285,12 +293,12 @@ void readOuterVolume(Design& design, const nlohmann::json& json)
         }
 }
 
-/// The boards of "parts", every one as thick as the master boards, each id once.
-void readParts(const Fields& root, double thickness, Design& design)
+/// The boards of "parts", every one as thick as a master board, each id once.
+void readParts(const Fields& root, const std::vector<double>& thicknesses, Design& design)
 {
     const nlohmann::json& parts = root.array("parts");
     for (size_t i = 0; i < parts.size(); ++i) {
-        design.boards.push_back(readPart(parts[i], at("parts", i), thickness));
+        design.boards.push_back(readPart(parts[i], at("parts", i), thicknesses));
         for (size_t j = 0; j < i; ++j)
             if (design.boards[j].id == design.boards[i].id)
                 throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");
@@ -301,13 +309,14 @@ void readParts(const Fields& root, double thickness, Design& design)
 
 /// What "settings" asks of every board: no in-plane side below min_length (or its present length if shorter),
 /// and, with snap on, every two boards that touch stay touching.
-void addSettingConstraints(const Fields& settings, double thickness, Design& design)
+void addSettingConstraints(const Fields& settings, Design& design)
 {
     const Eigen::VectorXd X = design.variables();
-    const double shortest = settings.number("min_length", 2 * thickness, 0.0);
     const char* axes = "xyz";
     for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
         for (int axis : design.boards[b].inPlane()) {
+            const double thickness = design.boards[b].size[design.boards[b].normal];
+            const double shortest = settings.number("min_length", 2 * thickness, 0.0);
             const double least = std::min(shortest, X[material::sizeVariable(b, axis)]);
             design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " >= " + show(least),
                                      material::constant(least) - material::sizeOf(b, axis)});
@@ -357,19 +366,17 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};
-    const double thickness = result.boards.front().thickness;
-    for (size_t i = 1; i < result.boards.size(); ++i)
-        if (result.boards[i].thickness != thickness)
-            throw FormatError(at("boards", i) + ".thickness: every master board must be " + show(thickness) +
-                              " thick, like boards[0]");
-    if (!(thickness > 0))
-        throw FormatError("boards[0].thickness: must be greater than 0");
+    std::vector<double> thicknesses;
+    for (size_t i = 0; i < result.boards.size(); ++i) {
+        if (!(result.boards[i].thickness > 0))
+            throw FormatError(at("boards", i) + ".thickness: must be greater than 0");
+        thicknesses.push_back(result.boards[i].thickness);
+    }
     Design& design = result.design;
-    readParts(root, thickness, design);
+    readParts(root, thicknesses, design);
     const nlohmann::json noSettings = nlohmann::json::object();
     addSettingConstraints(
-        Fields(document.contains("settings") ? document["settings"] : noSettings, "settings"), thickness,
-        design);
+        Fields(document.contains("settings") ? document["settings"] : noSettings, "settings"), design);
     const nlohmann::json& constraints = root.array("constraints", true);
     for (size_t i = 0; i < constraints.size(); ++i)
         readConstraint(design, constraints[i], at("constraints", i));

@@ -33,7 +33,7 @@ Eigen::VectorXd DesignSpace::least(const Eigen::VectorXd& from,
 ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
 {
     for (const DesignBoard& board : design_.boards)
-        parts_.push_back({board.id, board.quantity, board.followsGrain});
+        parts_.push_back({board.id, board.quantity, board.followsGrain, board.size[board.normal]});
 }
 
 Eigen::VectorXd ConstrainedDesign::sizes(const Eigen::VectorXd& X) const

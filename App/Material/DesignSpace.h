@@ -17,6 +17,7 @@ struct PartKind {
     std::string id;
     int quantity = 1;
     bool followsGrain = false;
+    double thickness = 0;  ///< mm: cut from master boards this thick; 0: any
 };
 
 class DesignSpace {

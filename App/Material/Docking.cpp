@@ -67,6 +67,8 @@ bool fitsOn(const RasterPart& part, const BoardStock& board)
 
 bool allowedOn(const RasterPart& part, int shape, const BoardStock& board)
 {
+    if (!ofThickness(part.thickness, board.thickness))
+        return false;
     if (!part.followsGrain || board.grain == Grain::None)
         return true;
     const bool turned = part.rotations[shape] % 180 != 0;

@@ -3,6 +3,7 @@
 
 #include "Material/Footprint.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct RasterPart {
     std::vector<Footprint> shapes;
     std::vector<int> rotations;  ///< degrees counter-clockwise, one per shape
     bool followsGrain = false;   ///< its length (x axis at 0°) must run along the board's grain
+    double thickness = 0;        ///< mm: cut only from boards this thick; 0: from any
 };
 
 /// A kind of master board, in grid cells; count < 0 means as many as needed.
@@ -26,10 +28,17 @@ struct BoardStock {
     int height = 0;
     int count = 1;
     Grain grain = Grain::None;
+    double thickness = 0;  ///< mm; 0: unknown, any part may be cut from it
 };
 
-/// Whether shape `shape` of the part may be cut from the board: any, unless the part follows the grain
-/// of a board that has one (then 0°/180° along the width, 90°/270° along the height).
+/// Whether a part `part` mm thick is cut from a board `board` mm thick (0 on either side: any).
+inline bool ofThickness(double part, double board)
+{
+    return part == 0 || board == 0 || std::abs(part - board) <= 1e-6;
+}
+
+/// Whether shape `shape` of the part may be cut from the board: one of its thickness, any shape unless the
+/// part follows the grain of a board that has one (then 0°/180° along the width, 90°/270° along the height).
 bool allowedOn(const RasterPart& part, int shape, const BoardStock& board);
 
 /// Where one part went: sheet index, lower-left cell, and which of its shapes.

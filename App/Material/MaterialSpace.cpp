@@ -26,6 +26,7 @@ PackProblem MaterialSpace::problem(const Eigen::VectorXd& sizes) const
         problem.parts.push_back(
             rectangularPart(parts_[k].id, sizes[2 * k], sizes[2 * k + 1], parts_[k].quantity));
         problem.parts.back().followsGrain = parts_[k].followsGrain;
+        problem.parts.back().thickness = parts_[k].thickness;
     }
     return problem;
 }

@@ -5,13 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace fabguide::material {
 
 RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 {
-    RasterPart part{spec.id, {}, {}, spec.followsGrain};
+    RasterPart part{spec.id, {}, {}, spec.followsGrain, spec.thickness};
     for (int rotation : spec.orientations) {
         const Footprint shape = rasterise(geometry::placed(spec.outline, rotation, 0, 0), settings.resolution,
                                           settings.kerf + settings.spacing);
@@ -30,9 +31,12 @@ RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 
 namespace {
 
-/// Whether `part` fits on `board` (trim removed) in one of its orientations, by its bounding box.
+/// Whether `part` is cut from `board` (of its thickness) and fits on it (trim removed) in one of its
+/// orientations, by its bounding box.
 bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& s, bool strip)
 {
+    if (!ofThickness(part.thickness, board.thickness))
+        return false;
     const double w = board.width - 2 * s.trim, h = strip ? HUGE_VAL : board.height - 2 * s.trim;
     for (int rotation : part.orientations) {
         const bool turned = rotation % 180 != 0;
@@ -90,11 +94,16 @@ void checkSettings(const PackProblem& problem)
                                         mm(s.resolution) + " mm; FabGuide lays out boards of up to " +
                                         mm(kLongest) + " mm and " + cells(kMostCells) + " cells");
     }
-    double boardArea = 0;
-    for (const MasterBoard& b : problem.boards)
-        boardArea += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
-    long units = 0, over = 0;  // over: units past the boards' area, in the order given
-    double partArea = 0;
+    // The boards' area for parts of a thickness: those boards of it.
+    const auto boardArea = [&](double thickness) {
+        double area = 0;
+        for (const MasterBoard& b : problem.boards)
+            if (ofThickness(thickness, b.thickness))
+                area += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
+        return area;
+    };
+    long units = 0, over = 0;           // over: units past their boards' area, in the order given
+    std::map<double, double> partArea;  // per thickness
     const PartSpec* first = nullptr;
     for (const PartSpec& part : problem.parts) {
         units += part.quantity;
@@ -102,18 +111,24 @@ void checkSettings(const PackProblem& problem)
             throw std::invalid_argument("parts: more than " + std::to_string(kMostUnits) +
                                         " parts to lay out (quantities added up)");
         if (std::none_of(problem.boards.begin(), problem.boards.end(),
+                         [&](const MasterBoard& b) { return ofThickness(part.thickness, b.thickness); }))
+            throw PackingError("part '" + part.id + "' is " + mm(part.thickness) +
+                               " mm thick: no master board is");
+        if (std::none_of(problem.boards.begin(), problem.boards.end(),
                          [&](const MasterBoard& b) { return fitsOn(part, b, s, problem.strip); }))
-            throw PackingError("part '" + part.id + "' is larger than every master board (" +
+            throw PackingError("part '" + part.id + "' is larger than every master board" +
+                               (part.thickness > 0 ? " of its thickness" : std::string()) + " (" +
                                mm(part.width()) + " x " + mm(part.height()) + " mm)");
         const double area = geometry::area(part.outline);
         for (int k = 0; k < part.quantity && !over; ++k)
-            if ((partArea += area) > boardArea)
+            if ((partArea[part.thickness] += area) > boardArea(part.thickness))
                 first = &part, over = part.quantity - k;
         if (over && first != &part)
             over += part.quantity;
     }
     if (over)
-        throw notEnoughBoards(first->id, over - 1, "in the boards' " + mm(boardArea / 1e6) + " m²");
+        throw notEnoughBoards(first->id, over - 1,
+                              "in the boards' " + mm(boardArea(first->thickness) / 1e6) + " m²");
 }
 
 namespace {
@@ -180,7 +195,7 @@ RasterProblem rasterise(const PackProblem& problem)
             {cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
              problem.strip ? static_cast<int>(stripCells)
                            : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
-             problem.strip ? 1 : board.count, board.grain});
+             problem.strip ? 1 : board.count, board.grain, board.thickness});
     if (problem.strip)
         raster.stock.resize(1);
     return raster;

@@ -31,6 +31,7 @@ struct PartSpec {
     std::vector<Drill> drills;
     std::vector<geometry::Polygon> marks;
     bool followsGrain = false;  ///< its length (x axis) along the grain of boards that have one
+    double thickness = 0;       ///< mm: cut only from master boards this thick; 0: from any
     double width() const { return geometry::bounds(outline.outer).width(); }
     double height() const { return geometry::bounds(outline.outer).height(); }
 };

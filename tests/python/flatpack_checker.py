@@ -11,7 +11,7 @@ a CNC router would, against the ORIGINAL design (docs/formats.md, *.flatpack.jso
 - every design constraint of the original holds on the suggestion, each computed here from the boxes: equal,
   sum, fixed (value default: the original's), symmetric (about default: midway in the original), ground (level
   default: the original's lowest board), coplanar, snap, range (fraction: of the original's value), the
-  settings' min_length (default 2 x thickness; a side shorter than it in the original may not get shorter) and
+  settings' min_length (default 2 x the board's thickness; a side shorter than it in the original may not get shorter) and
   snap (default on: every two boards that touch in the original still touch on the same faces, faces flush in
   the original stay flush, others keep overlapping by min(original overlap, the thinner board)), the inner
   volumes (moving with the centre of the board they rest on, free of every other board) and the outer volume;
@@ -94,9 +94,8 @@ def interpenetrate(a, b, tol=TOL):
     return all(overlap(a, b, k) > tol for k in range(3))
 
 
-def thickness_of(design):
-    boards = design.get("boards") or [{}]
-    return float(boards[0].get("thickness", 0))
+def thicknesses_of(design):
+    return [float(b.get("thickness", 0)) for b in design.get("boards", [])]
 
 
 def ref_value(boxes, ref):
@@ -181,13 +180,12 @@ def constraint_problems(original, suggestion, tol=TOL):
     problems = []
     if set(B0) != set(B1):
         return ["constraints not checked: the suggestion's parts are not the original's"]
-    thickness = thickness_of(original)
     settings = original.get("settings", {})
 
     # settings.min_length
-    least = float(settings.get("min_length", 2 * thickness))
     for pid, b0 in B0.items():
         b1 = B1[pid]
+        least = float(settings.get("min_length", 2 * b0.size[b0.normal]))
         for k in b0.in_plane():
             need = min(least, b0.size[k])
             if b1.size[k] < need - tol:
@@ -311,9 +309,11 @@ def structure_problems(original, suggestion):
         problems.append("format: %r is not fabguide.flatpack" % suggestion.get("format"))
     if suggestion.get("boards") != original.get("boards"):
         problems.append("boards: the master boards changed")
-    t = thickness_of(original)
     for p0, p1 in zip(original["parts"], suggestion["parts"]):
         b0, b1 = Box(p0), Box(p1)
+        t = b0.size[b0.normal]
+        if not any(abs(t - m) < 1e-6 for m in thicknesses_of(original)):
+            problems.append("%s is %s thick: no master board is" % (b0.id, fmt(t)))
         if b1.quantity != b0.quantity:
             problems.append("quantity of %s changed %d -> %d" % (b0.id, b0.quantity, b1.quantity))
         if min(b1.size) <= 0:
@@ -410,6 +410,10 @@ def layout_problems(design, layout):
             mw, mh = boxes[pid].material_size(part)
             if rot not in (0, 90, 180, 270):
                 problems.append("%s: rotation %d" % (where, rot))
+            thick = min(boxes[pid].size)
+            if abs(thick - float(used[bi].get("thickness", 0))) > 1e-6:
+                problems.append("%s: a %s mm part on board %d, %s mm thick" % (
+                    where, fmt(thick), bi, fmt(used[bi].get("thickness", 0))))
             ew, eh = (mw, mh) if rot in (0, 180) else (mh, mw)
             if abs(w - ew) > SIZE_TOL or abs(h - eh) > SIZE_TOL:
                 problems.append("%s: laid out %s x %s (rotation %d), the board is %s x %s" % (

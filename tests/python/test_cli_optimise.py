@@ -108,4 +108,4 @@ def test_bad_designs_are_refused_with_the_field_named(fabguide_cli, source_dir, 
     design["parts"][0]["size"] = [700, 420, 15]
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out")
-    assert "parts[0].size: its thinnest side 15 must be the board thickness 12" in run.stderr
+    assert "parts[0].size: its thinnest side 15 must be the thickness of a master board (12)" in run.stderr

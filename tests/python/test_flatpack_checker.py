@@ -253,6 +253,21 @@ def test_thickness_changed_or_parts_renamed_fail():
     assert check(sugg=sugg)[0].startswith("parts: ")
 
 
+def test_a_part_on_a_board_of_another_thickness_fails():
+    # A 6 mm back on the 6 mm board passes; laid on the 12 mm one it fails.
+    thin = dict(BOARD, name="hardboard 6", thickness=6)
+    orig, sugg, lay = original(), suggestion(), layout()
+    for d in (orig, sugg):
+        d["boards"].append(dict(thin))
+        d["parts"].append({"id": "back", "position": [0, 250, 0], "size": [320, 6, 420]})
+    back = {"part": "back", "board": 1, "x": 5, "y": 5, "rotation": 0, "width": 320, "height": 420}
+    lay["boards"].append(dict(thin, grain="none"))
+    lay["placements"].append(back)
+    assert not any("thick" in p for p in check(orig=orig, sugg=sugg, lay=lay))
+    back.update(board=0, x=515, y=510, height=80)
+    assert any("a 6 mm part on board 0, 12 mm thick" in p for p in check(orig=orig, sugg=sugg, lay=lay))
+
+
 def test_reload_refused_is_reported(fabguide_cli, tmp_path):
     good = copy.deepcopy(suggestion())
     assert C.reload_problems(good, fabguide_cli) == []

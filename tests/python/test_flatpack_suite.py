@@ -1,5 +1,5 @@
 """The zero-waste suite (tests/data/flatpack): furniture designed as a maker with a CNC router or a laser would
-(18 mm birch on 2440 x 1220 sheets, some 12 mm and 6 mm), optimised by `fabguide optimise --seed 1 --threads 2`
+(18 mm birch on 2440 x 1220 sheets, some 12 mm and 6 mm, a sideboard of 18 mm and 6 mm together), optimised by `fabguide optimise --seed 1 --threads 2`
 within a time limit, every suggestion judged by the independent checker (flatpack_checker.py), which trusts
 nothing the optimiser says about it.
 
