@@ -6,6 +6,7 @@
 #include "IO/Output.h"
 #include "IO/PackFormat.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -74,6 +75,9 @@ void run(const OptimiseArguments& args)
         material.figures(exploration.start.layout, exploration.start.sizes);
     std::printf("usage before  %.4f  (%zu parts)  %d sheets, waste %.3f m2\n", exploration.usageBefore(),
                 flatpack.design.boards.size(), before.sheets, before.waste);
+    // Boards with a cost of their own (or offcuts, at 0): the suggestions' cost is shown beside the sheets.
+    const bool priced = std::any_of(flatpack.boards.begin(), flatpack.boards.end(),
+                                    [](const material::MasterBoard& b) { return b.cost != 1; });
     for (size_t k = 0; k < exploration.suggestions.size(); ++k) {
         const material::Suggestion& s = exploration.suggestions[k];
         const std::string name = "suggestion-" + std::to_string(k + 1);
@@ -85,9 +89,12 @@ void run(const OptimiseArguments& args)
         entry["path_length"] = s.path.size();
         summary["suggestions"].push_back(entry);
         const material::MaterialSpace::Figures& after = s.result.figures;
-        std::printf("suggestion %zu  %.4f -> %.4f  %d -> %d sheets, waste %.3f -> %.3f m2  %s\n", k + 1,
+        std::printf("suggestion %zu  %.4f -> %.4f  %d -> %d sheets, waste %.3f -> %.3f m2", k + 1,
                     exploration.usageBefore(), s.usage(), before.sheets, after.sheets, before.waste,
-                    after.waste, (out / entry["file"].get<std::string>()).c_str());
+                    after.waste);
+        if (priced)
+            std::printf(", cost %.2f -> %.2f", before.cost, after.cost);
+        std::printf("  %s\n", (out / entry["file"].get<std::string>()).c_str());
     }
     if (exploration.suggestions.empty())
         std::printf("no design variation found that wastes less\n");

@@ -422,6 +422,7 @@ nlohmann::json measures(const material::DesignLayout& d)
 {
     return {{"usage", 1 - d.wastage},
             {"sheets", d.figures.sheets},
+            {"cost", d.figures.cost},
             {"waste_m2", d.figures.waste},
             {"largest_offcut", d.figures.offcut}};
 }

@@ -134,6 +134,7 @@ material::MasterBoard readMasterBoard(const nlohmann::json& json, const std::str
     b.height = board.positive("height");
     b.thickness = board.number("thickness", 0.0, 0.0);
     b.count = board.integer("count", 1);
+    b.cost = board.number("cost", 1.0, 0.0);
     const std::string grain = board.text("grain", "none");
     if (grain != "none" && grain != "width" && grain != "height")
         throw FormatError(board.pathOf("grain") + ": must be \"none\", \"width\" or \"height\", got \"" +
@@ -319,6 +320,7 @@ nlohmann::json boardToJson(const material::MasterBoard& board)
             {"height", board.height},
             {"thickness", board.thickness},
             {"count", board.count},
+            {"cost", board.cost},
             {"grain", board.grain == material::Grain::AlongWidth    ? "width"
                       : board.grain == material::Grain::AlongHeight ? "height"
                                                                     : "none"}};

@@ -129,20 +129,22 @@ Placed Docker::bestPlace(const RasterPart& part) const
 int Docker::openSheet(const RasterPart& part)
 {
     bool fitsSomewhere = false;
+    int cheapest = -1;  // of the boards left that it fits on, the first listed of the least cost
     for (size_t k = 0; k < stock_.size(); ++k) {
         if (!fitsOn(part, stock_[k]))
             continue;
         fitsSomewhere = true;
-        if (left_[k] == 0)
-            continue;
-        --left_[k];
-        layout_.stock.push_back(static_cast<int>(k));
-        sheets_.emplace_back(stock_[k].width, stock_[k].height);
-        return static_cast<int>(sheets_.size()) - 1;
+        if (left_[k] != 0 && (cheapest < 0 || stock_[k].cost < stock_[cheapest].cost))
+            cheapest = static_cast<int>(k);
     }
     if (!fitsSomewhere)
         throw PackingError("part '" + part.name + "' is larger than every master board");
-    return -1;
+    if (cheapest < 0)
+        return -1;
+    --left_[cheapest];
+    layout_.stock.push_back(cheapest);
+    sheets_.emplace_back(stock_[cheapest].width, stock_[cheapest].height);
+    return static_cast<int>(sheets_.size()) - 1;
 }
 
 void Docker::place(const std::vector<RasterPart>& parts, int index)

@@ -29,6 +29,7 @@ struct BoardStock {
     int count = 1;
     Grain grain = Grain::None;
     double thickness = 0;  ///< mm; 0: unknown, any part may be cut from it
+    double cost = 1;       ///< of one board: the cheapest is opened first (offcuts, at 0, before new sheets)
 };
 
 /// Whether a part `part` mm thick is cut from a board `board` mm thick (0 on either side: any).
@@ -122,8 +123,9 @@ public:
     /// (sheet = -1 when it needs a new sheet, or shape = -1 when it has a position nowhere).
     Placed bestPlace(const RasterPart& part) const;
 
-    /// Places part `index` at its best position, opening a new sheet from the first stock with
-    /// boards left that it fits on; when the boards have run out the part is listed as unplaced.
+    /// Places part `index` at its best position, opening a new sheet from the cheapest stock (the first
+    /// listed among equals) with boards left that it fits on; when the boards have run out the part is
+    /// listed as unplaced.
     /// Throws PackingError naming the part when it is larger than every master board.
     void place(const std::vector<RasterPart>& parts, int index);
 

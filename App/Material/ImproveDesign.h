@@ -19,11 +19,12 @@ struct DesignLayout {
     GridLayout layout;
     double wastage = 1;
     MaterialSpace::Figures figures;
-    /// What the search minimises (issue 14): fewer sheets bought first, then the thesis' wastage, which
-    /// favours compact layouts; infinite when a part is left over.
+    /// What the search minimises (issue 14): the boards' cost first (in sheets of the cheapest; the sheets
+    /// bought when every board costs the same), then the thesis' wastage, which favours compact layouts;
+    /// infinite when a part is left over.
     double score() const
     {
-        return wastage >= 1 ? std::numeric_limits<double>::infinity() : figures.sheets + wastage;
+        return wastage >= 1 ? std::numeric_limits<double>::infinity() : figures.cost / figures.unit + wastage;
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -186,11 +187,20 @@ std::array<std::array<double, 2>, 2> MaterialSpace::strips(const GridLayout& lay
 MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const
 {
     Figures f;
-    f.sheets = static_cast<int>(layout.stock.size());
-    double bought = 0, parts = 0;
+    double used = 0, bought = 0, parts = 0;
+    double cheapest = std::numeric_limits<double>::infinity();
+    for (const MasterBoard& board : boards_)
+        if (board.cost > 0)
+            cheapest = std::min(cheapest, board.cost);
+    f.unit = std::isfinite(cheapest) ? cheapest : 1;
     for (size_t s = 0; s < layout.stock.size(); ++s) {
         const MasterBoard& sheet = boards_[layout.stock[s]];
-        bought += sheet.width * sheet.height;  // the whole sheet is bought, trim and all
+        used += sheet.width * sheet.height;  // the whole sheet, trim and all
+        f.cost += sheet.cost;
+        if (sheet.cost > 0) {
+            ++f.sheets;
+            bought += sheet.width * sheet.height;
+        }
         for (const auto& strip : strips(layout, s))
             if (strip[0] * strip[1] > f.offcut[0] * f.offcut[1])
                 f.offcut = strip;
@@ -198,7 +208,7 @@ MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Ei
     for (int kind : kindOf_)
         parts += sizes[2 * kind] * sizes[2 * kind + 1];
     f.bought = bought / 1e6;
-    f.waste = (bought - parts) / 1e6;
+    f.waste = (used - parts) / 1e6;
     return f;
 }
 
@@ -213,7 +223,7 @@ std::vector<MasterBoard> MaterialSpace::offcuts(const GridLayout& layout, double
             if (both[k][0] >= least && both[k][1] >= least)
                 out.push_back({sheet.name + " offcut " + std::to_string(s + 1) + " " + where[k],
                                sheet.material, std::floor(both[k][0]), std::floor(both[k][1]),
-                               sheet.thickness, 1, sheet.grain});
+                               sheet.thickness, 1, sheet.grain, 0});
     }
     return out;
 }

@@ -37,11 +37,14 @@ public:
     /// unplaced.
     double wastage(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 
-    /// What a maker reads off a layout (issue 14): master boards used, m² of them not in parts, and the
-    /// largest offcut left whole (the strip beside or above a sheet's layout, width × height in mm).
+    /// What a maker reads off a layout (issue 14): master boards bought (those that cost something: an
+    /// offcut already owned does not) and their cost, m² of the boards used not in parts, and the largest
+    /// offcut left whole (the strip beside or above a sheet's layout, width × height in mm).
     struct Figures {
         int sheets = 0;
-        double bought = 0;  ///< m² of master boards
+        double cost = 0;    ///< summed cost of the boards used
+        double unit = 1;    ///< the cheapest board's cost: cost / unit is the cost in sheets
+        double bought = 0;  ///< m² of master boards bought
         double waste = 0;   ///< m²
         std::array<double, 2> offcut{};
     };
@@ -49,7 +52,8 @@ public:
 
     /// The leftovers of a layout's sheets as master boards for the next job (issue 14): per sheet the strip
     /// above its layout (the sheet's full width) and the strip beside it (up to the layout's top), each kept
-    /// when both its sides are at least `least` mm; whole millimetres, the next job trims them itself.
+    /// when both its sides are at least `least` mm; whole millimetres, the next job trims them itself; cost
+    /// 0, so that job uses them before new sheets.
     std::vector<MasterBoard> offcuts(const GridLayout& layout, double least) const;
 
     /// The layout in millimetres, for files and thumbnails.

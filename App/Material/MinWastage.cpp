@@ -161,25 +161,29 @@ std::vector<Entry> keepBest(std::vector<Entry> entries, int keep)
     return kept;
 }
 
-/// Whether a maker would take `d` over `start`: fewer sheets, or as many and less waste (parts that use
-/// more of what is bought), or the same waste and a larger offcut.
+/// Whether a maker would take `d` over `start`: cheaper boards (fewer sheets when they cost the same), or
+/// as cheap and less waste (parts that use more of what is bought), or the same waste and a larger offcut.
 bool better(const DesignLayout& d, const DesignLayout& start)
 {
     constexpr double hair = 1e-4;  // m²
     const auto& a = d.figures;
     const auto& b = start.figures;
-    if (std::isinf(d.score()) || a.sheets != b.sheets)
-        return a.sheets < b.sheets && !std::isinf(d.score());
+    if (std::isinf(d.score()))
+        return false;
+    if (a.cost != b.cost || a.sheets != b.sheets)
+        return std::tie(a.cost, a.sheets) < std::tie(b.cost, b.sheets);
     if (std::abs(a.waste - b.waste) > hair)
         return a.waste < b.waste;
     return a.offcut[0] * a.offcut[1] > b.offcut[0] * b.offcut[1] * (1 + 1e-6);
 }
 
-/// The maker's order: sheets, then waste, then the largest offcut (larger first).
+/// The maker's order: cost, sheets, then waste, then the largest offcut (larger first).
 bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
 {
-    return std::tuple{a.figures.sheets, a.figures.waste, -a.figures.offcut[0] * a.figures.offcut[1]} <
-           std::tuple{b.figures.sheets, b.figures.waste, -b.figures.offcut[0] * b.figures.offcut[1]};
+    const auto key = [](const MaterialSpace::Figures& f) {
+        return std::tuple{f.cost, f.sheets, f.waste, -f.offcut[0] * f.offcut[1]};
+    };
+    return key(a.figures) < key(b.figures);
 }
 
 constexpr double kWindow = 0.03;   // of the bought area: suggestions after the first waste at most that more
@@ -204,7 +208,7 @@ int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
         double nearest = std::numeric_limits<double>::infinity();
         for (const Suggestion& s : chosen)
             nearest = std::min(nearest, (s.result.sizes - d.sizes).norm());
-        if (d.figures.sheets != best.sheets || nearest < kDistinct)
+        if (d.figures.cost != best.cost || d.figures.sheets != best.sheets || nearest < kDistinct)
             continue;
         const double change = (d.sizes - start.sizes).norm();
         if (chosen.size() == 1 ? pick < 0 || change < value
@@ -303,12 +307,12 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         if (exploration.stopped)
             break;
     }
-    // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must fit it
-    // on as few sheets. The exploration's slides reach tight layouts a fresh search may not.
+    // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must cut it
+    // from boards that cost no more. The exploration's slides reach tight layouts a fresh search may not.
     const auto reopens = [&](const DesignLayout& d) {
         const GridLayout fresh = searchedLayout(material, d.sizes, options.seed,
                                                 std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
-        return fresh.unplaced.empty() && static_cast<int>(fresh.stock.size()) <= d.figures.sheets;
+        return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
     };
     exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions, reopens);
     exploration.seconds = std::chrono::duration<double>(Clock::now() - started).count();

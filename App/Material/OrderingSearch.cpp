@@ -11,8 +11,10 @@ namespace fabguide::material {
 
 LayoutCost cost(const GridLayout& layout, const std::vector<BoardStock>& stock, Bounds bounds)
 {
-    LayoutCost total{static_cast<int>(layout.unplaced.size()), static_cast<int>(layout.stock.size()), 0, 0};
+    LayoutCost total{static_cast<int>(layout.unplaced.size()), 0, static_cast<int>(layout.stock.size()), 0,
+                     0};
     for (size_t s = 0; s < layout.stock.size(); ++s) {
+        total.sheetCost += stock[layout.stock[s]].cost;
         const long width = bounds == Bounds::Strip ? stock[layout.stock[s]].width : layout.usedWidth[s];
         total.boundingArea += width * layout.usedHeight[s];
         total.skylineArea += layout.skylineArea[s];

@@ -10,19 +10,21 @@
 
 namespace fabguide::material {
 
-/// What a layout costs: parts left unplaced (boards ran out) first, then sheets used, then the summed
+/// What a layout costs: parts left unplaced (boards ran out) first, then what its sheets cost (offcuts
+/// nothing), then sheets used, then the summed
 /// bounding-rectangle areas of their layouts (thesis 5.4.3.2: wastage against the bounding rectangle), then
 /// the area under the top height-fields, which tells apart layouts of equal wastage by how low their parts
 /// sit. Lower is better.
 struct LayoutCost {
     int unplaced = 0;
+    double sheetCost = 0;
     int sheets = 0;
     long boundingArea = 0;
     long skylineArea = 0;
     bool operator<(const LayoutCost& o) const
     {
-        return std::tie(unplaced, sheets, boundingArea, skylineArea) <
-               std::tie(o.unplaced, o.sheets, o.boundingArea, o.skylineArea);
+        return std::tie(unplaced, sheetCost, sheets, boundingArea, skylineArea) <
+               std::tie(o.unplaced, o.sheetCost, o.sheets, o.boundingArea, o.skylineArea);
     }
 };
 

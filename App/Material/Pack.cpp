@@ -195,7 +195,7 @@ RasterProblem rasterise(const PackProblem& problem)
             {cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
              problem.strip ? static_cast<int>(stripCells)
                            : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
-             problem.strip ? 1 : board.count, board.grain, board.thickness});
+             problem.strip ? 1 : board.count, board.grain, board.thickness, board.cost});
     if (problem.strip)
         raster.stock.resize(1);
     return raster;

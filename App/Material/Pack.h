@@ -19,6 +19,7 @@ struct MasterBoard {
     double thickness = 0;  ///< mm
     int count = 1;         ///< boards in stock; -1 means as many as needed
     Grain grain = Grain::None;
+    double cost = 1;  ///< what one board costs (any unit; 1: a sheet); 0 for one already owned, an offcut
 };
 
 /// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres, with the

@@ -4,6 +4,7 @@
 
 #include <polyclipping/clipper.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -177,4 +178,46 @@ TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
             EXPECT_EQ(sharedArea(grown[i], grown[j]), 0) << i << " and " << j;
     // The L-shapes interlock: the layout is far smaller than their bounding boxes side by side.
     EXPECT_LT(layout.boundingArea, 2 * 200 * 200 + 3 * 120 * 120);
+}
+
+TEST(Pack, PartsAreCutOnlyFromBoardsOfTheirThickness)
+{
+    PackProblem problem = shelfProblem();
+    problem.boards.push_back({"hardboard", "hardboard", 1000, 600, 6, 1});
+    problem.parts.push_back(rectangularPart("back", 560, 380, 1));
+    problem.parts.back().thickness = 6;
+    for (PartSpec& part : problem.parts)
+        if (part.thickness == 0)
+            part.thickness = 18;
+    const Layout layout = pack(problem, quick());
+    for (const Placement& p : layout.placements)
+        EXPECT_EQ(layout.sheets[p.sheet].thickness, problem.parts[p.part].thickness)
+            << problem.parts[p.part].id;
+    problem.parts.back().thickness = 12;
+    try {
+        pack(problem, quick());
+        FAIL() << "a 12 mm part was laid out with no 12 mm board";
+    } catch (const PackingError& e) {
+        EXPECT_STREQ(e.what(), "part 'back' is 12 mm thick: no master board is");
+    }
+}
+
+TEST(Pack, OffcutsAreUsedBeforeNewSheetsAndCostNothing)
+{
+    // The shelf problem's parts need two 1000 x 600 sheets; an offcut (cost 0, listed last) large enough for
+    // a side and a shelf takes them, and the layout costs one sheet less than without it.
+    PackProblem problem = shelfProblem();
+    problem.boards.front().count = 3;
+    const Layout without = pack(problem, quick());
+    problem.boards.push_back({"offcut", "birch plywood", 720, 600, 18, 1, Grain::None, 0});
+    const Layout with = pack(problem, quick());
+    const auto cost = [](const Layout& l) {
+        double total = 0;
+        for (const MasterBoard& sheet : l.sheets)
+            total += sheet.cost;
+        return total;
+    };
+    EXPECT_TRUE(std::any_of(with.sheets.begin(), with.sheets.end(),
+                            [](const MasterBoard& b) { return b.name == "offcut"; }));
+    EXPECT_LT(cost(with), cost(without));
 }

@@ -486,6 +486,12 @@ def reload_problems(suggestion, cli, suggestion_path=None):
 # ------------------------------------------------------------------------------------------------------ all
 
 
+def bought_of(layout):
+    """(boards bought, their cost) of a layout: boards of cost 0 are offcuts already owned."""
+    costs = [float(b.get("cost", 1)) for b in layout.get("boards", [])]
+    return sum(1 for c in costs if c > 0), sum(costs)
+
+
 def waste_of(layout):
     """m² of master boards the layout uses minus the area of the parts laid out on them (computed here)."""
     bought = sum(float(b["width"]) * float(b["height"]) for b in layout.get("boards", []))
@@ -515,15 +521,19 @@ def check_suggestion(original_design_dict, suggestion_design_dict, layout_dict, 
     if len(layout.get("boards", [])) != sheets_layout:
         problems.append("layout lists %d boards but places parts on %d" % (len(layout.get("boards", [])),
                                                                            sheets_layout))
+    bought, cost = bought_of(layout)
     before_sheets = (before_entry or {}).get("sheets")
-    if isinstance(before_sheets, int):
-        if sheets_layout > before_sheets:
-            problems.append("more sheets: %d sheets, %d before" % (sheets_layout, before_sheets))
+    before_cost = bought_of(before_layout)[1] if before_layout is not None else \
+        (before_entry or {}).get("cost", before_sheets)
+    if isinstance(before_sheets, int) and isinstance(before_cost, (int, float)):
+        if cost > before_cost + 1e-9:
+            problems.append("costs more: boards costing %s, %s before" % (fmt(cost), fmt(before_cost)))
+        elif cost == before_cost and bought > before_sheets:
+            problems.append("more sheets: %d sheets, %d before" % (bought, before_sheets))
     else:
         problems.append("summary: before has no sheet count")
-    if (summary_entry or {}).get("sheets") != sheets_layout:
-        problems.append("summary says %r sheets, the layout uses %d" % ((summary_entry or {}).get("sheets"),
-                                                                        sheets_layout))
+    if (summary_entry or {}).get("sheets") != bought:
+        problems.append("summary says %r sheets, the layout buys %d" % ((summary_entry or {}).get("sheets"), bought))
     # summary.json's waste_m2 is "bought sheets less parts" (docs/formats.md): the layout's, computed here
     reported = (summary_entry or {}).get("waste_m2")
     if not isinstance(reported, (int, float)):
@@ -536,9 +546,9 @@ def check_suggestion(original_design_dict, suggestion_design_dict, layout_dict, 
         w1, w0 = waste_of(layout), waste_of(before_layout)
     else:
         w1, w0 = (summary_entry or {}).get("waste_m2"), (before_entry or {}).get("waste_m2")
-    if isinstance(before_sheets, int) and sheets_layout == before_sheets and isinstance(w1, (int, float)) \
-            and isinstance(w0, (int, float)) and w1 > w0 + 1e-4:
-        problems.append("wastes more: %d sheets as before, %.4f m2 waste, %.4f m2 before" % (sheets_layout, w1, w0))
+    if isinstance(before_sheets, int) and cost == before_cost and bought == before_sheets \
+            and isinstance(w1, (int, float)) and isinstance(w0, (int, float)) and w1 > w0 + 1e-4:
+        problems.append("wastes more: %d sheets as before, %.4f m2 waste, %.4f m2 before" % (bought, w1, w0))
     if reload:
         problems += reload_problems(suggestion, cli or default_cli(), suggestion_path)
     return problems

@@ -87,6 +87,28 @@ def test_grain_runs_along_the_axis_a_part_names(fabguide_cli, tmp_path):
     assert run.returncode == 1 and 'parts[0].grain: must be "free" or an axis in the board\'s plane' in run.stderr
 
 
+def test_offcuts_of_one_job_are_used_before_new_sheets_in_the_next(fabguide_cli, source_dir, tmp_path):
+    # The bed frame's leftovers (cost 0), listed after its full sheets, are where the next bed starts.
+    path = os.path.join(source_dir, "tests", "data", "flatpack", "bed-frame.flatpack.json")
+    run = optimise(fabguide_cli, path, tmp_path / "first", "--seed", "1", "--time-limit", "2")
+    assert run.returncode == 0, run.stderr
+    offcuts = json.loads((tmp_path / "first" / "before.offcuts.json").read_text())["boards"]
+    assert offcuts and all(b["cost"] == 0 for b in offcuts)
+    design = json.loads(open(path).read())
+    design["boards"] += offcuts
+    second = tmp_path / "second.flatpack.json"
+    second.write_text(json.dumps(design))
+    run = optimise(fabguide_cli, str(second), tmp_path / "next", "--seed", "1", "--time-limit", "2")
+    assert run.returncode == 0, run.stderr
+    summary = json.loads((tmp_path / "next" / "summary.json").read_text())
+    first = json.loads((tmp_path / "first" / "summary.json").read_text())
+    layout = json.loads((tmp_path / "next" / "before.layout.json").read_text())
+    used = [b for b in layout["boards"] if b["cost"] == 0]
+    assert used, "no offcut used"
+    assert summary["before"]["cost"] == summary["before"]["sheets"] <= first["before"]["sheets"]
+    assert ", cost " in run.stdout or not summary["suggestions"]
+
+
 def test_the_same_seed_gives_the_same_suggestions(fabguide_cli, source_dir, tmp_path):
     path = os.path.join(source_dir, "examples", "parrot-shelf.flatpack.json")
     for name, threads in (("one", "1"), ("two", "2")):

@@ -224,9 +224,13 @@ def test_more_sheets_fails():
     lay["boards"].append(dict(BOARD, grain="none"))
     placement(lay, "shelf").update(board=1, x=5, y=5)
     problems = check(lay=lay, summary=entry(sheets=2))
-    assert any(p.startswith("more sheets: 2 sheets, 1 before") for p in problems), problems
+    assert any(p.startswith("costs more: boards costing 2, 1 before") for p in problems), problems
     # and a summary that miscounts is caught too
     assert any(p.startswith("summary says 1 sheets") for p in check(lay=lay, summary=entry(sheets=1)))
+    # an offcut already owned (cost 0) is no sheet bought
+    lay["boards"][1]["cost"] = 0
+    problems = check(lay=lay, summary=entry(sheets=1, waste=C.waste_of(lay)))
+    assert not any(p.startswith(("costs more", "more sheets", "summary says")) for p in problems), problems
 
 
 def test_more_waste_on_as_many_sheets_fails():
