@@ -70,6 +70,7 @@ void run(const OptimiseArguments& args)
                               {"before", writeLayout(material, exploration.start, out, "before")},
                               {"seconds", exploration.seconds},
                               {"stopped", exploration.stopped},
+                              {"least_sheets", exploration.leastSheets},
                               {"suggestions", nlohmann::json::array()}};
     const material::MaterialSpace::Figures before =
         material.figures(exploration.start.layout, exploration.start.sizes);
@@ -96,8 +97,15 @@ void run(const OptimiseArguments& args)
             std::printf(", cost %.2f -> %.2f", before.cost, after.cost);
         std::printf("  %s\n", (out / entry["file"].get<std::string>()).c_str());
     }
+    if (exploration.leastSheets > 0)  // why no sheet was saved, or how many more could be
+        std::printf("least design  %d sheets (every part as small as the constraints allow)\n",
+                    exploration.leastSheets);
     if (exploration.suggestions.empty())
-        std::printf("no design variation found that wastes less\n");
+        std::printf("no design variation found that wastes less%s\n",
+                    exploration.leastSheets >= before.sheets
+                        ? ": shrunk as far as its constraints allow it needs as many sheets, and no change "
+                          "within them that the search found wastes less"
+                        : "");
     std::printf("seconds       %.2f%s\n", exploration.seconds,
                 exploration.stopped ? " (stopped at the time limit)" : "");
     io::writeJsonFile((out / "summary.json").string(), summary);

@@ -25,9 +25,8 @@ GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& 
     return searchFromStarts(units.parts, material.stock(), orderingSearch(units.parts.size(), seed, seconds));
 }
 
-std::vector<DesignLayout> fewerSheets(const DesignSpace& design, const MaterialSpace& material,
-                                      const DesignLayout& start, std::uint64_t seed,
-                                      Clock::time_point deadline)
+SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
+                        std::uint64_t seed, Clock::time_point deadline)
 {
     constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
     // Each fresh layout gets an even share of the time: the least design, then the bisections.
@@ -37,11 +36,12 @@ std::vector<DesignLayout> fewerSheets(const DesignSpace& design, const MaterialS
         GridLayout layout = searchedLayout(material, sizes, seed, seconds);
         return designLayout(material, X, std::move(sizes), std::move(layout));
     };
-    std::vector<DesignLayout> found;
     const Eigen::VectorXd least = design.least(start.X, deadline);
-    const DesignLayout smallest = laidOut(least, share(1 + halvings));
+    SavedSheets saved{laidOut(least, share(1 + halvings)), {}};
+    const DesignLayout& smallest = saved.least;
+    std::vector<DesignLayout>& found = saved.designs;
     if (!(smallest.score() < start.score()) || smallest.figures.sheets >= start.figures.sheets)
-        return found;
+        return saved;
     // Fewer sheets need at least the shrink one sheet more needed: each bisection starts from the last.
     double lo = 0;
     for (int sheets = start.figures.sheets - 1; sheets >= smallest.figures.sheets; --sheets) {
@@ -66,7 +66,7 @@ std::vector<DesignLayout> fewerSheets(const DesignSpace& design, const MaterialS
             found.push_back(std::move(fits));
         lo = hi;
     }
-    return found;
+    return saved;
 }
 
 }  // namespace fabguide::material

@@ -17,13 +17,18 @@ namespace fabguide::material {
 GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
                           double seconds);
 
-/// FEWERSHEETS: from `start`, every part size shrunk through CHANGEPARTSIZES (so every design and
-/// effectiveness constraint holds) step by step to the least the design allows; if a fresh layout of that
-/// needs fewer sheets, then for each sheet count from one fewer down to that one, the design nearest to
-/// `start` on the way (bisection on the fraction of the shrink) whose fresh layout fits on that many. Empty
-/// when the design cannot shrink onto fewer sheets or the deadline came first.
-std::vector<DesignLayout> fewerSheets(const DesignSpace& design, const MaterialSpace& material,
-                                      const DesignLayout& start, std::uint64_t seed,
-                                      std::chrono::steady_clock::time_point deadline);
+/// What FEWERSHEETS found: the least design with its fresh layout, and the designs that save sheets.
+struct SavedSheets {
+    DesignLayout least;
+    std::vector<DesignLayout> designs;
+};
+
+/// FEWERSHEETS: the least design from `start` (DesignSpace::least: every design and effectiveness
+/// constraint holds) laid out afresh; if that needs fewer sheets, then for each sheet count from one fewer
+/// down to that one, the design nearest to `start` on the way (bisection on the fraction of the shrink)
+/// whose fresh layout fits on that many. No designs when the design cannot shrink onto fewer sheets or the
+/// deadline came first.
+SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
+                        std::uint64_t seed, std::chrono::steady_clock::time_point deadline);
 
 }  // namespace fabguide::material

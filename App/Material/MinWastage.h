@@ -38,6 +38,7 @@ struct Exploration {
     double seconds = 0;
     bool stopped = false;  ///< cancelled, or the time limit ended it
     int designsImproved = 0;
+    int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
     double usageBefore() const { return 1 - start.wastage; }
 };
 

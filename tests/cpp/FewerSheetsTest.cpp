@@ -67,7 +67,8 @@ TEST(FewerSheetsTest, FindsTheLeastShrinkThatSavesASheet)
     const DesignLayout start = layOut(design, material, 1);
     ASSERT_EQ(start.figures.sheets, 2);
     const auto found =
-        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5))
+            .designs;
     ASSERT_EQ(found.size(), 1u);
     const DesignLayout& saved = found.front();
     EXPECT_EQ(saved.figures.sheets, 1);
@@ -87,9 +88,10 @@ TEST(FewerSheetsTest, FindsNothingWhereTheLeastDesignNeedsAsManySheets)
     const MaterialSpace material(f.boards, f.settings, design.parts());
     const DesignLayout start = layOut(design, material, 1);
     ASSERT_EQ(start.figures.sheets, 2);
-    EXPECT_TRUE(
-        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5))
-            .empty());
+    const SavedSheets saved =
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+    EXPECT_TRUE(saved.designs.empty());
+    EXPECT_EQ(saved.least.figures.sheets, 2);
 }
 
 TEST(FewerSheetsTest, ParametricDesignsShrinkThroughChangePartSizes)
@@ -108,7 +110,8 @@ TEST(FewerSheetsTest, ParametricDesignsShrinkThroughChangePartSizes)
     const DesignLayout start = layOut(design, material, 1);
     ASSERT_EQ(start.figures.sheets, 2);
     const auto found =
-        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+        fewerSheets(design, material, start, 1, std::chrono::steady_clock::now() + std::chrono::seconds(5))
+            .designs;
     ASSERT_EQ(found.size(), 1u);
     EXPECT_EQ(found.front().figures.sheets, 1);
     EXPECT_LE(found.front().X[0], 300);
