@@ -45,6 +45,7 @@ nlohmann::json explorationJson(const material::MaterialSpace& material, const ma
                           {"before", layoutJson(material, e.start)},
                           {"seconds", e.seconds},
                           {"stopped", e.stopped},
+                          {"least_sheets", e.leastSheets},
                           {"suggestions", nlohmann::json::array()}};
     for (const material::Suggestion& s : e.suggestions) {
         nlohmann::json entry = layoutJson(material, s.result);
