@@ -71,6 +71,7 @@ void run(const OptimiseArguments& args)
                               {"seconds", exploration.seconds},
                               {"stopped", exploration.stopped},
                               {"least_sheets", exploration.leastSheets},
+                              {"not_reopened", exploration.notReopened},
                               {"suggestions", nlohmann::json::array()}};
     const material::MaterialSpace::Figures before =
         material.figures(exploration.start.layout, exploration.start.sizes);
@@ -100,11 +101,13 @@ void run(const OptimiseArguments& args)
     if (exploration.leastSheets > 0)  // why no sheet was saved, or how many more could be
         std::printf("least design  %d sheets (every part as small as the constraints allow)\n",
                     exploration.leastSheets);
+    if (exploration.notReopened > 0)
+        std::printf("left out     %d design(s) that waste less but laid out afresh need more boards\n",
+                    exploration.notReopened);
     if (exploration.suggestions.empty())
         std::printf("no design variation found that wastes less%s\n",
                     exploration.leastSheets >= before.sheets
-                        ? ": shrunk as far as its constraints allow it needs as many sheets, and no change "
-                          "within them that the search found wastes less"
+                        ? ": shrunk as far as its constraints allow it needs as many sheets"
                         : "");
     std::printf("seconds       %.2f%s\n", exploration.seconds,
                 exploration.stopped ? " (stopped at the time limit)" : "");

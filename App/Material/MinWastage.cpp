@@ -224,7 +224,7 @@ int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
 /// design unchanged), `count` chosen by nextPick that reopen.
 template <typename Reopens>
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count,
-                                Reopens&& reopens)
+                                Reopens&& reopens, int& notReopened)
 {
     const int all = static_cast<int>(pool.size());  // read before the move: argument order is unspecified
     pool = keepBest(std::move(pool), all);
@@ -241,8 +241,10 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
     for (int pick;
          static_cast<int>(chosen.size()) < count && (pick = nextPick(pool, taken, chosen, start)) >= 0;) {
         taken[pick] = true;
-        if (reopens(pool[pick].design))  // else not one the user could go on with: the next
+        if (reopens(pool[pick].design))
             chosen.push_back({pool[pick].design, pool[pick].path});
+        else  // not one the user could go on with: the next
+            ++notReopened;
     }
     return chosen;
 }
@@ -316,7 +318,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                                                 std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
         return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
     };
-    exploration.suggestions = diverse(std::move(pool), exploration.start, options.suggestions, reopens);
+    exploration.suggestions =
+        diverse(std::move(pool), exploration.start, options.suggestions, reopens, exploration.notReopened);
     exploration.seconds = std::chrono::duration<double>(Clock::now() - started).count();
     return exploration;
 }

@@ -39,6 +39,7 @@ struct Exploration {
     bool stopped = false;  ///< cancelled, or the time limit ended it
     int designsImproved = 0;
     int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
+    int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
     double usageBefore() const { return 1 - start.wastage; }
 };
 
