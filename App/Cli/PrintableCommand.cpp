@@ -11,7 +11,9 @@
 #include <GProp_GProps.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -42,8 +44,39 @@ std::optional<printable::Size> buildVolume(const std::string& text)
 /// Printer profiles: the gap a printer needs so parts do not fuse (FDM 0.4 mm, resin 0.2 mm).
 const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
+/// report.json: what the run made and measured, for tools and tests (docs/formats.md).
+nlohmann::json report(const printable::Fitted& fitted, const printable::Printable& onTheBed,
+                      const printable::Check& check, double gap, double seconds,
+                      const std::vector<std::string>& files)
+{
+    nlohmann::json bodies = nlohmann::json::array();
+    for (const printable::Body& b : fitted.printable.bodies) {
+        GProp_GProps volume;
+        BRepGProp::VolumeProperties(b.shape, volume);
+        bodies.push_back({{"name", b.name}, {"volume_mm3", volume.Mass()}});
+    }
+    const bool ok = check.invalid.empty() && check.clearance >= gap - 0.01;
+    std::vector<std::string> names;  // in the output folder
+    for (const std::string& path : files)
+        names.push_back(std::filesystem::path(path).filename().string());
+    return {{"format", "fabguide.printable-report"},
+            {"version", 1},
+            {"ok", ok},
+            {"scale", fitted.scale},
+            {"turned", fitted.turned},
+            {"size_mm", printable::sizeOf(onTheBed)},
+            {"gap_mm", gap},
+            {"clearance", {{"least_mm", check.clearance}, {"where", check.where}}},
+            {"invalid", check.invalid},
+            {"bodies", bodies},
+            {"notes", fitted.printable.notes},
+            {"seconds", seconds},
+            {"files", names}};
+}
+
 int run(const PrintableArguments& args)
 {
+    const auto started = std::chrono::steady_clock::now();
     io::checkWritableFolder(args.output);  // before minutes of geometry, not after
     io::OutputBatch files;
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
@@ -69,8 +102,14 @@ int run(const PrintableArguments& args)
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
-    for (const std::string& path : io::writePrintFiles(onTheBed, args.output))
+    std::vector<std::string> written = io::writePrintFiles(onTheBed, args.output);
+    for (const std::string& path : written)
         std::printf("wrote %s\n", path.c_str());
+    const std::string reportPath = (std::filesystem::path(args.output) / "report.json").string();
+    written.push_back(reportPath);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    io::writeJsonFile(reportPath, report(fitted, onTheBed, check, gap, seconds, written));
+    std::printf("wrote %s\n", reportPath.c_str());
     files.commit();
     return check.invalid.empty() && check.clearance >= gap - 0.01 ? 0 : 1;
 }

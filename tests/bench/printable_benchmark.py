@@ -1,8 +1,8 @@
 """Print-in-place on the thesis' eight works-like examples (Table 4.1, thesis 4.5): per example the bodies, the
 least clearance along every motion and the time at full size, then fitted to a desktop printer's build volume
 (`--fit`) and sliced there by PrusaSlicer. Run alone: python3 tests/bench/printable_benchmark.py [build-dir]."""
+import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -18,20 +18,19 @@ FIT = "x".join(map(str, VOLUME))
 
 
 def printable(build, name, out, *options):
+    """One run, as its report.json gives it (docs/formats.md); the error's last line when it failed."""
     started = time.monotonic()
     run = subprocess.run([os.path.join(build, "fabguide"), "printable",
                           os.path.join(ROOT, "examples", name + ".workslike.json"), "-o", out, *options],
                          capture_output=True, text=True)
     seconds = time.monotonic() - started
-    found = re.search(r"minimum clearance ([0-9.]+) mm", run.stdout)
-    scale = re.search(r"^scale ([0-9.]+): fits \S+ mm(, turned)?", run.stdout, re.M)
-    size = re.search(r"^size (.*) mm$", run.stdout, re.M)
-    return {"ok": run.returncode == 0, "seconds": seconds,
-            "bodies": len(re.findall(r"^body ", run.stdout, re.M)),
-            "clearance": float(found.group(1)) if found else None,
-            "scale": float(scale.group(1)) if scale else 1.0, "turned": bool(scale and scale.group(2)),
-            "size": size.group(1) if size else "",
-            "notes": re.findall(r"^note: (.*)$", run.stdout, re.M),
+    path = os.path.join(out, "report.json")
+    report = json.load(open(path)) if os.path.exists(path) else {}
+    return {"ok": run.returncode == 0, "seconds": seconds, "bodies": len(report.get("bodies", [])),
+            "clearance": report.get("clearance", {}).get("least_mm"), "scale": report.get("scale", 1.0),
+            "turned": report.get("turned", False),
+            "size": " x ".join("{:.1f}".format(v) for v in report.get("size_mm", [])),
+            "notes": report.get("notes", []),
             "error": run.stderr.strip().splitlines()[-1] if run.returncode and run.stderr.strip() else ""}
 
 

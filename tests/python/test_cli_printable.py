@@ -17,16 +17,21 @@ def printable(fabguide_cli, source_dir, tmp_path, name, *options):
     return run, out
 
 
-def clearance(stdout):
-    return float(re.search(r"minimum clearance ([0-9.]+) mm", stdout).group(1))
+def report(out):
+    """The run's report.json (docs/formats.md)."""
+    return json.loads((out / "report.json").read_text())
+
+
+def clearance(out):
+    return report(out)["clearance"]["least_mm"]
 
 
 def test_the_cellphone_prints_in_place_and_slices(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "cellphone")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
-    volumes = [float(v) for v in re.findall(r"^body .* ([0-9.]+) mm3$", run.stdout, re.M)]
-    assert len(volumes) == 3
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)
+    volumes = [b["volume_mm3"] for b in report(out)["bodies"]]
+    assert len(volumes) == 3 and report(out)["ok"]
     # admesh: three closed parts, nothing to fix, the volume of the bodies.
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*3\b", mesh), mesh
@@ -49,9 +54,10 @@ def test_the_cellphone_prints_in_place_and_slices(fabguide_cli, source_dir, tmp_
 def test_the_crate_bed_gets_pins_and_separate_links(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "crate-bed", "--printer", "resin")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) >= 0.2 - 0.01
+    assert clearance(out) >= 0.2 - 0.01
+    bodies = [b["name"] for b in report(out)["bodies"]]
     for link in ("head pivot left", "head pivot right", "foot pivot left", "foot pivot right"):
-        assert "body " + link + " link" in run.stdout
+        assert link + " link" in bodies
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*7\b", mesh), mesh  # bed, two boards, four links
 
@@ -59,13 +65,13 @@ def test_the_crate_bed_gets_pins_and_separate_links(fabguide_cli, source_dir, tm
 def test_the_sofa_bunks_facing_pivots_get_links_in_recesses(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "sofa-bunk")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # along both configurations, links included
-    links = re.findall(r"^body bunk pivot (left|right) link +([0-9.]+) mm3$", run.stdout, re.M)
-    assert len(links) == 2 and all(float(v) > 0 for _, v in links)
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)  # along both configurations, links included
+    links = [b for b in report(out)["bodies"] if b["name"] in ("bunk pivot left link", "bunk pivot right link")]
+    assert len(links) == 2 and all(b["volume_mm3"] > 0 for b in links)
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh
     assert re.search(r"Backwards edges\s*:\s*0\b", mesh), mesh
-    assert "note: " not in run.stdout  # the headrest hinge hangs its yokes on the seat across its 20 mm stand-off
+    assert report(out)["notes"] == []  # the headrest hinge hangs its yokes on the seat across its 20 mm stand-off
 
 
 def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_path):
@@ -83,16 +89,16 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
 
 
 def test_the_box_with_a_lid_prints_its_drawer_in_its_bay(fabguide_cli, source_dir, tmp_path):
-    run, _ = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
-    assert "slides free" not in run.stdout  # the bay guides it
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)
+    assert not any("slides free" in n for n in report(out)["notes"])  # the bay guides it
 
 
 def test_a_scaled_print_keeps_the_gap_and_joints_stand_proud_of_thin_parts_or_are_refused(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "crate-bed", "--scale", "0.2")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)  # the gap stays in mm
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     x = re.search(r"Min X\s*=\s*([-0-9.]+), Max X\s*=\s*([-0-9.]+)", mesh)
     assert x and float(x.group(2)) - float(x.group(1)) < 1000 * 0.2 + 30  # a fifth of the bed, plus the links
@@ -100,8 +106,9 @@ def test_a_scaled_print_keeps_the_gap_and_joints_stand_proud_of_thin_parts_or_ar
     # (1.4 mm) there is no room for them.
     run, out = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.2")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
-    assert "note: lid hinge: its round parts are 3.20 mm across, proud of its 2.80 mm thin part" in run.stdout
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)
+    assert any(n.startswith("lid hinge: its round parts are 3.20 mm across, proud of its 2.80 mm thin part")
+               for n in report(out)["notes"])
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*3\b", mesh), mesh
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.1")
@@ -113,7 +120,7 @@ def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide
     # Pocket doors on sliding hinges (slotted yokes), a flip-up flap, a two-cuboid drawer, a lid.
     run, out = printable(fabguide_cli, source_dir, tmp_path, "cabinet")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh  # the drawer's front and box stay one body
 
@@ -127,9 +134,9 @@ def test_the_cabinet_prints_at_a_large_gap_and_at_desktop_scales(fabguide_cli, s
     assert run.returncode == 0, run.stdout + run.stderr
     gap = float(options[1]) if options[0] == "--gap" else 0.4
     scale = float(options[1]) if options[0] == "--scale" else 1.0
-    assert clearance(run.stdout) == pytest.approx(gap, abs=0.01)
-    volumes = dict(re.findall(r"^body (.*?) +([0-9.]+) mm3$", run.stdout, re.M))
-    assert float(volumes["carcass"]) > 30e6 * scale ** 3, volumes  # 37 litres at 1:1 less its compartments
+    assert clearance(out) == pytest.approx(gap, abs=0.01)
+    volumes = {b["name"]: b["volume_mm3"] for b in report(out)["bodies"]}
+    assert volumes["carcass"] > 30e6 * scale ** 3, volumes  # 37 litres at 1:1 less its compartments
     mesh = subprocess.run(["admesh", str(out / "assembly.stl")], capture_output=True, text=True).stdout
     assert re.search(r"Number of parts\s*:\s*6\b", mesh), mesh
 
@@ -137,12 +144,12 @@ def test_the_cabinet_prints_at_a_large_gap_and_at_desktop_scales(fabguide_cli, s
 def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "sliding-box")
     assert run.returncode == 0, run.stdout + run.stderr
-    assert "slides free" not in run.stdout
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)  # also all along the slide open
-    volumes = dict(re.findall(r"^body (\w+)\s+([0-9.]+) mm3$", run.stdout, re.M))
+    assert not any("slides free" in n for n in report(out)["notes"])
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)  # also all along the slide open
+    volumes = {b["name"]: b["volume_mm3"] for b in report(out)["bodies"]}
     # The box gained a tongue; the lid (100 x 60 x 8 less its gap) lost a groove.
-    assert float(volumes["box"]) > 100 * 60 * 40 - 90 * 50 * 35
-    assert float(volumes["lid"]) < 100 * 60 * 8
+    assert volumes["box"] > 100 * 60 * 40 - 90 * 50 * 35
+    assert volumes["lid"] < 100 * 60 * 8
     gcode = tmp_path / "box.gcode"
     sliced = subprocess.run(["prusa-slicer", "--export-gcode", "--output", str(gcode), str(out / "assembly.3mf")],
                             capture_output=True, text=True, timeout=300)
@@ -152,11 +159,12 @@ def test_a_slide_without_a_cavity_runs_on_dovetail_rails(fabguide_cli, source_di
 def test_a_print_fitted_to_a_build_volume_slices_on_that_bed_as_one_object(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--fit", "250x210x210")
     assert run.returncode == 0, run.stdout + run.stderr
-    scale = float(re.search(r"^scale ([0-9.]+): fits 250x210x210 mm$", run.stdout, re.M).group(1))
+    assert not report(out)["turned"]
+    scale = report(out)["scale"]
     assert scale == pytest.approx(250 / 541.6, rel=0.01)  # 539 mm long (1 mm walls), and the hinge stands out
-    size = [float(v) for v in re.search(r"^size ([0-9.]+) x ([0-9.]+) x ([0-9.]+) mm$", run.stdout, re.M).groups()]
+    size = report(out)["size_mm"]
     assert size[0] == pytest.approx(250, abs=0.05) and size[1] <= 210 and size[2] <= 210
-    assert clearance(run.stdout) == pytest.approx(0.4, abs=0.01)
+    assert clearance(out) == pytest.approx(0.4, abs=0.01)
     # PrusaSlicer slices it on that bed and keeps the bodies together: one object, a part per body.
     bed = ["--bed-shape", "0x0,250x0,250x210,0x210", "--max-print-height", "210"]
     sliced = subprocess.run(["prusa-slicer", "--export-gcode", *bed, "--output", str(tmp_path / "t.gcode"),
@@ -172,10 +180,10 @@ def test_a_print_fitted_to_a_build_volume_slices_on_that_bed_as_one_object(fabgu
     # The tablet (320 x 420 mm open) prints larger turned a quarter: its 420 along the bed's 250.
     run, out = printable(fabguide_cli, source_dir, tmp_path, "tablet", "--fit", "250x210x210")
     assert run.returncode == 0, run.stdout + run.stderr
-    scale = float(re.search(r"^scale ([0-9.]+): fits 250x210x210 mm, turned a quarter about z$", run.stdout,
-                            re.M).group(1))
-    assert scale == pytest.approx(250 / 420, rel=0.01)
-    assert re.search(r"^size 250\.0 x 19\d\.\d x ", run.stdout, re.M), run.stdout
+    assert report(out)["turned"]
+    assert report(out)["scale"] == pytest.approx(250 / 420, rel=0.01)
+    size = report(out)["size_mm"]
+    assert size[0] == pytest.approx(250, abs=0.05) and 190 <= size[1] < 200, size
     sliced = subprocess.run(["prusa-slicer", "--export-gcode", *bed, "--output", str(tmp_path / "tablet.gcode"),
                              str(out / "assembly.3mf")], capture_output=True, text=True, timeout=300)
     assert sliced.returncode == 0, sliced.stdout + sliced.stderr
