@@ -1,0 +1,152 @@
+// Print-in-place geometry (thesis 4.5) below the command line: gaps, sweeps, joint geometry and the clearance
+// check on two-part fixtures, each measured with OpenCASCADE (volumes, validity, distances) in milliseconds.
+#include "IO/WorkslikeFormat.h"
+#include "Printable/Checks.h"
+#include "Printable/Gaps.h"
+#include "Printable/Joints.h"
+#include "Printable/Motion.h"
+#include "Printable/Sweeps.h"
+
+#include <gtest/gtest.h>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+
+using namespace fabguide;
+using namespace fabguide::printable;
+
+namespace {
+
+/// A 40 x 40 x 10 box with a 4 mm lid on it; the lid hinged at the box's far top edge (open: 90°) or
+/// sliding along x (open: 30 mm).
+function::Model twoParts(const std::string& joint, const std::string& pose)
+{
+    return io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike", "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 40, 10]}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 10], "max": [40, 40, 14]}]}],
+        "joints": [)" + joint + R"(], "configurations": [{"name": "open", "poses": {)" +
+                                                   pose + R"(}}]})"));
+}
+
+function::Model hinged()
+{
+    return twoParts(
+        R"({"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]})",
+        R"("lid hinge": -90)");
+}
+
+function::Model slid()
+{
+    return twoParts(R"({"name": "lid slide", "type": "slide", "part": "lid", "axis": "x"})",
+                    R"("lid slide": 30)");
+}
+
+double distance(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    BRepExtrema_DistShapeShape d(a, b);
+    return d.IsDone() ? d.Value() : -1;
+}
+
+bool valid(const TopoDS_Shape& s)
+{
+    return BRepCheck_Analyzer(s).IsValid();
+}
+
+}  // namespace
+
+TEST(Gaps, TheMovingPartStepsBackFromTheFaceItTouches)
+{
+    const function::Model m = slid();
+    const std::vector<Coordinates> gapped = printable::gapped(m, 0.4);
+    ASSERT_EQ(gapped.size(), 2u);
+    EXPECT_EQ(gapped[0], (Coordinates{0, 40, 0, 40, 0, 10}));  // the box stands still
+    EXPECT_NEAR(gapped[1][4], 10.4, 1e-9);                     // the lid, lifted by the gap
+    EXPECT_NEAR(gapped[1][5], 14, 1e-9);
+    EXPECT_NEAR(distance(box(gapped[0]), box(gapped[1])), 0.4, 1e-9);
+}
+
+TEST(Sweeps, AShiftSweepsAPrismAndATurnAQuarterCylinder)
+{
+    const TopoDS_Shape shifted = turnedThenShifted(box({0, 10, 0, 10, 0, 10}), gp_Ax1(), 0, gp_Vec(5, 0, 0));
+    EXPECT_TRUE(valid(shifted));
+    EXPECT_NEAR(volumeOf(shifted), 15 * 10 * 10, 1e-6);
+    // A 10 x 1 board turned a quarter about z through its corner sweeps a quarter disc of radius √101 (its
+    // far corner's) and the halves of the board beyond it, where it starts and ends: exactly.
+    const TopoDS_Shape turned = turnedThenShifted(
+        box({0, 10, 0, 1, 0, 10}), gp_Ax1(gp_Pnt(0, 0, 0), gp::DZ()), kPi / 2, gp_Vec(0, 0, 0));
+    EXPECT_TRUE(valid(turned));
+    EXPECT_NEAR(volumeOf(turned), 10 * (kPi * 101 / 4 + 2 * 10 * 1 / 2.0), 1e-6);
+}
+
+TEST(Sweeps, AHingedLidSweepsItsQuarterTurnAboutTheEdge)
+{
+    const function::Model m = hinged();
+    const std::vector<Coordinates> boxes = boxesOf(m, 1, gapped(m, 0.4));
+    const std::vector<TopoDS_Shape> swept = sweep(m, 1, 0, boxes);
+    ASSERT_FALSE(swept.empty());
+    double volume = 0;
+    for (const TopoDS_Shape& s : swept) {
+        EXPECT_TRUE(valid(s));
+        volume += volumeOf(s);
+    }
+    // The lid (40 wide, 39.6 deep, 3.6 thick) turned up about its far edge: about a quarter cylinder of
+    // radius 39.6, 40 long.
+    EXPECT_GT(volume, 0.8 * kPi * 39.6 * 39.6 / 4 * 40);
+    EXPECT_LT(volume, 1.3 * kPi * 39.6 * 39.6 / 4 * 40);
+}
+
+TEST(Motion, TheHingeTurnsTheLidUpAboutTheFarEdge)
+{
+    const function::Model m = hinged();
+    const gp_Ax1 axis = hingeAxis(m, m.joints[0]);
+    EXPECT_NEAR(axis.Location().Y(), 40, 1e-9);
+    EXPECT_NEAR(axis.Location().Z(), 10, 1e-9);
+    // Opened, the lid's near edge (y = 0) stands 40 mm above the hinge.
+    const gp_Pnt near = gp_Pnt(20, 0, 10).Transformed(partMotion(m, 1, 0, 1.0));
+    EXPECT_NEAR(near.Y(), 40, 1e-6);
+    EXPECT_NEAR(near.Z(), 50, 1e-6);
+}
+
+TEST(Joints, AHingeGetsAPinAKnuckleAndTwoYokesThatClearEachOther)
+{
+    const function::Model m = hinged();
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    for (const Body& b : p.bodies)
+        EXPECT_TRUE(valid(b.shape)) << b.name;
+    // The lid gained its knuckle and pin (more than its 40 x 39.6 x 3.6 gapped slab less the yokes' room);
+    // the box its yokes; the two are the gap apart.
+    EXPECT_GT(volumeOf(p.bodies[0].shape), 40 * 40 * 10 - 1);
+    EXPECT_NEAR(distance(p.bodies[0].shape, p.bodies[1].shape), 0.4, 0.01);
+    const Check c = check(m, p, 0.4, 8);
+    EXPECT_TRUE(c.invalid.empty());
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
+TEST(Joints, AnUnguidedSlideRunsOnADovetailRail)
+{
+    const function::Model m = slid();
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    EXPECT_TRUE(p.notes.empty()) << p.notes.front();
+    // The box grew a tongue above its top, the lid lost a groove: bigger and smaller than their slabs.
+    EXPECT_GT(volumeOf(p.bodies[0].shape), 40 * 40 * 10 + 1);
+    EXPECT_LT(volumeOf(p.bodies[1].shape), 40 * 40 * 3.6 - 1);
+    const Check c = check(m, p, 0.4, 8);
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
+TEST(Checks, TheClearanceIsTheLeastDistanceAlongTheMotionAndZeroWhenBodiesMeet)
+{
+    const function::Model m = slid();
+    Printable apart;
+    apart.bodies = {{"box", 0, -1, box({0, 40, 0, 40, 0, 10})},
+                    {"lid", 1, -1, box({0, 40, 0, 40, 10.5, 14})}};
+    Check c = check(m, apart, 1.0, 8);
+    EXPECT_NEAR(c.clearance, 0.5, 1e-6);
+    Printable meeting = apart;
+    meeting.bodies[1].shape = box({0, 40, 0, 40, 9, 14});
+    c = check(m, meeting, 1.0, 8);
+    EXPECT_EQ(c.clearance, 0);
+    EXPECT_NE(c.where.find("box"), std::string::npos);
+    EXPECT_NE(c.where.find("lid"), std::string::npos);
+}
