@@ -10,11 +10,6 @@ namespace fabguide::printable {
 
 namespace {
 
-bool movedByJoint(const Model& m, int part)
-{
-    return jointMoving(m, part) >= 0;
-}
-
 /// The modelled side of cuboid c that configuration k turns onto side `side` of its posed box, or -1 (a turn
 /// by other than a multiple of 90° leaves no face there).
 int modelledSide(const Model& m, int part, int c, int k, int side)
@@ -55,13 +50,14 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                     function::evaluate(m, function::posed(m, {static_cast<int>(c), static_cast<Side>(s)}, k));
         for (size_t a = 0; a < m.cuboids.size(); ++a)
             for (size_t b = 0; b < m.cuboids.size(); ++b) {
-                if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity())
-                    continue;
+                if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity() ||
+                    (standsStill(m, partOf[a]) && standsStill(m, partOf[b]) && !m.cuboids[b].cavity()))
+                    continue;  // parts that stand still together print as one body (rigidBodies)
                 const Coordinates &ca = posed[a], &cb = posed[b];
                 const bool aSteps =
                     m.cuboids[b].cavity() ||
-                    (movedByJoint(m, partOf[a]) != movedByJoint(m, partOf[b]) ? movedByJoint(m, partOf[a])
-                                                                              : a > b);
+                    (standsStill(m, partOf[a]) != standsStill(m, partOf[b]) ? !standsStill(m, partOf[a])
+                                                                            : a > b);
                 if (!aSteps)
                     continue;
                 for (int axis = 0; axis < 3; ++axis) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace fabguide::printable {
 
@@ -108,6 +109,48 @@ gp_Trsf jointMotion(const Model& model, int j, int configuration, double t)
         }
     }
     return {};
+}
+
+bool standsStill(const Model& model, int part)
+{
+    return jointMoving(model, part) < 0;
+}
+
+std::vector<std::vector<int>> rigidBodies(const Model& model)
+{
+    const int parts = static_cast<int>(model.parts.size());
+    std::vector<int> body(parts);  // union-find: the first part of each one's body
+    std::iota(body.begin(), body.end(), 0);
+    const auto root = [&](int p) {
+        while (body[p] != p)
+            p = body[p] = body[body[p]];
+        return p;
+    };
+    const auto touch = [&](int c, int d) {  // solid cuboids touching or overlapping as modelled
+        const auto &a = model.cuboids[c].coordinates, &b = model.cuboids[d].coordinates;
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]) < -1e-6)
+                return false;
+        return !model.cuboids[c].cavity() && !model.cuboids[d].cavity();
+    };
+    for (int p = 0; p < parts; ++p)
+        for (int q = p + 1; q < parts; ++q)
+            if (standsStill(model, p) && standsStill(model, q))
+                for (int c : model.parts[p].cuboids)
+                    for (int d : model.parts[q].cuboids)
+                        if (touch(c, d))
+                            body[root(q)] = root(p);
+    std::vector<std::vector<int>> bodies;
+    std::vector<int> index(parts, -1);
+    for (int p = 0; p < parts; ++p) {
+        int& i = index[root(p)];
+        if (i < 0) {
+            i = static_cast<int>(bodies.size());
+            bodies.emplace_back();
+        }
+        bodies[i].push_back(p);
+    }
+    return bodies;
 }
 
 gp_Trsf partMotion(const Model& model, int part, int configuration, double t)

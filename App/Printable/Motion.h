@@ -9,6 +9,8 @@
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
+#include <vector>
+
 namespace fabguide::printable {
 
 using function::jointMoving;
@@ -19,6 +21,14 @@ using function::poseOf;
 /// before drawers come out, a pocket door (sliding hinge) swings open, then slides in; a double pivot follows
 /// its four-bar motion.
 gp_Trsf jointMotion(const function::Model& model, int j, int configuration, double t);
+
+/// Whether no joint moves part p: it stands still in every configuration, with every other such part.
+bool standsStill(const function::Model& model, int part);
+
+/// The parts printed as one body each (issue 15): each part a joint moves on its own, and the parts that
+/// stand still grouped where they touch as modelled (a carcass and its legs never move apart: one body, no
+/// gap between them), groups in the order of their first part.
+std::vector<std::vector<int>> rigidBodies(const function::Model& model);
 
 /// Part p's motion: its joint's, then its base's, out to the ground.
 gp_Trsf partMotion(const function::Model& model, int part, int configuration, double t);

@@ -118,25 +118,39 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
     }
 }
 
-/// The parts' shapes as bodies, before the links, faces merged; a part OpenCASCADE lost is an error, one cut
-/// in pieces a note.
+/// A body's name: its parts' names, joined by " + " (a carcass and its legs: "carcass + legs").
+std::string bodyName(const Model& m, const std::vector<int>& parts)
+{
+    std::string name;
+    for (int p : parts)
+        name += (name.empty() ? "" : " + ") + m.parts[p].name;
+    return name;
+}
+
+/// The parts' shapes as bodies (rigidBodies: parts that stand still together fused), before the links, faces
+/// merged; a body OpenCASCADE lost is an error, one cut in pieces a note.
 void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
-    for (size_t p = 0; p < m.parts.size(); ++p) {
-        ShapeUpgrade_UnifySameDomain unify(shapes[p], true, true, false);
+    const std::vector<std::vector<int>> bodies = rigidBodies(m);
+    for (size_t b = 0; b < bodies.size(); ++b) {
+        TopoDS_Shape shape;
+        for (int p : bodies[b])
+            shape = fuse(shape, shapes[p]);
+        const std::string name = bodyName(m, bodies[b]);
+        ShapeUpgrade_UnifySameDomain unify(shape, true, true, false);
         unify.Build();
         int pieces = 0;
         for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
             ++pieces;
         if (pieces == 0 || volumeOf(unify.Shape()) < 1e-6)  // OpenCASCADE lost it without an error
             throw std::runtime_error(
-                "geometry: nothing is left of part '" + m.parts[p].name +
+                "geometry: nothing is left of part '" + name +
                 "' after its cavities and joints were cut; try another --gap or --scale");
         if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
-            out.notes.push_back(m.parts[p].name + ": falls apart into " + std::to_string(pieces) +
+            out.notes.push_back(name + ": falls apart into " + std::to_string(pieces) +
                                 " pieces; check which way its neighbours' joints turn");
-        out.bodies.insert(out.bodies.begin() + static_cast<long>(p),
-                          {m.parts[p].name, static_cast<int>(p), -1, unify.Shape()});
+        out.bodies.insert(out.bodies.begin() + static_cast<long>(b),
+                          {name, bodies[b].front(), -1, unify.Shape()});
     }
 }
 
@@ -172,8 +186,8 @@ Printable makePrintable(const Model& m, const Printer& printer)
 std::vector<std::string> bodyNames(const Model& model)
 {
     std::vector<std::string> names;
-    for (const function::Part& p : model.parts)
-        names.push_back(p.name);
+    for (const std::vector<int>& body : rigidBodies(model))
+        names.push_back(bodyName(model, body));
     for (const Joint& j : model.joints)
         if (j.type == Joint::Type::DoublePivot)
             names.push_back(linkName(j));

@@ -20,7 +20,8 @@ struct Printer {
     double gap = 0.4;
 };
 
-/// One printed body: a part, or a double pivot's link (part -1, joint set).
+/// One printed body: a part (with the parts that stand still with it, `part` the first), or a double pivot's
+/// link (part -1, joint set).
 struct Body {
     std::string name;
     int part = -1, joint = -1;
@@ -41,7 +42,8 @@ function::Model solvedToPrint(const function::Model& model, double scale);
 /// thin for its geometry at this gap.
 Printable makePrintable(const function::Model& solved, const Printer& printer);
 
-/// The names of the bodies makePrintable makes, in its order: each part's, then each double pivot's link.
+/// The names of the bodies makePrintable makes, in its order: each rigid body's (rigidBodies: its parts'
+/// names joined by " + "), then each double pivot's link.
 std::vector<std::string> bodyNames(const function::Model& model);
 
 /// Width, depth and height (x, y, z) in mm: of a print's bodies, or of a printer's build volume.

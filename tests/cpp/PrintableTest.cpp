@@ -150,3 +150,29 @@ TEST(Checks, TheClearanceIsTheLeastDistanceAlongTheMotionAndZeroWhenBodiesMeet)
     EXPECT_NE(c.where.find("box"), std::string::npos);
     EXPECT_NE(c.where.find("lid"), std::string::npos);
 }
+
+TEST(RigidBodies, PartsThatStandStillTogetherPrintAsOneBody)
+{
+    // The hinged box on a plinth that no joint moves: box and plinth are one body with no gap between them,
+    // the lid its own; a loose block standing still away from them is a body of its own.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 10], "max": [40, 40, 20]}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 20], "max": [40, 40, 24]}]},
+                  {"name": "plinth", "cuboids": [{"name": "plinth", "min": [5, 5, 0], "max": [35, 35, 10]}]},
+                  {"name": "block", "cuboids": [{"name": "block", "min": [60, 0, 0], "max": [70, 10, 10]}]}],
+        "joints": [{"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]}],
+        "configurations": [{"name": "open", "poses": {"lid hinge": -90}}]})"));
+    EXPECT_EQ(rigidBodies(m), (std::vector<std::vector<int>>{{0, 2}, {1}, {3}}));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    EXPECT_EQ(p.bodies[0].name, "box + plinth");
+    EXPECT_EQ(p.bodies[1].name, "lid");
+    EXPECT_EQ(p.bodies[2].name, "block");
+    EXPECT_TRUE(valid(p.bodies[0].shape));
+    EXPECT_TRUE(p.notes.empty())
+        << p.notes.front();  // one piece: the plinth is not stepped back from the box
+    EXPECT_GT(volumeOf(p.bodies[0].shape), 40 * 40 * 10 + 30 * 30 * 10 - 1);
+    EXPECT_EQ(bodyNames(m), (std::vector<std::string>{"box + plinth", "lid", "block"}));
+    EXPECT_GE(check(m, p, 0.4, 8).clearance, 0.4 - 0.01);
+}
