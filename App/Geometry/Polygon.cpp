@@ -202,6 +202,60 @@ Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons)
     return combine(outline, polygons, ClipperLib::ctDifference, "cutting slots");
 }
 
+namespace {
+
+/// The sign of the turn a -> b -> c: +1 left, -1 right, 0 straight on.
+int turn(const Point2& a, const Point2& b, const Point2& c)
+{
+    const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return (cross > 0) - (cross < 0);
+}
+
+/// Whether p, on the line through a and b, lies within their box.
+bool within(const Point2& a, const Point2& b, const Point2& p)
+{
+    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+}
+
+/// Whether segments ab and cd share a point.
+bool meet(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+    const int d1 = turn(c, d, a), d2 = turn(c, d, b), d3 = turn(a, b, c), d4 = turn(a, b, d);
+    if (d1 * d2 < 0 && d3 * d4 < 0)
+        return true;
+    return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) || (d3 == 0 && within(a, b, c)) ||
+           (d4 == 0 && within(a, b, d));
+}
+
+}  // namespace
+
+std::pair<int, int> selfCrossing(const Polygon& polygon)
+{
+    const int n = static_cast<int>(polygon.size());
+    std::vector<int> byLeft(n);  // edges by their box's left side, for a sweep along x
+    for (int i = 0; i < n; ++i)
+        byLeft[i] = i;
+    const auto left = [&](int i) { return std::min(polygon[i].x, polygon[(i + 1) % n].x); };
+    const auto right = [&](int i) { return std::max(polygon[i].x, polygon[(i + 1) % n].x); };
+    std::sort(byLeft.begin(), byLeft.end(), [&](int a, int b) { return left(a) < left(b); });
+    for (int u = 0; u < n; ++u)
+        for (int v = u + 1; v < n && left(byLeft[v]) <= right(byLeft[u]); ++v) {
+            const int i = std::min(byLeft[u], byLeft[v]), j = std::max(byLeft[u], byLeft[v]);
+            if (j == i + 1 || (i == 0 && j == n - 1)) {  // neighbours: only folding back onto each other
+                const int shared = j == i + 1 ? j : 0;
+                const Point2 &p = polygon[shared], &a = polygon[(shared + n - 1) % n],
+                             &b = polygon[(shared + 1) % n];
+                if (turn(a, p, b) == 0 && (b.x - p.x) * (a.x - p.x) + (b.y - p.y) * (a.y - p.y) > 0)
+                    return {i, j};
+                continue;
+            }
+            if (meet(polygon[i], polygon[(i + 1) % n], polygon[j], polygon[(j + 1) % n]))
+                return {i, j};
+        }
+    return {-1, -1};
+}
+
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
 {
     ClipperLib::Clipper clipper;

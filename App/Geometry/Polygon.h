@@ -38,6 +38,11 @@ double area(const Outline& outline);
 
 Box2 bounds(const Polygon& polygon);
 
+/// Two edges of the polygon that cross or touch other than at their shared corner (edge i runs from point i
+/// to point i + 1), or {-1, -1} when it is simple. Edges are compared by their boxes first: fast on a few
+/// thousand points.
+std::pair<int, int> selfCrossing(const Polygon& polygon);
+
 /// True when the outline is a hole-free axis-aligned rectangle.
 bool isRectangle(const Outline& outline);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace fabguide::io {
 
@@ -39,8 +40,19 @@ geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& pat
         const nlohmann::json& point = json[k];
         if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number())
             throw FormatError(at(path, k) + ": must be a point [x, y], got " + point.dump());
-        polygon.push_back({point[0].get<double>(), point[1].get<double>()});
+        const geometry::Point2 q{point[0].get<double>(), point[1].get<double>()};
+        if (polygon.empty() || q.x != polygon.back().x || q.y != polygon.back().y)  // a repeated point: once
+            polygon.push_back(q);
     }
+    while (polygon.size() > 1 && polygon.front().x == polygon.back().x &&
+           polygon.front().y == polygon.back().y)
+        polygon.pop_back();  // closed by repeating the first point
+    if (polygon.size() < 3)
+        throw FormatError(path + ": must be a list of at least 3 different [x, y] points");
+    if (const auto [i, j] = geometry::selfCrossing(polygon); i >= 0)
+        throw FormatError(path + ": crosses itself (its edges from point " + std::to_string(i) +
+                          " and from point " + std::to_string(j) +
+                          " meet); draw it as one closed loop that does not touch itself");
     const double area = geometry::signedArea(polygon);
     if (std::abs(area) < 1e-9)
         throw FormatError(path + ": encloses no area");
@@ -53,8 +65,18 @@ geometry::Outline readOutline(const Fields& part)
 {
     geometry::Outline outline{readPolygon(part.array("outline"), part.pathOf("outline"), true), {}};
     const nlohmann::json& holes = part.array("holes", true);
-    for (size_t k = 0; k < holes.size(); ++k)
-        outline.holes.push_back(readPolygon(holes[k], at(part.pathOf("holes"), k), false));
+    const geometry::Outline outer{outline.outer, {}};
+    for (size_t k = 0; k < holes.size(); ++k) {
+        const std::string path = at(part.pathOf("holes"), k);
+        outline.holes.push_back(readPolygon(holes[k], path, false));
+        double inside = 0;  // of the hole, within the outline
+        for (const geometry::Polygon& piece : geometry::intersect(outline.holes.back(), outer))
+            inside += std::abs(geometry::signedArea(piece));
+        const double area = std::abs(geometry::signedArea(outline.holes.back()));
+        if (inside < area * (1 - 1e-6))
+            throw FormatError(path + (inside > 0 ? ": crosses the outline" : ": lies outside the outline") +
+                              "; a hole must be inside the part");
+    }
     return outline;
 }
 
@@ -168,8 +190,13 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
     problem.settings = readSettings(document);
     problem.boards = readMasterBoards(document);
     const nlohmann::json& parts = root.array("parts");
-    for (size_t i = 0; i < parts.size(); ++i)
+    std::map<std::string, size_t> ids;
+    for (size_t i = 0; i < parts.size(); ++i) {
         problem.parts.push_back(readPart(parts[i], at("parts", i), i));
+        if (const auto [known, added] = ids.emplace(problem.parts[i].id, i); !added)
+            throw FormatError(at("parts", i) + ".id: \"" + problem.parts[i].id + "\" is used by parts[" +
+                              std::to_string(known->second) + "] too; give each part its own id");
+    }
     if (problem.parts.empty())
         throw FormatError("parts: at least one part is needed");
     return problem;

@@ -164,3 +164,22 @@ TEST(PackFormat, LayoutsReadBackAsWritten)
     bad["placements"][0]["part"] = "drawer";
     EXPECT_THROW(io::readLayout(bad, problem, io::PartNames::Ids), io::FormatError);
 }
+
+TEST(PackFormat, OutlinesThatCrossThemselvesHolesOutsideAndTwinIdsAreNamed)
+{
+    json doc = goodProblem();
+    doc["parts"][0] = json::parse(R"({"id": "tie", "outline": [[0, 0], [300, 400], [300, 0], [0, 400]]})");
+    EXPECT_EQ(errorOf(doc),
+              "parts[0].outline: crosses itself (its edges from point 0 and from point 2 meet); "
+              "draw it as one closed loop that does not touch itself");
+    doc["parts"][0] = json::parse(R"({"id": "seat", "outline": [[0, 0], [300, 0], [300, 300], [0, 300]],
+                                      "holes": [[[100, 100], [200, 100], [200, 200], [100, 200]],
+                                                [[250, 100], [350, 100], [350, 200], [250, 200]]]})");
+    EXPECT_EQ(errorOf(doc), "parts[0].holes[1]: crosses the outline; a hole must be inside the part");
+    doc["parts"][0]["holes"][1] = json::parse("[[400, 100], [450, 100], [450, 200], [400, 200]]");
+    EXPECT_EQ(errorOf(doc), "parts[0].holes[1]: lies outside the outline; a hole must be inside the part");
+    doc["parts"][0]["holes"].erase(1);
+    EXPECT_EQ(errorOf(doc), "");
+    doc["parts"][1]["id"] = "seat";
+    EXPECT_EQ(errorOf(doc), "parts[1].id: \"seat\" is used by parts[0] too; give each part its own id");
+}

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 using namespace fabguide::geometry;
 
 TEST(Polygon, RectangleIsCounterClockwise)
@@ -54,4 +57,22 @@ TEST(Polygon, SpansBetweenFollowTheOutline)
     ASSERT_EQ(high.size(), 1u);
     EXPECT_NEAR(high[0].second, 10, 1e-6);
     EXPECT_TRUE(spansBetween(ell, 31, 33).empty());
+}
+
+TEST(Polygon, SelfCrossingFindsTheEdgesThatMeet)
+{
+    using fabguide::geometry::selfCrossing;
+    EXPECT_EQ(selfCrossing({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), std::make_pair(-1, -1));
+    // A bow tie: the edges from points 0 and 2 cross.
+    EXPECT_EQ(selfCrossing({{0, 0}, {10, 10}, {10, 0}, {0, 10}}), std::make_pair(0, 2));
+    // A figure touching itself at a corner, and an edge folding back onto the one before it.
+    EXPECT_NE(selfCrossing({{0, 0}, {10, 0}, {5, 5}, {10, 10}, {0, 10}, {5, 5}}).first, -1);
+    EXPECT_NE(selfCrossing({{0, 0}, {10, 0}, {5, 0}, {5, 5}}).first, -1);
+    // A circle of 20,000 points is simple, and told so at once.
+    fabguide::geometry::Polygon circle;
+    for (int k = 0; k < 20000; ++k)
+        circle.push_back({100 * std::cos(k * 2 * M_PI / 20000), 100 * std::sin(k * 2 * M_PI / 20000)});
+    EXPECT_EQ(selfCrossing(circle), std::make_pair(-1, -1));
+    std::swap(circle[10], circle[15000]);
+    EXPECT_NE(selfCrossing(circle).first, -1);
 }
