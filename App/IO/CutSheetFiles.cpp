@@ -6,6 +6,9 @@
 
 #include <dxflib/dl_dxf.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -106,6 +109,14 @@ void writeObjects(DL_WriterA& dw)
     dw.sectionEnd();
 }
 
+/// The DXF layer of a drill: DRILL_<depth>MM ("DRILL_12MM", "DRILL_7.5MM"), so a depth survives the file.
+std::string drillLayer(const material::Drill& drill)
+{
+    char depth[32];
+    std::snprintf(depth, sizeof depth, "%g", std::round(drill.depth * 1000) / 1000);
+    return std::string("DRILL_") + depth + "MM";
+}
+
 }  // namespace
 
 std::string svg(const material::CutSheet& sheet, double stroke)
@@ -161,9 +172,12 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
     dw->tableEnd();
-    const std::pair<const char*, int> layers[] = {
-        {"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"DRILL", 3}, {"SHEET", 8}};
-    dw->tableLayers(5);
+    std::vector<std::pair<std::string, int>> layers = {{"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}};
+    for (const material::Drill& drill : sheet.drills)  // a layer per depth, which CAM maps to a drilling pass
+        if (std::none_of(layers.begin(), layers.end(),
+                         [&](const auto& l) { return l.first == drillLayer(drill); }))
+            layers.emplace_back(drillLayer(drill), 3);
+    dw->tableLayers(static_cast<int>(layers.size()));
     for (const auto& [name, colour] : layers)
         dxf.writeLayer(*dw, DL_LayerData(name, 0), DL_Attributes("", colour, -1, "CONTINUOUS", 1.0));
     dw->tableEnd();
@@ -204,7 +218,7 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
         polygon(mark, "ENGRAVE");
     for (const material::Drill& drill : sheet.drills)
         dxf.writeCircle(*dw, DL_CircleData(drill.at.x, drill.at.y, 0.0, drill.diameter / 2),
-                        DL_Attributes("DRILL", 256, -1, "BYLAYER", 1.0));
+                        DL_Attributes(drillLayer(drill), 256, -1, "BYLAYER", 1.0));
     for (const material::Label& label : sheet.labels)  // centred horizontally (1) and vertically (2)
         dxf.writeText(*dw,
                       DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,

@@ -204,8 +204,10 @@ def test_thick_boards_are_doweled_and_the_holes_reach_the_cut_sheets(doc, tmp_pa
     layout.export_cut_sheets(lay, str(tmp_path))
     svg = (tmp_path / "sheet-1.svg").read_text()
     assert svg.count("<circle") == 18 and 'data-depth="9"' in svg
-    drills = [e for e in ezdxf.readfile(str(tmp_path / "sheet-1.dxf")).modelspace() if e.dxf.layer == "DRILL"]
+    dxf = ezdxf.readfile(str(tmp_path / "sheet-1.dxf"))
+    drills = [e for e in dxf.modelspace() if e.dxf.layer == "DRILL_9MM"]  # the depth in the layer's name
     assert len(drills) == 18 and all(e.dxftype() == "CIRCLE" and e.dxf.radius == 4 for e in drills)
+    assert dxf.layers.has_entry("DRILL_9MM") and not dxf.audit().has_errors
 
 
 def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc):
