@@ -59,9 +59,11 @@ class Boxes:
 
     def __init__(self, obj):
         self.obj = obj
+        self.start = None
 
     def state(self):
-        return design.parts_of(self.obj)
+        self.start = design.snapshot(self.obj)  # previews move the inner volumes from here, so they come back
+        return self.start["parts"]
 
     def search(self, progress, cancel, **options):
         return fabguide_core.optimise(design.flatpack(self.obj), progress=progress, cancel=cancel, **options)
@@ -70,7 +72,7 @@ class Boxes:
         return [(step["parts"], step["usage"]) for step in suggestion["design"]["path"]]
 
     def show(self, state):
-        design.write_parts(self.obj, state)
+        design.write_parts(self.obj, state, self.start)
 
     def apply(self, state):
         design.apply_parts(self.obj, state)

@@ -1,7 +1,7 @@
 """Zero-waste toolbar in the real FreeCAD GUI: a coffee table of Part boxes becomes a flat-pack design with
-live usage; constraints are added from picked edges, faces and boxes; Suggest runs in the background with a
-progress bar, shows three thumbnails, slides the design along a path and applies the choice as one undo step;
-screenshots of the panel and the 3-D view."""
+live usage and a Grain per box in the property editor; constraints are added from picked edges, faces and boxes;
+Suggest runs in the background with a progress bar, shows three thumbnails, slides the design along a path and
+applies the choice as one undo step, the grain kept; screenshots of the panel and the 3-D view."""
 import json
 import os
 import re
@@ -27,6 +27,37 @@ def box(label, size, at):
     return b
 
 
+def property_rows(obj):
+    """{group: [(property, value)]} as the property editor shows `obj` selected (the tab with a FabGuide group,
+    shown "Fab Guide")."""
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(obj)
+    guitest.settle()
+    for editor in Gui.getMainWindow().findChildren(QtGui.QTreeView):
+        if editor.metaObject().className() != "Gui::PropertyEditor::PropertyEditor":
+            continue
+        model, rows = editor.model(), {}
+        for g in range(model.rowCount()):
+            group = model.index(g, 0)
+            names = [model.index(r, 0, group) for r in range(model.rowCount(group))]
+            rows[group.data().replace(" ", "")] = [(n.data(), n.sibling(n.row(), 1).data()) for n in names]
+        if "FabGuide" in rows:
+            return rows
+    return {}
+
+
+def shelf_along_the_grain(d):
+    """Whether the layout lays the shelf with its length (x) along the sheet's grain (its width)."""
+    laid = json.loads(d.LayoutJson)
+    shelf = next(p for p in laid["layout"]["placements"] if p["part"] == "shelf")
+    return shelf["rotation"] in (0, 180) and shelf["width"] == state["parts"]["shelf"].Length.Value
+
+
+def places(parts):
+    """Parts as a suggestion's path gives them: where they are and their sizes (no grain)."""
+    return [{key: p[key] for key in ("id", "position", "size")} for p in parts]
+
+
 def boxes_become_a_design_with_live_usage():
     Gui.activateWorkbench("FabGuideWorkbench")
     state["doc"] = doc = guitest.new_document("Table")
@@ -45,6 +76,15 @@ def boxes_become_a_design_with_live_usage():
     assert d.MasterBoards[0].Thickness.Value == 12
     assert 0.5 < d.Usage <= 1 and d.Status.startswith("Usage"), d.Status
     state["parts"] = {p.Label: p for p in parts}
+    rows = property_rows(parts[3])
+    assert rows["FabGuide"] == [("Grain", "Free")], rows
+    d.MasterBoards[0].Grain = "Along width"
+    parts[3].Grain = "X"  # the shelf's length along the sheet's grain, from here on
+    parts[1].Grain = parts[2].Grain = "Z"
+    doc.recompute()
+    assert property_rows(parts[3])["FabGuide"] == [("Grain", "X")]
+    print("screenshot: " + guitest.screenshot("flatpack_grain_property"))
+    assert shelf_along_the_grain(d) and "Invalid" not in d.State, d.Status
 
 
 def constraints_from_picked_edges_faces_and_boxes():
@@ -98,6 +138,7 @@ def an_edit_keeps_the_constraints():
 def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     doc, d = state["doc"], state["design"]
     before = design.parts_of(d)
+    space = design.inner_volumes(d)[0].Placement.Base
     guitest.isometric()
     Gui.Selection.clearSelection()
     Gui.runCommand("FabGuide_Suggest")
@@ -114,7 +155,7 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     assert re.match(r"1: 1 sheet\(s\), waste 0\.\d\d m² \(-\d+%\)$", cards[0].text()), cards[0].text()
     # The slider moves the design along the path, live, without an undo step.
     panel.slider.setValue(0)
-    assert design.parts_of(d) == panel.result["suggestions"][0]["design"]["path"][0]["parts"]
+    assert places(design.parts_of(d)) == panel.result["suggestions"][0]["design"]["path"][0]["parts"]
     panel.slider.setValue(panel.slider.maximum())
     QtGui.QApplication.processEvents()
     print("screenshot: " + guitest.screenshot("suggest_panel"))
@@ -127,9 +168,11 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     assert design.parts_of(d) == chosen["design"]["parts"]  # applied as suggested
     assert chosen["waste_m2"] < panel.result["before"]["waste_m2"]
     assert all(c.Status == design.SATISFIED for c in d.Group if design.is_constraint(c))
+    assert state["parts"]["shelf"].Grain == "X" and shelf_along_the_grain(d)
     doc.undo()
     doc.recompute()
     assert design.parts_of(d) == before
+    assert design.inner_volumes(d)[0].Placement.Base == space  # back on the shelf exactly, after the previews
 
 
 def import_and_export_a_flatpack_design():

@@ -1,7 +1,8 @@
 """Flat-pack design objects, headless (thesis 5.1, 5.3.5): a design of Part::Box boards keeps its constraints as
-the user edits, shows its usage, undoes an edit that no longer fits, survives save/reload and undo; suggestions
-from the core applied to it keep every constraint; a parametric design driven by a spreadsheet is optimised
-through its gradients."""
+the user edits, shows its usage, undoes an edit that no longer fits, survives save/reload and undo; an edit the
+constraints refuse or keep in part leaves every box and inner volume where it belongs, exactly, through undo and
+reopening; suggestions from the core applied to it keep every constraint; a parametric design driven by a
+spreadsheet is optimised through its gradients; each box's Grain reaches the layout, files and suggestions."""
 import json
 import os
 
@@ -237,3 +238,180 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
     doc.recompute()
     assert "Invalid" in obj.State and obj.Status.startswith("Constraints broken:")
+
+
+@pytest.fixture
+def bookcase(doc, source_dir):
+    """Four equal shelves between sides symmetric about the top, A4 binders resting on the bottom and on shelf 1."""
+    obj = design.from_file(doc, os.path.join(source_dir, "tests", "data", "flatpack", "bookcase-1800.flatpack.json"))
+    doc.recompute()
+    return obj
+
+
+@pytest.fixture
+def console(capfd):
+    """FreeCAD's errors and warnings as the report view shows them: the text printed since the last call."""
+    FreeCAD.Console.SetStatus("Console", "Err", True)
+    FreeCAD.Console.SetStatus("Console", "Wrn", True)
+    yield lambda: "".join(capfd.readouterr())
+    FreeCAD.Console.SetStatus("Console", "Err", False)
+    FreeCAD.Console.SetStatus("Console", "Wrn", False)
+
+
+def geometry(obj):
+    """Every box and inner volume as [xmin, xmax, ymin, ymax, zmin, zmax] by label, read from its solid."""
+    return {o.Label: [getattr(o.Shape.BoundBox, a + end) for a in "XYZ" for end in ("Min", "Max")]
+            for o in design.boxes(obj) + design.inner_volumes(obj)}
+
+
+def assert_geometry(obj, expected):
+    got = geometry(obj)
+    assert got.keys() == expected.keys()
+    for label, bounds in expected.items():
+        assert got[label] == pytest.approx(bounds, abs=1e-9), label
+
+
+def centre(bounds):
+    return [(bounds[2 * a] + bounds[2 * a + 1]) / 2 for a in range(3)]
+
+
+def entered(obj):
+    """(volume, board) for each board through an inner volume other than the one it rests on: their solids'
+    common part, computed by OpenCASCADE, not by FabGuide."""
+    return [(v.Label, b.Label) for v in design.inner_volumes(obj) for b in design.boxes(obj)
+            if b != v.On and v.Shape.common(b.Shape).Volume > 1e-6]
+
+
+def statuses(obj):
+    return {o.Label: o.Status for o in obj.Group if design.is_constraint(o) or design.is_volume(o)}
+
+
+def reopened(doc, tmp_path):
+    """The document saved, closed, opened again and recomputed from scratch; returns (document, design)."""
+    path = str(tmp_path / "design.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    again = FreeCAD.openDocument(path)
+    for o in again.Objects:
+        o.touch()
+    again.recompute()
+    return again, next(o for o in again.Objects if design.is_design(o))
+
+
+def test_a_refused_edit_leaves_the_design_as_it_was_through_undo_and_reopening(doc, bookcase, tmp_path, console):
+    design.add_constraint(bookcase, "fixed", "width 864", Refs=["top.size.x"], Value=864)
+    doc.recompute()
+    before = geometry(bookcase)
+    assert before["A4 binders on shelf 1"] == [30, 830, 10, 275, 438.4, 758.4]
+    doc.openTransaction("longer shelf")
+    box(doc, "shelf-1").Length = 900  # the shelves are equal and the sides 864 mm apart: it cannot be
+    doc.recompute()
+    doc.commitTransaction()
+    assert_geometry(bookcase, before)  # the binders did not go 18 mm into the left side
+    assert "; edit refused, held by equal shelves, width 864" in bookcase.Status, bookcase.Status
+    assert set(statuses(bookcase).values()) == {design.SATISFIED}
+    assert not entered(bookcase)
+    doc.undo()
+    doc.recompute()
+    assert_geometry(bookcase, before)
+    assert not [o.Name for o in doc.Objects if o.State != ["Up-to-date"]]
+    again, obj = reopened(doc, tmp_path)
+    try:
+        assert_geometry(obj, before)
+        assert not [o.Name for o in again.Objects if o.State != ["Up-to-date"]]
+        assert set(statuses(obj).values()) == {design.SATISFIED}
+    finally:
+        FreeCAD.closeDocument(again.Name)
+    assert console() == ""
+
+
+def test_an_edit_kept_in_part_carries_the_volumes_with_their_boards_and_undo_restores_it(doc, bookcase, tmp_path,
+                                                                                        console):
+    before = geometry(bookcase)
+    doc.openTransaction("longer shelf")
+    box(doc, "shelf-1").Length = 1000  # the carcass may be 1000 mm wide at most
+    doc.recompute()
+    doc.commitTransaction()
+    assert "; edit kept 74%, held by width 800-1000 (max), equal shelves, " in bookcase.Status, bookcase.Status
+    after = geometry(bookcase)
+    assert after["top"][1] == pytest.approx(982, abs=1e-3) and after["side-right"][0] == after["top"][1]
+    assert {tuple(after["shelf-{}".format(k)][:2]) for k in range(1, 5)} == {tuple(after["top"][:2])}
+    for v in design.inner_volumes(bookcase):  # 50 mm along x, as their boards' centres moved
+        moved = [a - b for a, b in zip(centre(after[v.On.Label]), centre(before[v.On.Label]))]
+        assert after[v.Label] == pytest.approx([b + moved[k // 2] for k, b in enumerate(before[v.Label])], abs=1e-9)
+    assert not entered(bookcase)
+    assert set(statuses(bookcase).values()) == {design.SATISFIED}
+    doc.undo()
+    doc.recompute()
+    assert_geometry(bookcase, before)
+    doc.redo()
+    doc.recompute()
+    assert_geometry(bookcase, after)
+    again, obj = reopened(doc, tmp_path)
+    try:
+        assert_geometry(obj, after)
+        assert not entered(obj)
+        assert not [o.Name for o in again.Objects if o.State != ["Up-to-date"]]
+    finally:
+        FreeCAD.closeDocument(again.Name)
+    assert console() == ""
+
+
+def placed(obj, label):
+    """(the part's width in the layout problem, its extent along the sheet's x) in the design's layout."""
+    laid = json.loads(obj.LayoutJson)
+    part = next(p for p in laid["problem"]["parts"] if p["id"] == label)
+    at = next(p for p in laid["layout"]["placements"] if p["part"] == label)
+    return part["width"], at["width"] if at["rotation"] in (0, 180) else at["height"]
+
+
+def test_a_box_grain_lays_its_board_with_the_width_along_the_sheet_grain(doc, table):
+    assert all(b.getGroupOfProperty("Grain") == "FabGuide" and b.Grain == "Free" for b in design.boxes(table))
+    assert box(doc, "shelf").getEnumerationsOfProperty("Grain") == ["Free", "X", "Y", "Z"]
+    table.MasterBoards[0].Grain = "Along width"
+    box(doc, "shelf").Grain = "Y"  # across the shelf: its 260 mm along the sheet's grain
+    box(doc, "left").Grain = "Z"  # up the leg
+    doc.recompute()
+    assert "Invalid" not in table.State, table.Status
+    assert placed(table, "shelf") == (260, 260) and placed(table, "left") == (400, 400)
+    assert [p.get("grain") for p in design.parts_of(table)] == [None, "z", None, "y"]
+    box(doc, "shelf").Grain = "X"
+    doc.recompute()
+    assert placed(table, "shelf") == (696, 696)
+
+
+def test_a_grain_through_the_thickness_is_refused_with_the_box_named(doc, table):
+    box(doc, "shelf").Grain = "Z"
+    doc.recompute()
+    assert "Invalid" in table.State
+    assert table.Status == ("Design '{}': box 'shelf': its Grain Z runs across the board, through its 12 mm "
+                            "thickness; choose an axis of its face (X or Y) or Free".format(table.Label))
+    box(doc, "shelf").Grain = "Y"
+    doc.recompute()
+    assert "Invalid" not in table.State, table.Status
+
+
+def test_grain_reads_from_a_file_and_is_kept_by_a_suggestion_and_reopening(doc, bookcase, tmp_path, source_dir):
+    with open(os.path.join(source_dir, "tests", "data", "flatpack", "bookcase-1800.flatpack.json")) as f:
+        data = json.load(f)
+    grains = {p["id"]: p.get("grain") for p in data["parts"]}
+    exported = design.flatpack(bookcase)
+    assert {p["id"]: p.get("grain") for p in exported["parts"]} == grains
+    assert exported["boards"][0]["grain"] == "width"
+    assert fabguide_core.lay_out_design(exported)["usage"] == pytest.approx(bookcase.Usage)
+    assert placed(bookcase, "side-left") == (1800, 1800)
+    suggestions = fabguide_core.optimise(exported, seed=1, threads=2, time_limit=4)["suggestions"]
+    assert suggestions
+    doc.openTransaction("accept")
+    design.apply_parts(bookcase, suggestions[0]["design"]["parts"])
+    doc.recompute()
+    doc.commitTransaction()
+    assert {p["id"]: p.get("grain") for p in design.parts_of(bookcase)} == grains
+    assert "Invalid" not in bookcase.State, bookcase.Status
+    assert not entered(bookcase)
+    again, obj = reopened(doc, tmp_path)
+    try:
+        assert {p["id"]: p.get("grain") for p in design.parts_of(obj)} == grains
+        assert placed(obj, "side-left") == (1800, 1800)
+    finally:
+        FreeCAD.closeDocument(again.Name)

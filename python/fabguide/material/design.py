@@ -15,6 +15,7 @@ from fabguide.material import master_board
 SATISFIED = "Satisfied"
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
 KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
+GRAINS = ("Free", "X", "Y", "Z")  # a box's Grain: none, or the model axis its wood's grain runs along
 
 
 class DesignError(ValueError):
@@ -46,6 +47,14 @@ class FlatpackDesign(properties.Proxy):
 
     def execute(self, obj):
         recompute(obj)
+
+    def onChanged(self, obj, prop):
+        if prop == "Group" and not obj.Document.Restoring:
+            add_grain(boxes(obj))
+
+    def onDocumentRestored(self, obj):
+        super().onDocumentRestored(obj)
+        add_grain(boxes(obj))
 
 
 class DesignConstraint(properties.Proxy):
@@ -124,6 +133,14 @@ def add_volume(design, kind, at, size, on=None, label=None):
     return obj
 
 
+def add_grain(boxes):
+    """Gives each box its Grain (group FabGuide) if it has none yet."""
+    for box in boxes:
+        properties.add(box, "App::PropertyEnumeration", "Grain", "FabGuide",
+                       "The model axis the wood's grain runs along, one in the board's face: the board is laid "
+                       "with it along the grain of master boards that have one. Free: no grain", list(GRAINS))
+
+
 def is_design(obj):
     return properties.is_a(obj, FlatpackDesign)
 
@@ -140,13 +157,31 @@ def boxes(obj):
     return [o for o in obj.Group if cuboids.is_box(o)]
 
 
+def inner_volumes(obj):
+    return [v for v in obj.Group if is_volume(v) and v.Kind == "Inner"]
+
+
 def parts_of(obj):
-    """The boards as the format's parts: {id, position, size}, from the boxes as they are now."""
+    """The boards as the format's parts: {id, position, size, grain if set}, from the boxes as they are now."""
     parts = []
     for box in boxes(obj):
         c = cuboids.coordinates(box)
-        parts.append({"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]})
+        part = {"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]}
+        if getattr(box, "Grain", "Free") != "Free":
+            part["grain"] = grain_of(box, part["size"])
+        parts.append(part)
     return parts
+
+
+def grain_of(box, size):
+    """The box's Grain as the format names it ("x"); refused when it runs across the board (the core's rule)."""
+    axis = GRAINS.index(box.Grain) - 1
+    face = cuboids.in_plane(size)
+    if axis not in face:
+        raise DesignError("box '{}': its Grain {} runs across the board, through its {:g} mm thickness; choose an "
+                          "axis of its face ({} or {}) or Free".format(box.Label, box.Grain, size[axis],
+                                                                       *(GRAINS[a + 1] for a in face)))
+    return "xyz"[axis]
 
 
 def constraint_dict(c):
@@ -171,6 +206,7 @@ def constraint_dict(c):
 
 
 def volume_dicts(obj):
+    """(the inner volumes as the format's dicts, in the order of inner_volumes(obj); the outer one or None)."""
     inner, outer = [], None
     for v in obj.Group:
         if not is_volume(v):
@@ -184,6 +220,11 @@ def volume_dicts(obj):
         else:
             outer = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
     return inner, outer
+
+
+def snapshot(obj):
+    """The boxes and inner volumes as they are now: {parts, inner_volumes}, a start for write_parts."""
+    return {"parts": parts_of(obj), "inner_volumes": volume_dicts(obj)[0]}
 
 
 def flatpack(obj, parts=None):
@@ -208,19 +249,23 @@ def flatpack(obj, parts=None):
 
 def recompute(obj):
     """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit."""
-    edited = flatpack(obj)
+    try:
+        edited = flatpack(obj)
+    except DesignError as error:
+        obj.Status = str(error)
+        raise
     valid = json.loads(obj.Valid) if obj.Valid else None
+    start = dict(edited, parts=valid)  # the last valid state, the inner volumes resting on its boards
     note = ""
     same_boards = valid and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]]
     if same_boards and obj.KeepEdits and not obj.Parameters and valid != edited["parts"]:
         try:
-            corrected = fabguide_core.correct_design(dict(edited, parts=valid), edited)
+            corrected = fabguide_core.correct_design(start, edited)
         except fabguide_core.FormatError as error:  # the valid state no longer reads: start from the boxes
             FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, error))
         else:
-            adopt(obj, edited, corrected["parts"])
-            if corrected["alpha"] < 1:
-                note = "; edit kept {:.0%}, held by {}".format(corrected["alpha"], ", ".join(corrected["limits"]))
+            adopt(obj, edited, corrected["parts"], start)
+            note = held(obj, corrected)
     try:
         laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
@@ -228,13 +273,13 @@ def recompute(obj):
         obj.Status = "Constraints broken: {}".format(error)
         raise DesignError("Design '{}': {}".format(obj.Label, error))
     except fabguide_core.PackingError as error:
-        if not valid:
+        if not same_boards:
             obj.Status = str(error)
             raise DesignError("Design '{}': {}".format(obj.Label, error))
-        laid, absorbed = absorb(obj, edited, valid)
+        laid, absorbed = absorb(obj, edited, start)
         note += absorbed
         if laid is None:
-            write_parts(obj, valid)
+            write_parts(obj, valid, start)
             obj.Status = "Edit undone: {}".format(error)
             FreeCAD.Console.PrintError("{}: edit undone: {}\n".format(obj.Label, error))
             return
@@ -248,10 +293,22 @@ def recompute(obj):
     obj.Valid = json.dumps(edited["parts"])
 
 
-def adopt(obj, edited, parts):
-    """The boxes moved to `parts`, and the design being laid out taken from them as they now are."""
-    write_parts(obj, parts)
-    edited["parts"] = parts_of(obj)
+def held(obj, corrected):
+    """What the status says of an edit the constraints held: refused or how much was kept, and by what (each
+    once, the design's own constraints and volumes first); nothing for an edit kept whole."""
+    if corrected["alpha"] >= 1:
+        return ""
+    own = tuple(o.Label for o in obj.Group if is_constraint(o) or is_volume(o))
+    limits = sorted(dict.fromkeys(corrected["limits"]), key=lambda name: not name.startswith(own))
+    kept = "kept {:.0%}".format(corrected["alpha"]) if corrected["alpha"] > 0 else "refused"
+    return "; edit {}, held by {}".format(kept, ", ".join(limits))
+
+
+def adopt(obj, edited, parts, start):
+    """The boxes moved to `parts`, the core's answer from design `start`, and the design being laid out taken
+    from the boxes and inner volumes as they now are."""
+    write_parts(obj, parts, start)
+    edited.update(snapshot(obj))
 
 
 def lay_out_satisfied(obj, edited, note):
@@ -265,17 +322,17 @@ def lay_out_satisfied(obj, edited, note):
         satisfied = fabguide_core.satisfy_design(edited)
         if not satisfied["solved"]:
             raise
-        adopt(obj, edited, satisfied["parts"])
+        adopt(obj, edited, satisfied["parts"], dict(edited))
         return fabguide_core.lay_out_design(edited), note + "; boards moved so that every constraint holds"
 
 
-def absorb(obj, edited, valid):
-    """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards: (layout, note) with the
-    boxes written back when it fits, (None, "") otherwise."""
-    absorbed = fabguide_core.absorb_edit(dict(edited, parts=valid), edited)
+def absorb(obj, edited, start):
+    """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards, from the valid design
+    `start`: (layout, note) with the boxes written back when it fits, (None, "") otherwise."""
+    absorbed = fabguide_core.absorb_edit(start, edited)
     if not absorbed["fitted"]:
         return None, ""
-    adopt(obj, edited, absorbed["parts"])
+    adopt(obj, edited, absorbed["parts"], start)
     try:
         laid = fabguide_core.lay_out_design(edited)
     except fabguide_core.PackingError:
@@ -292,29 +349,35 @@ def mark_constraints(obj, error):
                 c.Status = status
 
 
-def write_parts(obj, parts):
-    """Moves and sizes the boxes to `parts`; inner volumes follow the board they rest on."""
+def write_parts(obj, parts, start=None):
+    """Moves and sizes the boxes to `parts`. An inner volume rests on its board as the core has it: where it was
+    in design `start` (a dict with parts and inner_volumes; the design now if None), moved as far as its board's
+    centre moved from `start` to `parts`; so writing `start`'s own parts puts every volume back exactly."""
+    start = start or snapshot(obj)
     by_id = {p["id"]: p for p in parts}
-    moved = {}
     for box in boxes(obj):
         p = by_id[box.Label]
-        before = cuboids.coordinates(box)
         values = [round(v, 9) for a in range(3) for v in (p["position"][a], p["position"][a] + p["size"][a])]
         if cuboids.set_coordinates(box, values):
-            moved[box.Name] = FreeCAD.Vector(*[(values[2 * a] + values[2 * a + 1] - before[2 * a] - before[2 * a + 1])
-                                               / 2 for a in range(3)])
             box.recompute()
             box.purgeTouched()
-    for v in obj.Group:
-        if is_volume(v) and v.On is not None and v.On.Name in moved:
-            v.Placement = FreeCAD.Placement(v.Placement.Base + moved[v.On.Name], FreeCAD.Rotation())
+    before, after = centres(start["parts"]), centres(parts)
+    for v, was in zip(inner_volumes(obj), start["inner_volumes"]):
+        on = was["on"]
+        at = FreeCAD.Vector(*[round(was["position"][a] + after[on][a] - before[on][a], 9) for a in range(3)])
+        if (v.Placement.Base - at).Length > 1e-9:
+            v.Placement = FreeCAD.Placement(at, FreeCAD.Rotation())
             v.purgeTouched()
+
+
+def centres(parts):
+    return {p["id"]: [p["position"][a] + p["size"][a] / 2 for a in range(3)] for p in parts}
 
 
 def apply_parts(obj, parts):
     """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept)."""
     write_parts(obj, parts)
-    obj.Valid = json.dumps(parts)
+    obj.Valid = json.dumps(parts_of(obj))
     obj.touch()
 
 
@@ -324,7 +387,8 @@ def from_file(doc, path, label=None):
         data = json.load(f)
     fabguide_core.lay_out_design(data)  # refuse what the core cannot read, with its message
     masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
-                                   b.get("material", "plywood"), b.get("name", "MasterBoard")) for b in data["boards"]]
+                                   b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"))
+               for b in data["boards"]]
     made = {}
     for p in data["parts"]:
         box = doc.addObject("Part::Box", "Box")
@@ -333,6 +397,8 @@ def from_file(doc, path, label=None):
         box.Placement.Base = FreeCAD.Vector(*p["position"])
         made[p["id"]] = box
     obj = create(doc, made.values(), masters, label or data.get("title", "FlatpackDesign"))
+    for p in data["parts"]:
+        made[p["id"]].Grain = grain_named(p)
     s = data.get("settings", {})
     obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
     obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
@@ -362,6 +428,13 @@ def from_file(doc, path, label=None):
         low, high = data["outer_volume"]["min"], data["outer_volume"]["max"]
         add_volume(obj, "Outer", low, [h - l for h, l in zip(high, low)])
     return obj
+
+
+def grain_named(part):
+    """A file part's grain as a box's Grain; the older follow_grain is its first axis in the board's face."""
+    if part.get("follow_grain") and "grain" not in part:
+        return GRAINS[cuboids.in_plane(part["size"])[0] + 1]
+    return part.get("grain", "free").capitalize()
 
 
 def fraction_bounds(data, c):

@@ -26,11 +26,14 @@ class MasterBoard(properties.Proxy):
             raise ValueError("Master board '{}': Count must be 0 (as many as needed) or more".format(obj.Label))
 
 
-def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard"):
+def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard",
+           grain="none"):
+    """A master board; `grain` as *.pack.json names it (none, width, height)."""
     obj = doc.addObject("App::FeaturePython", "MasterBoard")
     obj.Label = label
     MasterBoard(obj)
     obj.Width, obj.Height, obj.Thickness, obj.Count, obj.Material = width, height, thickness, count, material
+    obj.Grain = next(name for name, value in GRAIN.items() if value == grain)
     return obj
 
 
