@@ -268,7 +268,11 @@ class SuggestPanel:
         self.bar.setValue(100)
         stopped = " (stopped early)" if result["stopped"] else ""
         if not suggestions:
-            self.message.setText("No variation of this design wastes less within its constraints{}.".format(stopped))
+            least = result.get("least_sheets", 0)
+            why = "; with every board as small as they allow it still needs {} sheet(s)".format(least) \
+                if least and least >= result["before"]["sheets"] else ""
+            self.message.setText("No variation of this design wastes less within its constraints{}{}.".format(
+                why, stopped))
             return
         self.message.setText("{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.".format(
             len(suggestions), result["seconds"], stopped))

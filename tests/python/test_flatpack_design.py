@@ -415,3 +415,20 @@ def test_grain_reads_from_a_file_and_is_kept_by_a_suggestion_and_reopening(doc, 
         assert placed(obj, "side-left") == (1800, 1800)
     finally:
         FreeCAD.closeDocument(again.Name)
+
+
+def test_an_offcut_master_board_of_cost_0_is_cut_before_new_sheets(doc, table):
+    # The coffee table's sheet, and a leftover the maker has (Cost 0) as large as the table needs, listed after
+    # it: the table is cut from the leftover and no sheet is bought.
+    sheet = table.MasterBoards[0]
+    assert sheet.Cost == 1 and master_board.as_problem_board(sheet)["cost"] == 1
+    offcut = master_board.create(doc, 1220, 915, sheet.Thickness.Value, 1, sheet.Material, "offcut", cost=0)
+    table.MasterBoards = [sheet, offcut]
+    doc.recompute()
+    laid = json.loads(table.LayoutJson)["layout"]
+    used = [b["name"] for b in laid["boards"]]
+    assert used == ["offcut"], used
+    assert "Invalid" not in table.State, table.Status
+    offcut.Cost = -1
+    doc.recompute()
+    assert "Invalid" in offcut.State

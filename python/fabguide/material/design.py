@@ -387,7 +387,8 @@ def from_file(doc, path, label=None):
         data = json.load(f)
     fabguide_core.lay_out_design(data)  # refuse what the core cannot read, with its message
     masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
-                                   b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"))
+                                   b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"),
+                                   b.get("cost", 1.0))
                for b in data["boards"]]
     made = {}
     for p in data["parts"]:

@@ -17,6 +17,9 @@ class MasterBoard(properties.Proxy):
         add(obj, "App::PropertyString", "Material", "Master board", "Material name for the cut list", "plywood")
         add(obj, "App::PropertyEnumeration", "Grain", "Master board",
             "Direction of the wood grain; boards set to Follow grain keep their length along it", list(GRAIN))
+        add(obj, "App::PropertyFloat", "Cost", "Master board",
+            "What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new "
+            "sheets", 1.0)
 
     def execute(self, obj):
         for name in ("Width", "Height", "Thickness"):
@@ -24,16 +27,19 @@ class MasterBoard(properties.Proxy):
                 raise ValueError("Master board '{}': {} must be greater than 0".format(obj.Label, name))
         if obj.Count < 0:
             raise ValueError("Master board '{}': Count must be 0 (as many as needed) or more".format(obj.Label))
+        if obj.Cost < 0:
+            raise ValueError("Master board '{}': Cost must be 0 (an offcut you have) or more".format(obj.Label))
 
 
 def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard",
-           grain="none"):
-    """A master board; `grain` as *.pack.json names it (none, width, height)."""
+           grain="none", cost=1.0):
+    """A master board; `grain` as *.pack.json names it (none, width, height); `cost` 0 for an offcut."""
     obj = doc.addObject("App::FeaturePython", "MasterBoard")
     obj.Label = label
     MasterBoard(obj)
     obj.Width, obj.Height, obj.Thickness, obj.Count, obj.Material = width, height, thickness, count, material
     obj.Grain = next(name for name, value in GRAIN.items() if value == grain)
+    obj.Cost = cost
     return obj
 
 
@@ -45,4 +51,4 @@ def as_problem_board(obj):
     """The master board as a *.pack.json board."""
     return {"name": obj.Label, "material": obj.Material, "width": obj.Width.Value, "height": obj.Height.Value,
             "thickness": obj.Thickness.Value, "count": obj.Count if obj.Count > 0 else -1,
-            "grain": GRAIN[obj.Grain]}
+            "grain": GRAIN[obj.Grain], "cost": obj.Cost}
