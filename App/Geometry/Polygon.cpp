@@ -269,6 +269,36 @@ std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
     return out;
 }
 
+std::pair<Point2, double> deepestPoint(const Outline& outline)
+{
+    const auto eroded = [&](double depth) {  // the material at least `depth` from every edge
+        ClipperLib::ClipperOffset clipper(2, 0.005 * kClipperScale);
+        clipper.AddPath(toClipper(outline.outer), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+        for (const Polygon& hole : outline.holes)
+            clipper.AddPath(toClipper(hole), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+        ClipperLib::Paths left;
+        clipper.Execute(left, -depth * kClipperScale);
+        return left;
+    };
+    const Box2 box = bounds(outline.outer);
+    double lo = 0, hi = std::min(box.width(), box.height()) / 2;
+    while (hi - lo > 0.01) {
+        const double mid = (lo + hi) / 2;
+        (eroded(mid).empty() ? hi : lo) = mid;
+    }
+    // What is left at that depth is a sliver around the pole: the middle of its largest piece.
+    const ClipperLib::Paths left = eroded(lo);
+    const ClipperLib::Path* largest = nullptr;
+    for (const ClipperLib::Path& piece : left)
+        if (ClipperLib::Orientation(piece) &&
+            (!largest || std::abs(ClipperLib::Area(piece)) > std::abs(ClipperLib::Area(*largest))))
+            largest = &piece;
+    if (!largest)  // too thin to erode at all: the box's centre
+        return {{(box.minX + box.maxX) / 2, (box.minY + box.maxY) / 2}, 0};
+    const Box2 pole = bounds(fromClipper(*largest));
+    return {{(pole.minX + pole.maxX) / 2, (pole.minY + pole.maxY) / 2}, lo};
+}
+
 Outline offset(const Outline& outline, double distance)
 {
     ClipperLib::ClipperOffset clipper(/*miterLimit=*/4);

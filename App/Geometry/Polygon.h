@@ -73,6 +73,11 @@ Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons);
 /// The parts of `polygon` inside `outline`.
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 
+/// The point of the outline's material farthest from its edges and holes (its pole of inaccessibility, to
+/// 0.01 mm) and that distance, the radius of the largest circle inside it: found by eroding the outline
+/// (Clipper, round corners) by a bisected depth until nothing is left.
+std::pair<Point2, double> deepestPoint(const Outline& outline);
+
 /// Grows outer contours and shrinks holes by `distance` (mitred corners), using Clipper:
 /// the tool path of a cut of width 2·distance that leaves the outline at its nominal size.
 Outline offset(const Outline& outline, double distance);

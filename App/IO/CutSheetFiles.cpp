@@ -18,6 +18,8 @@ namespace fabguide::io {
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// Writes the text `write(out)` puts out into `path`, atomically (IO/Output.h).
 template <typename Write>
 void writeText(const std::string& path, Write&& write)
@@ -140,7 +142,12 @@ std::string svg(const material::CutSheet& sheet, double stroke)
            "text-anchor=\"middle\" dominant-baseline=\"central\">\n";
     for (const material::Label& label : sheet.labels)
         out << "    <text x=\"" << label.at.x << "\" y=\"" << h - label.at.y << "\" font-size=\""
-            << label.height << "\">" << escapeXml(label.text) << "</text>\n";
+            << label.height << "\""
+            << (label.angle != 0
+                    ? " transform=\"rotate(" + std::to_string(-label.angle) + " " +
+                          std::to_string(label.at.x) + " " + std::to_string(h - label.at.y) + ")\""
+                    : std::string())
+            << ">" << escapeXml(label.text) << "</text>\n";
     for (const geometry::Polygon& mark : sheet.engraved)
         out << "    " << svgPath(mark, h) << "\n";
     out << "  </g>\n</svg>\n";
@@ -222,7 +229,7 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     for (const material::Label& label : sheet.labels)  // centred horizontally (1) and vertically (2)
         dxf.writeText(*dw,
                       DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,
-                                  1, 2, label.text, "Standard", 0.0),
+                                  1, 2, label.text, "Standard", label.angle * kPi / 180),  // radians
                       DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
     dw->sectionEnd();
     writeObjects(*dw);

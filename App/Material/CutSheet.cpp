@@ -1,16 +1,22 @@
 #include "Material/CutSheet.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace fabguide::material {
 
 namespace {
 
-/// Labels fit inside small parts and stay readable on large ones.
-double labelHeight(const Placement& p)
+/// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
+/// longer side, as large as fits the circle free there (a text n characters long is about 0.6 n of its
+/// height wide) between 2 and 12 mm.
+Label labelOf(const std::string& text, const geometry::Outline& placed, const Placement& p)
 {
-    return std::clamp(0.2 * std::min(p.width, p.height), 2.0, 12.0);
+    const auto [at, room] = geometry::deepestPoint(placed);
+    const double n = static_cast<double>(std::max<size_t>(text.size(), 1));
+    const double fits = room / std::sqrt(0.09 * n * n + 0.25);  // half-diagonal of the text box = room
+    return {text, at, std::clamp(fits, 2.0, 12.0), p.height > p.width ? 90.0 : 0.0};
 }
 
 }  // namespace
@@ -35,7 +41,7 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
         outers[p.sheet].push_back(path.outer);
-        sheet.labels.push_back({spec.id, {p.x + p.width / 2, p.y + p.height / 2}, labelHeight(p)});
+        sheet.labels.push_back(labelOf(spec.id, placedOutline(layout, problem, k), p));
         const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
         for (const Drill& drill : spec.drills)
             sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});

@@ -12,8 +12,9 @@ namespace fabguide::material {
 /// Text engraved on a part, centred at `at`, `height` mm tall.
 struct Label {
     std::string text;
-    geometry::Point2 at;
+    geometry::Point2 at;  ///< the text's centre
     double height = 0;
+    double angle = 0;  ///< degrees counter-clockwise: 90 along a part that stands taller than wide
 };
 
 /// One master board's cutting plan, in board coordinates (origin at its lower-left corner).

@@ -63,6 +63,46 @@ TEST(CutSheet, EveryPartIsLabelledInsideItself)
     }
 }
 
+TEST(CutSheet, ALabelSitsInTheMaterialClearOfHolesAndAlongThePart)
+{
+    // A stool seat with a hand hole in its middle: the label goes beside the hole, not over it; a crescent's
+    // label lies in its horns' material, not in the bite; a tall leg's label runs along it.
+    PackProblem p = problem();
+    p.parts = {rectangularPart("seat", 300, 300), rectangularPart("leg", 40, 400, 1, {0})};
+    p.parts[0].outline.holes.push_back({{100, 100}, {100, 200}, {200, 200}, {200, 100}});
+    p.parts.push_back(
+        {"crescent",
+         {{{0, 0}, {200, 0}, {200, 200}, {0, 200}, {0, 160}, {160, 160}, {160, 40}, {0, 40}}, {}},
+         1,
+         {0},
+         {},
+         {}});
+    p.boards[0].width = p.boards[0].height = 1000;
+    const Layout layout = pack(p, quick());
+    const CutSheet sheet = cutSheets(layout, p)[0];
+    for (size_t i = 0; i < layout.placements.size(); ++i) {
+        const Placement& at = layout.placements[i];
+        const Label& label = sheet.labels[i];
+        const fabguide::geometry::Outline placed = placedOutline(layout, p, i);
+        // The label's centre is in the material: inside the outline's box, in none of its holes, and the text
+        // box (about 0.6 of its height per character) stays inside the part.
+        const double half = 0.3 * label.height * static_cast<double>(label.text.size());
+        const auto inside = [&](double x, double y) {
+            return !fabguide::geometry::intersect({{x - 0.01, y - 0.01},
+                                                   {x + 0.01, y - 0.01},
+                                                   {x + 0.01, y + 0.01},
+                                                   {x - 0.01, y + 0.01}},
+                                                  placed)
+                        .empty();
+        };
+        const bool along = label.angle == 90;
+        EXPECT_TRUE(inside(label.at.x, label.at.y)) << label.text;
+        EXPECT_TRUE(inside(label.at.x + (along ? 0 : half), label.at.y + (along ? half : 0))) << label.text;
+        EXPECT_TRUE(inside(label.at.x - (along ? 0 : half), label.at.y - (along ? half : 0))) << label.text;
+        EXPECT_EQ(along, at.height > at.width) << label.text;
+    }
+}
+
 TEST(CutSheet, CutListCountsPartsPerBoard)
 {
     const PackProblem p = problem();

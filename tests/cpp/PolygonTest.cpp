@@ -76,3 +76,20 @@ TEST(Polygon, SelfCrossingFindsTheEdgesThatMeet)
     std::swap(circle[10], circle[15000]);
     EXPECT_NE(selfCrossing(circle).first, -1);
 }
+
+TEST(Polygon, TheDeepestPointIsFarthestFromEdgesAndHoles)
+{
+    using namespace fabguide::geometry;
+    const auto [centre, radius] = deepestPoint(rectangle(100, 60));
+    EXPECT_NEAR(radius, 30, 0.01);
+    EXPECT_NEAR(centre.y, 30, 0.01);
+    EXPECT_GT(centre.x, 30 - 0.01);
+    EXPECT_LT(centre.x, 70 + 0.01);
+    // A seat with a hand hole, 100 mm of material all round it: the pole lies towards a corner, on the diagonal,
+    // as far from both edges as from the hole's corner: t = √2 (100 - t).
+    Outline seat = rectangle(300, 300);
+    seat.holes.push_back({{100, 100}, {100, 200}, {200, 200}, {200, 100}});
+    const auto [at, room] = deepestPoint(seat);
+    EXPECT_NEAR(room, 100 * std::sqrt(2) / (1 + std::sqrt(2)), 0.02);
+    EXPECT_FALSE(at.x > 100 && at.x < 200 && at.y > 100 && at.y < 200);
+}
