@@ -115,3 +115,36 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     rows = list(csv.DictReader((tmp_path / "cutlist.csv").open()))
     assert sum(int(r["quantity"]) for r in rows) == len(layout["placements"])
     assert {r["material"] for r in rows} == {"birch plywood"} and {r["thickness"] for r in rows} == {"18"}
+
+
+def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_dir, tmp_path):
+    # Round seats with a hand hole, crescents, coasters with a hole, an L top, tapered legs: each label's centre
+    # and both ends of its text lie in the part's material (checked here against the cut paths: inside the
+    # part's outer cut, in none of its hole cuts), and the DXF turns a label along a standing leg.
+    import ezdxf
+
+    def contains(polygon, x, y):  # ray casting
+        inside = False
+        for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1]):
+            if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+                inside = not inside
+        return inside
+
+    source = os.path.join(source_dir, "tests", "data", "curved-parts.pack.json")
+    run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--time-limit", "1", "--dxf",
+               str(tmp_path / "dxf"))
+    assert run.returncode == 0, run.stderr
+    doc = ezdxf.readfile(str(tmp_path / "dxf" / "sheet-1.dxf"))
+    assert not doc.audit().has_errors
+    cuts = [[tuple(p[:2]) for p in e.get_points()] for e in doc.modelspace().query("LWPOLYLINE[layer=='CUT']")]
+    texts = list(doc.modelspace().query("TEXT"))
+    assert texts
+    for text in texts:
+        x, y = text.dxf.insert.x, text.dxf.insert.y
+        half = 0.3 * text.dxf.height * len(text.dxf.text)
+        along = round(text.dxf.rotation) % 180 == 90
+        for px, py in ((x, y), (x + (0 if along else half), y + (half if along else 0)),
+                       (x - (0 if along else half), y - (half if along else 0))):
+            around = [c for c in cuts if contains(c, px, py)]
+            # inside exactly one outer cut and no hole: the innermost path holding it is its part's outline
+            assert len(around) == 1, (text.dxf.text, px, py, len(around))
