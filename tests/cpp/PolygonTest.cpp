@@ -85,8 +85,8 @@ TEST(Polygon, TheDeepestPointIsFarthestFromEdgesAndHoles)
     EXPECT_NEAR(centre.y, 30, 0.01);
     EXPECT_GT(centre.x, 30 - 0.01);
     EXPECT_LT(centre.x, 70 + 0.01);
-    // A seat with a hand hole, 100 mm of material all round it: the pole lies towards a corner, on the diagonal,
-    // as far from both edges as from the hole's corner: t = √2 (100 - t).
+    // A seat with a hand hole, 100 mm of material all round it: the pole lies towards a corner, on the
+    // diagonal, as far from both edges as from the hole's corner: t = √2 (100 - t).
     Outline seat = rectangle(300, 300);
     seat.holes.push_back({{100, 100}, {100, 200}, {200, 200}, {200, 100}});
     const auto [at, room] = deepestPoint(seat);
