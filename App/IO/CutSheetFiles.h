@@ -2,7 +2,7 @@
 // SVG and DXF per master board, a CSV cut list.
 #pragma once
 
-#include "Material/CutSheet.h"
+#include "Layout/CutSheet.h"
 
 #include <string>
 #include <vector>

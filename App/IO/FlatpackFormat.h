@@ -2,9 +2,9 @@
 // effectiveness constraints and the master boards to cut them from (thesis 5.1).
 #pragma once
 
-#include "Material/Design.h"
-#include "Material/MinWastage.h"
-#include "Material/Pack.h"
+#include "Design/Design.h"
+#include "Design/MinWastage.h"
+#include "Layout/Pack.h"
 
 #include <nlohmann/json.hpp>
 

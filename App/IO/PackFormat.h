@@ -2,8 +2,8 @@
 // OR-Datasets strip-packing instances used as benchmarks.
 #pragma once
 
-#include "Material/Coplanar.h"
-#include "Material/Pack.h"
+#include "Layout/Coplanar.h"
+#include "Layout/Pack.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,8 +5,8 @@
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 #include "Json.h"
-#include "Material/Correction.h"
-#include "Material/DynamicPacker.h"
+#include "Design/Correction.h"
+#include "Design/DynamicPacker.h"
 
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>

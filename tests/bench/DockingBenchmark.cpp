@@ -2,7 +2,7 @@
 // of the design exploration, which call it thousands of times. Target: ≤ 1 ms for 20 parts.
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
-#include "Material/OrderingSearch.h"
+#include "Layout/OrderingSearch.h"
 
 #include <benchmark/benchmark.h>
 

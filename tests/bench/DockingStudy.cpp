@@ -2,8 +2,8 @@
 // Usage: fabguide_docking_study DESIGN.pack.json... ; prints a Markdown table.
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
-#include "Material/OrderingSearch.h"
-#include "Material/Raster.h"
+#include "Layout/OrderingSearch.h"
+#include "Layout/Raster.h"
 
 #include <algorithm>
 #include <cstdio>

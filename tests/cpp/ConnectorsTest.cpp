@@ -1,4 +1,4 @@
-#include "Material/Connectors.h"
+#include "Layout/Connectors.h"
 
 #include <gtest/gtest.h>
 

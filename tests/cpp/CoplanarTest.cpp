@@ -1,4 +1,4 @@
-#include "Material/Coplanar.h"
+#include "Layout/Coplanar.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "Material/CutSheet.h"
+#include "Layout/CutSheet.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "Material/Docking.h"
+#include "Layout/Docking.h"
 #include "PackingTestSupport.h"
 
 #include <gtest/gtest.h>

@@ -2,9 +2,9 @@
 // needs two sheets as drawn and one when its shelves are a little shallower.
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
-#include "Material/FewerSheets.h"
-#include "Material/LeastDesign.h"
-#include "Material/MinWastage.h"
+#include "Design/FewerSheets.h"
+#include "Design/LeastDesign.h"
+#include "Design/MinWastage.h"
 
 #include <gtest/gtest.h>
 

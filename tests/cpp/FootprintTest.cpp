@@ -1,4 +1,4 @@
-#include "Material/Footprint.h"
+#include "Layout/Footprint.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Design exploration (thesis 5.4): SLIDE, the locking chains, IMPROVEDESIGN and MINWASTAGE on real designs.
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
-#include "Material/Correction.h"
-#include "Material/DynamicPacker.h"
-#include "Material/MinWastage.h"
+#include "Design/Correction.h"
+#include "Design/DynamicPacker.h"
+#include "Design/MinWastage.h"
 
 #include <gtest/gtest.h>
 

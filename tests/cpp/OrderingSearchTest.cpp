@@ -1,4 +1,4 @@
-#include "Material/OrderingSearch.h"
+#include "Layout/OrderingSearch.h"
 #include "PackingTestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "Material/Pack.h"
+#include "Layout/Pack.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Helpers shared by the packing tests: building parts and checking layouts independently.
 #pragma once
 
-#include "Material/Docking.h"
+#include "Layout/Docking.h"
 
 #include <gtest/gtest.h>
 

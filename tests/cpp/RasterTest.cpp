@@ -1,4 +1,4 @@
-#include "Material/Raster.h"
+#include "Layout/Raster.h"
 
 #include <gtest/gtest.h>
 

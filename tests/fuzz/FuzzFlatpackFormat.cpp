@@ -2,8 +2,8 @@
 // part size changed once.
 #include "FuzzSupport.h"
 #include "IO/FlatpackFormat.h"
-#include "Material/DesignSpace.h"
-#include "Material/MaterialSpace.h"
+#include "Design/DesignSpace.h"
+#include "Design/MaterialSpace.h"
 
 #include <numeric>
 

@@ -1,0 +1,123 @@
+#include "Design/DesignSpace.h"
+
+#include "Design/Correction.h"
+#include "Design/LeastDesign.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fabguide::material {
+
+Eigen::VectorXd DesignSpace::least(const Eigen::VectorXd& from,
+                                   std::chrono::steady_clock::time_point deadline) const
+{
+    constexpr int passes = 2;
+    Eigen::VectorXd X = from;
+    for (int pass = 0; pass < passes; ++pass) {
+        const Eigen::VectorXd before = sizes(X);
+        for (int size = 0; size < before.size() && std::chrono::steady_clock::now() < deadline; ++size) {
+            Eigen::VectorXd change = Eigen::VectorXd::Zero(before.size());
+            change[size] = -0.5 * sizes(X)[size];
+            if (const auto next = changePartSizes(X, change))
+                X = *next;
+        }
+        if ((sizes(X) - before).lpNorm<Eigen::Infinity>() < 1)
+            break;
+    }
+    return X;
+}
+
+ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
+{
+    for (const DesignBoard& board : design_.boards)
+        parts_.push_back({board.id, board.quantity, board.followsGrain, board.size[board.normal]});
+}
+
+Eigen::VectorXd ConstrainedDesign::sizes(const Eigen::VectorXd& X) const
+{
+    Eigen::VectorXd s(2 * design_.boards.size());
+    for (int i = 0; i < s.size(); ++i)
+        s[i] = X[variableOfSize(i)];
+    return s;
+}
+
+std::optional<Eigen::VectorXd> ConstrainedDesign::changePartSizes(const Eigen::VectorXd& X,
+                                                                  const Eigen::VectorXd& change) const
+{
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(X.size());
+    for (int i = 0; i < change.size(); ++i)
+        u[variableOfSize(i)] = change[i];
+    const CorrectedChange corrected = correctChange(design_, X, u);
+    if (corrected.alpha <= 0)
+        return std::nullopt;
+    return corrected.X;
+}
+
+std::optional<Eigen::VectorXd> ConstrainedDesign::between(const Eigen::VectorXd& from,
+                                                          const Eigen::VectorXd& to, double t) const
+{
+    Eigen::VectorXd X = from + t * (to - from);
+    if (!effective(design_, X) || !unsatisfied(design_, X).empty())
+        return std::nullopt;
+    return X;
+}
+
+Eigen::VectorXd ConstrainedDesign::least(const Eigen::VectorXd& X,
+                                         std::chrono::steady_clock::time_point) const
+{
+    return leastDesign(design_, X).value_or(X);
+}
+
+ParametricDesign::ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,
+                                   Eigen::VectorXd lower, Eigen::VectorXd upper)
+    : parts_(std::move(parts)),
+      sizesOf_(std::move(sizesOf)),
+      start_(std::move(start)),
+      lower_(std::move(lower)),
+      upper_(std::move(upper))
+{
+    if (lower_.size() != start_.size() || upper_.size() != start_.size())
+        throw std::invalid_argument("parametric design: one lower and one upper bound per parameter");
+    for (int j = 0; j < start_.size(); ++j)
+        if (!(lower_[j] <= start_[j] && start_[j] <= upper_[j]))
+            throw std::invalid_argument("parametric design: parameter " + std::to_string(j) +
+                                        " starts outside its bounds");
+    if (sizes(start_).size() != static_cast<Eigen::Index>(2 * parts_.size()))
+        throw std::invalid_argument("parametric design: D(X) must give a width and a height per part");
+}
+
+Eigen::VectorXd ParametricDesign::sizes(const Eigen::VectorXd& X) const
+{
+    return sizesOf_(X);
+}
+
+std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::VectorXd& X,
+                                                                 const Eigen::VectorXd& change) const
+{
+    // Gradients ds/dx_j by forward differences, stepping away from a bound when at the upper one.
+    const Eigen::VectorXd s = sizes(X);
+    Eigen::MatrixXd J(s.size(), X.size());
+    for (int j = 0; j < X.size(); ++j) {
+        const double h = (X[j] + 1e-3 <= upper_[j]) ? 1e-3 : -1e-3;
+        Eigen::VectorXd stepped = X;
+        stepped[j] += h;
+        J.col(j) = (sizes(stepped) - s) / h;
+    }
+    const Eigen::VectorXd delta = J.completeOrthogonalDecomposition().solve(change);
+    // Keep within the parameter bounds: as much of the change as they allow.
+    double alpha = 1;
+    for (int j = 0; j < X.size(); ++j) {
+        if (delta[j] > 0)
+            alpha = std::min(alpha, (upper_[j] - X[j]) / delta[j]);
+        else if (delta[j] < 0)
+            alpha = std::min(alpha, (lower_[j] - X[j]) / delta[j]);
+    }
+    if (!(alpha > 1e-9) || !((J * delta).norm() > 1e-9))
+        return std::nullopt;
+    return X + alpha * delta;
+}
+
+}  // namespace fabguide::material

@@ -1,0 +1,99 @@
+// The design function D(X) as the layout search sees it (thesis 5.2.1): part sizes from design parameters,
+// and CHANGEPARTSIZES (5.4.2.2), for constrained designs (5.3.5) and parametric ones.
+#pragma once
+
+#include "Design/Design.h"
+
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fabguide::material {
+
+/// A part D produces, cut `quantity` times.
+struct PartKind {
+    std::string id;
+    int quantity = 1;
+    bool followsGrain = false;
+    double thickness = 0;  ///< mm: cut from master boards this thick; 0: any
+};
+
+class DesignSpace {
+public:
+    virtual ~DesignSpace() = default;
+    virtual const std::vector<PartKind>& parts() const = 0;
+    /// X_s, the user's design.
+    virtual Eigen::VectorXd start() const = 0;
+    /// s(X): part i's width in material space at 2i, its height at 2i + 1, in mm.
+    virtual Eigen::VectorXd sizes(const Eigen::VectorXd& X) const = 0;
+    /// CHANGEPARTSIZES: parameters whose part sizes change by about `change` (one entry per size), the other
+    /// sizes kept where the design allows; nullopt when the design cannot move that way at all.
+    virtual std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                           const Eigen::VectorXd& change) const = 0;
+    /// The design a fraction t of the way from valid design `from` to valid design `to` (t in [0, 1]);
+    /// nullopt when it breaks a constraint (the design space need not be convex).
+    virtual std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                                   double t) const = 0;
+    /// The least design from X (every part as small as the design allows, for saving a sheet): here each
+    /// part size in turn shrunk by half through CHANGEPARTSIZES, in up to two passes, until `deadline`.
+    virtual Eigen::VectorXd least(const Eigen::VectorXd& X,
+                                  std::chrono::steady_clock::time_point deadline) const;
+};
+
+/// A design of boards with design and effectiveness constraints: a size change is the change vector u of
+/// thesis 5.3.5, kept valid by Algorithms 5 and 6.
+class ConstrainedDesign : public DesignSpace {
+public:
+    explicit ConstrainedDesign(Design design);
+    const std::vector<PartKind>& parts() const override { return parts_; }
+    Eigen::VectorXd start() const override { return design_.variables(); }
+    Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                   const Eigen::VectorXd& change) const override;
+    /// Linear constraints hold on the way; an inner volume may not (a board passing by it).
+    std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                           double t) const override;
+    /// leastDesign's linear programme (X when it fails).
+    Eigen::VectorXd least(const Eigen::VectorXd& X,
+                          std::chrono::steady_clock::time_point deadline) const override;
+    const Design& design() const { return design_; }
+    /// The design variable behind part size s_i (a board's length along one of its in-plane axes).
+    int variableOfSize(int size) const
+    {
+        return sizeVariable(size / 2, design_.boards[size / 2].inPlane()[size % 2]);
+    }
+
+private:
+    Design design_;
+    std::vector<PartKind> parts_;
+};
+
+/// A parametric design (thesis 5.4.2.2): D given as a function from parameters to part sizes, each
+/// parameter within [lower, upper]. Sizes change through finite-difference gradients ds/dX and a least
+/// squares / least norm solve (complete orthogonal decomposition), cut short at the parameter bounds.
+class ParametricDesign : public DesignSpace {
+public:
+    using SizesOf = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+    ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,
+                     Eigen::VectorXd lower, Eigen::VectorXd upper);
+    const std::vector<PartKind>& parts() const override { return parts_; }
+    Eigen::VectorXd start() const override { return start_; }
+    Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
+                                                   const Eigen::VectorXd& change) const override;
+    /// Parameter bounds are a box: every point on the way is within them.
+    std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                           double t) const override
+    {
+        return from + t * (to - from);
+    }
+
+private:
+    std::vector<PartKind> parts_;
+    SizesOf sizesOf_;
+    Eigen::VectorXd start_, lower_, upper_;
+};
+
+}  // namespace fabguide::material

@@ -1,0 +1,72 @@
+#include "Design/FewerSheets.h"
+
+#include "Layout/OrderingSearch.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fabguide::material {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsTo(Clock::time_point deadline)
+{
+    return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
+}
+
+}  // namespace
+
+GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
+                          double seconds)
+{
+    const RasterProblem units = material.raster(sizes);
+    return searchFromStarts(units.parts, material.stock(), orderingSearch(units.parts.size(), seed, seconds));
+}
+
+SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
+                        std::uint64_t seed, Clock::time_point deadline)
+{
+    constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
+    // Each fresh layout gets an even share of the time: the least design, then the bisections.
+    const auto share = [&](int layoutsLeft) { return secondsTo(deadline) / std::max(1, layoutsLeft); };
+    const auto laidOut = [&](const Eigen::VectorXd& X, double seconds) {
+        Eigen::VectorXd sizes = design.sizes(X);
+        GridLayout layout = searchedLayout(material, sizes, seed, seconds);
+        return designLayout(material, X, std::move(sizes), std::move(layout));
+    };
+    const Eigen::VectorXd least = design.least(start.X, deadline);
+    SavedSheets saved{laidOut(least, share(1 + halvings)), {}};
+    const DesignLayout& smallest = saved.least;
+    std::vector<DesignLayout>& found = saved.designs;
+    if (!(smallest.score() < start.score()) || smallest.figures.sheets >= start.figures.sheets)
+        return saved;
+    // Fewer sheets need at least the shrink one sheet more needed: each bisection starts from the last.
+    double lo = 0;
+    for (int sheets = start.figures.sheets - 1; sheets >= smallest.figures.sheets; --sheets) {
+        DesignLayout fits = smallest;
+        double hi = 1;
+        for (int k = 0; k < halvings && Clock::now() < deadline; ++k) {
+            const double t = (lo + hi) / 2;
+            const auto X = design.between(start.X, least, t);
+            if (!X) {
+                lo = t;
+                continue;
+            }
+            DesignLayout at = laidOut(*X, share(halvings - k));
+            if (!std::isinf(at.score()) && at.figures.sheets <= sheets) {
+                hi = t;
+                fits = std::move(at);
+            } else {
+                lo = t;
+            }
+        }
+        if (found.empty() || (found.back().X - fits.X).norm() > 1e-6)
+            found.push_back(std::move(fits));
+        lo = hi;
+    }
+    return saved;
+}
+
+}  // namespace fabguide::material

@@ -1,0 +1,243 @@
+#include "Design/MaterialSpace.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+
+namespace fabguide::material {
+
+MaterialSpace::MaterialSpace(std::vector<MasterBoard> boards, PackSettings settings,
+                             std::vector<PartKind> parts)
+    : boards_(std::move(boards)), settings_(settings), parts_(std::move(parts))
+{
+    const PackProblem sized = problem(Eigen::VectorXd::Ones(2 * static_cast<Eigen::Index>(parts_.size())));
+    checkSettings(sized);  // before the quantities are expanded
+    for (size_t k = 0; k < parts_.size(); ++k)
+        kindOf_.insert(kindOf_.end(), std::max(0, parts_[k].quantity), static_cast<int>(k));
+    stock_ = rasterise(sized).stock;
+}
+
+PackProblem MaterialSpace::problem(const Eigen::VectorXd& sizes) const
+{
+    PackProblem problem{boards_, {}, settings_, false};
+    for (size_t k = 0; k < parts_.size(); ++k) {
+        problem.parts.push_back(
+            rectangularPart(parts_[k].id, sizes[2 * k], sizes[2 * k + 1], parts_[k].quantity));
+        problem.parts.back().followsGrain = parts_[k].followsGrain;
+        problem.parts.back().thickness = parts_[k].thickness;
+    }
+    return problem;
+}
+
+GridLayout MaterialSpace::dock(const Eigen::VectorXd& sizes, const std::vector<int>& order) const
+{
+    try {
+        return material::dock(raster(sizes).parts, order, stock_, Criterion::Docking);
+    } catch (const PackingError&) {  // a part larger than every board: no layout
+        GridLayout none;
+        none.unplaced = order;
+        return none;
+    }
+}
+
+namespace {
+
+/// A unit's cells on its sheet: lower corner `at`, extent `length`, per material-space axis.
+struct Rect {
+    int at[2];
+    int length[2];
+};
+
+bool overlaps(const Rect& a, const Rect& b)
+{
+    for (int k = 0; k < 2; ++k)
+        if (a.at[k] >= b.at[k] + b.length[k] || b.at[k] >= a.at[k] + a.length[k])
+            return false;
+    return true;
+}
+
+bool collides(const std::vector<Rect>& placed, const Rect& r)
+{
+    return std::any_of(placed.begin(), placed.end(), [&](const Rect& o) { return overlaps(o, r); });
+}
+
+/// smallestLeftFreeInterval / smallestBottomFreeInterval: the free cells before `r` along `axis`.
+int freeBefore(const std::vector<Rect>& placed, const Rect& r, int axis)
+{
+    const int other = 1 - axis;
+    int gap = r.at[axis];
+    for (const Rect& o : placed)
+        if (o.at[other] < r.at[other] + r.length[other] && r.at[other] < o.at[other] + o.length[other] &&
+            o.at[axis] + o.length[axis] <= r.at[axis])
+            gap = std::min(gap, r.at[axis] - (o.at[axis] + o.length[axis]));
+    return gap;
+}
+
+/// smallestRightDecollision / smallestTopDecollision: the least move along `axis` that clears every
+/// overlap, nullopt when that leaves the sheet.
+std::optional<int> decollision(const std::vector<Rect>& placed, const Rect& r, int axis, int limit)
+{
+    Rect moved = r;
+    for (int to = r.at[axis];; moved.at[axis] = to) {
+        for (const Rect& o : placed)
+            if (overlaps(o, moved))
+                to = std::max(to, o.at[axis] + o.length[axis]);
+        if (to == moved.at[axis])
+            break;
+    }
+    if (moved.at[axis] + moved.length[axis] > limit)
+        return std::nullopt;
+    return moved.at[axis] - r.at[axis];
+}
+
+}  // namespace
+
+GridLayout MaterialSpace::slide(const GridLayout& previous, const Eigen::VectorXd& sizes) const
+{
+    constexpr int kMoves = 4;  // N in thesis 5.4.2.3
+    const RasterProblem units = raster(sizes);
+    GridLayout out;
+    out.stock = previous.stock;
+    out.usedWidth.assign(previous.stock.size(), 0);
+    out.usedHeight.assign(previous.stock.size(), 0);
+    out.skylineArea.assign(previous.stock.size(), 0);
+    std::vector<std::vector<Rect>> placed(previous.stock.size());
+    const auto fail = [&] {
+        GridLayout none;
+        none.unplaced.resize(units.parts.size());
+        std::iota(none.unplaced.begin(), none.unplaced.end(), 0);
+        return none;
+    };
+    if (!previous.unplaced.empty())
+        return fail();
+
+    for (const Placed& p : previous.placed) {
+        // Rectangles have their 0° shape first and their 90° one second, unless square (one shape).
+        const RasterPart& unit = units.parts[p.part];
+        const int shape = std::min<int>(p.shape, static_cast<int>(unit.shapes.size()) - 1);
+        const BoardStock& board = stock_[previous.stock[p.sheet]];
+        const int limit[2] = {board.width, board.height};
+        Rect r{{p.x, p.y}, {unit.shapes[shape].width(), unit.shapes[shape].height()}};
+        for (int k = 0; k < 2; ++k) {
+            if (r.length[k] > limit[k])
+                return fail();
+            r.at[k] = std::min(r.at[k], limit[k] - r.length[k]);
+        }
+        std::vector<Rect>& sheet = placed[p.sheet];
+        const auto boxArea = [&](const Rect& m) {
+            return static_cast<long>(std::max(out.usedWidth[p.sheet], m.at[0] + m.length[0])) *
+                   std::max(out.usedHeight[p.sheet], m.at[1] + m.length[1]);
+        };
+        for (int move = 0; move < kMoves; ++move) {
+            std::optional<int> delta[2];
+            for (int k = 0; k < 2; ++k)
+                delta[k] = collides(sheet, r) ? decollision(sheet, r, k, limit[k])
+                                              : std::optional<int>(-freeBefore(sheet, r, k));
+            if (!delta[0] && !delta[1])
+                return fail();
+            if (delta[0] == 0 && delta[1] == 0)
+                break;
+            Rect along[2] = {r, r};
+            for (int k = 0; k < 2; ++k)
+                along[k].at[k] += delta[k].value_or(0);
+            int pick;
+            if (!delta[0] || !delta[1])
+                pick = delta[0] ? 0 : 1;
+            else if (boxArea(along[0]) != boxArea(along[1]))
+                pick = boxArea(along[0]) < boxArea(along[1]) ? 0 : 1;
+            else
+                pick = *delta[0] < *delta[1] && *delta[0] != 0 ? 0 : 1;
+            r = along[pick];
+        }
+        if (collides(sheet, r))
+            return fail();
+        sheet.push_back(r);
+        out.usedWidth[p.sheet] = std::max(out.usedWidth[p.sheet], r.at[0] + r.length[0]);
+        out.usedHeight[p.sheet] = std::max(out.usedHeight[p.sheet], r.at[1] + r.length[1]);
+        out.placed.push_back({p.part, p.sheet, r.at[0], r.at[1], shape});
+    }
+    return out;
+}
+
+double MaterialSpace::wastage(const GridLayout& layout, const Eigen::VectorXd& sizes) const
+{
+    if (!layout.unplaced.empty() || layout.placed.empty())
+        return 1.0;
+    const double tau = settings_.resolution, clearance = settings_.kerf + settings_.spacing;
+    double bounding = 0, parts = 0;
+    for (size_t s = 0; s < layout.stock.size(); ++s)
+        bounding += (layout.usedWidth[s] * tau - clearance) * (layout.usedHeight[s] * tau - clearance);
+    for (int kind : kindOf_)
+        parts += sizes[2 * kind] * sizes[2 * kind + 1];
+    return 1.0 - parts / bounding;
+}
+
+std::array<std::array<double, 2>, 2> MaterialSpace::strips(const GridLayout& layout, size_t s) const
+{
+    const MasterBoard& sheet = boards_[layout.stock[s]];
+    // The layout starts inside the trim: what lies beyond its right (top) edge is left whole.
+    const double tau = settings_.resolution, trim = settings_.trim;
+    const double right = trim + layout.usedWidth[s] * tau, top = trim + layout.usedHeight[s] * tau;
+    return {{{sheet.width, sheet.height - top}, {sheet.width - right, top}}};
+}
+
+MaterialSpace::Figures MaterialSpace::figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const
+{
+    Figures f;
+    double used = 0, bought = 0, parts = 0;
+    double cheapest = std::numeric_limits<double>::infinity();
+    for (const MasterBoard& board : boards_)
+        if (board.cost > 0)
+            cheapest = std::min(cheapest, board.cost);
+    f.unit = std::isfinite(cheapest) ? cheapest : 1;
+    for (size_t s = 0; s < layout.stock.size(); ++s) {
+        const MasterBoard& sheet = boards_[layout.stock[s]];
+        used += sheet.width * sheet.height;  // the whole sheet, trim and all
+        f.cost += sheet.cost;
+        if (sheet.cost > 0) {
+            ++f.sheets;
+            bought += sheet.width * sheet.height;
+        }
+        for (const auto& strip : strips(layout, s))
+            if (strip[0] * strip[1] > f.offcut[0] * f.offcut[1])
+                f.offcut = strip;
+    }
+    for (int kind : kindOf_)
+        parts += sizes[2 * kind] * sizes[2 * kind + 1];
+    f.bought = bought / 1e6;
+    f.waste = (used - parts) / 1e6;
+    return f;
+}
+
+std::vector<MasterBoard> MaterialSpace::offcuts(const GridLayout& layout, double least) const
+{
+    std::vector<MasterBoard> out;
+    for (size_t s = 0; s < layout.stock.size(); ++s) {
+        const MasterBoard& sheet = boards_[layout.stock[s]];
+        const auto both = strips(layout, s);
+        const char* where[] = {"above", "beside"};
+        for (int k = 0; k < 2; ++k)
+            if (both[k][0] >= least && both[k][1] >= least)
+                out.push_back({sheet.name + " offcut " + std::to_string(s + 1) + " " + where[k],
+                               sheet.material, std::floor(both[k][0]), std::floor(both[k][1]),
+                               sheet.thickness, 1, sheet.grain, 0});
+    }
+    return out;
+}
+
+Layout MaterialSpace::inMillimetres(const GridLayout& layout, const Eigen::VectorXd& sizes) const
+{
+    const PackProblem sized = problem(sizes);
+    return material::inMillimetres(layout, sized, rasterise(sized));
+}
+
+int MaterialSpace::sizeAlong(int unit, int rotation, int axis) const
+{
+    const bool turned = rotation % 180 != 0;
+    return 2 * kindOf_[unit] + ((axis == 0) != turned ? 0 : 1);
+}
+
+}  // namespace fabguide::material

@@ -1,0 +1,61 @@
+// MINWASTAGE (thesis 5.4, Algorithm 7): rounds of ordering exploration and design improvement on several
+// threads, and K = 3 diverse suggestions (5.3.3) with the path of designs that led to each.
+#pragma once
+
+#include "Design/ImproveDesign.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace fabguide::material {
+
+struct MinWastageOptions {
+    int rounds = 3;             ///< G
+    int keep = 3;               ///< K designs carried from round to round
+    int tasksPerRound = 8;      ///< orderings explored and improved per round (thesis: up to 8 threads)
+    int improveIterations = 6;  ///< N of IMPROVEDESIGN
+    int suggestions = 3;
+    int threads = 2;         ///< 1 runs everything on the caller's thread
+    std::uint64_t seed = 1;  ///< same seed, same suggestions (unless the time limit cuts the search)
+    double timeLimit = 8;    ///< seconds; the search ends with what it has found
+    bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
+    const std::atomic<bool>* cancel = nullptr;
+    /// Called on the caller's thread after each task: fraction done, usage of the best design so far.
+    std::function<void(double, double)> progress;
+};
+
+/// A suggestion: the design reached, its layout, and the designs from the user's one to it, in order.
+struct Suggestion {
+    DesignLayout result;
+    std::vector<DesignLayout> path;
+    double usage() const { return 1 - result.wastage; }
+};
+
+struct Exploration {
+    DesignLayout start;  ///< the user's design, laid out by the same docking and ordering search
+    std::vector<Suggestion> suggestions;
+    double seconds = 0;
+    bool stopped = false;  ///< cancelled, or the time limit ended it
+    int designsImproved = 0;
+    int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
+    int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
+    double usageBefore() const { return 1 - start.wastage; }
+};
+
+/// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
+/// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over). Throws PackingError
+/// naming a part left over when the design does not fit.
+DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
+                    double seconds = 10);
+
+/// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first), after FEWERSHEETS (a fifth of the
+/// time limit) whose designs the rounds improve on. Every suggestion keeps the design's constraints (it comes
+/// from CHANGEPARTSIZES, or between the design and its least one); the suggestions are the best in the
+/// maker's order, the least change on as many sheets, then the designs farthest (in part lengths) from those
+/// chosen within 3 % of the bought area of its waste. None needs more sheets than the design as it is, none
+/// is the design unchanged, each reopens; fewer when the search found no other distinct improving design.
+Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
+                       const MinWastageOptions& options);
+
+}  // namespace fabguide::material

@@ -1,0 +1,75 @@
+#include "Layout/CutSheet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace fabguide::material {
+
+namespace {
+
+/// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
+/// longer side, as large as fits the circle free there (a text n characters long is about 0.6 n of its
+/// height wide) between 2 and 12 mm.
+Label labelOf(const std::string& text, const geometry::Outline& placed, const Placement& p)
+{
+    const auto [at, room] = geometry::deepestPoint(placed);
+    const double n = static_cast<double>(std::max<size_t>(text.size(), 1));
+    const double fits = room / std::sqrt(0.09 * n * n + 0.25);  // half-diagonal of the text box = room
+    return {text, at, std::clamp(fits, 2.0, 12.0), p.height > p.width ? 90.0 : 0.0};
+}
+
+}  // namespace
+
+geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem, size_t k)
+{
+    const Placement& p = layout.placements[k];
+    return geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
+}
+
+std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem)
+{
+    std::vector<CutSheet> sheets;
+    for (const MasterBoard& board : layout.sheets)
+        sheets.push_back({board, {}, {}, {}, {}});
+    std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
+    for (size_t k = 0; k < layout.placements.size(); ++k) {
+        const Placement& p = layout.placements[k];
+        const PartSpec& spec = problem.parts[p.part];
+        const geometry::Outline path =
+            geometry::offset(placedOutline(layout, problem, k), problem.settings.kerf / 2);
+        CutSheet& sheet = sheets[p.sheet];
+        sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
+        outers[p.sheet].push_back(path.outer);
+        sheet.labels.push_back(labelOf(spec.id, placedOutline(layout, problem, k), p));
+        const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
+        for (const Drill& drill : spec.drills)
+            sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
+        for (const geometry::Polygon& mark : spec.marks) {
+            sheet.engraved.emplace_back();
+            for (const geometry::Point2& q : mark)
+                sheet.engraved.back().push_back(move(q));
+        }
+    }
+    // Inner cuts first: a part never drops out before its holes are cut.
+    for (size_t s = 0; s < sheets.size(); ++s)
+        sheets[s].cuts.insert(sheets[s].cuts.end(), outers[s].begin(), outers[s].end());
+    return sheets;
+}
+
+std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem)
+{
+    std::map<std::pair<int, int>, int> count;  // (part, sheet) -> quantity
+    for (const Placement& p : layout.placements)
+        ++count[{p.part, p.sheet}];
+    std::vector<CutListRow> rows;
+    for (const auto& [key, quantity] : count) {
+        const PartSpec& spec = problem.parts[key.first];
+        const MasterBoard& board = layout.sheets[key.second];
+        rows.push_back(
+            {spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material, key.second});
+    }
+    return rows;
+}
+
+}  // namespace fabguide::material

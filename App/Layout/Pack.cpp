@@ -1,0 +1,248 @@
+#include "Layout/Pack.h"
+
+#include "Layout/Raster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+namespace fabguide::material {
+
+RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
+{
+    RasterPart part{spec.id, {}, {}, spec.followsGrain, spec.thickness};
+    for (int rotation : spec.orientations) {
+        const Footprint shape = rasterise(geometry::placed(spec.outline, rotation, 0, 0), settings.resolution,
+                                          settings.kerf + settings.spacing);
+        // Identical shapes are one choice, unless the grain tells a turned one apart.
+        bool known = false;
+        for (size_t k = 0; k < part.shapes.size() && !known; ++k)
+            known =
+                part.shapes[k] == shape && (!spec.followsGrain || part.rotations[k] % 180 == rotation % 180);
+        if (!known) {
+            part.shapes.push_back(shape);
+            part.rotations.push_back(rotation);
+        }
+    }
+    return part;
+}
+
+namespace {
+
+/// Whether `part` is cut from `board` (of its thickness) and fits on it (trim removed) in one of its
+/// orientations, by its bounding box.
+bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& s, bool strip)
+{
+    if (!ofThickness(part.thickness, board.thickness))
+        return false;
+    const double w = board.width - 2 * s.trim, h = strip ? HUGE_VAL : board.height - 2 * s.trim;
+    for (int rotation : part.orientations) {
+        const bool turned = rotation % 180 != 0;
+        if ((turned ? part.height() : part.width()) <= w + 1e-9 &&
+            (turned ? part.width() : part.height()) <= h + 1e-9)
+            return true;
+    }
+    return false;
+}
+
+std::string number(const char* format, double n)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, format, n);
+    return text;
+}
+std::string mm(double n)
+{
+    return number("%.6g", n);
+}
+std::string cells(double n)
+{
+    return number("%.3g", n);
+}
+
+/// "not enough master boards: part 'a' and 3 more do not fit <where>"
+PackingError notEnoughBoards(const std::string& part, long more, const std::string& where)
+{
+    return PackingError("not enough master boards: part '" + part + "' " +
+                        (more ? "and " + std::to_string(more) + " more do not fit " : "does not fit ") +
+                        where);
+}
+
+}  // namespace
+
+void checkSettings(const PackProblem& problem)
+{
+    const PackSettings& s = problem.settings;
+    if (!(s.resolution > 0))
+        throw std::invalid_argument("settings.resolution must be positive");
+    if (s.kerf < 0 || s.spacing < 0 || s.trim < 0)
+        throw std::invalid_argument("settings.kerf, spacing and trim must not be negative");
+    if (problem.boards.empty())
+        throw std::invalid_argument("boards: at least one master board is needed");
+    if (problem.parts.empty())
+        throw std::invalid_argument("parts: nothing to lay out");
+    // Sizes are checked before anything is rasterised: the grid is what takes time and memory.
+    for (size_t k = 0; k < problem.boards.size(); ++k) {
+        const MasterBoard& b = problem.boards[k];
+        const double grid = (b.width / s.resolution) * (problem.strip ? 1.0 : b.height / s.resolution);
+        if (b.width > kLongest || (!problem.strip && b.height > kLongest) || grid > kMostCells)
+            throw std::invalid_argument("boards[" + std::to_string(k) + "] ('" + b.name +
+                                        "'): " + mm(b.width) + " x " + mm(b.height) + " mm is " +
+                                        cells(grid) + " grid cells at settings.resolution " +
+                                        mm(s.resolution) + " mm; FabGuide lays out boards of up to " +
+                                        mm(kLongest) + " mm and " + cells(kMostCells) + " cells");
+    }
+    // The boards' area for parts of a thickness: those boards of it.
+    const auto boardArea = [&](double thickness) {
+        double area = 0;
+        for (const MasterBoard& b : problem.boards)
+            if (ofThickness(thickness, b.thickness))
+                area += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
+        return area;
+    };
+    long units = 0, over = 0;           // over: units past their boards' area, in the order given
+    std::map<double, double> partArea;  // per thickness
+    const PartSpec* first = nullptr;
+    for (const PartSpec& part : problem.parts) {
+        units += part.quantity;
+        if (units > kMostUnits)
+            throw std::invalid_argument("parts: more than " + std::to_string(kMostUnits) +
+                                        " parts to lay out (quantities added up)");
+        if (std::none_of(problem.boards.begin(), problem.boards.end(),
+                         [&](const MasterBoard& b) { return ofThickness(part.thickness, b.thickness); }))
+            throw PackingError("part '" + part.id + "' is " + mm(part.thickness) +
+                               " mm thick: no master board is");
+        if (std::none_of(problem.boards.begin(), problem.boards.end(),
+                         [&](const MasterBoard& b) { return fitsOn(part, b, s, problem.strip); }))
+            throw PackingError("part '" + part.id + "' is larger than every master board" +
+                               (part.thickness > 0 ? " of its thickness" : std::string()) + " (" +
+                               mm(part.width()) + " x " + mm(part.height()) + " mm)");
+        const double area = geometry::area(part.outline);
+        for (int k = 0; k < part.quantity && !over; ++k)
+            if ((partArea[part.thickness] += area) > boardArea(part.thickness))
+                first = &part, over = part.quantity - k;
+        if (over && first != &part)
+            over += part.quantity;
+    }
+    if (over)
+        throw notEnoughBoards(first->id, over - 1,
+                              "in the boards' " + mm(boardArea(first->thickness) / 1e6) + " m²");
+}
+
+namespace {
+
+/// Time left until `deadline`, in seconds.
+double secondsUntil(std::chrono::steady_clock::time_point deadline)
+{
+    return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
+}
+
+}  // namespace
+
+GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
+                            OrderingSearchOptions options)
+{
+    // Each start wins on some instances: best-fit orders preferring large extents, wide parts and large
+    // areas, and the thesis' decreasing extent (5.3.1). Building a best-fit order may take a sixth of the
+    // time each; the searches from the starts share what is left equally.
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](double s) {
+        return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+    };
+    const auto end = Clock::now() + seconds(options.timeLimit);
+    std::vector<std::vector<int>> starts;
+    for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
+        starts.push_back(bestFitOrder(parts, stock, options.criterion, options.bounds, preference,
+                                      Clock::now() + seconds(options.timeLimit / 6)));
+    starts.push_back(decreasingExtentOrder(parts));
+    GridLayout best;
+    LayoutCost bestCost;
+    for (size_t k = 0; k < starts.size(); ++k) {
+        options.timeLimit = secondsUntil(end) / static_cast<double>(starts.size() - k);
+        GridLayout layout = exploreOrderings(parts, starts[k], stock, options);
+        const LayoutCost layoutCost = cost(layout, stock, options.bounds);
+        if (k == 0 || layoutCost < bestCost) {
+            best = std::move(layout);
+            bestCost = layoutCost;
+        }
+    }
+    return best;
+}
+
+PartSpec rectangularPart(std::string id, double width, double height, int quantity,
+                         std::vector<int> orientations)
+{
+    return {std::move(id), geometry::rectangle(width, height), quantity, std::move(orientations), {}, {}};
+}
+
+RasterProblem rasterise(const PackProblem& problem)
+{
+    const PackSettings& settings = problem.settings;
+    const double clearance = settings.kerf + settings.spacing;
+    RasterProblem raster;
+    long stripCells = 0;
+    for (size_t i = 0; i < problem.parts.size(); ++i)
+        for (int q = 0; q < problem.parts[i].quantity; ++q) {
+            raster.parts.push_back(rasterPart(problem.parts[i], settings));
+            raster.specOf.push_back(static_cast<int>(i));
+            stripCells +=
+                std::max(raster.parts.back().shapes[0].width(), raster.parts.back().shapes[0].height());
+        }
+    for (const MasterBoard& board : problem.boards)
+        raster.stock.push_back(
+            {cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
+             problem.strip ? static_cast<int>(stripCells)
+                           : cellsWithin(board.height - 2 * settings.trim + clearance, settings.resolution),
+             problem.strip ? 1 : board.count, board.grain, board.thickness, board.cost});
+    if (problem.strip)
+        raster.stock.resize(1);
+    return raster;
+}
+
+Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster)
+{
+    if (!grid.unplaced.empty())
+        throw notEnoughBoards(raster.parts[grid.unplaced.front()].name,
+                              static_cast<long>(grid.unplaced.size()) - 1, "on the boards available");
+    const PackSettings& settings = problem.settings;
+    const double clearance = settings.kerf + settings.spacing;
+    Layout layout;
+    const double tau = settings.resolution;
+    for (size_t s = 0; s < grid.stock.size(); ++s) {
+        MasterBoard sheet = problem.boards[grid.stock[s]];
+        if (problem.strip)
+            sheet.height = layout.stripHeight = grid.usedHeight[s] * tau - clearance;
+        sheet.count = 1;
+        layout.sheets.push_back(sheet);
+        layout.sheetArea += sheet.width * sheet.height;
+        const double usedWidth = problem.strip ? sheet.width : grid.usedWidth[s] * tau - clearance;
+        layout.boundingArea += usedWidth * (grid.usedHeight[s] * tau - clearance);
+    }
+    for (const Placed& p : grid.placed) {
+        const PartSpec& spec = problem.parts[raster.specOf[p.part]];
+        const int rotation = raster.parts[p.part].rotations[p.shape];
+        const bool turned = rotation % 180 != 0;
+        layout.placements.push_back(
+            {raster.specOf[p.part], p.sheet, settings.trim + p.x * tau, settings.trim + p.y * tau, rotation,
+             turned ? spec.height() : spec.width(), turned ? spec.width() : spec.height()});
+        layout.partArea += geometry::area(spec.outline);
+    }
+    return layout;
+}
+
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+{
+    const auto started = std::chrono::steady_clock::now();
+    checkSettings(problem);
+    const RasterProblem raster = rasterise(problem);
+    OrderingSearchOptions options = search;
+    options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
+    options.timeLimit =
+        std::max(0.0, options.timeLimit -
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    return inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
+}
+
+}  // namespace fabguide::material

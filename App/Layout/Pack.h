@@ -1,0 +1,115 @@
+// Flat-pack layout in millimetres: master boards, parts, settings -> layout (thesis 5.2.2, 5.3.1, 5.4.3).
+#pragma once
+
+#include "Geometry/Polygon.h"
+#include "Layout/Drill.h"
+#include "Layout/OrderingSearch.h"
+
+#include <string>
+#include <vector>
+
+namespace fabguide::material {
+
+/// A kind of master board (thesis 5.1): a leftover rectangle is just another one.
+struct MasterBoard {
+    std::string name;
+    std::string material;
+    double width = 0;      ///< mm, along the layout's x axis
+    double height = 0;     ///< mm
+    double thickness = 0;  ///< mm
+    int count = 1;         ///< boards in stock; -1 means as many as needed
+    Grain grain = Grain::None;
+    double cost = 1;  ///< what one board costs (any unit; 1: a sheet); 0 for one already owned, an offcut
+};
+
+/// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres, with the
+/// holes to drill and the marks to engrave on it (from its connectors), in the outline's frame.
+struct PartSpec {
+    std::string id;
+    geometry::Outline outline;  ///< its bounding box's lower-left corner at the origin
+    int quantity = 1;
+    std::vector<int> orientations{0, 90, 180, 270};  ///< allowed rotations, degrees counter-clockwise
+    std::vector<Drill> drills;
+    std::vector<geometry::Polygon> marks;
+    bool followsGrain = false;  ///< its length (x axis) along the grain of boards that have one
+    double thickness = 0;       ///< mm: cut only from master boards this thick; 0: from any
+    double width() const { return geometry::bounds(outline.outer).width(); }
+    double height() const { return geometry::bounds(outline.outer).height(); }
+};
+
+/// A plain width × height rectangular part.
+PartSpec rectangularPart(std::string id, double width, double height, int quantity = 1,
+                         std::vector<int> orientations = {0, 90, 180, 270});
+
+struct PackSettings {
+    double resolution = 0.5;  ///< grid cell size τ in mm (thesis 5.4.1)
+    double kerf = 0;          ///< width of the cut in mm
+    double spacing = 0;       ///< extra material left between parts, mm
+    double trim = 0;          ///< margin cut off every board edge, mm
+};
+
+struct PackProblem {
+    std::vector<MasterBoard> boards;
+    std::vector<PartSpec> parts;
+    PackSettings settings;
+    bool strip = false;  ///< strip packing: one board of boards[0].width, height to minimise
+};
+
+/// One unit of a part on a sheet; x, y is the lower-left corner of the part as placed.
+struct Placement {
+    int part = 0;   ///< index into PackProblem::parts
+    int sheet = 0;  ///< index into Layout::sheets
+    double x = 0, y = 0;
+    int rotation = 0;
+    double width = 0, height = 0;  ///< size as placed
+};
+
+struct Layout {
+    std::vector<MasterBoard> sheets;  ///< the boards used, in order
+    std::vector<Placement> placements;
+    double stripHeight = 0;   ///< strip mode: height used
+    double partArea = 0;      ///< mm²
+    double boundingArea = 0;  ///< summed bounding rectangles of each sheet's layout, mm²
+    double sheetArea = 0;     ///< summed areas of the boards used, mm²
+    double usage() const { return partArea / boundingArea; }  ///< the thesis' measure (5.2.3)
+    double sheetUtilisation() const { return partArea / sheetArea; }
+    double wasteArea() const { return sheetArea - partArea; }
+};
+
+/// What a workshop could use: boards up to 20 m long and 2·10^8 grid cells (a 5 x 10 m sheet at 0.5 mm), and
+/// 200,000 parts to lay out.
+constexpr double kLongest = 20000, kMostCells = 2e8;
+constexpr long kMostUnits = 200000;
+
+/// Throws std::invalid_argument naming a bad setting, a board beyond kLongest / kMostCells, more than
+/// kMostUnits parts, or no boards or parts; PackingError naming a part larger than every master board.
+/// Takes no more than a pass over the parts: it runs before anything is rasterised.
+void checkSettings(const PackProblem& problem);
+
+/// A part's allowed orientations rasterised at the settings' resolution with kerf + spacing as clearance,
+/// identical shapes once (a turned one kept apart when the part follows the grain).
+RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings);
+
+/// A problem on the material-space grid: one RasterPart per unit of demand, the part (spec) each unit is
+/// of, and the master boards in cells (trim removed, clearance added back at the far edges).
+struct RasterProblem {
+    std::vector<RasterPart> parts;
+    std::vector<int> specOf;
+    std::vector<BoardStock> stock;
+};
+RasterProblem rasterise(const PackProblem& problem);
+
+/// A grid layout of `raster` back in millimetres. Throws PackingError naming the parts left unplaced.
+Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster);
+
+/// The ordering search of `pack`: swaps from several starting orders sharing `options.timeLimit`
+/// (best-fit orders and the thesis' decreasing extent); the best layout found.
+GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
+                            OrderingSearchOptions options);
+
+/// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
+/// order search with Docking (or Bottom-Left), convert back to mm.
+/// Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search);
+
+}  // namespace fabguide::material
