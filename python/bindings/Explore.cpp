@@ -1,12 +1,12 @@
 // Bindings of zero-waste design exploration (thesis 5.3-5.4): designs are the `*.flatpack.json` dicts of
 // docs/formats.md; the search runs without the GIL and reports progress on the calling thread.
 #include "Bindings.h"
+#include "Design/Correction.h"
+#include "Design/DynamicPacker.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 #include "Json.h"
-#include "Design/Correction.h"
-#include "Design/DynamicPacker.h"
 
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>

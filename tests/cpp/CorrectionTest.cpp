@@ -1,7 +1,7 @@
 // Algorithms 5 and 6 (thesis 5.3.5) on a small table: changes kept, constraints held, failures named.
+#include "Design/Correction.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
-#include "Design/Correction.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Saving a sheet (issue 14): the least design's linear programme and FEWERSHEETS on a suite bookcase that
 // needs two sheets as drawn and one when its shelves are a little shallower.
-#include "IO/FlatpackFormat.h"
-#include "IO/Json.h"
 #include "Design/FewerSheets.h"
 #include "Design/LeastDesign.h"
 #include "Design/MinWastage.h"
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
 
 #include <gtest/gtest.h>
 

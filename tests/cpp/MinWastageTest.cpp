@@ -1,9 +1,9 @@
 // Design exploration (thesis 5.4): SLIDE, the locking chains, IMPROVEDESIGN and MINWASTAGE on real designs.
-#include "IO/FlatpackFormat.h"
-#include "IO/Json.h"
 #include "Design/Correction.h"
 #include "Design/DynamicPacker.h"
 #include "Design/MinWastage.h"
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
 
 #include <gtest/gtest.h>
 

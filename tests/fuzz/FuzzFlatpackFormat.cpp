@@ -1,9 +1,9 @@
 // libFuzzer harness: *.flatpack.json read, its constraints checked, and, when small, laid out once and each
 // part size changed once.
-#include "FuzzSupport.h"
-#include "IO/FlatpackFormat.h"
 #include "Design/DesignSpace.h"
 #include "Design/MaterialSpace.h"
+#include "FuzzSupport.h"
+#include "IO/FlatpackFormat.h"
 
 #include <numeric>
 
