@@ -11,8 +11,8 @@
 
 namespace fabguide::material {
 
-Eigen::VectorXd DesignSpace::least(const Eigen::VectorXd& from,
-                                   std::chrono::steady_clock::time_point deadline) const
+std::optional<Eigen::VectorXd> DesignSpace::least(const Eigen::VectorXd& from,
+                                                  std::chrono::steady_clock::time_point deadline) const
 {
     constexpr int passes = 2;
     Eigen::VectorXd X = from;
@@ -65,10 +65,10 @@ std::optional<Eigen::VectorXd> ConstrainedDesign::between(const Eigen::VectorXd&
     return X;
 }
 
-Eigen::VectorXd ConstrainedDesign::least(const Eigen::VectorXd& X,
-                                         std::chrono::steady_clock::time_point) const
+std::optional<Eigen::VectorXd> ConstrainedDesign::least(const Eigen::VectorXd& X,
+                                                        std::chrono::steady_clock::time_point) const
 {
-    return leastDesign(design_, X).value_or(X);
+    return leastDesign(design_, X);
 }
 
 ParametricDesign::ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,

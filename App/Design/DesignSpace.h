@@ -37,9 +37,10 @@ public:
     virtual std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
                                                    double t) const = 0;
     /// The least design from X (every part as small as the design allows, for saving a sheet): here each
-    /// part size in turn shrunk by half through CHANGEPARTSIZES, in up to two passes, until `deadline`.
-    virtual Eigen::VectorXd least(const Eigen::VectorXd& X,
-                                  std::chrono::steady_clock::time_point deadline) const;
+    /// part size in turn shrunk by half through CHANGEPARTSIZES, in up to two passes, until `deadline`;
+    /// nullopt when it could not be found.
+    virtual std::optional<Eigen::VectorXd> least(const Eigen::VectorXd& X,
+                                                 std::chrono::steady_clock::time_point deadline) const;
 };
 
 /// A design of boards with design and effectiveness constraints: a size change is the change vector u of
@@ -55,9 +56,9 @@ public:
     /// Linear constraints hold on the way; an inner volume may not (a board passing by it).
     std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
                                            double t) const override;
-    /// leastDesign's linear programme (X when it fails).
-    Eigen::VectorXd least(const Eigen::VectorXd& X,
-                          std::chrono::steady_clock::time_point deadline) const override;
+    /// leastDesign.
+    std::optional<Eigen::VectorXd> least(const Eigen::VectorXd& X,
+                                         std::chrono::steady_clock::time_point deadline) const override;
     const Design& design() const { return design_; }
     /// The design variable behind part size s_i (a board's length along one of its in-plane axes).
     int variableOfSize(int size) const

@@ -36,9 +36,12 @@ SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material
         GridLayout layout = searchedLayout(material, sizes, seed, seconds);
         return designLayout(material, X, std::move(sizes), std::move(layout));
     };
-    const Eigen::VectorXd least = design.least(start.X, deadline);
+    const std::optional<Eigen::VectorXd> shrunk = design.least(start.X, deadline);
+    if (!shrunk)
+        return {};
+    const Eigen::VectorXd& least = *shrunk;
     SavedSheets saved{laidOut(least, share(1 + halvings)), {}};
-    const DesignLayout& smallest = saved.least;
+    const DesignLayout& smallest = *saved.least;
     std::vector<DesignLayout>& found = saved.designs;
     if (!(smallest.score() < start.score()) || smallest.figures.sheets >= start.figures.sheets)
         return saved;

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace fabguide::material {
@@ -17,9 +18,10 @@ namespace fabguide::material {
 GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
                           double seconds);
 
-/// What FEWERSHEETS found: the least design with its fresh layout, and the designs that save sheets.
+/// What FEWERSHEETS found: the least design with its fresh layout (none when it could not be found), and the
+/// designs that save sheets.
 struct SavedSheets {
-    DesignLayout least;
+    std::optional<DesignLayout> least;
     std::vector<DesignLayout> designs;
 };
 

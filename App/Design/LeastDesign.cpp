@@ -1,6 +1,6 @@
 #include "Design/LeastDesign.h"
 
-#include <libalglib/optimization.h>
+#include "Function/LeastChange.h"
 
 #include <cmath>
 #include <limits>
@@ -9,16 +9,21 @@ namespace fabguide::material {
 
 namespace {
 
-constexpr double kHair = 1e-3;  // weight of |d|² against the area's mm² per mm
+/// How far (mm) below its length the solve aims the length that carries the most area: far enough that every
+/// length stops at a constraint first, so that the valid design nearest the aim is the least one.
+constexpr double kReach = 1e4;
 
-/// A row lower <= expression - constant <= upper of the programme.
-struct Row {
-    Linear expression;
-    double lower, upper;
-};
+/// lower <= expression <= upper as a constraint on the change d = X' - X, loosened where X itself holds it
+/// only to a hair, so that d = 0 is feasible.
+function::LinearConstraint onChange(const Linear& expression, double lower, double upper,
+                                    const Eigen::VectorXd& X)
+{
+    const double at = expression.value(X);
+    return {expression.terms, std::min(0.0, lower - at), std::max(0.0, upper - at), ""};
+}
 
 /// Board b kept out of inner volume v along the axis and side it is most clear of it at X.
-Row outOf(const InnerVolume& v, int b, const Eigen::VectorXd& X)
+function::LinearConstraint outOf(const InnerVolume& v, int b, const Eigen::VectorXd& X)
 {
     double widest = -std::numeric_limits<double>::infinity();
     Linear keep;
@@ -29,7 +34,7 @@ Row outOf(const InnerVolume& v, int b, const Eigen::VectorXd& X)
                 widest = gap;
                 keep = low - high;  // <= 0 when clear
             }
-    return {keep, -std::numeric_limits<double>::infinity(), std::max(0.0, -widest)};
+    return onChange(keep, -std::numeric_limits<double>::infinity(), 0, X);
 }
 
 }  // namespace
@@ -38,78 +43,35 @@ std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::Ve
 {
     const int n = static_cast<int>(X.size());
     const double inf = std::numeric_limits<double>::infinity();
-    std::vector<Row> rows;
+    std::vector<function::LinearConstraint> rows;
     for (const DesignConstraint& e : design.equalities)
-        rows.push_back({e.expression, 0, 0});
+        rows.push_back(onChange(e.expression, 0, 0, X));
     for (const DesignConstraint& bound : design.bounds)
-        rows.push_back({bound.expression, -inf, 0});
+        rows.push_back(onChange(bound.expression, -inf, 0, X));
     for (const InnerVolume& v : design.innerVolumes)
         for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
             if (b != v.on)
                 rows.push_back(outOf(v, b, X));
-
-    alglib::real_1d_array cost, lower, upper;
-    cost.setlength(n);
-    lower.setlength(n);
-    upper.setlength(n);
     const std::vector<bool> frozen = design.frozen();
     const Eigen::VectorXd minimum = design.minimum();
-    for (int i = 0; i < n; ++i) {
-        cost[i] = 0;
-        // The change d = X' - X, so that d = 0 is feasible even where X holds a constraint only to a hair.
-        lower[i] = frozen[i] ? 0 : (i % 6 >= 3 ? std::min(0.0, std::max(0.0, minimum[i]) - X[i]) : -inf);
-        upper[i] = frozen[i] ? 0 : inf;
-    }
+    for (int i = 0; i < n; ++i)
+        if (frozen[i] || i % 6 >= 3)  // thicknesses stay; a length no shorter than its minimum, nor 0
+            rows.push_back(onChange({{{i, 1.0}}, 0}, frozen[i] ? X[i] : std::max(0.0, minimum[i]),
+                                    frozen[i] ? X[i] : inf, X));
+    // The aim: every in-plane length shorter in proportion to the area a mm of it carries (the other length
+    // times the quantity: the area's gradient), positions where they are; the least-change solve
+    // (thesis 4.4's) finds the valid design nearest to it.
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(n);
     for (int b = 0; b < static_cast<int>(design.boards.size()); ++b) {
         const auto [u, v] = design.boards[b].inPlane();
-        const double q = design.boards[b].quantity;
-        cost[sizeVariable(b, u)] = q * X[sizeVariable(b, v)];
-        cost[sizeVariable(b, v)] = q * X[sizeVariable(b, u)];
+        gradient[sizeVariable(b, u)] = design.boards[b].quantity * X[sizeVariable(b, v)];
+        gradient[sizeVariable(b, v)] = design.boards[b].quantity * X[sizeVariable(b, u)];
     }
-    alglib::real_1d_array d;
-    alglib::minqpreport report;
-    try {
-        alglib::minqpstate state;
-        alglib::minqpcreate(n, state);
-        // A hair of |d|² makes the programme strictly convex: one answer, boards that may move anywhere
-        // (positions cost nothing) staying where they are.
-        alglib::sparsematrix hessian;
-        alglib::sparsecreate(n, n, n, hessian);
-        for (int i = 0; i < n; ++i)
-            alglib::sparseset(hessian, i, i, 2 * kHair);
-        alglib::sparseconverttocrs(hessian);
-        alglib::minqpsetquadratictermsparse(state, hessian, true);
-        alglib::minqpsetlinearterm(state, cost);
-        alglib::minqpsetbc(state, lower, upper);
-        const int k = static_cast<int>(rows.size());
-        if (k > 0) {
-            alglib::sparsematrix c;
-            alglib::sparsecreate(k, n, c);
-            alglib::real_1d_array al, au;
-            al.setlength(k);
-            au.setlength(k);
-            for (int r = 0; r < k; ++r) {
-                for (const auto& [variable, coefficient] : rows[r].expression.terms)
-                    alglib::sparseadd(c, r, variable, coefficient);
-                const double at = rows[r].expression.value(X);
-                al[r] = std::min(0.0, rows[r].lower - at);
-                au[r] = std::max(0.0, rows[r].upper - at);
-            }
-            alglib::sparseconverttocrs(c);
-            alglib::minqpsetlc2(state, c, al, au, k);
-        }
-        alglib::minqpsetalgosparseipm(state, 1e-12);
-        alglib::minqpoptimize(state);
-        alglib::minqpresults(state, d, report);
-    } catch (const alglib::ap_error&) {  // no third-party exception leaves the core
+    const Eigen::VectorXd aim = -kReach * gradient / std::max(gradient.maxCoeff(), 1e-9);
+    const function::LeastChangeResult d = function::solveLeastChange(aim, rows, nullptr, 1e-8);
+    if (!d.solved)
         return std::nullopt;
-    }
-    if (report.terminationtype <= 0)
-        return std::nullopt;
-    Eigen::VectorXd least(n);
-    for (int i = 0; i < n; ++i)
-        least[i] = X[i] + d[i];
-    return least;
+    return X + d.x;
 }
 
 }  // namespace fabguide::material

@@ -7,11 +7,11 @@
 
 namespace fabguide::material {
 
-/// The design nearest in kind to X with the least material: a linear programme minimising the part areas'
-/// first-order change (each in-plane length weighted by the part's other length at X and its quantity)
+/// The design with every part as small as the constraints allow: the least-change solve (thesis 4.4) towards
+/// an aim far below every length in proportion to the area it carries (so it approaches the least total area)
 /// subject to the design constraints, the bounds, minimum lengths, the thicknesses as they are, and every
 /// board on the side of each inner volume it is on at X (so every design between X and the result keeps its
-/// inner volumes free). nullopt when the programme fails (X itself breaking a constraint).
+/// inner volumes free). nullopt when the solve fails.
 std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::VectorXd& X);
 
 }  // namespace fabguide::material

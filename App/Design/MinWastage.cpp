@@ -281,7 +281,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.
     SavedSheets saved = fewerSheets(design, material, exploration.start, options.seed,
                                     std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)));
-    exploration.leastSheets = saved.least.layout.unplaced.empty() ? saved.least.figures.sheets : 0;
+    exploration.leastSheets =
+        saved.least && saved.least->layout.unplaced.empty() ? saved.least->figures.sheets : 0;
     for (DesignLayout& d : saved.designs) {
         pool.push_back({d, orderOf(d.layout), {exploration.start, d}});
         entries.push_back(pool.back());
