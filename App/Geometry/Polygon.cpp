@@ -13,6 +13,7 @@ namespace fabguide::geometry {
 namespace {
 
 constexpr double kClipperScale = 1e4;  // Clipper works on integers: 0.1 µm steps
+constexpr double kPi = 3.14159265358979323846;
 
 ClipperLib::Path toClipper(const Polygon& polygon)
 {
@@ -267,6 +268,39 @@ std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
     for (const ClipperLib::Path& piece : pieces)
         out.push_back(fromClipper(piece));
     return out;
+}
+
+Outline dogboned(const Outline& outline, double diameter)
+{
+    // Discs a hair (0.1 mm) larger than the bit, sampled to 0.05 mm: the bit's centre reaches its spot with
+    // room to spare, so the tool path (the outline offset by the bit's radius) gets there.
+    const double r = diameter / 2, disc = r + 0.1;
+    const int sides = std::max(16, static_cast<int>(std::ceil(kPi / std::acos(1 - 0.05 / disc))));
+    std::vector<Polygon> discs;
+    const auto relieve = [&](const Polygon& contour) {  // material on the left of every contour
+        const size_t n = contour.size();
+        for (size_t k = 0; k < n; ++k) {
+            const Point2 &a = contour[(k + n - 1) % n], &p = contour[k], &b = contour[(k + 1) % n];
+            const double ax = a.x - p.x, ay = a.y - p.y, bx = b.x - p.x, by = b.y - p.y;
+            const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+            if (la < 1e-9 || lb < 1e-9)
+                continue;
+            const double cross = (p.x - a.x) * by - (p.y - a.y) * bx;  // < 0: a right turn, an inside corner
+            const double turn = std::acos(std::clamp(-(ax * bx + ay * by) / (la * lb), -1.0, 1.0));
+            if (cross >= 0 || turn < kPi / 6)
+                continue;
+            const double wx = ax / la + bx / lb, wy = ay / la + by / lb, lw = std::hypot(wx, wy);
+            const Point2 c{p.x + r * wx / lw, p.y + r * wy / lw};
+            discs.emplace_back();
+            for (int s = 0; s < sides; ++s)
+                discs.back().push_back(
+                    {c.x + disc * std::cos(2 * kPi * s / sides), c.y + disc * std::sin(2 * kPi * s / sides)});
+        }
+    };
+    relieve(outline.outer);
+    for (const Polygon& hole : outline.holes)
+        relieve(hole);
+    return discs.empty() ? outline : subtract(outline, discs);
 }
 
 std::pair<Point2, double> deepestPoint(const Outline& outline)

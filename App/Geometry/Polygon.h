@@ -73,6 +73,11 @@ Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons);
 /// The parts of `polygon` inside `outline`.
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 
+/// Dogbones (a router's relief at inside corners): the outline less a disc of the bit's radius at each
+/// corner where the material turns in by at least 30° (a notch's or a slot's, a hole's), centred on the
+/// corner's bisector a radius out into the waste, so a round bit of `diameter` cuts the corner square.
+Outline dogboned(const Outline& outline, double diameter);
+
 /// The point of the outline's material farthest from its edges and holes (its pole of inaccessibility, to
 /// 0.01 mm) and that distance, the radius of the largest circle inside it: found by eroding the outline
 /// (Clipper, round corners) by a bisected depth until nothing is left.

@@ -143,6 +143,7 @@ material::PackSettings readSettings(const nlohmann::json& document)
     result.kerf = settings.number("kerf", 0.0, 0.0);
     result.spacing = settings.number("spacing", 0.0, 0.0);
     result.trim = settings.number("trim", 0.0, 0.0);
+    result.dogbone = settings.number("dogbone", 0.0, 0.0);
     return result;
 }
 
@@ -378,7 +379,11 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
     return {{"format", "fabguide.pack"},
             {"version", kPackFormatVersion},
             {"settings",
-             {{"resolution", s.resolution}, {"kerf", s.kerf}, {"spacing", s.spacing}, {"trim", s.trim}}},
+             {{"resolution", s.resolution},
+              {"kerf", s.kerf},
+              {"spacing", s.spacing},
+              {"trim", s.trim},
+              {"dogbone", s.dogbone}}},
             {"boards", boards},
             {"parts", parts}};
 }

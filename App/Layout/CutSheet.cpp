@@ -36,12 +36,14 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     for (size_t k = 0; k < layout.placements.size(); ++k) {
         const Placement& p = layout.placements[k];
         const PartSpec& spec = problem.parts[p.part];
+        const geometry::Outline placed = placedOutline(layout, problem, k);
+        const double bit = problem.settings.dogbone;
         const geometry::Outline path =
-            geometry::offset(placedOutline(layout, problem, k), problem.settings.kerf / 2);
+            geometry::offset(bit > 0 ? geometry::dogboned(placed, bit) : placed, problem.settings.kerf / 2);
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
         outers[p.sheet].push_back(path.outer);
-        sheet.labels.push_back(labelOf(spec.id, placedOutline(layout, problem, k), p));
+        sheet.labels.push_back(labelOf(spec.id, placed, p));
         const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
         for (const Drill& drill : spec.drills)
             sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});

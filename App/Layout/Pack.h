@@ -46,6 +46,7 @@ struct PackSettings {
     double kerf = 0;          ///< width of the cut in mm
     double spacing = 0;       ///< extra material left between parts, mm
     double trim = 0;          ///< margin cut off every board edge, mm
+    double dogbone = 0;       ///< router bit diameter for dogbones at inside corners, mm; 0: none
 };
 
 struct PackProblem {

@@ -93,3 +93,34 @@ TEST(Polygon, TheDeepestPointIsFarthestFromEdgesAndHoles)
     EXPECT_NEAR(room, 100 * std::sqrt(2) / (1 + std::sqrt(2)), 0.02);
     EXPECT_FALSE(at.x > 100 && at.x < 200 && at.y > 100 && at.y < 200);
 }
+
+TEST(Polygon, DogbonesLetTheBitReachEveryInsideCorner)
+{
+    using namespace fabguide::geometry;
+    // A 100 x 50 board with a 20 x 20 notch from the top: its two inside corners, (40, 30) and (60, 30).
+    const Outline notched{{{0, 0}, {100, 0}, {100, 50}, {60, 50}, {60, 30}, {40, 30}, {40, 50}, {0, 50}}, {}};
+    const double bit = 6, r = bit / 2;
+    const auto nearest = [](const Outline& path, Point2 c) {
+        double d = 1e300;
+        for (const Point2& p : path.outer)
+            d = std::min(d, std::hypot(p.x - c.x, p.y - c.y));
+        return d;
+    };
+    // The bit's centre must reach r out from each corner along its bisector into the notch.
+    const Point2 right{60 - r / std::sqrt(2), 30 + r / std::sqrt(2)},
+        left{40 + r / std::sqrt(2), 30 + r / std::sqrt(2)};
+    const Outline plain = offset(notched, r), relieved = offset(dogboned(notched, bit), r);
+    EXPECT_GT(nearest(plain, right), 1.0);  // a plain path stops short: a 3 mm fillet is left in the corner
+    EXPECT_LT(nearest(relieved, right), 0.1);
+    EXPECT_LT(nearest(relieved, left), 0.1);
+    // Only the two corners lose material, each less than half a disc; outer corners stay square.
+    const double lost = area(notched) - area(dogboned(notched, bit));
+    EXPECT_GT(lost, 0);
+    EXPECT_LT(lost, 2 * 3.14159 * r * r / 2);
+    EXPECT_LT(nearest(dogboned(notched, bit), {100, 50}), 1e-6);
+    // A hole's corners are inside corners too.
+    Outline framed = rectangle(100, 100);
+    framed.holes.push_back({{30, 30}, {30, 70}, {70, 70}, {70, 30}});
+    EXPECT_EQ(dogboned(framed, bit).holes.size(), 1u);
+    EXPECT_GT(area(framed) - area(dogboned(framed, bit)), 4 * 0.5);
+}

@@ -210,7 +210,7 @@ def test_thick_boards_are_doweled_and_the_holes_reach_the_cut_sheets(doc, tmp_pa
     assert dxf.layers.has_entry("DRILL_9MM") and not dxf.audit().has_errors
 
 
-def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc):
+def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_path):
     parts = [box(doc, "Side", 6, 200, 300), box(doc, "Shelf", 300, 200, 6, at=(6, 0, 150))]
     doc.recompute()
     boards = [board.create(doc, p, label=p.Label + " board", thickness=6) for p in parts]
@@ -220,6 +220,19 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc):
     parts_cut = {p["id"]: p for p in json.loads(lay.ProblemJson)["parts"]}
     assert len(parts_cut["Side board"]["holes"]) == 7  # through-slots for the shelf's tabs
     assert len(parts_cut["Shelf board"]["outline"]) > 4
+    # Cut by a 3 mm router bit: every corner of the 7 slots gets a dogbone, so the cut paths gain points there.
+    import ezdxf
+
+    def cut_points(folder):
+        layout.export_cut_sheets(lay, str(folder))
+        cuts = ezdxf.readfile(str(folder / "sheet-1.dxf")).modelspace().query("LWPOLYLINE[layer=='CUT']")
+        return sum(len(e) for e in cuts)
+
+    square = cut_points(tmp_path / "square")
+    lay.Dogbone = 3
+    doc.recompute()
+    assert json.loads(lay.ProblemJson)["settings"]["dogbone"] == 3
+    assert cut_points(tmp_path / "dogbones") >= square + 7 * 4 * 3
     lay.Joints = "None"
     doc.recompute()
     assert lay.Connectors == [] and json.loads(lay.ProblemJson)["parts"][0]["holes"] == []

@@ -29,6 +29,9 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
         add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
         add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
+        add(obj, "App::PropertyLength", "Dogbone", "Cutting",
+            "Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; "
+            "0 for none (a laser)", 0)
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
             "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
             "Auto", list(JOINTS))
@@ -106,7 +109,7 @@ def make_problem(obj):
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
-                     "trim": obj.Trim.Value},
+                     "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value},
         "boards": [master_board.as_problem_board(m) for m in masters],
     }
     return problem, boards
