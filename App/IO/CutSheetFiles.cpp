@@ -248,35 +248,43 @@ void writeCutList(const std::vector<material::CutListRow>& rows, const std::stri
 }
 
 std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
-                                     const std::string& extension)
+                                     const std::string& extension, const std::string& name)
 {
+    if (name.find_first_of("/\\") != std::string::npos || name == "." || name == "..")
+        throw FormatError("\"" + name + "\": a cut-sheet name must be a plain file name");
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error)
         throw FormatError(folder + ": cannot create folder (" + error.message() + ")");
+    const auto pathOf = [&](size_t number) {
+        return (std::filesystem::path(folder) /
+                ((name.empty() ? "" : name + "-") + "sheet-" + std::to_string(number) + "." + extension))
+            .string();
+    };
     std::vector<std::string> paths;
     for (size_t s = 0; s < sheets.size(); ++s) {
-        paths.push_back(
-            (std::filesystem::path(folder) / ("sheet-" + std::to_string(s + 1) + "." + extension)).string());
+        paths.push_back(pathOf(s + 1));
         if (extension == "svg")
             writeSvg(sheets[s], paths.back());
         else
             writeAtomically(paths.back(),
                             [&](const std::string& file) { writeDxf(sheets[s], paths.back(), file); });
     }
+    for (size_t stale = sheets.size() + 1; std::filesystem::remove(pathOf(stale), error); ++stale) {
+    }
     return paths;
 }
 
 std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile)
+                                        const std::string& csvFile, const std::string& name)
 {
     std::vector<std::string> written;
     if (!svgFolder.empty() || !dxfFolder.empty()) {
         const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
         for (const auto& [folder, extension] : {std::pair{svgFolder, "svg"}, std::pair{dxfFolder, "dxf"}})
             if (!folder.empty())
-                for (const std::string& path : writeSheets(sheets, folder, extension))
+                for (const std::string& path : writeSheets(sheets, folder, extension, name))
                     written.push_back(path);
     }
     if (!csvFile.empty()) {

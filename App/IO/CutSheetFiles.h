@@ -24,13 +24,17 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path);
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path);
 
 /// The cut sheets of a layout: SVG files into `svgFolder`, DXF files into `dxfFolder`, the cut list into
-/// `csvFile`, each skipped when empty; returns the paths written.
+/// `csvFile`, each skipped when empty; sheet files named after `name` when given (writeSheets); returns the
+/// paths written.
 std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile);
+                                        const std::string& csvFile, const std::string& name = "");
 
-/// Writes sheet-1.svg / sheet-1.dxf ... into `folder` (created if missing); returns the paths written.
+/// Writes sheet-1.svg / sheet-1.dxf ... (NAME-sheet-1.svg ... when `name` is given: two layouts share a
+/// folder) into `folder` (created if missing), and removes the set's sheets numbered past these, left by an
+/// earlier run with more sheets, so a set is replaced whole; returns the paths written. FormatError for a
+/// name that is not a plain file name.
 std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& sheets, const std::string& folder,
-                                     const std::string& extension);
+                                     const std::string& extension, const std::string& name = "");
 
 }  // namespace fabguide::io

@@ -41,10 +41,10 @@ std::pair<material::PackProblem, material::Layout> readLayout(const py::object& 
 
 std::vector<std::string> writeCutSheets(const py::object& problemDict, const py::object& layoutDict,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile)
+                                        const std::string& csvFile, const std::string& name)
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile);
+    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile, name);
 }
 
 py::list placedOutlines(const py::object& problemDict, const py::object& layoutDict)
@@ -121,8 +121,9 @@ void bindMaterial(py::module_& m)
         "The SVG text of each master board's cut sheet; stroke = line width in sheet mm (0.1: as written).");
     m.def("write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
           py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
-          "Write SVG/DXF cut sheets per board and a CSV cut list for a layout of the problem; returns the "
-          "paths.");
+          py::arg("name") = "",
+          "Write SVG/DXF cut sheets per board (NAME-sheet-N.svg when a name is given; sheets of an earlier, "
+          "longer set removed) and a CSV cut list for a layout of the problem; returns the paths.");
 }
 
 }  // namespace fabguide::bindings

@@ -94,7 +94,8 @@ def export_writes_svg_dxf_and_csv():
         Gui.runCommand("FabGuide_ExportCutSheets")
     finally:
         QtGui.QFileDialog.getExistingDirectory = original
-    assert sorted(os.listdir(folder)) == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"], os.listdir(folder)
+    assert sorted(os.listdir(folder)) == ["Layout-cutlist.csv", "Layout-sheet-1.dxf", "Layout-sheet-1.svg"], \
+        os.listdir(folder)
 
 
 def techdraw_page_opens_with_the_cut_sheet():

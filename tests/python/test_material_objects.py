@@ -1,6 +1,7 @@
 """Flat-pack document objects, headless: boards from solids, faces and sketches; master boards; the
 layout recomputes, names its errors, survives save/reload and undo, and exports its cut sheets."""
 import json
+import os
 import math
 import xml.etree.ElementTree as ET
 
@@ -180,12 +181,33 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     doc.recompute()
     written = layout.export_cut_sheets(lay, str(tmp_path / "sheets"))
     names = sorted(p.split("/")[-1] for p in written)
-    assert names == ["cutlist.csv", "sheet-1.dxf", "sheet-1.svg"]
-    svg = (tmp_path / "sheets" / "sheet-1.svg").read_text()
+    assert names == ["Layout-cutlist.csv", "Layout-sheet-1.dxf", "Layout-sheet-1.svg"]
+    svg = (tmp_path / "sheets" / "Layout-sheet-1.svg").read_text()
     cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='cut']/{http://www.w3.org/2000/svg}path")
     assert 'width="1220mm"' in svg and len(cuts) == 5 and ">sidel<" in svg
-    csv = (tmp_path / "sheets" / "cutlist.csv").read_text().splitlines()
+    csv = (tmp_path / "sheets" / "Layout-cutlist.csv").read_text().splitlines()
     assert csv[0] == "part,quantity,width,height,thickness,material,board" and len(csv) == 6
+
+
+def test_two_layouts_share_a_folder_and_a_re_export_replaces_its_set_whole(doc, tmp_path):
+    boards, masters = shelf_unit(doc)
+    first = layout.create(doc, boards, masters, label="Shelf unit")
+    second = layout.create(doc, boards, [master_board.create(doc, 1220, 610, 18, 0)], label="Shelf unit/small")
+    doc.recompute()
+    assert second.SheetCount > 1
+    layout.export_cut_sheets(first, str(tmp_path))
+    layout.export_cut_sheets(second, str(tmp_path))
+    files = sorted(os.listdir(tmp_path))
+    assert "Shelf-unit-sheet-1.svg" in files and "Shelf-unit-small-sheet-1.svg" in files, files
+    # The small sheets grown to hold everything on one: its old sheet-2 files go, the other layout's stay.
+    second.MasterBoards[0].Width, second.MasterBoards[0].Height = 2440, 1220
+    doc.recompute()
+    assert second.SheetCount == 1
+    layout.export_cut_sheets(second, str(tmp_path))
+    files = sorted(os.listdir(tmp_path))
+    assert [f for f in files if f.startswith("Shelf-unit-small-sheet-")] == [
+        "Shelf-unit-small-sheet-1.dxf", "Shelf-unit-small-sheet-1.svg"], files
+    assert "Shelf-unit-sheet-1.svg" in files
 
 
 def test_export_before_recompute_is_refused(doc):
@@ -202,9 +224,9 @@ def test_thick_boards_are_doweled_and_the_holes_reach_the_cut_sheets(doc, tmp_pa
     doc.recompute()
     assert len(lay.Connectors) == 6 and all("3 dowels" in c for c in lay.Connectors), lay.Connectors
     layout.export_cut_sheets(lay, str(tmp_path))
-    svg = (tmp_path / "sheet-1.svg").read_text()
+    svg = (tmp_path / "Layout-sheet-1.svg").read_text()
     assert svg.count("<circle") == 18 and 'data-depth="9"' in svg
-    dxf = ezdxf.readfile(str(tmp_path / "sheet-1.dxf"))
+    dxf = ezdxf.readfile(str(tmp_path / "Layout-sheet-1.dxf"))
     drills = [e for e in dxf.modelspace() if e.dxf.layer == "DRILL_9MM"]  # the depth in the layer's name
     assert len(drills) == 18 and all(e.dxftype() == "CIRCLE" and e.dxf.radius == 4 for e in drills)
     assert dxf.layers.has_entry("DRILL_9MM") and not dxf.audit().has_errors
@@ -225,7 +247,7 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_pat
 
     def cut_points(folder):
         layout.export_cut_sheets(lay, str(folder))
-        cuts = ezdxf.readfile(str(folder / "sheet-1.dxf")).modelspace().query("LWPOLYLINE[layer=='CUT']")
+        cuts = ezdxf.readfile(str(folder / "Layout-sheet-1.dxf")).modelspace().query("LWPOLYLINE[layer=='CUT']")
         return sum(len(e) for e in cuts)
 
     square = cut_points(tmp_path / "square")

@@ -173,10 +173,18 @@ def sheets_shape(problem, result, origin):
     return Part.makeCompound(sheets + parts)
 
 
+def file_stem(label):
+    """A label as a file name: letters, digits, '-', '_' and '.', the rest '-' ("Shelf unit" -> "Shelf-unit")."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "-", label).strip("-.") or "layout"
+
+
 def export_cut_sheets(obj, folder):
-    """SVG and DXF per master board and cutlist.csv into `folder`, for the layout as last computed."""
+    """LABEL-sheet-N.svg and .dxf per master board and LABEL-cutlist.csv into `folder`, for the layout as last
+    computed: two layouts share a folder, and a re-export replaces its own set whole."""
     if not obj.LayoutJson:
         raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
     os.makedirs(folder, exist_ok=True)
+    stem = file_stem(obj.Label)
     return fabguide_core.write_cut_sheets(json.loads(obj.ProblemJson), json.loads(obj.LayoutJson), svg_folder=folder,
-                                          dxf_folder=folder, csv_file=os.path.join(folder, "cutlist.csv"))
+                                          dxf_folder=folder, csv_file=os.path.join(folder, stem + "-cutlist.csv"),
+                                          name=stem)
