@@ -303,6 +303,39 @@ Outline dogboned(const Outline& outline, double diameter)
     return discs.empty() ? outline : subtract(outline, discs);
 }
 
+std::vector<Polygon> withTabs(const Polygon& contour, int tabs, double width)
+{
+    Polygon loop = contour;
+    loop.push_back(contour.front());
+    std::vector<double> at{0};  // arc length at each point of the loop
+    for (size_t k = 1; k < loop.size(); ++k)
+        at.push_back(at.back() + std::hypot(loop[k].x - loop[k - 1].x, loop[k].y - loop[k - 1].y));
+    const double length = at.back(), spacing = length / std::max(tabs, 1);
+    if (tabs < 1 || width <= 0 || width >= spacing / 2)
+        return {loop};
+    const auto pointAt = [&](double s) {  // the point at arc length s along the loop
+        const size_t k = static_cast<size_t>(std::upper_bound(at.begin(), at.end(), s) - at.begin());
+        const size_t i = std::clamp<size_t>(k, 1, loop.size() - 1);
+        const double t = (s - at[i - 1]) / std::max(at[i] - at[i - 1], 1e-12);
+        return Point2{loop[i - 1].x + t * (loop[i].x - loop[i - 1].x),
+                      loop[i - 1].y + t * (loop[i].y - loop[i - 1].y)};
+    };
+    std::vector<Polygon> pieces;
+    for (int k = 0; k < tabs; ++k) {
+        // From the end of tab k to the start of tab k + 1, around the loop.
+        const double from = (k + 0.25) * spacing + width / 2, to = (k + 1.25) * spacing - width / 2;
+        Polygon piece{pointAt(std::fmod(from, length))};
+        for (size_t j = 0; j < 2 * loop.size(); ++j) {  // the loop's points strictly between, wrapping once
+            const double s = at[j % loop.size()] + (j >= loop.size() ? length : 0);
+            if (s > from && s < to && j % loop.size() != loop.size() - 1)
+                piece.push_back(loop[j % loop.size()]);
+        }
+        piece.push_back(pointAt(std::fmod(to, length)));
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
+
 std::pair<Point2, double> deepestPoint(const Outline& outline)
 {
     const auto eroded = [&](double depth) {  // the material at least `depth` from every edge

@@ -78,6 +78,11 @@ std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 /// corner's bisector a radius out into the waste, so a round bit of `diameter` cuts the corner square.
 Outline dogboned(const Outline& outline, double diameter);
 
+/// A closed contour cut open by `tabs` gaps of `width` mm, evenly spaced along it (the first a quarter of a
+/// spacing from its start): the open pieces between them, each from one gap to the next. The contour whole
+/// (one piece, closed by repeating its first point) when it is too short for the gaps.
+std::vector<Polygon> withTabs(const Polygon& contour, int tabs, double width);
+
 /// The point of the outline's material farthest from its edges and holes (its pole of inaccessibility, to
 /// 0.01 mm) and that distance, the radius of the largest circle inside it: found by eroding the outline
 /// (Clipper, round corners) by a bisected depth until nothing is left.

@@ -42,13 +42,13 @@ std::string quoteCsv(const std::string& text)
     return out + "\"";
 }
 
-/// A closed SVG path; y flipped for SVG's downward axis on a sheet `height` tall.
-std::string svgPath(const geometry::Polygon& polygon, double height)
+/// An SVG path, closed unless `open`; y flipped for SVG's downward axis on a sheet `height` tall.
+std::string svgPath(const geometry::Polygon& polygon, double height, bool open = false)
 {
     std::ostringstream d;
     for (size_t i = 0; i < polygon.size(); ++i)
         d << (i ? " L" : "M") << polygon[i].x << "," << height - polygon[i].y;
-    return "<path d=\"" + d.str() + " Z\"/>";
+    return "<path d=\"" + d.str() + (open ? "" : " Z") + "\"/>";
 }
 
 /// The OBJECTS section of an R2000 file: the root dictionary, groups and the three layouts dxflib's
@@ -134,6 +134,8 @@ std::string svg(const material::CutSheet& sheet, double stroke)
         << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"" << stroke << "\">\n";
     for (const geometry::Polygon& cut : sheet.cuts)
         out << "    " << svgPath(cut, h) << "\n";
+    for (const geometry::Polygon& cut : sheet.tabbed)
+        out << "    " << svgPath(cut, h, true) << "\n";
     out << "  </g>\n  <g id=\"drill\" fill=\"none\" stroke=\"#00a000\" stroke-width=\"" << stroke << "\">\n";
     for (const material::Drill& drill : sheet.drills)
         out << "    <circle cx=\"" << drill.at.x << "\" cy=\"" << h - drill.at.y << "\" r=\""
@@ -209,9 +211,10 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     dw->sectionEnd();
 
     dw->sectionEntities();
-    auto polygon = [&](const geometry::Polygon& points, const char* layer) {
+    auto polygon = [&](const geometry::Polygon& points, const char* layer, bool open = false) {
         const DL_Attributes attributes(layer, 256, -1, "BYLAYER", 1.0);  // colour and line type by layer
-        dxf.writePolyline(*dw, DL_PolylineData(static_cast<int>(points.size()), 0, 0, 1), attributes);
+        dxf.writePolyline(*dw, DL_PolylineData(static_cast<int>(points.size()), 0, 0, open ? 0 : 1),
+                          attributes);
         for (const geometry::Point2& p : points)
             dxf.writeVertex(*dw, DL_VertexData(p.x, p.y, 0.0, 0.0));
         dxf.writePolylineEnd(*dw);
@@ -221,6 +224,8 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
         "SHEET");
     for (const geometry::Polygon& cut : sheet.cuts)
         polygon(cut, "CUT");
+    for (const geometry::Polygon& cut : sheet.tabbed)
+        polygon(cut, "CUT", true);
     for (const geometry::Polygon& mark : sheet.engraved)
         polygon(mark, "ENGRAVE");
     for (const material::Drill& drill : sheet.drills)

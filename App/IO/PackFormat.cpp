@@ -144,6 +144,8 @@ material::PackSettings readSettings(const nlohmann::json& document)
     result.spacing = settings.number("spacing", 0.0, 0.0);
     result.trim = settings.number("trim", 0.0, 0.0);
     result.dogbone = settings.number("dogbone", 0.0, 0.0);
+    result.tabWidth = settings.number("tab_width", 0.0, 0.0);
+    result.tabBelow = settings.number("tab_below", 300.0, 0.0);
     return result;
 }
 
@@ -383,7 +385,9 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
               {"kerf", s.kerf},
               {"spacing", s.spacing},
               {"trim", s.trim},
-              {"dogbone", s.dogbone}}},
+              {"dogbone", s.dogbone},
+              {"tab_width", s.tabWidth},
+              {"tab_below", s.tabBelow}}},
             {"boards", boards},
             {"parts", parts}};
 }

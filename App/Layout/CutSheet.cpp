@@ -31,7 +31,7 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
 {
     std::vector<CutSheet> sheets;
     for (const MasterBoard& board : layout.sheets)
-        sheets.push_back({board, {}, {}, {}, {}});
+        sheets.push_back({board, {}, {}, {}, {}, {}});
     std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
     for (size_t k = 0; k < layout.placements.size(); ++k) {
         const Placement& p = layout.placements[k];
@@ -42,7 +42,13 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
             geometry::offset(bit > 0 ? geometry::dogboned(placed, bit) : placed, problem.settings.kerf / 2);
         CutSheet& sheet = sheets[p.sheet];
         sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
-        outers[p.sheet].push_back(path.outer);
+        const PackSettings& s = problem.settings;
+        if (s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow) {
+            const std::vector<geometry::Polygon> pieces = geometry::withTabs(path.outer, 2, s.tabWidth);
+            sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
+        } else {
+            outers[p.sheet].push_back(path.outer);
+        }
         sheet.labels.push_back(labelOf(spec.id, placed, p));
         const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
         for (const Drill& drill : spec.drills)

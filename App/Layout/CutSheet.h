@@ -21,6 +21,9 @@ struct Label {
 struct CutSheet {
     MasterBoard board;
     std::vector<geometry::Polygon> cuts;  ///< closed tool paths, holes before outer contours
+    /// Open tool paths, cut last: small parts' outer contours broken by holding tabs (settings.tabWidth),
+    /// so the part stays in the sheet when cut free.
+    std::vector<geometry::Polygon> tabbed;
     std::vector<Label> labels;
     std::vector<Drill> drills;                ///< holes drilled into the face, not through
     std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)

@@ -47,6 +47,8 @@ struct PackSettings {
     double spacing = 0;       ///< extra material left between parts, mm
     double trim = 0;          ///< margin cut off every board edge, mm
     double dogbone = 0;       ///< router bit diameter for dogbones at inside corners, mm; 0: none
+    double tabWidth = 0;      ///< holding tabs left in the outer cut of small parts, mm wide; 0: none
+    double tabBelow = 300;    ///< parts whose longer side is under this (mm) get holding tabs
 };
 
 struct PackProblem {

@@ -103,6 +103,21 @@ TEST(CutSheet, ALabelSitsInTheMaterialClearOfHolesAndAlongThePart)
     }
 }
 
+TEST(CutSheet, SmallPartsAreHeldByTabsAndCutLast)
+{
+    PackProblem p = problem();
+    p.settings.tabWidth = 4;
+    p.settings.tabBelow = 180;  // the 150 x 80 side, not the 200 x 100 lids
+    const Layout layout = pack(p, quick());
+    const CutSheet sheet = cutSheets(layout, p)[0];
+    const long small = std::count_if(
+        layout.placements.begin(), layout.placements.end(),
+        [&](const Placement& at) { return at.sheet == 0 && std::max(at.width, at.height) < 180; });
+    ASSERT_GT(small, 0);
+    EXPECT_EQ(sheet.tabbed.size(), static_cast<size_t>(2 * small));  // two open pieces each
+    EXPECT_EQ(sheet.cuts.size(), layout.placements.size() - small);  // the others closed as before
+}
+
 TEST(CutSheet, CutListCountsPartsPerBoard)
 {
     const PackProblem p = problem();

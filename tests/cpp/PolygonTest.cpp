@@ -124,3 +124,26 @@ TEST(Polygon, DogbonesLetTheBitReachEveryInsideCorner)
     EXPECT_EQ(dogboned(framed, bit).holes.size(), 1u);
     EXPECT_GT(area(framed) - area(dogboned(framed, bit)), 4 * 0.5);
 }
+
+TEST(Polygon, HoldingTabsLeaveGapsEvenlyAlongTheContour)
+{
+    using namespace fabguide::geometry;
+    const Polygon contour = rectangle(100, 50).outer;
+    const auto length = [](const Polygon& piece) {
+        double l = 0;
+        for (size_t k = 1; k < piece.size(); ++k)
+            l += std::hypot(piece[k].x - piece[k - 1].x, piece[k].y - piece[k - 1].y);
+        return l;
+    };
+    const std::vector<Polygon> pieces = withTabs(contour, 2, 5);
+    ASSERT_EQ(pieces.size(), 2u);
+    EXPECT_NEAR(length(pieces[0]) + length(pieces[1]), 300 - 2 * 5, 1e-9);
+    EXPECT_NEAR(length(pieces[0]), length(pieces[1]), 1e-9);
+    // Each piece ends 5 mm (along the contour) before the next begins.
+    for (int k = 0; k < 2; ++k) {
+        const Point2 end = pieces[k].back(), next = pieces[(k + 1) % 2].front();
+        EXPECT_NEAR(std::hypot(end.x - next.x, end.y - next.y), 5, 1e-9);
+    }
+    // Too short for the tabs: the contour whole.
+    EXPECT_EQ(withTabs(rectangle(4, 4).outer, 2, 5).size(), 1u);
+}

@@ -32,6 +32,10 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyLength", "Dogbone", "Cutting",
             "Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; "
             "0 for none (a laser)", 0)
+        add(obj, "App::PropertyLength", "TabWidth", "Cutting",
+            "Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none", 0)
+        add(obj, "App::PropertyLength", "TabBelow", "Cutting", "Parts whose longer side is shorter get holding tabs",
+            300)
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
             "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
             "Auto", list(JOINTS))
@@ -109,7 +113,8 @@ def make_problem(obj):
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
-                     "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value},
+                     "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value, "tab_width": obj.TabWidth.Value,
+                     "tab_below": obj.TabBelow.Value},
         "boards": [master_board.as_problem_board(m) for m in masters],
     }
     return problem, boards
