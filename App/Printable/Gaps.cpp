@@ -40,6 +40,11 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
     for (size_t p = 0; p < m.parts.size(); ++p)
         for (int c : m.parts[p].cuboids)
             partOf[c] = static_cast<int>(p);
+    std::vector<int> bodyOf(m.parts.size());
+    const std::vector<std::vector<int>> bodies = rigidBodies(m);
+    for (size_t b = 0; b < bodies.size(); ++b)
+        for (int p : bodies[b])
+            bodyOf[p] = static_cast<int>(b);
     std::vector<std::array<double, 6>> steps(m.cuboids.size(), std::array<double, 6>{});
     const double hair = 1e-6;
     for (int k = -1; k < static_cast<int>(m.configurations.size()); ++k) {
@@ -51,8 +56,8 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
         for (size_t a = 0; a < m.cuboids.size(); ++a)
             for (size_t b = 0; b < m.cuboids.size(); ++b) {
                 if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity() ||
-                    (standsStill(m, partOf[a]) && standsStill(m, partOf[b]) && !m.cuboids[b].cavity()))
-                    continue;  // parts that stand still together print as one body (rigidBodies)
+                    bodyOf[partOf[a]] == bodyOf[partOf[b]])
+                    continue;  // parts that print as one body (rigidBodies) keep no gap between them
                 const Coordinates &ca = posed[a], &cb = posed[b];
                 const bool aSteps =
                     m.cuboids[b].cavity() ||

@@ -7,7 +7,7 @@ namespace fabguide::printable {
 
 /// Gaps (4.5.3): where cuboids of two parts touch or face each other closer than the gap, as modelled or in
 /// any configuration, the face of the one that moves (or the later one) steps back until they are the gap
-/// apart, unless both stand still (they print as one body); so does a solid's face on or near its cavity's
+/// apart, unless they print as one body (rigidBodies); so does a solid's face on or near its cavity's
 /// wall (a drawer's 2 mm side play is 0.3 mm at 1:6.7).
 std::vector<Coordinates> gapped(const Model& m, double gap);
 

@@ -35,13 +35,17 @@ Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboi
 {
     constexpr double leastPin = 0.4, leastWall = 0.8;
     double side = 1e300;
+    int thinCuboid = -1;
     for (int c : cuboids)
-        side = std::min(side, thinnest(m.cuboids[c]));
+        if (thinnest(m.cuboids[c]) < side)
+            side = thinnest(m.cuboids[c]), thinCuboid = c;
     const double least = leastPin + g + leastWall;
     if (side < least)
-        throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (" +
-                                    std::to_string(side) + " mm) for a pin and its yokes with a " +
-                                    std::to_string(g) + " mm gap");
+        throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (cuboid '" +
+                                    m.cuboids[thinCuboid].name + "' is " + function::millimetres(side) +
+                                    " mm as printed; a pin and its yokes need " +
+                                    function::millimetres(least) + " mm with a " + function::millimetres(g) +
+                                    " mm gap): make it thicker, or print larger");
     const double outer = std::max(side / 2, least);
     if (outer > side / 2) {
         std::ostringstream note;
@@ -190,7 +194,8 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
 
 std::string linkName(const Joint& joint)
 {
-    return joint.name + " link";
+    const bool named = joint.name.size() >= 4 && joint.name.compare(joint.name.size() - 4, 4, "link") == 0;
+    return named ? joint.name : joint.name + " link";  // "upper link", not "upper link link"
 }
 
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)

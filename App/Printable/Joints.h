@@ -9,7 +9,7 @@
 
 namespace fabguide::printable {
 
-/// A double pivot's link body: "<joint> link".
+/// A double pivot's link body: "<joint> link" (the joint's name alone when it already ends in "link").
 std::string linkName(const Joint& joint);
 
 /// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the

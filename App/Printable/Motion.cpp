@@ -8,6 +8,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -116,6 +117,50 @@ bool standsStill(const Model& model, int part)
     return jointMoving(model, part) < 0;
 }
 
+namespace {
+
+/// Whether solid cuboid c touches part q's material as modelled: a solid cuboid of q where the two meet
+/// outside both parts' cavities, or, from inside one of q's cavities, one of its walls (a side that is no
+/// opening): a shelf against a cupboard's sides, an insert on a well's floor.
+bool touchesMaterial(const Model& m, int c, int q)
+{
+    constexpr double hair = 1e-6;
+    const auto& a = m.cuboids[c].coordinates;
+    const auto within = [&](const auto& inner, const auto& outer) {
+        for (int s = 0; s < 6; ++s)
+            if (s % 2 ? inner[s] > outer[s] + hair : inner[s] < outer[s] - hair)
+                return false;
+        return true;
+    };
+    for (int d : m.parts[q].cuboids) {
+        const auto& b = m.cuboids[d].coordinates;
+        if (!m.cuboids[d].cavity()) {
+            std::array<double, 6> meet{};
+            bool apart = false;
+            for (int axis = 0; axis < 3; ++axis) {
+                meet[2 * axis] = std::max(a[2 * axis], b[2 * axis]);
+                meet[2 * axis + 1] = std::min(a[2 * axis + 1], b[2 * axis + 1]);
+                apart = apart || meet[2 * axis + 1] - meet[2 * axis] < -hair;
+            }
+            const auto inCavityOf = [&](int part) {
+                return std::any_of(m.parts[part].cuboids.begin(), m.parts[part].cuboids.end(), [&](int k) {
+                    return m.cuboids[k].cavity() && within(meet, m.cuboids[k].coordinates);
+                });
+            };
+            const bool inCavity = inCavityOf(q) || inCavityOf(function::partOf(m, c));
+            if (!apart && !inCavity)
+                return true;
+        } else if (within(a, b)) {
+            for (int s = 0; s < 6; ++s)
+                if (std::abs(a[s] - b[s]) < hair && !function::isOpening(m, d, s))
+                    return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
 std::vector<std::vector<int>> rigidBodies(const Model& model)
 {
     const int parts = static_cast<int>(model.parts.size());
@@ -126,20 +171,19 @@ std::vector<std::vector<int>> rigidBodies(const Model& model)
             p = body[p] = body[body[p]];
         return p;
     };
-    const auto touch = [&](int c, int d) {  // solid cuboids touching or overlapping as modelled
-        const auto &a = model.cuboids[c].coordinates, &b = model.cuboids[d].coordinates;
-        for (int axis = 0; axis < 3; ++axis)
-            if (std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]) < -1e-6)
-                return false;
-        return !model.cuboids[c].cavity() && !model.cuboids[d].cavity();
+    const auto touch = [&](int p, int q) {
+        for (int c : model.parts[p].cuboids)
+            if (!model.cuboids[c].cavity() && touchesMaterial(model, c, q))
+                return true;
+        for (int d : model.parts[q].cuboids)
+            if (!model.cuboids[d].cavity() && touchesMaterial(model, d, p))
+                return true;
+        return false;
     };
     for (int p = 0; p < parts; ++p)
         for (int q = p + 1; q < parts; ++q)
-            if (standsStill(model, p) && standsStill(model, q))
-                for (int c : model.parts[p].cuboids)
-                    for (int d : model.parts[q].cuboids)
-                        if (touch(c, d))
-                            body[root(q)] = root(p);
+            if (standsStill(model, p) && standsStill(model, q) && touch(p, q))
+                body[root(q)] = root(p);
     std::vector<std::vector<int>> bodies;
     std::vector<int> index(parts, -1);
     for (int p = 0; p < parts; ++p) {

@@ -26,8 +26,9 @@ gp_Trsf jointMotion(const function::Model& model, int j, int configuration, doub
 bool standsStill(const function::Model& model, int part);
 
 /// The parts printed as one body each (issue 15): each part a joint moves on its own, and the parts that
-/// stand still grouped where they touch as modelled (a carcass and its legs never move apart: one body, no
-/// gap between them), groups in the order of their first part.
+/// stand still grouped where they touch each other's material as modelled (a carcass and its legs, a shelf
+/// against a cupboard's walls, an insert on a well's floor never move apart: one body, no gap between them;
+/// a part loose in a cavity touches no wall and stays its own), groups in the order of their first part.
 std::vector<std::vector<int>> rigidBodies(const function::Model& model);
 
 /// Part p's motion: its joint's, then its base's, out to the ground.

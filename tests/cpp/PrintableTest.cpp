@@ -176,3 +176,22 @@ TEST(RigidBodies, PartsThatStandStillTogetherPrintAsOneBody)
     EXPECT_EQ(bodyNames(m), (std::vector<std::string>{"box + plinth", "lid", "block"}));
     EXPECT_GE(check(m, p, 0.4, 8).clearance, 0.4 - 0.01);
 }
+
+TEST(RigidBodies, AShelfAgainstACupboardsWallsIsPartOfItAndALooseBlockInItIsNot)
+{
+    // A cupboard (a 10 mm-walled box open at the front), a shelf across it touching both sides, and a block
+    // standing loose in it, touching no wall: cupboard and shelf are one body with no gap, the block its own.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "cupboard", "cuboids": [{"name": "cupboard", "min": [0, 0, 0], "max": [100, 60, 120]},
+                     {"name": "inside", "min": [10, 0, 10], "max": [90, 50, 110], "cavity": true}]},
+                  {"name": "shelf", "cuboids": [{"name": "shelf", "min": [10, 0, 55], "max": [90, 50, 65]}]},
+                  {"name": "block", "cuboids": [{"name": "block", "min": [30, 10, 75], "max": [50, 30, 95]}]}]})"));
+    EXPECT_EQ(rigidBodies(m), (std::vector<std::vector<int>>{{0, 1}, {2}}));
+    const std::vector<Coordinates> at = gapped(m, 0.4);
+    EXPECT_EQ(at[2], (Coordinates{10, 90, 0, 50, 55, 65}));  // the shelf as modelled: no gap to the sides
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    EXPECT_EQ(p.bodies[0].name, "cupboard + shelf");
+    EXPECT_TRUE(p.notes.empty()) << p.notes.front();  // one piece
+}

@@ -113,7 +113,8 @@ def test_a_scaled_print_keeps_the_gap_and_joints_stand_proud_of_thin_parts_or_ar
     assert re.search(r"Number of parts\s*:\s*3\b", mesh), mesh
     run, _ = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--scale", "0.1")
     assert run.returncode == 1
-    assert "joint 'lid hinge': its parts are too thin (1.400000 mm)" in run.stderr
+    assert "joint 'lid hinge': its parts are too thin (cuboid 'lid' is 1.4 mm as printed; a pin and its yokes " \
+        "need 1.6 mm with a 0.4 mm gap)" in run.stderr
 
 
 def test_the_cabinet_prints_as_six_connected_bodies_clear_of_each_other(fabguide_cli, source_dir, tmp_path):
