@@ -239,8 +239,8 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
             f.printable = makePrintable(f.model, printer);
         } catch (const std::invalid_argument& e) {
             std::ostringstream what;
-            what << e.what() << "; printed at scale " << f.scale << ", which fits " << volume[0] << " x " << volume[1]
-                 << " x " << volume[2] << " mm";
+            what << e.what() << "; printed at scale " << f.scale << ", which fits " << volume[0] << " x "
+                 << volume[1] << " x " << volume[2] << " mm";
             throw std::invalid_argument(what.str());
         }
         const double r = room(sizeOf(f.printable), bed);
