@@ -73,8 +73,7 @@ void run(const OptimiseArguments& args)
                               {"least_sheets", exploration.leastSheets},
                               {"not_reopened", exploration.notReopened},
                               {"suggestions", nlohmann::json::array()}};
-    const material::MaterialSpace::Figures before =
-        material.figures(exploration.start.layout, exploration.start.sizes);
+    const material::MaterialSpace::Figures& before = exploration.start.figures;
     std::printf("usage before  %.4f  (%zu parts)  %d sheets, waste %.3f m2\n", exploration.usageBefore(),
                 flatpack.design.boards.size(), before.sheets, before.waste);
     // Boards with a cost of their own (or offcuts, at 0): the suggestions' cost is shown beside the sheets.

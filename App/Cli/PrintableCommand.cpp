@@ -45,17 +45,13 @@ std::optional<printable::Size> buildVolume(const std::string& text)
 const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
 
 /// report.json: what the run made and measured, for tools and tests (docs/formats.md).
-nlohmann::json report(const printable::Fitted& fitted, const printable::Printable& onTheBed,
-                      const printable::Check& check, double gap, double seconds,
-                      const std::vector<std::string>& files)
+nlohmann::json report(const printable::Fitted& fitted, const std::vector<double>& volumes,
+                      const printable::Size& size, const printable::Check& check, double gap, bool ok,
+                      double seconds, const std::vector<std::string>& files)
 {
     nlohmann::json bodies = nlohmann::json::array();
-    for (const printable::Body& b : fitted.printable.bodies) {
-        GProp_GProps volume;
-        BRepGProp::VolumeProperties(b.shape, volume);
-        bodies.push_back({{"name", b.name}, {"volume_mm3", volume.Mass()}});
-    }
-    const bool ok = check.invalid.empty() && check.clearance >= gap - 0.01;
+    for (size_t b = 0; b < volumes.size(); ++b)
+        bodies.push_back({{"name", fitted.printable.bodies[b].name}, {"volume_mm3", volumes[b]}});
     std::vector<std::string> names;  // in the output folder
     for (const std::string& path : files)
         names.push_back(std::filesystem::path(path).filename().string());
@@ -64,7 +60,7 @@ nlohmann::json report(const printable::Fitted& fitted, const printable::Printabl
             {"ok", ok},
             {"scale", fitted.scale},
             {"turned", fitted.turned},
-            {"size_mm", printable::sizeOf(onTheBed)},
+            {"size_mm", size},
             {"gap_mm", gap},
             {"clearance", {{"least_mm", check.clearance}, {"where", check.where}}},
             {"invalid", check.invalid},
@@ -91,10 +87,12 @@ int run(const PrintableArguments& args)
     const printable::Printable onTheBed = printable::onTheBed(fitted.printable, fitted.turned);
     const printable::Size size = printable::sizeOf(onTheBed);
     std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
+    std::vector<double> volumes;
     for (const printable::Body& b : made.bodies) {
         GProp_GProps volume;
         BRepGProp::VolumeProperties(b.shape, volume);
-        std::printf("body %-28s %10.1f mm3\n", b.name.c_str(), volume.Mass());
+        volumes.push_back(volume.Mass());
+        std::printf("body %-28s %10.1f mm3\n", b.name.c_str(), volumes.back());
     }
     for (const std::string& note : made.notes)
         std::printf("note: %s\n", note.c_str());
@@ -108,10 +106,11 @@ int run(const PrintableArguments& args)
     const std::string reportPath = (std::filesystem::path(args.output) / "report.json").string();
     written.push_back(reportPath);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    io::writeJsonFile(reportPath, report(fitted, onTheBed, check, gap, seconds, written));
+    const bool ok = check.invalid.empty() && check.clearance >= gap - 0.01;
+    io::writeJsonFile(reportPath, report(fitted, volumes, size, check, gap, ok, seconds, written));
     std::printf("wrote %s\n", reportPath.c_str());
     files.commit();
-    return check.invalid.empty() && check.clearance >= gap - 0.01 ? 0 : 1;
+    return ok ? 0 : 1;
 }
 
 }  // namespace

@@ -11,11 +11,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsTo(Clock::time_point deadline)
-{
-    return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
-}
-
 }  // namespace
 
 GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
@@ -30,7 +25,7 @@ SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material
 {
     constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
     // Each fresh layout gets an even share of the time: the least design, then the bisections.
-    const auto share = [&](int layoutsLeft) { return secondsTo(deadline) / std::max(1, layoutsLeft); };
+    const auto share = [&](int layoutsLeft) { return secondsUntil(deadline) / std::max(1, layoutsLeft); };
     const auto laidOut = [&](const Eigen::VectorXd& X, double seconds) {
         Eigen::VectorXd sizes = design.sizes(X);
         GridLayout layout = searchedLayout(material, sizes, seed, seconds);

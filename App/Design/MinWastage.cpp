@@ -52,18 +52,12 @@ Clock::duration seconds(double s)
 /// the seconds a suggestion's fresh layout is given to show that it reopens (the former covers the latter).
 constexpr double kSearchOn = 10, kReopenCheck = 2;
 
-/// Seconds left until `deadline` (0 when past it).
-double secondsTo(Clock::time_point deadline)
-{
-    return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
-}
-
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
                          std::uint64_t seed, Clock::time_point deadline)
 {
     const RasterProblem units = material.raster(sizes);
     return exploreOrderings(units.parts, std::move(order), material.stock(),
-                            orderingSearch(units.parts.size(), seed, secondsTo(deadline)));
+                            orderingSearch(units.parts.size(), seed, secondsUntil(deadline)));
 }
 
 /// One task of a round: EXPLOREORDERINGS from the entry's order (shuffled unless `keepOrder`), then
@@ -315,8 +309,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must cut it
     // from boards that cost no more. The exploration's slides reach tight layouts a fresh search may not.
     const auto reopens = [&](const DesignLayout& d) {
-        const GridLayout fresh = searchedLayout(material, d.sizes, options.seed,
-                                                std::min(kReopenCheck, std::max(0.05, secondsTo(end) / 2)));
+        const GridLayout fresh = searchedLayout(
+            material, d.sizes, options.seed, std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2)));
         return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
     };
     exploration.suggestions =

@@ -22,6 +22,11 @@ LayoutCost cost(const GridLayout& layout, const std::vector<BoardStock>& stock, 
     return total;
 }
 
+double secondsUntil(std::chrono::steady_clock::time_point deadline)
+{
+    return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
+}
+
 OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds)
 {
     OrderingSearchOptions options;

@@ -39,6 +39,9 @@ struct OrderingSearchOptions {
     int memory = 1;          ///< late-acceptance history length; 1 = the thesis' acceptance rule
 };
 
+/// Seconds left until `deadline` (0 when past it): what a time-limited search may still take.
+double secondsUntil(std::chrono::steady_clock::time_point deadline);
+
 /// The thesis' ordering search for `parts` units: |parts|² swaps (5.4.3), for at most `seconds`.
 OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds);
 

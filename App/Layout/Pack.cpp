@@ -94,13 +94,15 @@ void checkSettings(const PackProblem& problem)
                                         mm(s.resolution) + " mm; FabGuide lays out boards of up to " +
                                         mm(kLongest) + " mm and " + cells(kMostCells) + " cells");
     }
-    // The boards' area for parts of a thickness: those boards of it.
+    // The boards' area for parts of a thickness: those boards of it, summed once per thickness.
+    std::map<double, double> boardAreas;
     const auto boardArea = [&](double thickness) {
-        double area = 0;
-        for (const MasterBoard& b : problem.boards)
-            if (ofThickness(thickness, b.thickness))
-                area += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
-        return area;
+        const auto [known, added] = boardAreas.try_emplace(thickness, 0.0);
+        if (added)
+            for (const MasterBoard& b : problem.boards)
+                if (ofThickness(thickness, b.thickness))
+                    known->second += b.count < 0 || problem.strip ? HUGE_VAL : b.count * b.width * b.height;
+        return known->second;
     };
     long units = 0, over = 0;           // over: units past their boards' area, in the order given
     std::map<double, double> partArea;  // per thickness
@@ -130,16 +132,6 @@ void checkSettings(const PackProblem& problem)
         throw notEnoughBoards(first->id, over - 1,
                               "in the boards' " + mm(boardArea(first->thickness) / 1e6) + " m²");
 }
-
-namespace {
-
-/// Time left until `deadline`, in seconds.
-double secondsUntil(std::chrono::steady_clock::time_point deadline)
-{
-    return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
-}
-
-}  // namespace
 
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
                             OrderingSearchOptions options)
