@@ -45,14 +45,69 @@ bool mostlyInside(const Box& a, const Box& b)
     return 2 * inside >= volume;
 }
 
-/// How far `inner` reaches out of cavity c on the sides that are not openings.
-double outside(const Model& model, const Box& inner, int cavity, int configuration)
+bool overlaps(const Box& a, const Box& b)
 {
-    const Box c = boxOf(model, cavity, configuration);
+    for (int axis = 0; axis < 3; ++axis)
+        if (std::min(a[2 * axis + 1], b[2 * axis + 1]) <= std::max(a[2 * axis], b[2 * axis]))
+            return false;
+    return true;
+}
+
+/// Whether cavity box d continues cavity box c past c's side k: it reaches beyond that side from it (touching
+/// or overlapping) and overlaps c across the other two axes.
+bool continues(const Box& c, const Box& d, int k)
+{
+    const int axis = k / 2;
+    const bool beyond =
+        k % 2 ? d[k] > c[k] + 1e-9 && d[k - 1] <= c[k] + 1e-9 : d[k] < c[k] - 1e-9 && d[k + 1] >= c[k] - 1e-9;
+    for (int o = 0; o < 3 && beyond; ++o)
+        if (o != axis && std::min(c[2 * o + 1], d[2 * o + 1]) - std::max(c[2 * o], d[2 * o]) <= 1e-9)
+            return false;
+    return beyond;
+}
+
+/// The walls that hold `inner` in the void of cavity c: c and the cavities of its solid that continue it and
+/// that `inner` reaches into, each on its sides that are neither openings nor passages to another of them.
+std::vector<Face> voidWalls(const Model& model, const Box& inner, int cavity, int configuration)
+{
+    std::vector<int> cavities{cavity};
+    std::vector<Box> boxes{boxOf(model, cavity, configuration)};
+    auto passage = [&](size_t i, int k) {
+        for (size_t d = 0; d < cavities.size(); ++d)
+            if (d != i && continues(boxes[i], boxes[d], k))
+                return true;
+        return false;
+    };
+    for (size_t i = 0; i < cavities.size(); ++i)
+        for (int d = 0; d < static_cast<int>(model.cuboids.size()); ++d) {
+            if (model.cuboids[d].within != model.cuboids[cavity].within ||
+                std::find(cavities.begin(), cavities.end(), d) != cavities.end())
+                continue;
+            const Box box = boxOf(model, d, configuration);
+            for (int k = 0; k < 6; ++k)
+                if (overlaps(inner, box) && continues(boxes[i], box, k)) {
+                    cavities.push_back(d);
+                    boxes.push_back(box);
+                    break;
+                }
+        }
+    std::vector<Face> walls;
+    for (size_t i = 0; i < cavities.size(); ++i)
+        for (int k = 0; k < 6; ++k)
+            if (!isOpening(model, cavities[i], k) && !passage(i, k))
+                walls.push_back({cavities[i], static_cast<Side>(k)});
+    return walls;
+}
+
+/// How far `inner` reaches past the walls.
+double outside(const Model& model, const Box& inner, const std::vector<Face>& walls, int configuration)
+{
     double total = 0;
-    for (int k = 0; k < 6; ++k)
-        if (!isOpening(model, cavity, k))
-            total += std::max(0.0, k % 2 ? inner[k] - c[k] : c[k] - inner[k]);
+    for (const Face& wall : walls) {
+        const int k = static_cast<int>(wall.side);
+        const double at = evaluate(model, posed(model, wall, configuration));
+        total += std::max(0.0, k % 2 ? inner[k] - at : at - inner[k]);
+    }
     return total;
 }
 
@@ -68,14 +123,6 @@ Direction normalised(const Direction& d)
     if (length < 1e-9)
         return {0, 0, 0};
     return {d[0] / length, d[1] / length, d[2] / length};
-}
-
-bool overlaps(const Box& a, const Box& b)
-{
-    for (int axis = 0; axis < 3; ++axis)
-        if (std::min(a[2 * axis + 1], b[2 * axis + 1]) <= std::max(a[2 * axis], b[2 * axis]))
-            return false;
-    return true;
 }
 
 }  // namespace
@@ -154,7 +201,7 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
                                    evaluate(arranged, projected(arranged, high, configuration, d, false));
             if (overlap < least - 1e-9) {
                 least = overlap;
-                best = {low, high, configuration, -1, d};
+                best = {low, high, configuration, d, {}};
             }
         }
     if (!exact)
@@ -164,11 +211,13 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
     for (const auto& [held, holder] : {std::pair{a, b}, std::pair{b, a}}) {
         const Box box = boxOf(arranged, held, configuration);
         for (int c = 0; c < static_cast<int>(arranged.cuboids.size()); ++c)
-            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration)))
-                if (const double change = outside(arranged, box, c, configuration); change < cost) {
+            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration))) {
+                std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
+                if (const double change = outside(arranged, box, walls, configuration); change < cost) {
                     cost = change;
-                    best = {held, holder, configuration, c, {}};
+                    best = {held, holder, configuration, {}, std::move(walls)};
                 }
+            }
     }
     return best;
 }

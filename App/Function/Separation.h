@@ -14,11 +14,13 @@ namespace fabguide::function {
 
 /// How two solid cuboids of different parts stay clear in a configuration (-1: as modelled): `a` wholly on
 /// the low side of `b` along `direction` (an axis, or for parts turned by other than quarter turns any axis
-/// of the separating-axis test); or, when `cavity` >= 0, `a` inside that cavity of `b`'s part on every side
-/// that is not an opening.
+/// of the separating-axis test); or, when `walls` is not empty, `a` inside a void of `b`'s part, within each
+/// of those cavity faces: a cavity's sides that are neither openings nor passages into a neighbouring cavity
+/// `a` reaches into (a lever's stem through the slot beside its channel).
 struct Separation {
-    int a = 0, b = 0, configuration = -1, cavity = -1;
+    int a = 0, b = 0, configuration = -1;
     Direction direction{1, 0, 0};
+    std::vector<Face> walls;
 };
 
 /// Whether every turn that places the part in the configuration is by a multiple of 90°: its posed box is

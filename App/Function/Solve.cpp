@@ -71,7 +71,7 @@ void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, 
 void separate(std::vector<LinearConstraint>& rows, const Model& model, const Separation& s)
 {
     const std::string name = separationName(model, s);
-    if (s.cavity < 0) {  // a's projection on the direction at most b's
+    if (s.walls.empty()) {  // a's projection on the direction at most b's
         const Expression a = projected(model, s.a, s.configuration, s.direction, true),
                          b = projected(model, s.b, s.configuration, s.direction, false);
         LinearConstraint row{{}, -kInfinity, b.constant - a.constant, name};
@@ -82,11 +82,11 @@ void separate(std::vector<LinearConstraint>& rows, const Model& model, const Sep
         rows.push_back(row);
         return;
     }
-    for (int k = 0; k < 6; ++k)
-        if (!isOpening(model, s.cavity, k)) {
-            const Face held{s.a, static_cast<Side>(k)}, wall{s.cavity, static_cast<Side>(k)};
-            order(rows, model, name, s.configuration, k % 2 ? held : wall, k % 2 ? wall : held, false);
-        }
+    for (const Face& wall : s.walls) {
+        const Face held{s.a, wall.side};
+        const bool high = static_cast<int>(wall.side) % 2;
+        order(rows, model, name, s.configuration, high ? held : wall, high ? wall : held, false);
+    }
 }
 
 /// Whether cuboid c of an inner part must lie inside (a partial fit names the portion that must).

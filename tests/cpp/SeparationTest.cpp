@@ -104,12 +104,45 @@ TEST(Separation, ADrawerInACompartmentStaysInsideItButThroughTheMouth)
     const function::Model m = io::readWorkslike(d);
     const function::Separation s = function::inferSeparation(m, 0, 2, -1);  // the chest and the drawer
     EXPECT_EQ(s.a, 2);  // the drawer in the bay: less to change than pulling it out of the chest
-    EXPECT_EQ(s.cavity, 1);
+    for (const function::Face& wall : s.walls)  // the bay's five walls; its mouth is an opening
+        EXPECT_EQ(wall.cuboid, 1);
+    EXPECT_EQ(s.walls.size(), 5u);
     const function::SolveResult r = function::solve(m);
     ASSERT_TRUE(r.solved);
     EXPECT_LE(at(r.model, "drawer", Side::Far), at(r.model, "bay", Side::Far));
     EXPECT_EQ(at(r.model, "bay", Side::Near), 0);  // its mouth stays on the face
     EXPECT_GE(at(r.model, "chest", Side::Far) - at(r.model, "bay", Side::Far), 1);  // a wall behind it
+}
+
+TEST(Separation, APartReachesThroughAPassageIntoTheNextCavity)
+{
+    // A toaster's lever in a T-slot: the slider runs in a channel, the stem through a narrower slot beside it
+    // that opens on the body's face, the knob outside. The stem crosses from the channel into the slot.
+    json d = {
+        {"parts",
+         {{{"name", "body"},
+           {"cuboids",
+            {cuboid("body", {0, 0, 0}, {280, 160, 190}),
+             cuboid("channel", {262, 60, 50}, {276, 100, 160}, true),
+             cuboid("slot", {276, 72, 50}, {280, 88, 160}, true)}}},
+          {{"name", "lever"},
+           {"cuboids",
+            {cuboid("slider", {264, 62, 140}, {274, 98, 150}), cuboid("stem", {274, 74, 140}, {282, 86, 150}),
+             cuboid("knob", {282, 60, 135}, {310, 100, 155})}}}}},
+        {"joints", {{{"name", "lever slide"}, {"type", "slide"}, {"part", "lever"}, {"axis", "z"}}}},
+        {"configurations", {{{"name", "down"}, {"poses", {{"lever slide", -80}}}}}}};
+    const function::Model m = io::readWorkslike(d);
+    const function::Separation s = function::inferSeparation(m, 0, 4, -1);  // the body and the stem
+    EXPECT_EQ(s.a, 4);
+    for (const function::Face& wall : s.walls)  // no wall between the channel and the slot
+        EXPECT_FALSE((wall.cuboid == 1 && wall.side == Side::Right) ||
+                     (wall.cuboid == 2 && wall.side == Side::Left));
+    EXPECT_EQ(s.walls.size(), 9u);  // the channel's five others, the slot's four (its right is the mouth)
+    const function::SolveResult r = function::solve(m);
+    ASSERT_TRUE(r.solved);
+    for (const char* name : {"stem", "slot", "channel"})  // nothing to change: the lever stays whole
+        for (int k = 0; k < 6; ++k)
+            EXPECT_EQ(at(r.model, name, static_cast<Side>(k)), at(m, name, static_cast<Side>(k))) << name;
 }
 
 TEST(Separation, AWallCannotBeEatenBelowTheMinimum)
