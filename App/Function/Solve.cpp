@@ -7,6 +7,7 @@
 #include "Function/Separation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <limits>
 #include <set>
@@ -65,6 +66,37 @@ void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, 
         if (!opening && model.minimumWall > 0)
             rows.push_back({terms, -kInfinity, -model.minimumWall, "wall: " + model.cuboids[cavity].name});
     }
+}
+
+/// A part stays in one piece: each two of its solid cuboids that touch or overlap as modelled keep touching
+/// along the axis they meet least on, and overlapping along the other two by as much as modelled, or the
+/// minimum size ("one piece: drawer"). A drawer's tray held in its bay stays glued to its front when the
+/// bay's mouth moves.
+void onePiece(std::vector<LinearConstraint>& rows, const Model& model, const Part& part)
+{
+    for (int a : part.cuboids)
+        for (int b : part.cuboids) {
+            if (a >= b || model.cuboids[a].cavity() || model.cuboids[b].cavity())
+                continue;
+            std::array<double, 3> meet{};
+            for (int axis = 0; axis < 3; ++axis)
+                meet[axis] =
+                    std::min(model.cuboids[a].coordinates[2 * axis + 1],
+                             model.cuboids[b].coordinates[2 * axis + 1]) -
+                    std::max(model.cuboids[a].coordinates[2 * axis], model.cuboids[b].coordinates[2 * axis]);
+            if (*std::min_element(meet.begin(), meet.end()) < -1e-9)
+                continue;  // apart as modelled
+            const long touching = std::min_element(meet.begin(), meet.end()) - meet.begin();
+            for (int axis = 0; axis < 3; ++axis) {
+                const double least = axis == touching ? 0.0 : std::min(meet[axis], model.minimumSize);
+                for (const auto& [high, low] :
+                     {std::pair{a, b}, std::pair{b, a}})  // high's top past low's bottom
+                    rows.push_back({{{6 * high + 2 * axis + 1, 1.0}, {6 * low + 2 * axis, -1.0}},
+                                    least,
+                                    kInfinity,
+                                    "one piece: " + part.name});
+            }
+        }
 }
 
 /// The constraints that keep a pair clear (Separation.h), in its configuration.
@@ -169,6 +201,8 @@ bool isOpening(const Model& model, int cavity, int side)
 std::vector<LinearConstraint> constraints(const Model& model)
 {
     std::vector<LinearConstraint> rows;
+    for (const Part& part : model.parts)
+        onePiece(rows, model, part);
     for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c) {
         for (int a = 0; a < 3; ++a)  // right − left >= minimum size, along each axis
             rows.push_back(
