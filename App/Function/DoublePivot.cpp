@@ -214,50 +214,74 @@ std::vector<Point> meet(const Point& c1, double r1, const Point& c2, double r2)
             Point{m[0] + across * e[1], m[1] - across * e[0]}};
 }
 
-/// A four-bar (issue 13.5): links `first` and `second` both move their part against one base. In each
-/// configuration that poses them, the first link turns the shorter way to its place; the second pivot follows
-/// on the branch it starts on (the meeting point of its two circles nearest its last place). Why it fails, or
-/// "" when the part arrives where the configuration puts it, clear of the parts standing still.
+/// Half a double pivot's link width: half the thinner of the two cuboids its pivots sit on (its round ends,
+/// 4.5.2).
+double linkRadius(const Model& model, const Joint& joint)
+{
+    double side = 1e300;
+    for (int c : {joint.pivotFace.cuboid, joint.basePivotFace.cuboid})
+        for (int a = 0; a < 3; ++a)
+            side = std::min(side, model.cuboids[c].at(static_cast<Side>(2 * a + 1)) -
+                                      model.cuboids[c].at(static_cast<Side>(2 * a)));
+    return side / 2;
+}
+
+/// The distance from q to the segment from a to b.
+double toSegment(const Point& q, const Point& a, const Point& b)
+{
+    const Point ab{b[0] - a[0], b[1] - a[1]};
+    const double length = ab[0] * ab[0] + ab[1] * ab[1];
+    const double t =
+        length < 1e-24 ? 0 : std::clamp(((q[0] - a[0]) * ab[0] + (q[1] - a[1]) * ab[1]) / length, 0.0, 1.0);
+    return std::sqrt(squared(q, {a[0] + t * ab[0], a[1] + t * ab[1]}));
+}
+
+/// Whether a four-bar's links, from base pivots b1 and b2 to part pivots a1 and a2, each stay `apart` from
+/// the other's pivots. They print one layer over the other (4.5.2), so they may cross, but the pins of each
+/// run through the other's layer.
+bool linksClear(const Point& a1, const Point& b1, const Point& a2, const Point& b2, double apart)
+{
+    return toSegment(a2, b1, a1) >= apart && toSegment(b2, b1, a1) >= apart &&
+           toSegment(a1, b2, a2) >= apart && toSegment(b1, b2, a2) >= apart;
+}
+
+/// A four-bar (issue 13.5): links `first` and `second` both move their part against one base, along
+/// fourBarPath in configuration k. Why it fails, or
+/// "" when the part arrives where the configuration puts it, clear of the parts standing still, its links
+/// clear of each other's pins (linksClear) all the way.
 std::string fourBarMotion(const Model& model, const Joint& first, const Joint& second, int k)
 {
     const PivotPlane one = pivotPlane(model, first), two = pivotPlane(model, second);
-    const JointPose& pose = *poseOf(model, static_cast<int>(&first - model.joints.data()), k);
-    const Point pole{pose.pole[one.u], pose.pole[one.w]};
     const Point a1 = one.pivot, b1 = one.basePivot, a2 = two.pivot, b2 = two.basePivot;
-    const double r1 = std::sqrt(squared(a1, b1)), r2 = std::sqrt(squared(a2, b2)),
-                 coupler = std::sqrt(squared(a1, a2));
-    const Point end1 = turn(a1, pole, pose.angle), end2 = turn(a2, pole, pose.angle);
-    const double from = std::atan2(a1[1] - b1[1], a1[0] - b1[0]);
-    const double sweep = std::remainder(std::atan2(end1[1] - b1[1], end1[0] - b1[0]) - from, 2 * kPi);
     const auto moving = rectangles(model, first.part, one);
     const auto fixed = standingStill(model, first.part, one, k);
     const std::string where = "the four-bar of '" + first.name + "' and '" + second.name + "' ";
-    Point follower = a2;
+    const double apart = linkRadius(model, first) + linkRadius(model, second);
+    if (!linksClear(a1, b1, a2, b2, apart))
+        return where + "has a link over the other's pin as placed";
     const int steps = 64;
+    const std::vector<FourBarTurns> path = fourBarPath(model, first, second, k, 1.0, steps);
     for (int step = 1; step <= steps; ++step) {
-        const double angle = from + sweep * step / steps;
-        const Point leader{b1[0] + r1 * std::cos(angle), b1[1] + r1 * std::sin(angle)};
-        const std::vector<Point> places = meet(b2, r2, leader, coupler);
-        if (places.empty())
-            return where + "locks " + std::to_string(100 * step / steps) + " % of the way to '" +
-                   model.configurations[k].name + "': its links cannot stay joined";
-        follower = squared(places[0], follower) <= squared(places[1], follower) ? places[0] : places[1];
-        const double turned = (std::atan2(follower[1] - leader[1], follower[0] - leader[0]) -
-                               std::atan2(a2[1] - a1[1], a2[0] - a1[0])) *
-                              180 / kPi;
-        const std::pair<double, double> by = cosSin(turned);
+        const std::string when =
+            std::to_string(100 * step / steps) + " % of the way to '" + model.configurations[k].name + "'";
+        if (step > static_cast<int>(path.size()))
+            return where + "locks " + when + ": its links cannot stay joined";
+        const FourBarTurns& turns = path[step - 1];
+        const Point leader = turn(a1, b1, turns.first), follower = turn(a2, b2, turns.second);
+        const std::pair<double, double> by = cosSin(turns.part);
         const auto place = [&](const Point& q) {
             const Point r = turn(q, a1, by.first, by.second);
             return Point{r[0] + leader[0] - a1[0], r[1] + leader[1] - a1[1]};
         };
+        if (!linksClear(leader, b1, follower, b2, apart))
+            return where + "brings a link onto the other's pin " + when;
         if (hits(moving, fixed, place))
-            return where + "takes '" + model.parts[first.part].name + "' into a part standing still " +
-                   std::to_string(100 * step / steps) + " % of the way to '" + model.configurations[k].name +
-                   "'";
+            return where + "takes '" + model.parts[first.part].name + "' into a part standing still " + when;
     }
-    if (std::sqrt(squared(follower, end2)) > 1e-3)
-        return where + "reaches '" + model.configurations[k].name +
-               "' only on its other assembly branch: move a pivot, or pose it the other way round";
+    const JointPose& pose = *poseOf(model, static_cast<int>(&first - model.joints.data()), k);
+    const Point end2 = turn(a2, {pose.pole[one.u], pose.pole[one.w]}, pose.angle);
+    if (std::sqrt(squared(turn(a2, b2, path.back().second), end2)) > 1e-3)
+        return where + "reaches '" + model.configurations[k].name + "' only on its other assembly branch";
     return "";
 }
 
@@ -306,25 +330,33 @@ std::optional<std::pair<double, double>> leastChange(Placement& p, const Range& 
     return std::pair{result[0], result[1]};
 }
 
-/// The motion constraint (4.3.6.2) by search: along the part's pivot axis, each a fixes b through the first
-/// pose's position constraint (linear in b: |x_k^A|² − |x^A|² = 2 (x_k^A − x^A) · x^B); the least change
-/// among placements that keep the link's length in every pose and move without interference. The thesis
-/// bounds the link's length from below by linear terms for the box corners it may pass; checking the motion
-/// itself is exact where those bounds are conservative.
+/// The placement (a, b) with the part's pivot moved by a: b from the first pose's position constraint (linear
+/// in b: |x_k^A|² − |x^A|² = 2 (x_k^A − x^A) · x^B), when it lies on its face and the link keeps its length
+/// in every pose.
+std::optional<std::pair<double, double>> linkAt(const Placement& p, const Range& range, double a)
+{
+    const Point x0 = p.pivotA(a), xk = turn(x0, p.pole(p.poses[0]), p.poses[0].angle);
+    const Point d{xk[0] - x0[0], xk[1] - x0[1]}, base = p.pivotB(0);
+    const double along = 2 * d[p.axisB];
+    if (std::abs(along) < 1e-12)
+        return std::nullopt;
+    const double b = (xk[0] * xk[0] + xk[1] * xk[1] - x0[0] * x0[0] - x0[1] * x0[1] -
+                      2 * (d[0] * base[0] + d[1] * base[1])) /
+                     along;
+    if (b < range.lowB || b > range.highB || !keepsLength(p, a, b))
+        return std::nullopt;
+    return std::pair{a, b};
+}
+
+/// The motion constraint (4.3.6.2) by search: along the part's pivot axis, each a fixes b (linkAt); the least
+/// change among placements that keep the link's length in every pose and move without interference. The
+/// thesis bounds the link's length from below by linear terms for the box corners it may pass; checking the
+/// motion itself is exact where those bounds are conservative.
 std::optional<std::pair<double, double>> clearPlacement(const Placement& p, const Range& range)
 {
     auto placement = [&](double a) -> std::optional<std::pair<double, double>> {
-        const Point x0 = p.pivotA(a), xk = turn(x0, p.pole(p.poses[0]), p.poses[0].angle);
-        const Point d{xk[0] - x0[0], xk[1] - x0[1]}, base = p.pivotB(0);
-        const double along = 2 * d[p.axisB];
-        if (std::abs(along) < 1e-12)
-            return std::nullopt;
-        const double b = (xk[0] * xk[0] + xk[1] * xk[1] - x0[0] * x0[0] - x0[1] * x0[1] -
-                          2 * (d[0] * base[0] + d[1] * base[1])) /
-                         along;
-        if (b < range.lowB || b > range.highB || !keepsLength(p, a, b) || collides(p, a, b))
-            return std::nullopt;
-        return std::pair{a, b};
+        const auto x = linkAt(p, range, a);
+        return x && !collides(p, x->first, x->second) ? x : std::nullopt;
     };
     auto cost = [](const std::pair<double, double>& x) { return x.first * x.first + x.second * x.second; };
     // A coarse sweep, then bisection towards the nearest blocked samples: the least change lies on the edge
@@ -352,44 +384,90 @@ std::optional<std::pair<double, double>> clearPlacement(const Placement& p, cons
     return best;
 }
 
-/// The other double pivot that makes a four-bar with `joint` (same part and base, pivots elsewhere in the
-/// plane), or nullptr. Links on both sides, one over the other, are one double pivot, each checked on its
-/// own.
+/// Why a four-bar fails in a configuration that poses it (fourBarMotion), or "".
+std::string fourBarFailure(const Model& model, const Joint& first, const Joint& second)
+{
+    const int j = static_cast<int>(&first - model.joints.data());
+    for (int k = 0; k < static_cast<int>(model.configurations.size()); ++k)
+        if (poseOf(model, j, k))
+            if (std::string why = fourBarMotion(model, first, second, k); !why.empty())
+                return why;
+    return "";
+}
+
+/// A double pivot's stage-2 problem as the joint is placed now, and how far its pivots may move.
+std::pair<Placement, Range> placementOf(const Model& model, const Joint& joint)
+{
+    Placement p{model, joint, pivotPlane(model, joint), 0, 0, {}, {}};
+    p.axisA = longest(model.cuboids[joint.pivotFace.cuboid], p.plane);
+    p.axisB = longest(model.cuboids[joint.basePivotFace.cuboid], p.plane);
+    const int j = static_cast<int>(&joint - model.joints.data());
+    for (size_t k = 0; k < model.configurations.size(); ++k)
+        for (const JointPose& pose : model.configurations[k].poses)
+            if (pose.joint == j) {
+                p.poses.push_back(pose);
+                p.configurations.push_back(static_cast<int>(k));
+            }
+    const auto [lowA, highA] = p.range(joint.pivotFace, p.axisA, p.plane.pivot);
+    const auto [lowB, highB] = p.range(joint.basePivotFace, p.axisB, p.plane.basePivot);
+    return {p, Range{lowA, highA, lowB, highB}};
+}
+
+/// A four-bar whose links' least-change places fail, placed anew (the thesis places each link alone): each
+/// link's places along its part's face (linkAt, 100 samples), pairs in order of their total change, the first
+/// that moves clear in every configuration (fourBarFailure; at most 4000 tried). Whether one was found; the
+/// joints are left there, or as they were.
+bool placeFourBar(Model& model, Joint& first, Joint& second)
+{
+    struct Candidate {
+        double cost, a, b;
+    };
+    const auto [p1, range1] = placementOf(model, first);
+    const auto [p2, range2] = placementOf(model, second);
+    auto sample = [](const Placement& p, const Range& r) {
+        std::vector<Candidate> out;
+        const int steps = 100;
+        for (int i = 0; i <= steps; ++i)
+            if (const auto x = linkAt(p, r, r.lowA + (r.highA - r.lowA) * i / steps))
+                out.push_back({x->first * x->first + x->second * x->second, x->first, x->second});
+        return out;
+    };
+    const std::vector<Candidate> c1 = sample(p1, range1), c2 = sample(p2, range2);
+    std::vector<std::pair<size_t, size_t>> pairs;
+    for (size_t i = 0; i < c1.size(); ++i)
+        for (size_t k = 0; k < c2.size(); ++k)
+            pairs.push_back({i, k});
+    std::sort(pairs.begin(), pairs.end(), [&](const auto& x, const auto& y) {
+        return c1[x.first].cost + c2[x.second].cost < c1[y.first].cost + c2[y.second].cost;
+    });
+    const Joint before1 = first, before2 = second;
+    auto move = [](Joint& joint, const Joint& before, const Placement& p, const Candidate& c) {
+        joint.pivot[p.axisA] = nanometres(before.pivot[p.axisA] + c.a);
+        joint.basePivot[p.axisB] = nanometres(before.basePivot[p.axisB] + c.b);
+    };
+    for (size_t n = 0; n < pairs.size() && n < 4000; ++n) {
+        move(first, before1, p1, c1[pairs[n].first]);
+        move(second, before2, p2, c2[pairs[n].second]);
+        if (fourBarFailure(model, first, second).empty())
+            return true;
+    }
+    first = before1;
+    second = before2;
+    return false;
+}
+
+}  // namespace
+
 const Joint* fourBarPartner(const Model& model, const Joint& joint)
 {
     if (joint.type != Joint::Type::DoublePivot)
         return nullptr;
-    const PivotPlane one = pivotPlane(model, joint);
-    for (const Joint& other : model.joints) {
-        if (&other == &joint || other.type != Joint::Type::DoublePivot || other.part != joint.part ||
-            other.base != joint.base)
-            continue;
-        const PivotPlane two = pivotPlane(model, other);
-        if (other.pivotFace.side == joint.pivotFace.side && squared(one.pivot, two.pivot) >= 1 &&
-            squared(one.basePivot, two.basePivot) >= 1)
+    for (const Joint& other : model.joints)
+        if (&other != &joint && other.type == Joint::Type::DoublePivot && other.part == joint.part &&
+            other.base == joint.base && other.pivotFace.side == joint.pivotFace.side)
             return &other;
-    }
     return nullptr;
 }
-
-/// Each four-bar, by its first link and its partner, in every configuration that poses it.
-void checkFourBars(const Model& model, std::vector<Unplaced>& failed)
-{
-    for (size_t i = 0; i < model.joints.size(); ++i) {
-        const Joint* partner = fourBarPartner(model, model.joints[i]);
-        if (!partner || partner < &model.joints[i])
-            continue;  // each four-bar once, from its first link
-        for (int k = 0; k < static_cast<int>(model.configurations.size()); ++k)
-            if (poseOf(model, static_cast<int>(i), k))
-                if (const std::string why = fourBarMotion(model, model.joints[i], *partner, k);
-                    !why.empty()) {
-                    failed.push_back({model.joints[i].name, why});
-                    break;
-                }
-    }
-}
-
-}  // namespace
 
 std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point& pole, double degrees)
 {
@@ -421,30 +499,51 @@ std::array<double, 2> linkAngles(const Model& model, const Joint& joint, const J
     return fourBarAngles(plane.pivot, plane.basePivot, {pose.pole[plane.u], pose.pole[plane.w]}, pose.angle);
 }
 
+std::vector<FourBarTurns> fourBarPath(const Model& model, const Joint& first, const Joint& second, int k,
+                                      double t, int steps)
+{
+    const PivotPlane one = pivotPlane(model, first), two = pivotPlane(model, second);
+    const JointPose* pose = poseOf(model, static_cast<int>(&first - model.joints.data()), k);
+    if (!pose)
+        return std::vector<FourBarTurns>(static_cast<size_t>(steps));
+    const Point pole{pose->pole[one.u], pose->pole[one.w]};
+    const Point a1 = one.pivot, b1 = one.basePivot, a2 = two.pivot, b2 = two.basePivot;
+    const double r1 = std::sqrt(squared(a1, b1)), r2 = std::sqrt(squared(a2, b2)),
+                 coupler = std::sqrt(squared(a1, a2));
+    const Point end1 = turn(a1, pole, pose->angle);
+    const double from = std::atan2(a1[1] - b1[1], a1[0] - b1[0]);
+    const double sweep = std::remainder(std::atan2(end1[1] - b1[1], end1[0] - b1[0]) - from, 2 * kPi);
+    auto degrees = [](double radians) { return std::remainder(radians, 2 * kPi) * 180 / kPi; };
+    std::vector<FourBarTurns> path;
+    Point follower = a2;
+    for (int step = 1; step <= steps; ++step) {
+        const double turned = sweep * t * step / steps;
+        const Point leader{b1[0] + r1 * std::cos(from + turned), b1[1] + r1 * std::sin(from + turned)};
+        const std::vector<Point> places = meet(b2, r2, leader, coupler);
+        if (places.empty())
+            break;
+        follower = squared(places[0], follower) <= squared(places[1], follower) ? places[0] : places[1];
+        path.push_back({degrees(turned),
+                        degrees(std::atan2(follower[1] - b2[1], follower[0] - b2[0]) -
+                                std::atan2(a2[1] - b2[1], a2[0] - b2[0])),
+                        degrees(std::atan2(follower[1] - leader[1], follower[0] - leader[0]) -
+                                std::atan2(a2[1] - a1[1], a2[0] - a1[0]))});
+    }
+    return path;
+}
+
 std::vector<Unplaced> placePivots(Model& model)
 {
     std::vector<Unplaced> failed;
     for (Joint& joint : model.joints) {
         if (joint.type != Joint::Type::DoublePivot)
             continue;
-        Placement p{model, joint, pivotPlane(model, joint), 0, 0, {}, {}};
-        p.axisA = longest(model.cuboids[joint.pivotFace.cuboid], p.plane);
-        p.axisB = longest(model.cuboids[joint.basePivotFace.cuboid], p.plane);
-        const int j = static_cast<int>(&joint - model.joints.data());
-        for (size_t k = 0; k < model.configurations.size(); ++k)
-            for (const JointPose& pose : model.configurations[k].poses)
-                if (pose.joint == j) {
-                    p.poses.push_back(pose);
-                    p.configurations.push_back(static_cast<int>(k));
-                }
+        auto [p, range] = placementOf(model, joint);
         if (p.poses.empty())
             continue;
-        const auto [lowA, highA] = p.range(joint.pivotFace, p.axisA, p.plane.pivot);
-        const auto [lowB, highB] = p.range(joint.basePivotFace, p.axisB, p.plane.basePivot);
-        const Range range{lowA, highA, lowB, highB};
         const auto reachable = leastChange(p, range);
         auto placed = reachable;
-        // A four-bar's links move together: its motion is checked as one linkage below (checkFourBars).
+        // A four-bar's links move together: its motion is checked as one linkage below (fourBarFailure).
         if (!fourBarPartner(model, joint) && (!placed || collides(p, placed->first, placed->second)))
             placed = clearPlacement(p, range);
         if (!placed) {
@@ -459,8 +558,17 @@ std::vector<Unplaced> placePivots(Model& model)
         joint.pivot[p.axisA] = nanometres(joint.pivot[p.axisA] + placed->first);
         joint.basePivot[p.axisB] = nanometres(joint.basePivot[p.axisB] + placed->second);
     }
-    if (failed.empty())
-        checkFourBars(model, failed);
+    if (!failed.empty())
+        return failed;
+    for (Joint& joint : model.joints)  // each four-bar once, from its first link
+        if (const Joint* partner = fourBarPartner(model, joint); partner && partner > &joint) {
+            Joint& second = model.joints[static_cast<size_t>(partner - model.joints.data())];
+            if (const std::string why = fourBarFailure(model, joint, second);
+                !why.empty() && !placeFourBar(model, joint, second))
+                failed.push_back(
+                    {joint.name, why + ", wherever its pivots sit along their faces: pose the part "
+                                       "another way (pole, angle), or put the links on other faces"});
+        }
     return failed;
 }
 

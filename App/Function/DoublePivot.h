@@ -27,6 +27,24 @@ std::array<double, 2> linkAngles(const Model& model, const Joint& joint, const J
 std::array<double, 2> fourBarAngles(const std::array<double, 2>& pivot, const std::array<double, 2>& base,
                                     const std::array<double, 2>& pole, double degrees);
 
+/// The other double pivot that makes a four-bar with `joint`: the same part and base, its pivot on a face of
+/// the same side (wherever its pivots sit: two links with one pivot in common make a four-bar that cannot
+/// move, or runs one link over the other), or nullptr. Links on both sides, one over the other, are one
+/// double pivot, each checked on its own.
+const Joint* fourBarPartner(const Model& model, const Joint& joint);
+
+/// A four-bar's state along its motion (degrees): its first and second links' turns about their base pivots,
+/// and the part's whole turn.
+struct FourBarTurns {
+    double first = 0, second = 0, part = 0;
+};
+
+/// A four-bar (issue 13.5) moving a fraction t of the way to configuration k, at `steps` even steps: the
+/// first link turns evenly, the shorter way, to its place; the second follows on the branch it starts on (the
+/// meeting point of its two circles nearest its last place). Ends early where the links cannot stay joined.
+std::vector<FourBarTurns> fourBarPath(const Model& model, const Joint& first, const Joint& second, int k,
+                                      double t, int steps);
+
 /// A double pivot that cannot be placed, and why.
 struct Unplaced {
     std::string joint, reason;

@@ -143,3 +143,19 @@ TEST(FourBar, TwoLinksOfOnePartMoveAsOneLinkageAndStayOnTheirBranch)
         std::string::npos)
         << unplaced[0].reason;
 }
+
+TEST(FourBar, LinksThatWouldRunOverEachOthersPinsAreRefused)
+{
+    // A bedside lamp's arm posed as turned about its corner at the column's top: every place of a link's base
+    // pivot along the column is near that corner, and the two links lie one along the other (before: solved,
+    // then printed with the links through each other).
+    function::Model lamp = io::readWorkslike(io::readJsonFile(
+        std::string(FABGUIDE_SOURCE_DIR) +
+        "/tests/data/workslike/contradictory/lamp-arm-turned-about-the-column-top.workslike.json"));
+    const std::vector<function::Unplaced> unplaced = function::placePivots(lamp);
+    ASSERT_EQ(unplaced.size(), 1u);
+    EXPECT_EQ(unplaced[0].joint, "lower link");
+    EXPECT_NE(unplaced[0].reason.find("has a link over the other's pin"), std::string::npos)
+        << unplaced[0].reason;
+    EXPECT_NE(unplaced[0].reason.find("wherever its pivots sit along their faces"), std::string::npos);
+}
