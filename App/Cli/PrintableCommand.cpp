@@ -64,6 +64,7 @@ nlohmann::json report(const printable::Fitted& fitted, const std::vector<double>
             {"gap_mm", gap},
             {"clearance", {{"least_mm", check.clearance}, {"where", check.where}}},
             {"invalid", check.invalid},
+            {"loose", check.loose},
             {"bodies", bodies},
             {"notes", fitted.printable.notes},
             {"seconds", seconds},
@@ -99,6 +100,11 @@ int run(const PrintableArguments& args)
     const printable::Check check = printable::check(model, made, gap);
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
+    for (const std::string& body : check.loose)
+        std::printf(
+            "IN PIECES: %s (a cut went through it: a joint turning the wrong way round, or a "
+            "part in the way)\n",
+            body.c_str());
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
     std::vector<std::string> written = io::writePrintFiles(onTheBed, args.output);
     for (const std::string& path : written)
@@ -106,7 +112,7 @@ int run(const PrintableArguments& args)
     const std::string reportPath = (std::filesystem::path(args.output) / "report.json").string();
     written.push_back(reportPath);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const bool ok = check.invalid.empty() && check.clearance >= gap - 0.01;
+    const bool ok = check.invalid.empty() && check.loose.empty() && check.clearance >= gap - 0.01;
     io::writeJsonFile(reportPath, report(fitted, volumes, size, check, gap, ok, seconds, written));
     std::printf("wrote %s\n", reportPath.c_str());
     files.commit();

@@ -7,8 +7,13 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+
+#include <string>
 
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 namespace fabguide::printable {
 
@@ -31,8 +36,9 @@ Placed place(const Body& b, const gp_Trsf& t)
     return p;
 }
 
-/// The distance between two solids, 0 when they intersect or one holds the other.
-double distance(const Placed& a, const Placed& b)
+/// The distance between two solids, 0 when they intersect or one holds the other, and a point where it is
+/// (on the first).
+std::pair<double, gp_Pnt> distance(const Placed& a, const Placed& b)
 {
     BRepExtrema_DistShapeShape d;
     d.SetFlag(Extrema_ExtFlag_MIN);  // the least distance only
@@ -40,9 +46,9 @@ double distance(const Placed& a, const Placed& b)
     d.LoadS1(a.shape);
     d.LoadS2(b.shape);
     d.Perform();
-    if (!d.IsDone())
-        return 0;
-    return d.InnerSolution() ? 0 : d.Value();
+    if (!d.IsDone() || d.NbSolution() == 0)
+        return {0, gp_Pnt()};
+    return {d.InnerSolution() ? 0 : d.Value(), d.PointOnShape1(1)};
 }
 
 /// Whether two bodies move alike (their distance is then as printed).
@@ -60,9 +66,15 @@ bool same(const gp_Trsf& a, const gp_Trsf& b)
 Check check(const function::Model& m, const Printable& printable, double enough, int samples)
 {
     Check out;
-    for (const Body& b : printable.bodies)
+    for (const Body& b : printable.bodies) {
         if (!BRepCheck_Analyzer(b.shape).IsValid())
             out.invalid.push_back(b.name);
+        int pieces = 0;
+        for (TopExp_Explorer e(b.shape, TopAbs_SOLID); e.More(); e.Next())
+            ++pieces;
+        if (pieces > 1)  // a cut through it: a joint turning the wrong way round, or a part in the way
+            out.loose.push_back(b.name + ": " + std::to_string(pieces) + " pieces");
+    }
     auto measure = [&](int k, double t, const std::string& when) {
         std::vector<Placed> placed;
         std::vector<gp_Trsf> motions;
@@ -78,10 +90,13 @@ Check check(const function::Model& m, const Printable& printable, double enough,
                 grown.Enlarge(enough);
                 if (grown.IsOut(placed[b].bounds))
                     continue;
-                const double d = distance(placed[a], placed[b]);
+                const auto [d, at] = distance(placed[a], placed[b]);
                 if (d < out.clearance) {
                     out.clearance = d;
-                    out.where = printable.bodies[a].name + " and " + printable.bodies[b].name + " " + when;
+                    char point[96];
+                    std::snprintf(point, sizeof point, " near (%.1f, %.1f, %.1f) mm", at.X(), at.Y(), at.Z());
+                    out.where =
+                        printable.bodies[a].name + " and " + printable.bodies[b].name + " " + when + point;
                 }
             }
     };

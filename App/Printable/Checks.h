@@ -11,12 +11,14 @@ namespace fabguide::printable {
 
 struct Check {
     std::vector<std::string> invalid;  ///< bodies BRepCheck_Analyzer finds invalid
+    std::vector<std::string> loose;    ///< "lever: 2 pieces": bodies that print in pieces, not one
     double clearance = 1e300;          ///< the least distance between two bodies, as printed and moving
-    std::string where;                 ///< "lid and body in 'open' at 50%"
+    std::string where;                 ///< "lid and body in 'open' at 50% near (120.0, 80.0, 50.0) mm"
 };
 
-/// Validity, and the least clearance between any two bodies as printed and at `samples` poses along the way
-/// to each configuration (0 when two bodies intersect). Pairs farther apart than `enough` are not measured.
+/// Validity, each body in one piece, and the least clearance between any two bodies as printed and at
+/// `samples` poses along the way to each configuration (0 when two bodies intersect). Pairs farther apart
+/// than `enough` are not measured.
 Check check(const function::Model& model, const Printable& printable, double enough, int samples = 32);
 
 }  // namespace fabguide::printable

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -27,35 +28,58 @@ struct Radii {
     double outer, pin;
 };
 
-/// The sizes of a joint's round parts (4.5.2): outer radius half the thinnest attached cuboid, the pin inside
-/// it with the gap and a wall around it (0.8 mm, or 30 % of the radius). Where that leaves less than the
-/// least pin (0.4 mm radius), as scaled-down parts do, the round parts stand proud of the thin part, up to
-/// twice its thickness, noted; thinner parts are refused.
+/// The thinnest side of the cuboids.
+double thinnestOf(const Model& m, std::initializer_list<int> cuboids)
+{
+    double side = 1e300;
+    for (int c : cuboids)
+        side = std::min(side, thinnest(m.cuboids[c]));
+    return side;
+}
+
+constexpr double kLeastPin = 0.4, kLeastWall = 0.8;
+
+/// The sizes of a joint's round parts (4.5.2) on parts `side` thin: outer radius half of it, the pin inside
+/// it with the gap and a wall around it (0.8 mm, or 30 % of the radius), or, where that leaves less than the
+/// least pin (0.4 mm radius), as scaled-down parts do, the least that holds one.
+Radii sized(double side, double g)
+{
+    const double outer = std::max(side / 2, kLeastPin + g + kLeastWall);
+    return {outer, outer - g - std::max(kLeastWall, 0.3 * outer)};
+}
+
+/// sized() for a joint's cuboids: round parts that stand proud of a thin part, up to twice its thickness,
+/// noted; thinner parts are refused.
 Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboids, double g, Printable& out)
 {
-    constexpr double leastPin = 0.4, leastWall = 0.8;
-    double side = 1e300;
-    int thinCuboid = -1;
+    const double side = thinnestOf(m, cuboids);
+    int thinCuboid = *cuboids.begin();
     for (int c : cuboids)
-        if (thinnest(m.cuboids[c]) < side)
-            side = thinnest(m.cuboids[c]), thinCuboid = c;
-    const double least = leastPin + g + leastWall;
+        if (thinnest(m.cuboids[c]) == side)
+            thinCuboid = c;
+    const double least = kLeastPin + g + kLeastWall;
     if (side < least)
         throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (cuboid '" +
                                     m.cuboids[thinCuboid].name + "' is " + function::millimetres(side) +
                                     " mm as printed; a pin and its yokes need " +
                                     function::millimetres(least) + " mm with a " + function::millimetres(g) +
                                     " mm gap): make it thicker, or print larger");
-    const double outer = std::max(side / 2, least);
-    if (outer > side / 2) {
+    const Radii r = sized(side, g);
+    if (r.outer > side / 2) {
         std::ostringstream note;
         note.precision(2);
-        note << std::fixed << joint.name << ": its round parts are " << 2 * outer
+        note << std::fixed << joint.name << ": its round parts are " << 2 * r.outer
              << " mm across, proud of its " << side << " mm thin part (the least that holds a "
-             << 2 * leastPin << " mm pin with a " << g << " mm gap)";
+             << 2 * kLeastPin << " mm pin with a " << g << " mm gap)";
         out.notes.push_back(note.str());
     }
-    return {outer, outer - g - std::max(leastWall, 0.3 * outer)};
+    return r;
+}
+
+/// A double pivot link's head on its pins: a third of the round parts' radius, at least 1 mm.
+double head(const Radii& r)
+{
+    return std::max(1.0, r.outer / 3);
 }
 
 /// cuboidAtEdge within `reach` of the axis.
@@ -65,7 +89,9 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
     double longest = 0;
     const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
     for (size_t p = 0; p < m.parts.size(); ++p) {
-        if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base))
+        // The part it turns on: its base, or on the ground one that no joint moves (not a neighbouring door).
+        if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base) ||
+            (joint.base < 0 && jointMoving(m, static_cast<int>(p)) >= 0))
             continue;
         for (int c : m.parts[p].cuboids) {
             if (m.cuboids[c].cavity())
@@ -93,9 +119,10 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
 }
 
 /// The box joining a hinge's yokes to the cuboid they hang on across the stand-off, between `from` and `to`
-/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face. Null
+/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face. None
 /// when the axis lies on the cuboid.
-TopoDS_Shape bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to, double r)
+std::optional<Coordinates> bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to,
+                                  double r)
 {
     Coordinates c{};
     bool apart = false;
@@ -111,7 +138,7 @@ TopoDS_Shape bridge(const Cuboid& base, const gp_Ax1& axis, int along, double fr
             c[2 * a] = std::max(low, x - r), c[2 * a + 1] = std::min(high, x + r);
         }
     }
-    return apart ? box(c) : TopoDS_Shape();
+    return apart ? std::optional(c) : std::nullopt;
 }
 
 /// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
@@ -190,6 +217,32 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
     out.bodies.push_back({linkName(joint), -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
 }
 
+/// The nearest other hinge whose axis runs beside this one's (parallel, overlapping along it) within `reach`:
+/// the distance between the axes and its name, or "" (two doors hinged on neighbouring edges).
+std::pair<double, std::string> nearestHinge(const Model& m, int j, const gp_Ax1& axis, int along,
+                                            double reach)
+{
+    std::pair<double, std::string> nearest{reach, ""};
+    const Cuboid& own = m.cuboids[m.joints[j].edgeA.cuboid];
+    for (size_t k = 0; k < m.joints.size(); ++k) {
+        const Joint& other = m.joints[k];
+        if (static_cast<int>(k) == j || !other.turns())
+            continue;
+        const gp_Ax1 beside = hingeAxis(m, other);
+        const Cuboid& its = m.cuboids[other.edgeA.cuboid];
+        const double overlap =
+            std::min(own.at(static_cast<Side>(2 * along + 1)), its.at(static_cast<Side>(2 * along + 1))) -
+            std::max(own.at(static_cast<Side>(2 * along)), its.at(static_cast<Side>(2 * along)));
+        if (!beside.IsParallel(axis, 1e-9) || overlap <= 0)
+            continue;
+        gp_Vec apart(axis.Location(), beside.Location());
+        apart.SetCoord(along + 1, 0);
+        if (apart.Magnitude() < nearest.first)
+            nearest = {apart.Magnitude(), other.name};
+    }
+    return nearest;
+}
+
 }  // namespace
 
 std::string linkName(const Joint& joint)
@@ -200,7 +253,8 @@ std::string linkName(const Joint& joint)
 
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 {
-    for (double reach : {1e-3, thinnest(m.cuboids[joint.edgeA.cuboid])})
+    const double thin = thinnest(m.cuboids[joint.edgeA.cuboid]);
+    for (double reach : {1e-3, thin, 2 * thin})
         if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
             return c;
     return -1;
@@ -213,33 +267,62 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const gp_Ax1 axis = hingeAxis(m, joint);
     const int along = std::abs(axis.Direction().X()) > 0.5 ? 0 : std::abs(axis.Direction().Y()) > 0.5 ? 1 : 2;
     const int onEdge = cuboidAtEdge(m, joint, axis);
-    if (onEdge < 0) {
-        out.notes.push_back(joint.name + ": no other part along its edge to hold the yokes; no hinge made");
-        return;
-    }
+    if (onEdge < 0)  // printed without a hinge, the part would come out loose
+        throw std::invalid_argument(
+            "joint '" + joint.name + "': no other part lies along its edge, or within " +
+            function::millimetres(2 * thinnest(m.cuboids[joint.edgeA.cuboid])) +
+            " mm of it, to hold the hinge's yokes: move the edge onto the part it turns on");
     const int base = function::partOf(m, onEdge);
-    const Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
     const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
     const double lo = edge[2 * along], hi = edge[2 * along + 1];
+    Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
+    // Round parts share the room with a neighbouring hinge's (a door hinged 4 mm from the next door's
+    // hinge): each takes half of it, less half the gap.
+    if (const auto [near, name] = nearestHinge(m, j, axis, along, 2 * r.outer + g); !name.empty()) {
+        const double least = kLeastPin + g + kLeastWall;
+        if ((near - g) / 2 < least)
+            throw std::invalid_argument(
+                "joint '" + joint.name + "': no room for its pin and yokes beside joint '" + name +
+                "': their axes are " + function::millimetres(near) + " mm apart as printed, and each needs " +
+                function::millimetres(least) + " mm round its axis with a " + function::millimetres(g) +
+                " mm gap between: move the parts apart, or print larger");
+        r = sized(near - g, g);
+    }
     const double yoke = (hi - lo) / 4;
     const gp_Pnt at = axis.Location();
     TopoDS_Shape& part = shapes[joint.part];
     TopoDS_Shape& other = shapes[base];
-    // The moving part gives way around the yokes, the other part around the knuckle.
-    // A sliding hinge's slotted yokes stay put while the part turns and slides past them: it gives way
-    // around them as they stand in its own frame along the way.
+    // The moving part gives way around the yokes and their bridges to a part standing off the edge, the
+    // other part around the knuckle. They stay put while the part turns (and a sliding hinge's part slides)
+    // past them: it gives way around them as they stand in its own frame along the way, the yokes slotted
+    // along a sliding hinge's travel.
     const TopoDS_Shape yokes = fuse(slotted(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
                                     slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g));
-    // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis.
-    TopoDS_Shape around = yokes;
-    for (size_t k = 0; k < m.configurations.size() && joint.slides(); ++k)
+    std::vector<Coordinates> bridges, clear;
+    for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
+        if (const std::optional<Coordinates> b = bridge(m.cuboids[onEdge], axis, along, from, to, r.outer)) {
+            bridges.push_back(*b);
+            clear.push_back(*b);
+            for (int i = 0; i < 6; ++i)
+                clear.back()[i] += i % 2 ? g : -g;
+        }
+    // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis;
+    // round yokes that only turn need no turning back.
+    std::vector<TopoDS_Shape> around{yokes};
+    for (const Coordinates& c : clear)
+        around.push_back(box(c));
+    for (size_t k = 0; k < m.configurations.size(); ++k)
         if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
             gp_Trsf turnBack;
             turnBack.SetRotation(axis, -pose->angle * kPi / 180);
             gp_Vec back(0, 0, 0);
             back.SetCoord(joint.axis + 1, -pose->offset);
-            around = fuse(
-                around, turnedThenShifted(yokes, axis, -pose->angle * kPi / 180, back.Transformed(turnBack)));
+            const double angle = -pose->angle * kPi / 180;
+            if (joint.slides())
+                around.push_back(turnedThenShifted(yokes, axis, angle, back.Transformed(turnBack)));
+            for (const TopoDS_Shape& swept :
+                 turnedThenShifted(clear, axis, angle, back.Transformed(turnBack)))
+                around.push_back(swept);
         }
     part = cut(part, around);
     other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
@@ -248,15 +331,14 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const TopoDS_Shape hole = slotted(m, j, at, along, lo - g - 1, hi + g + 1, r.pin + g);
     other = fuse(cut(other, hole), fuse(cut(slotted(m, j, at, along, lo, lo + yoke, r.outer), hole),
                                         cut(slotted(m, j, at, along, hi - yoke, hi, r.outer), hole)));
-    for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
-        if (const TopoDS_Shape b = bridge(m.cuboids[onEdge], axis, along, from, to, r.outer); !b.IsNull())
-            other = fuse(other, cut(b, hole));
+    for (const Coordinates& b : bridges)
+        other = fuse(other, cut(box(b), hole));
     part = fuse(part,
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
 }
 
 void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
-              std::vector<TopoDS_Shape>& shapes, Printable& out)
+              std::vector<TopoDS_Shape>& shapes)
 {
     const Joint& joint = m.joints[j];
     const int a = joint.axis;
@@ -287,10 +369,11 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                 }
             }
         }
-    if (mover < 0) {
-        out.notes.push_back(joint.name + ": slides free (no cavity guides it and it rests on no other part)");
-        return;
-    }
+    if (mover < 0)  // printed without rails, the part would come out loose
+        throw std::invalid_argument("joint '" + joint.name + "': nothing guides part '" +
+                                    m.parts[joint.part].name +
+                                    "' (no cavity of another part holds it and it rests on no other part): "
+                                    "put it in a cavity or against the part it slides on");
     const auto& x = m.cuboids[mover].coordinates;
     const auto& y = m.cuboids[base].coordinates;
     const int across = 3 - a - normal;
@@ -304,10 +387,14 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const double centre =
         (std::max(x[2 * across], y[2 * across]) + std::min(x[2 * across + 1], y[2 * across + 1])) / 2;
     const double from = std::max(x[2 * a], y[2 * a]), to = std::min(x[2 * a + 1], y[2 * a + 1]);
-    if (h < 2 * g || width < 6 * h || to - from < 4 * h) {
-        out.notes.push_back(joint.name + ": slides free (too little contact for rails at this gap)");
-        return;
-    }
+    if (h < 2 * g || width < 6 * h || to - from < 4 * h)
+        throw std::invalid_argument(
+            "joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
+            m.cuboids[base].name + "' over " + function::millimetres(width) + " x " +
+            function::millimetres(to - from) + " mm, too little for rails " + function::millimetres(2 * h) +
+            " mm deep at a " + function::millimetres(g) + " mm gap (they need " +
+            function::millimetres(6 * h) + " x " + function::millimetres(4 * h) + " mm, and parts " +
+            function::millimetres(5 * g) + " mm thick): widen the contact, or print larger");
     // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
     // groove's is the same offset outwards by the gap, edge by edge.
     auto tongue = [&](double grow, double start, double length) {
@@ -356,18 +443,26 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     const int n = plane.normal;
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
-    const double link = r.outer, head = std::max(1.0, r.outer / 3);
-
+    const double link = r.outer;
+    // The link's layer: the gap off the faces; a four-bar's second link beyond the first one's heads, so the
+    // two may cross (the solve keeps each off the other's pins).
+    double depth = g;
+    if (const Joint* first = function::fourBarPartner(m, joint); first && first < &joint) {
+        const Radii under = sized(thinnestOf(m, {first->pivotFace.cuboid, first->basePivotFace.cuboid}), g);
+        depth += 2 * g + under.outer + head(under);
+    }
     // Along the normal, from the face outwards.
     const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
         return rodFrom(p, n, face, outward, from, to, radius);
     };
     const auto [pivot, base] = pivotPoints(m, joint);
+    const double top = depth + link + g;  // where the head starts
     for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})
-        shapes[part] = fuse(shapes[part], fuse(span(p, -1, 2 * g + link + head, r.pin),
-                                               span(p, 2 * g + link, 2 * g + link + head, r.outer)));
-    // The link: a bar with round ends between the pivots, the gap off the faces.
-    out.bodies.push_back({linkName(joint), -1, j, pivotLink(pivot, base, n, face, outward, g, link, r, g)});
+        shapes[part] =
+            fuse(shapes[part], fuse(span(p, -1, top + head(r), r.pin), span(p, top, top + head(r), r.outer)));
+    // The link: a bar with round ends between the pivots.
+    out.bodies.push_back(
+        {linkName(joint), -1, j, pivotLink(pivot, base, n, face, outward, depth, link, r, g)});
 }
 
 }  // namespace fabguide::printable

@@ -14,21 +14,23 @@ std::string linkName(const Joint& joint);
 
 /// The solid cuboid of another part that the hinge's edge lies on, along most of its length (the part the
 /// yokes hang on), or -1. An edge standing off every other part (the sofa bunk's headrest, hinged 20 mm
-/// behind the seat) hangs on the nearest one within the moving cuboid's thickness; bridge() joins its yokes
-/// to it.
+/// behind the seat; a camera's flip screen, hinged on its outer edge) hangs on the nearest one within the
+/// moving cuboid's thickness, else twice it; bridges join its yokes to it.
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
 
 /// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
 /// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
-/// each cleared of the other by the gap.
+/// each cleared of the other by the gap. An error names the joint when no part is near enough to hold the
+/// yokes.
 void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
               std::vector<TopoDS_Shape>& shapes, Printable& out);
 
 /// Slide (4.5.2) not guided by a cavity: mated rails. A dovetail tongue on the part it rests against, along
 /// the slide axis where the two meet, and the matching groove, the gap all round, cut into the moving part
-/// along its travel, so it can slide but not lift off.
+/// along its travel, so it can slide but not lift off. An error names the joint when the part rests on no
+/// other part, or on too little for rails.
 void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
-              std::vector<TopoDS_Shape>& shapes, Printable& out);
+              std::vector<TopoDS_Shape>& shapes);
 
 /// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
 /// rigid link between them, outside the faces, with a hole round each pin.

@@ -47,19 +47,34 @@ gp_Trsf shift(int axis, double by)
     return t;
 }
 
-/// A double pivot's four-bar: the turns about its base pivot (the link) and its own pivot (the part).
+/// A double pivot's turns a fraction `along` of the way to its pose: about its base pivot (the link) and its
+/// own pivot (the part).
 struct FourBar {
     gp_Ax1 link, part;
     double linkDegrees, partDegrees;
 };
 
-FourBar fourBar(const Model& model, const Joint& joint, const JointPose& pose)
+/// A four-bar's links follow their linkage (function::fourBarPath, as the solve checked it); a lone link
+/// turns evenly.
+FourBar fourBar(const Model& model, int j, const JointPose& pose, int configuration, double along)
 {
+    const Joint& joint = model.joints[j];
     const auto [pivot, base] = pivotPoints(model, joint);
     const int n = function::pivotPlane(model, joint).normal;
     const gp_Dir normal(n == 0, n == 1, n == 2);
     const auto [link, part] = function::linkAngles(model, joint, pose);
-    return {gp_Ax1(base, normal), gp_Ax1(pivot, normal), link, part};
+    FourBar even{gp_Ax1(base, normal), gp_Ax1(pivot, normal), along * link, along * part};
+    const Joint* partner = function::fourBarPartner(model, joint);
+    if (!partner || along <= 0)
+        return even;
+    const bool first = &joint < partner;
+    const int steps = static_cast<int>(std::ceil(64 * along));
+    const std::vector<function::FourBarTurns> path = function::fourBarPath(
+        model, first ? joint : *partner, first ? *partner : joint, configuration, along, steps);
+    if (static_cast<int>(path.size()) < steps)
+        return even;  // it comes apart on the way: the solve refused it already
+    const double own = first ? path.back().first : path.back().second;
+    return {even.link, even.part, own, path.back().part - own};
 }
 
 }  // namespace
@@ -105,8 +120,8 @@ gp_Trsf jointMotion(const Model& model, int j, int configuration, double t)
             return shift(joint.axis, sliding(t) * pose->offset) *
                    turn(hingeAxis(model, joint), turning(t) * pose->angle);
         case Joint::Type::DoublePivot: {
-            const FourBar f = fourBar(model, joint, *pose);
-            return turn(f.link, turning(t) * f.linkDegrees) * turn(f.part, turning(t) * f.partDegrees);
+            const FourBar f = fourBar(model, j, *pose, configuration, turning(t));
+            return turn(f.link, f.linkDegrees) * turn(f.part, f.partDegrees);
         }
     }
     return {};
@@ -215,8 +230,8 @@ gp_Trsf linkMotion(const Model& model, int j, int configuration, double t)
     const Joint& joint = model.joints[j];
     gp_Trsf own;
     if (const JointPose* pose = poseOf(model, j, configuration)) {
-        const FourBar f = fourBar(model, joint, *pose);
-        own = turn(f.link, turning(t) * f.linkDegrees);
+        const FourBar f = fourBar(model, j, *pose, configuration, turning(t));
+        own = turn(f.link, f.linkDegrees);
     }
     return partMotion(model, joint.base, configuration, t) * own;
 }

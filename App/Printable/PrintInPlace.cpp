@@ -91,13 +91,35 @@ void clearHingeBases(const Model& m, const std::vector<Coordinates>& at, double 
 {
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
-        const int other = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
-        for (size_t k = 0; k < m.configurations.size() && other >= 0; ++k)
+        const int edge = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
+        for (size_t k = 0; k < m.configurations.size() && edge >= 0; ++k)
             if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
-                shapes[function::partOf(m, other)] =
-                    cut(shapes[function::partOf(m, other)],
+                shapes[function::partOf(m, edge)] =
+                    cut(shapes[function::partOf(m, edge)],
                         hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
     }
+}
+
+/// Whether another part's cavity guides the part: it fits inside one (a phone's battery, slid in), or a
+/// cuboid of it runs in one as modelled (a drawer in its bay, a lever's slider in its channel).
+bool inCavity(const Model& m, int part)
+{
+    for (const function::FitInside& f : m.fitInside)
+        if (f.cavity >= 0 && std::find(f.inner.begin(), f.inner.end(), part) != f.inner.end())
+            return true;
+    for (int c : m.parts[part].cuboids)
+        for (const Cuboid& hollow : m.cuboids)
+            if (hollow.cavity() && function::partOf(m, hollow.within) != part && !m.cuboids[c].cavity()) {
+                bool overlap = true;
+                for (int a = 0; a < 3; ++a)
+                    overlap = overlap &&
+                              std::min(hollow.coordinates[2 * a + 1], m.cuboids[c].coordinates[2 * a + 1]) -
+                                      std::max(hollow.coordinates[2 * a], m.cuboids[c].coordinates[2 * a]) >
+                                  1e-9;
+                if (overlap)
+                    return true;
+            }
+    return false;
 }
 
 /// Joint geometry (4.5.2): hinges and sliding hinges, double pivots, and rails for slides no cavity guides.
@@ -110,11 +132,8 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
             addHinge(m, static_cast<int>(j), at, g, shapes, out);
         else if (joint.type == Joint::Type::DoublePivot)
             addDoublePivot(m, static_cast<int>(j), g, shapes, out);
-        else if (std::none_of(m.fitInside.begin(), m.fitInside.end(), [&](const function::FitInside& f) {
-                     return f.cavity >= 0 &&
-                            std::find(f.inner.begin(), f.inner.end(), joint.part) != f.inner.end();
-                 }))
-            addRails(m, static_cast<int>(j), at, g, shapes, out);
+        else if (!inCavity(m, joint.part))
+            addRails(m, static_cast<int>(j), at, g, shapes);
     }
 }
 
@@ -128,7 +147,7 @@ std::string bodyName(const Model& m, const std::vector<int>& parts)
 }
 
 /// The parts' shapes as bodies (rigidBodies: parts that stand still together fused), before the links, faces
-/// merged; a body OpenCASCADE lost is an error, one cut in pieces a note.
+/// merged; a body OpenCASCADE lost is an error (one cut in pieces, check() reports).
 void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     const std::vector<std::vector<int>> bodies = rigidBodies(m);
@@ -146,9 +165,6 @@ void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printabl
             throw std::runtime_error(
                 "geometry: nothing is left of part '" + name +
                 "' after its cavities and joints were cut; try another --gap or --scale");
-        if (pieces > 1)  // a sweep cut through it: a joint turning the wrong way round, or a part in the way
-            out.notes.push_back(name + ": falls apart into " + std::to_string(pieces) +
-                                " pieces; check which way its neighbours' joints turn");
         out.bodies.insert(out.bodies.begin() + static_cast<long>(b),
                           {name, bodies[b].front(), -1, unify.Shape()});
     }

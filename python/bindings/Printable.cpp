@@ -47,7 +47,7 @@ std::string brep(const TopoDS_Shape& shape)
 }
 
 /// {"bodies": [{"name", "part", "brep", "volume"}], "sweeps": [brep], "notes", "scale", "size", "clearance",
-/// "where", "invalid"}
+/// "where", "invalid", "loose"}
 py::dict printableBodies(const py::object& model, double gap, bool check, double scale, const Fit& fit)
 {
     const printable::Fitted m = made(model, gap, scale, fit);
@@ -81,6 +81,7 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
         out["clearance"] = c.clearance;
         out["where"] = c.where;
         out["invalid"] = c.invalid;
+        out["loose"] = c.loose;
     }
     return out;
 }
@@ -113,7 +114,7 @@ void bindPrintable(py::module_& m)
           "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest\n"
           "scale that fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep',\n"
           "'volume'}], 'sweeps', 'notes', 'scale', 'turned' (a quarter about z to fit), 'size' (x, y, z\n"
-          "mm on the bed), and with check 'clearance' (mm), 'where', 'invalid'}.");
+          "mm on the bed), and with check 'clearance' (mm), 'where', 'invalid', 'loose'}.");
     m.def(
         "printable_body_names",
         [](const py::object& model) { return printable::bodyNames(io::readWorkslike(toJson(model))); },

@@ -75,6 +75,10 @@ class Printable(properties.Proxy):
             obj.ClearanceAt = data["where"]
             if data["invalid"]:
                 raise PrintableError("Printable '{}': invalid solids: {}".format(obj.Label, ", ".join(data["invalid"])))
+            if data["loose"]:
+                raise PrintableError("Printable '{}': bodies that print in pieces ({}): a cut went through them, a "
+                                     "joint turning the wrong way round or a part in the way".format(
+                                         obj.Label, "; ".join(data["loose"])))
             if data["clearance"] < obj.Gap.Value - 0.01:
                 FreeCAD.Console.PrintWarning("{}: parts come within {:.3f} mm of each other ({}), less than the {} mm "
                                              "gap\n".format(obj.Label, data["clearance"], data["where"],
