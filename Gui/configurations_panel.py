@@ -46,8 +46,9 @@ class ConfigurationsPanel:
             angle, offset = QtGui.QDoubleSpinBox(), QtGui.QDoubleSpinBox()
             angle.setRange(-360, 360)
             offset.setRange(-1e5, 1e5)
-            angle.setEnabled(joints.kind(joint) != "slide")
+            angle.setEnabled(joints.kind(joint) not in ("slide", "fixed"))
             offset.setEnabled(joints.slides(joint))
+            moves.setEnabled(joints.moves(joint))
             for column, widget in ((1, moves), (2, angle), (3, offset)):
                 self.table.setCellWidget(row, column, widget)
             moves.toggled.connect(self.preview)

@@ -174,6 +174,27 @@ class AddDoublePivot(Command):
             finish(doc, joint, mech)
 
 
+class AddFixedJoint(Command):
+    ICON, MENU = "FabGuide_Fixed.svg", "Add Fixed Joint"
+    TIP = ("Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints "
+           "as one body with it")
+
+    def run(self, doc):
+        boxes = [o for o, _ in picks() if cuboids.is_box(o)]
+        if len(boxes) != 2:
+            return tell("Pick a box of the part to hold, then a box of the part it rides on.")
+        owners = [parts.part_of(doc.Objects, b) for b in boxes]
+        if boxes[0] is boxes[1] or (owners[0] is not None and owners[0] is owners[1]):
+            return tell("Both boxes are in one part: pick a box of the part to hold, then one of another part.")
+        with transaction(doc, self.MENU):
+            part, base = part_of(doc, boxes[0]), part_of(doc, boxes[1])
+            joint = vp.attach(joints.create(doc, "fixed", part, base=base,
+                                            label="{} on {}".format(part.Label, base.Label)))
+            mech = mechanism_for(doc, [part, base])
+            add_to(mech, joint)
+            finish(doc, joint, mech)
+
+
 class AddRelationship(Command):
     """Pick boxes of the parts in order; the last picked is the covered / enclosing / supported part. The
     relationship holds in the configuration the mechanism shows (see Configurations)."""
@@ -387,6 +408,7 @@ COMMANDS = {
     "FabGuide_AddSlide": AddSlide(),
     "FabGuide_AddSlidingHinge": AddSlidingHinge(),
     "FabGuide_AddDoublePivot": AddDoublePivot(),
+    "FabGuide_AddFixedJoint": AddFixedJoint(),
     "FabGuide_AddCover": AddCover(),
     "FabGuide_AddFitInside": AddFitInside(),
     "FabGuide_AddSupport": AddSupport(),

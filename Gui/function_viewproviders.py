@@ -58,10 +58,11 @@ class ViewProviderConfiguration(ViewProvider):
 
 
 class ViewProviderJoint(ViewProvider):
-    """Draws the joint in orange: a hinge's edge, a slide's direction through its part, a double pivot's link."""
+    """Draws the joint in orange: a hinge's edge, a slide's direction through its part, a double pivot's link, a
+    fixed joint's hold from its part to its base."""
 
     ICONS = {"hinge": "FabGuide_Hinge.svg", "slide": "FabGuide_Slide.svg", "sliding_hinge": "FabGuide_SlidingHinge.svg",
-             "double_pivot": "FabGuide_DoublePivot.svg"}
+             "double_pivot": "FabGuide_DoublePivot.svg", "fixed": "FabGuide_Fixed.svg"}
 
     def getIcon(self):
         from fabguide_gui import resources
@@ -127,7 +128,7 @@ class ViewProviderPrintable(ViewProvider):
 
 def axis_points(joint):
     """Pairs of points of the lines that show a joint: the hinge's edge, the slide's axis through its part, the
-    double pivot's link."""
+    double pivot's link, the fixed joint's hold."""
     import FreeCAD
 
     points = []
@@ -142,6 +143,8 @@ def axis_points(joint):
             points += [box.Center - half, box.Center + half]
         if joints.kind(joint) == "double_pivot":
             points += [joint.Pivot, joint.BasePivot]
+        if joints.kind(joint) == "fixed" and joint.Part and joint.Base:  # from the part to what holds it
+            points += [joint.Part.Cuboids[0].Shape.BoundBox.Center, joint.Base.Cuboids[0].Shape.BoundBox.Center]
     except (AttributeError, IndexError, ValueError, ReferenceError):  # half-made or deleted input
         return []
     return points

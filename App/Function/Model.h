@@ -61,9 +61,12 @@ struct Expression {
 /// base by a rigid link. Its configurations place the part by a turn about the faces' normal (through a pole,
 /// any planar motion but a pure shift being such a turn); stage 2 of the solve moves the pivots along their
 /// cuboids' longest in-plane axis so the link can take the part there.
+///
+/// A fixed joint (issue 15) holds the part rigidly to its base: it has no poses, the part is carried with its
+/// base, and print-in-place fuses the two into one body (a toaster lever's knob on its lever).
 struct Joint {
     std::string name;
-    enum class Type { Hinge, Slide, SlidingHinge, DoublePivot } type = Type::Hinge;
+    enum class Type { Hinge, Slide, SlidingHinge, DoublePivot, Fixed } type = Type::Hinge;
     int part = 0;
     int base = -1;      ///< the part it hangs on (-1: the ground)
     Face edgeA, edgeB;  ///< hinges: two faces of one cuboid of the part, on different axes

@@ -154,6 +154,17 @@ int jointMovingIn(const Model& model, int part, int configuration)
     return -1;
 }
 
+int carrierOf(const Model& model, int part)
+{
+    for (size_t step = 0; step <= model.joints.size(); ++step) {  // the bound: as jointMovingIn's
+        const int j = jointMoving(model, part);
+        if (j < 0 || model.joints[j].type != Joint::Type::Fixed)
+            return part;
+        part = model.joints[j].base;
+    }
+    return part;
+}
+
 int partOf(const Model& model, int cuboid)
 {
     for (size_t p = 0; p < model.parts.size(); ++p)

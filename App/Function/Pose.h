@@ -39,6 +39,10 @@ const JointPose* poseOf(const Model& model, int joint, int configuration);
 /// poses, or -1: the part stands still there.
 int jointMovingIn(const Model& model, int part, int configuration);
 
+/// The part whose motion part p shares: its base's, through fixed joints (p itself when no fixed joint holds
+/// it).
+int carrierOf(const Model& model, int part);
+
 /// cos and sin of an angle in degrees, exact at multiples of 90° (std::cos(π/2) is 6e-17, not 0).
 std::pair<double, double> cosSin(double degrees);
 

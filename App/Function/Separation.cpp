@@ -159,7 +159,7 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
             if (found != fits.end())
                 return !found->second.count(configuration) || mostlyInside(boxes[inner], boxes[enclosing]);
         }
-        return pa == pb;
+        return carrierOf(model, pa) == carrierOf(model, pb);  // one part, or held together by fixed joints
     };
     std::vector<std::pair<int, int>> pairs;
     for (size_t i = 0; i < solids.size(); ++i)

@@ -113,7 +113,8 @@ const std::map<std::string, function::Joint::Type> kJointTypes{
     {"hinge", function::Joint::Type::Hinge},
     {"slide", function::Joint::Type::Slide},
     {"sliding_hinge", function::Joint::Type::SlidingHinge},
-    {"double_pivot", function::Joint::Type::DoublePivot}};
+    {"double_pivot", function::Joint::Type::DoublePivot},
+    {"fixed", function::Joint::Type::Fixed}};
 
 /// A double pivot's pivot: ["cuboid.side", [x, y, z]], a point on that face of a cuboid of `part`; returns
 /// the face and the point's in-plane offsets from the cuboid's low corner.
@@ -191,8 +192,10 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
     if (known == kJointTypes.end())
         throw FormatError(
             j.pathOf("type") + ": \"" + type +
-            "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot)");
+            "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot, fixed)");
     joint.type = known->second;
+    if (joint.type == function::Joint::Type::Fixed && joint.base < 0)
+        throw FormatError(j.pathOf("base") + ": a fixed joint holds its part to a base part");
     if (joint.type == function::Joint::Type::DoublePivot)
         readPivots(model, j, joint);
     if (joint.turns()) {
@@ -233,6 +236,9 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         if (joint == model.joints.end())
             throw FormatError(here + ": no joint named '" + name + "'");
         function::JointPose pose{static_cast<int>(joint - model.joints.begin())};
+        if (joint->type == function::Joint::Type::Fixed)
+            throw FormatError(here + ": joint '" + name +
+                              "' is fixed: it does not move, pose its base's joint");
         if (joint->type == function::Joint::Type::SlidingHinge) {
             const Fields both(value, here);
             pose.angle = both.number("angle");

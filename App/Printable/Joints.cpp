@@ -91,7 +91,7 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
     for (size_t p = 0; p < m.parts.size(); ++p) {
         // The part it turns on: its base, or on the ground one that no joint moves (not a neighbouring door).
         if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base) ||
-            (joint.base < 0 && jointMoving(m, static_cast<int>(p)) >= 0))
+            (joint.base < 0 && !standsStill(m, static_cast<int>(p))))
             continue;
         for (int c : m.parts[p].cuboids) {
             if (m.cuboids[c].cavity())

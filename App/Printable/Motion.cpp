@@ -123,13 +123,15 @@ gp_Trsf jointMotion(const Model& model, int j, int configuration, double t)
             const FourBar f = fourBar(model, j, *pose, configuration, turning(t));
             return turn(f.link, f.linkDegrees) * turn(f.part, f.partDegrees);
         }
+        case Joint::Type::Fixed:  // no poses: it rides on its base
+            return {};
     }
     return {};
 }
 
 bool standsStill(const Model& model, int part)
 {
-    return jointMoving(model, part) < 0;
+    return jointMoving(model, function::carrierOf(model, part)) < 0;
 }
 
 namespace {
@@ -195,6 +197,9 @@ std::vector<std::vector<int>> rigidBodies(const Model& model)
                 return true;
         return false;
     };
+    for (const Joint& joint : model.joints)  // a fixed part is one body with its base
+        if (joint.type == Joint::Type::Fixed)
+            body[root(joint.part)] = root(joint.base);
     for (int p = 0; p < parts; ++p)
         for (int q = p + 1; q < parts; ++q)
             if (standsStill(model, p) && standsStill(model, q) && touch(p, q))

@@ -22,13 +22,15 @@ using function::poseOf;
 /// its four-bar motion.
 gp_Trsf jointMotion(const function::Model& model, int j, int configuration, double t);
 
-/// Whether no joint moves part p: it stands still in every configuration, with every other such part.
+/// Whether no joint moves part p (fixed joints out to the ground hold it still): it stands still in every
+/// configuration, with every other such part.
 bool standsStill(const function::Model& model, int part);
 
-/// The parts printed as one body each (issue 15): each part a joint moves on its own, and the parts that
-/// stand still grouped where they touch each other's material as modelled (a carcass and its legs, a shelf
-/// against a cupboard's walls, an insert on a well's floor never move apart: one body, no gap between them;
-/// a part loose in a cavity touches no wall and stays its own), groups in the order of their first part.
+/// The parts printed as one body each (issue 15): each part a joint moves on its own with the parts fixed to
+/// it (fixed joints), and the parts that stand still grouped where they touch each other's material as
+/// modelled (a carcass and its legs, a shelf against a cupboard's walls, an insert on a well's floor never
+/// move apart: one body, no gap between them; a part loose in a cavity touches no wall and stays its own),
+/// groups in the order of their first part.
 std::vector<std::vector<int>> rigidBodies(const function::Model& model);
 
 /// Part p's motion: its joint's, then its base's, out to the ground.

@@ -32,14 +32,14 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
 {
     const int parts = static_cast<int>(m.parts.size());
     auto turns = [&](int p) {  // its own joint turns in k (carried parts turn with their carrier)
-        const int j = jointMoving(m, p);
+        const int j = jointMoving(m, function::carrierOf(m, p));
         const function::JointPose* pose = j >= 0 ? poseOf(m, j, k) : nullptr;
         return pose && std::abs(pose->angle) > 1e-9 && m.joints[j].type != Joint::Type::Slide;
     };
     for (int a = 0; a < parts; ++a)
         for (int b = 0; b < parts; ++b) {
-            if (a == b || !turns(a) || !turns(b))
-                continue;
+            if (function::carrierOf(m, a) == function::carrierOf(m, b) || !turns(a) || !turns(b))
+                continue;  // one part, or held together by a fixed joint
             const gp_Trsf relative = partMotion(m, b, k, 1).Inverted() * partMotion(m, a, k, 1);
             if (relative.Form() == gp_Identity || relative.Form() == gp_Translation)
                 continue;  // sliding past each other, the gap stays a gap
@@ -122,7 +122,8 @@ bool inCavity(const Model& m, int part)
     return false;
 }
 
-/// Joint geometry (4.5.2): hinges and sliding hinges, double pivots, and rails for slides no cavity guides.
+/// Joint geometry (4.5.2): hinges and sliding hinges, double pivots, and rails for slides no cavity guides
+/// (a fixed joint's part is fused to its base as one body).
 void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
                std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
@@ -132,7 +133,7 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
             addHinge(m, static_cast<int>(j), at, g, shapes, out);
         else if (joint.type == Joint::Type::DoublePivot)
             addDoublePivot(m, static_cast<int>(j), g, shapes, out);
-        else if (!inCavity(m, joint.part))
+        else if (joint.slides() && !inCavity(m, joint.part))
             addRails(m, static_cast<int>(j), at, g, shapes);
     }
 }

@@ -68,7 +68,7 @@ std::vector<Coordinates> splitAtAxis(const std::vector<Coordinates>& boxes, cons
 /// The plain hinge on which part `carried` turns on `base` in configuration k, or -1.
 int hingeOn(const Model& m, int carried, int base, int k)
 {
-    const int j = jointMoving(m, carried);
+    const int j = jointMoving(m, function::carrierOf(m, carried));
     return j >= 0 && m.joints[j].base == base && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k)
                ? j
                : -1;

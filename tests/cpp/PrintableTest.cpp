@@ -1,5 +1,6 @@
 // Print-in-place geometry (thesis 4.5) below the command line: gaps, sweeps, joint geometry and the clearance
 // check on two-part fixtures, each measured with OpenCASCADE (volumes, validity, distances) in milliseconds.
+#include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 #include "Printable/Checks.h"
 #include "Printable/Gaps.h"
@@ -257,6 +258,40 @@ TEST(RigidBodies, PartsThatStandStillTogetherPrintAsOneBody)
     EXPECT_GT(volumeOf(p.bodies[0].shape), 40 * 40 * 10 + 30 * 30 * 10 - 1);
     EXPECT_EQ(bodyNames(m), (std::vector<std::string>{"box + plinth", "lid", "block"}));
     EXPECT_GE(check(m, p, 0.4, 8).clearance, 0.4 - 0.01);
+}
+
+TEST(RigidBodies, AFixedPartRidesOnItsBaseAndPrintsAsOneBodyWithIt)
+{
+    // The hinged box, a knob sunk 1 mm into its lid and fixed to it: the solve leaves it sunk, the knob turns
+    // with the lid and prints fused to it.
+    const auto model = [](const std::string& joint, const std::string& poses) {
+        return io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike", "version": 1,
+            "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 40, 10]}]},
+                      {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 10], "max": [40, 40, 14]}]},
+                      {"name": "knob", "cuboids": [{"name": "knob", "min": [15, 2, 13], "max": [25, 8, 20]}]}],
+            "joints": [{"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]},
+                       )" + joint + R"(],
+            "configurations": [{"name": "open", "poses": {"lid hinge": -90)" +
+                                                       poses + R"(}}]})"));
+    };
+    const function::Model m = solvedToPrint(
+        model(R"({"name": "knob on lid", "type": "fixed", "part": "knob", "base": "lid"})", ""), 1);
+    EXPECT_EQ(m.cuboids[2].coordinates, (Coordinates{15, 25, 2, 8, 13, 20}));  // still sunk 1 mm
+    EXPECT_EQ(rigidBodies(m), (std::vector<std::vector<int>>{{0}, {1, 2}}));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    EXPECT_EQ(p.bodies[1].name, "lid + knob");
+    const Check c = check(m, p, 0.4, 8);
+    EXPECT_TRUE(c.loose.empty() && c.invalid.empty())
+        << testing::PrintToString(c.loose) << testing::PrintToString(c.invalid);
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+    // Opened, the knob is where the lid took it: above the far edge.
+    EXPECT_GT(gp_Pnt(20, 5, 16).Transformed(partMotion(m, 2, 0, 1.0)).Z(), 40);
+    // A fixed joint needs a base, and no configuration poses it.
+    EXPECT_THROW(model(R"({"name": "knob on lid", "type": "fixed", "part": "knob"})", ""), io::FormatError);
+    EXPECT_THROW(model(R"({"name": "knob on lid", "type": "fixed", "part": "knob", "base": "lid"})",
+                       R"(, "knob on lid": 10)"),
+                 io::FormatError);
 }
 
 TEST(RigidBodies, AShelfAgainstACupboardsWallsIsPartOfItAndALooseBlockInItIsNot)

@@ -175,6 +175,21 @@ def a_double_pivot_from_two_picked_points():
     assert joints.as_dict(joint)["pivot"] == ["Arm.left", [0.0, 80.0, 210.0]]
 
 
+def a_fixed_joint_from_two_picked_boxes():
+    doc = guitest.new_document("Fixed")
+    knob, door = doc.addObject("Part::Box", "Knob"), doc.addObject("Part::Box", "Door")
+    cuboids.set_coordinates(door, [100, 110, 0, 100, 0, 200])
+    cuboids.set_coordinates(knob, [110, 120, 40, 60, 90, 110])
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(knob)
+    Gui.Selection.addSelection(door)
+    Gui.runCommand("FabGuide_AddFixedJoint")
+    joint = [o for o in doc.Objects if joints.is_joint(o) and joints.kind(o) == "fixed"][0]
+    assert joint.Part.Cuboids == [knob] and joint.Base.Cuboids == [door]
+    assert joints.as_dict(joint)["type"] == "fixed" and joint.ViewObject.Proxy.coordinates.point.getNum() == 2
+
+
 def the_cellphone_made_printable_in_its_colours():
     doc = guitest.new_document("Phone")
     guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "cellphone.workslike.json"),
@@ -261,6 +276,7 @@ guitest.run([
     a_double_pivot_from_two_picked_points,
     export_writes_a_model_the_core_solves,
     the_crate_bed_folds_along_its_four_bar_motion,
+    a_fixed_joint_from_two_picked_boxes,
     the_cellphone_made_printable_in_its_colours,
     a_sloppy_kitchen_cabinet_solves_with_its_notes_and_overlaps_in_red,
 ])

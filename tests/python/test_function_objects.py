@@ -316,3 +316,37 @@ def test_a_printable_turned_to_fit_is_shown_as_modelled_and_exported_turned(doc,
     written = printable.export(made, str(tmp_path))
     exported = Part.read([p for p in written if p.endswith("assembly.step")][0]).BoundBox
     assert exported.XLength == pytest.approx(250, abs=0.05) and exported.YLength == pytest.approx(shown.XLength)
+
+
+def test_a_fixed_part_rides_on_its_base_and_prints_as_one_body_with_it(doc, tmp_path):
+    """A knob sunk into a hinged lid, held by a fixed joint: it moves with the lid, the solve leaves it sunk, it
+    prints fused to the lid, and the joint survives a workslike round trip; without a base it is named."""
+    from fabguide.function import printable
+
+    body, lid = box(doc, "Body", (0, 0, 0), (40, 40, 10)), box(doc, "Lid", (0, 0, 10), (40, 40, 14))
+    knob = box(doc, "Knob", (15, 2, 13), (25, 8, 20))
+    doc.recompute()
+    mech = mechanism.create(doc)
+    body_part, lid_part, knob_part = (parts.create(doc, [b], name) for b, name in
+                                      ((body, "Base"), (lid, "Top"), (knob, "Handle")))
+    hinge = joints.create(doc, "hinge", lid_part, edge=(lid, [cuboids.edge_element(lid, ("far", "bottom"))]))
+    held = joints.create(doc, "fixed", knob_part, base=lid_part, label="Knob on lid")
+    opened = configuration.create(doc, "Open", [(hinge, -90, 0)])
+    mech.Group = [body_part, lid_part, knob_part, hinge, held, opened]
+    doc.recompute()
+    assert mech.Status == "Solved", mech.Status
+    assert cuboids.coordinates(knob) == [15, 25, 2, 8, 13, 20]  # still sunk 1 mm into the lid
+    made = printable.create(doc, mech)
+    doc.recompute()
+    assert "Invalid" not in made.State
+    bodies = {c.BodyName: c for c in made.Group if c.BodyName != printable.CAVITIES}
+    assert sorted(bodies) == ["Base", "Top + Handle"]
+    assert len(bodies["Top + Handle"].Shape.Solids) == 1
+    assert made.MinimumClearance.Value >= 0.4 - 0.01
+    path = str(tmp_path / "knob.workslike.json")
+    workslike_file.write(mech, path)
+    written = json.load(open(path))
+    assert {"name": "Knob on lid", "type": "fixed", "part": "Handle", "base": "Top"} in written["joints"]
+    held.Base = None
+    with pytest.raises(ValueError, match="Fixed joint 'Knob on lid': choose the Base part it holds 'Handle' to"):
+        mechanism.solve(mech)

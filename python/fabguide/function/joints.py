@@ -1,7 +1,7 @@
 """Joints (thesis 4.1.2): a hinge turns its part about an edge of one of its boxes, a slide moves it along an
 axis, a sliding hinge does both; a double pivot links a point on a face of the part to a point on a coplanar face
-of its Base by a rigid link (the solve places both pivots, 4.3.6). A joint may hang on another moving part (its
-Base), which carries it."""
+of its Base by a rigid link (the solve places both pivots, 4.3.6); a fixed joint holds the part rigidly to its Base
+(no poses; print-in-place fuses the two). A joint may hang on another moving part (its Base), which carries it."""
 from fabguide import properties
 from fabguide import cuboids
 
@@ -47,7 +47,11 @@ class DoublePivot(Joint):
     TYPE, KIND = "FabGuide::DoublePivot", "double_pivot"
 
 
-KINDS = {cls.KIND: cls for cls in (Hinge, Slide, SlidingHinge, DoublePivot)}
+class Fixed(Joint):
+    TYPE, KIND = "FabGuide::Fixed", "fixed"
+
+
+KINDS = {cls.KIND: cls for cls in (Hinge, Slide, SlidingHinge, DoublePivot, Fixed)}
 
 
 class JointError(ValueError):
@@ -55,7 +59,7 @@ class JointError(ValueError):
 
 
 def create(doc, kind, part, edge=None, axis=None, base=None, label=None, pivots=None):
-    """kind: "hinge", "slide", "sliding_hinge" or "double_pivot"; edge: (box, "EdgeN"); axis: "x", "y" or "z";
+    """kind: "hinge", "slide", "sliding_hinge", "double_pivot" or "fixed"; edge: (box, "EdgeN"); axis: "x", "y" or "z";
     pivots: ((box, "FaceN", Vector) on the part, (box, "FaceN", Vector) on the base)."""
     cls = KINDS[kind]
     obj = doc.addObject("App::FeaturePython", cls.__name__)
@@ -89,6 +93,11 @@ def slides(obj):
     return kind(obj) in ("slide", "sliding_hinge")
 
 
+def moves(obj):
+    """Configurations can pose it (a fixed joint never moves its part against its base)."""
+    return kind(obj) != "fixed"
+
+
 def as_dict(obj):
     if obj.Part is None:
         raise JointError("Joint '{}': choose the Part it moves".format(obj.Label))
@@ -105,6 +114,8 @@ def as_dict(obj):
         out["edge"] = ["{}.{}".format(box.Label, side) for side in cuboids.edge_sides(box, elements[0])]
     if slides(obj):
         out["axis"] = obj.Axis
+    if kind(obj) == "fixed" and obj.Base is None:
+        raise JointError("Fixed joint '{}': choose the Base part it holds '{}' to".format(obj.Label, obj.Part.Label))
     if kind(obj) == "double_pivot":
         if obj.Base is None:
             raise JointError("Double pivot '{}': choose the Base part it links to".format(obj.Label))
