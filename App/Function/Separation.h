@@ -28,10 +28,10 @@ struct Separation {
 bool exactlyPosed(const Model& model, int part, int configuration);
 
 /// Pairs of solid cuboids (a < b) of different parts whose boxes in the configuration overlap, or come within
-/// `margin` (negative: overlap by more than -margin), found by a sweep over the boxes along x. Left out: parts
-/// a fixed joint holds together; the inner and enclosing parts of a fit inside, whose room print-in-place
-/// sweeps out (thesis 4.5.1), but where the fit is measured an inner cuboid not carved out of an enclosing one
-/// (mostly inside it) is kept.
+/// `margin` (negative: overlap by more than -margin), found by a sweep over the boxes along x. Left out:
+/// parts a fixed joint holds together; the inner and enclosing parts of a fit inside, whose room
+/// print-in-place sweeps out (thesis 4.5.1), but where the fit is measured an inner cuboid not carved out of
+/// an enclosing one (mostly inside it) is kept.
 std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration, double margin);
 
 /// The least change that keeps a and b clear, judged on `arranged` (the model as its relationships arrange

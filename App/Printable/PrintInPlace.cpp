@@ -180,7 +180,12 @@ Model solvedToPrint(const Model& model, double scale)
         std::string names;
         for (const std::string& name : solved.conflict)
             names += (names.empty() ? "" : ", ") + ("'" + name + "'");
-        throw std::runtime_error("the model does not solve: " + names + " cannot hold together");
+        std::string why;  // a double pivot's reason, where the names alone do not say
+        for (const std::string& note : solved.notes)
+            for (const std::string& name : solved.conflict)
+                if (note.rfind(name + ": ", 0) == 0)
+                    why += "; " + note;
+        throw std::runtime_error("the model does not solve: " + names + " cannot hold together" + why);
     }
     return function::scaled(solved.model, scale);
 }

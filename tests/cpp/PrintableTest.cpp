@@ -312,3 +312,19 @@ TEST(RigidBodies, AShelfAgainstACupboardsWallsIsPartOfItAndALooseBlockInItIsNot)
     EXPECT_EQ(p.bodies[0].name, "cupboard + shelf");
     EXPECT_TRUE(check(m, p, 0.4, 8).loose.empty());  // one piece
 }
+
+TEST(PrintInPlace, AModelThatDoesNotSolveSaysWhy)
+{
+    // The folding table's four-bar as drawn: the error carries the solve's reason, not only the joint's name.
+    const function::Model table = io::readWorkslike(io::readJsonFile(
+        std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/printable/folding-table-leaf.workslike.json"));
+    try {
+        solvedToPrint(table, 1);
+        ADD_FAILURE() << "the folding table solved";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("'upper link' cannot hold together; upper link: the four-bar of "
+                                             "'upper link' and 'lower link' has a link over the other's pin"),
+                  std::string::npos)
+            << e.what();
+    }
+}
