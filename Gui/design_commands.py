@@ -206,7 +206,8 @@ class BoxesCommand(Command):
     def run(self, doc):
         boxes = list(dict.fromkeys(b for b, _ in picked()))
         if len(boxes) < self.LEAST:
-            return tell("Pick {} boards for {}.".format(self.LEAST, self.MENU))
+            boards = "a board" if self.LEAST == 1 else "{} or more boards".format(self.LEAST)
+            return tell("Pick {} for {}.".format(boards, self.MENU))
         self.make(doc, boxes)
 
     def make(self, doc, boxes):

@@ -391,7 +391,7 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         throw std::invalid_argument(
             "joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
             m.cuboids[base].name + "' over " + function::millimetres(width) + " x " +
-            function::millimetres(to - from) + " mm, too little for rails " + function::millimetres(2 * h) +
+            function::millimetres(to - from) + " mm, too little for rails " + function::millimetres(h) +
             " mm deep at a " + function::millimetres(g) + " mm gap (they need " +
             function::millimetres(6 * h) + " x " + function::millimetres(4 * h) + " mm, and parts " +
             function::millimetres(5 * g) + " mm thick): widen the contact, or print larger");
