@@ -109,9 +109,10 @@ class ConfigurationsPanel:
         return self.configurations[index] if index < len(self.configurations) else None
 
     def preview(self, *args):
-        self.poser.show(self.poses(), self.slider.value() / 100.0)
+        reason = self.poser.show(self.poses(), self.slider.value() / 100.0)
         moved = ", ".join(self.joints[r].Label for r in range(len(self.joints)) if self.moves[r].isChecked())
-        self.status.setText("Moves: " + (moved or "nothing yet: tick the joints this configuration poses"))
+        self.status.setText("Cannot show it: " + reason if reason else
+                            "Moves: " + (moved or "nothing yet: tick the joints this configuration poses"))
         FreeCADGui.updateGui()
 
     def animate(self):

@@ -1,6 +1,5 @@
 // Bindings of the works-like solve (thesis ch. 4): models are *.workslike.json dicts.
 #include "Bindings.h"
-#include "Function/DoublePivot.h"
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 #include "Json.h"
@@ -30,11 +29,16 @@ py::object solve(const py::object& model)
 
 void bindFunction(py::module_& m)
 {
-    m.def("four_bar_angles", &function::fourBarAngles, py::arg("pivot"), py::arg("base_pivot"),
-          py::arg("pole"), py::arg("degrees"),
-          "A double pivot's motion to a pose (thesis 4.3.6): (link turn about the base pivot, part turn "
-          "about its\n"
-          "own pivot) in degrees, for pivots and pole given as (u, w) in the pivot plane.");
+    m.def(
+        "read_workslike",
+        [](const py::object& model) {
+            return fromJson(io::workslikeToJson(io::readWorkslike(toJson(model))));
+        },
+        py::arg("model"),
+        "A *.workslike.json dict as the core reads it, written back in full (every default filled in); "
+        "raises\n"
+        "FormatError (a ValueError) naming a bad field, e.g. \"relationships[0].faces[1]: no cuboid named "
+        "'bodyy'\".");
     m.def(
         "solve", &solve, py::arg("model"),
         "Solve a works-like model (a *.workslike.json dict) for the least change that satisfies its "

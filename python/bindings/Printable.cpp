@@ -6,6 +6,7 @@
 #include "IO/WorkslikeFormat.h"
 #include "Json.h"
 #include "Printable/Checks.h"
+#include "Printable/Motion.h"
 
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
@@ -15,6 +16,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <sstream>
 
@@ -105,10 +107,38 @@ std::vector<std::string> writePrintable(const std::vector<py::dict>& bodies, con
     return io::writePrintFiles(printable::onTheBed(std::move(p), turned), folder);
 }
 
+/// Each part's motion `t` of the way to configuration `name` (thesis 4.1.2), as the sweeps and the clearance
+/// check move it: {part name: 3 x 4 matrix rows (rotation | translation)}.
+py::dict partMotions(const py::object& model, const std::string& name, double t)
+{
+    const function::Model read = io::readWorkslike(toJson(model));
+    const auto& configurations = read.configurations;
+    const auto found = std::find_if(configurations.begin(), configurations.end(),
+                                    [&](const function::Configuration& c) { return c.name == name; });
+    if (found == configurations.end())
+        throw io::FormatError("no configuration named '" + name + "'");
+    py::dict out;
+    for (int p = 0; p < static_cast<int>(read.parts.size()); ++p) {
+        const gp_Trsf motion =
+            printable::partMotion(read, p, static_cast<int>(found - configurations.begin()), t);
+        py::list rows;
+        for (int r = 1; r <= 3; ++r)
+            rows.append(py::make_tuple(motion.Value(r, 1), motion.Value(r, 2), motion.Value(r, 3),
+                                       motion.Value(r, 4)));
+        out[py::str(read.parts[p].name)] = rows;
+    }
+    return out;
+}
+
 }  // namespace
 
 void bindPrintable(py::module_& m)
 {
+    m.def(
+        "part_motions", &partMotions, py::arg("model"), py::arg("configuration"), py::arg("t") = 1.0,
+        "Each part's rigid motion t (0..1) of the way from the model's pose to a configuration, the motion\n"
+        "the print's sweeps and clearance check follow (turns in the first half, slides in the second):\n"
+        "{part name: three rows (r0, r1, r2, translation)}.");
     m.def("printable", &printableBodies, py::arg("model"), py::arg("gap") = 0.4, py::arg("check") = true,
           py::arg("scale") = 1.0, py::arg("fit") = py::none(),
           "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest\n"

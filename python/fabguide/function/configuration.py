@@ -17,7 +17,7 @@ class Configuration(properties.Proxy):
         add(obj, "App::PropertyVectorList", "Poles", "Configuration",
             "Per joint: for a double pivot, the point its part turns about (with Angles) to get here")
 
-    def execute(self, obj):
+    def recompute(self, obj):
         as_dict(obj)
 
 
@@ -63,8 +63,13 @@ def as_dict(obj):
     for joint, angle, offset in poses(obj):
         if not joints.is_joint(joint):
             raise ValueError("Configuration '{}': '{}' is not a joint".format(obj.Label, joint.Label))
-        kind = joints.kind(joint)
-        out[joint.Label] = ({"angle": angle, "offset": offset} if kind == "sliding_hinge"
-                            else {"angle": angle, "pole": list(pole(obj, joint))} if kind == "double_pivot"
-                            else angle if kind == "hinge" else offset)
+        out[joint.Label] = pose_dict(joint, angle, offset, pole(obj, joint))
     return {"name": obj.Label, "poses": out}
+
+
+def pose_dict(joint, angle, offset, pole):
+    """A joint's pose as *.workslike.json writes it."""
+    kind = joints.kind(joint)
+    return ({"angle": angle, "offset": offset} if kind == "sliding_hinge"
+            else {"angle": angle, "pole": list(pole)} if kind == "double_pivot"
+            else angle if kind == "hinge" else offset)
