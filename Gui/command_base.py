@@ -71,4 +71,9 @@ class Command:
         return FreeCAD.ActiveDocument is not None
 
     def Activated(self):
-        self.run(FreeCAD.ActiveDocument)
+        """Runs the command; a mistake in the model (a ValueError: FabGuide's errors, the core's FormatError) is
+        told in one plain sentence, not a traceback."""
+        try:
+            self.run(FreeCAD.ActiveDocument)
+        except ValueError as error:
+            tell(str(error))

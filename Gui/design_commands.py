@@ -5,7 +5,7 @@ import os
 
 import FreeCADGui
 
-from fabguide import cuboids
+from fabguide import cuboids, properties
 from fabguide.material import design, master_board
 from fabguide_gui import viewproviders
 from fabguide_gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
@@ -83,7 +83,7 @@ class DesignFromBoxes(Command):
             obj = design.create(doc, boxes, masters)
             decorate(obj)
             doc.recompute()
-        if "Invalid" in obj.State:
+        if properties.failed(obj):
             tell("{}: {}".format(obj.Label, obj.Status or "see the report view"))
 
 

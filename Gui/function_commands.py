@@ -273,7 +273,7 @@ class AddGeometric(AddRelationship):
         sizes = []
         for box, edge in edges:
             along = set("xyz") - {"xyz"[cuboids.SIDES.index(s) // 2] for s in cuboids.edge_sides(box, edge)}
-            sizes.append("{}.{}".format(box.Label, {"x": "width", "y": "depth", "z": "height"}[along.pop()]))
+            sizes.append((box, {"x": "width", "y": "depth", "z": "height"}[along.pop()]))
         if len(sizes) == 2:
             return {"Left": sizes[:1], "Right": sizes[1:]}
         return {"Left": sizes, "Right": [], "Offset": edges[0][0].Shape.getElement(edges[0][1]).Length}

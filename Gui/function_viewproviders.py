@@ -15,6 +15,7 @@ class ViewProviderMechanism(EditedByDoubleClick, ViewProvider):
     ICON = "FabGuide_Mechanism.svg"
 
     def updateData(self, obj, prop):
+        super().updateData(obj, prop)
         if prop == "Status":
             show_conflicts(obj)
             for j in mechanism.members(obj, joints.is_joint):
@@ -64,7 +65,7 @@ class ViewProviderJoint(ViewProvider):
     ICONS = {"hinge": "FabGuide_Hinge.svg", "slide": "FabGuide_Slide.svg", "sliding_hinge": "FabGuide_SlidingHinge.svg",
              "double_pivot": "FabGuide_DoublePivot.svg", "fixed": "FabGuide_Fixed.svg"}
 
-    def getIcon(self):
+    def icon(self):
         from fabguide_gui import resources
 
         obj = getattr(self, "Object", None)
@@ -92,6 +93,7 @@ class ViewProviderJoint(ViewProvider):
         return "Axis"
 
     def updateData(self, obj, prop):
+        super().updateData(obj, prop)
         self.redraw()
 
     def redraw(self):
@@ -109,7 +111,7 @@ class ViewProviderRelationship(ViewProvider):
     ICONS = {"cover": "FabGuide_Cover.svg", "fit_inside": "FabGuide_FitInside.svg", "support": "FabGuide_Support.svg",
              "flush": "FabGuide_Flush.svg", "geometric": "FabGuide_Geometric.svg"}
 
-    def getIcon(self):
+    def icon(self):
         from fabguide_gui import resources
 
         obj = getattr(self, "Object", None)

@@ -4,6 +4,7 @@ import os
 
 import FreeCADGui
 
+from fabguide import properties
 from fabguide_gui import editing, resources
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
@@ -29,7 +30,7 @@ class LayoutPanel:
     def show(self):
         """The layout's figures, or why it could not be made."""
         layout, form = self.layout, self.form
-        if "Invalid" in layout.State:
+        if properties.failed(layout):
             form.message.setText("<b>The layout could not be made.</b> See the report view for the reason.")
             return
         form.message.setText("")

@@ -5,6 +5,7 @@ import os
 import FreeCAD
 import FreeCADGui
 
+from fabguide import properties
 from fabguide.material import board, layout, master_board, techdraw
 from fabguide_gui import editing, viewproviders
 from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
@@ -64,7 +65,7 @@ def finish_boards(doc, made):
     for obj in made:
         viewproviders.ViewProviderBoard(obj.ViewObject)
     doc.recompute()
-    failed = [obj.Label for obj in made if "Invalid" in obj.State]
+    failed = [obj.Label for obj in made if properties.failed(obj)]
     if failed:
         FreeCAD.Console.PrintWarning("FabGuide: see the messages above for " + ", ".join(failed) + "\n")
 

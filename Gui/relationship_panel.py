@@ -4,7 +4,7 @@ supporting in blue, covered or supported in red."""
 import FreeCAD
 from PySide import QtCore, QtGui
 
-from fabguide import cuboids
+from fabguide import cuboids, references
 from fabguide.function import mechanism, parts, relationships
 from fabguide_gui.configurations_panel import close_panel
 
@@ -45,7 +45,7 @@ class RelationshipPanel:
         if self.pairs is not None:
             self.pairs.blockSignals(True)
             self.pairs.clear()
-            for text in self.rel.Pairs:
+            for text in relationships.pair_texts(self.rel):
                 item = QtGui.QListWidgetItem(text)
                 item.setFlags(item.flags() | QtCore.Qt.ItemIsEditable)
                 self.pairs.addItem(item)
@@ -116,8 +116,13 @@ class RelationshipPanel:
         self.coloured = set()
 
     def accept(self):
-        if self.pairs is not None and self.texts() != list(self.rel.Pairs):
-            self.rel.Pairs = self.texts()
+        if self.pairs is not None and self.texts() != relationships.pair_texts(self.rel):
+            try:
+                self.rel.Pairs = relationships.pair_links(self.rel, self.texts(),
+                                                          references.boxes_by_label(self.rel.Document))
+            except ValueError as error:  # a pair mistyped: say which, keep the panel open
+                self.status.setText("<b style='color:#b22222'>{}</b>".format(error))
+                return False
             self.solve()
         self.uncolour()
         self.rel.Document.commitTransaction()

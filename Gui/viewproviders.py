@@ -10,7 +10,8 @@ BOARD_COLOUR = (0.85, 0.70, 0.45)
 
 
 class ViewProvider(properties.Stateless):
-    """Shows an icon; holds no state, so saving stores nothing."""
+    """Shows an icon, marked when the object's last recompute failed (its Error); holds no state, so saving
+    stores nothing."""
 
     ICON = "FabGuide.svg"
 
@@ -21,7 +22,15 @@ class ViewProvider(properties.Stateless):
         self.Object = vobj.Object
 
     def getIcon(self):
+        failed = getattr(getattr(self, "Object", None), "Error", "")
+        return resources.icon("FabGuide_Error.svg") if failed else self.icon()
+
+    def icon(self):
         return resources.icon(self.ICON)
+
+    def updateData(self, obj, prop):
+        if prop == "Error" and obj.ViewObject is not None:
+            obj.ViewObject.signalChangeIcon()
 
 
 class EditedByDoubleClick:
@@ -51,6 +60,7 @@ class ViewProviderLayout(EditedByDoubleClick, ViewProvider):
     ICON = "FabGuide_Layout.svg"
 
     def updateData(self, obj, prop):
+        super().updateData(obj, prop)
         if prop == "Shape":
             # FreeCAD's Part view provider resets the face colours after this call when the number of
             # faces changes, so colour the faces once it is done.
@@ -94,6 +104,7 @@ class ViewProviderFlatpackDesign(ViewProvider):
     ICON = "FabGuide_FlatpackDesign.svg"
 
     def updateData(self, obj, prop):
+        super().updateData(obj, prop)
         if prop in ("Status", "Valid") and obj.Status:
             # After the recompute: its progress indicator clears the status bar when it ends.
             from PySide import QtCore
@@ -103,7 +114,7 @@ class ViewProviderFlatpackDesign(ViewProvider):
 
 
 class ViewProviderDesignConstraint(ViewProvider):
-    def getIcon(self):
+    def icon(self):
         return resources.icon(CONSTRAINT_ICONS.get(getattr(self.Object, "Kind", ""), "FabGuide.svg"))
 
 
@@ -115,7 +126,7 @@ class ViewProviderVolume(ViewProvider):
         editing.edit(vobj.Object, 1)  # 1: Transform
         return True
 
-    def getIcon(self):
+    def icon(self):
         return resources.icon("FabGuide_InnerVolume.svg" if getattr(self.Object, "Kind", "") == "Inner"
                               else "FabGuide_OuterVolume.svg")
 
@@ -124,6 +135,7 @@ class ViewProviderVolume(ViewProvider):
         self.colour(vobj)
 
     def updateData(self, obj, prop):
+        super().updateData(obj, prop)
         if prop == "Kind":
             self.colour(obj.ViewObject)
 

@@ -1,6 +1,9 @@
 """Function toolbar in the real FreeCAD GUI: the Cabinet imported and shown in a configuration; a clamshell
 made from plain boxes with the commands (mechanism, hinge, configuration panel, cover), its faces coloured in
-the relationship panel, a conflict shown in red, undo, and export; screenshots of the 3-D view and panels."""
+the relationship panel, a conflict shown in red, undo, a box renamed and deleted, and export; screenshots of
+the 3-D view and panels."""
+# expects error: Part 'Lid001' has no boxes: add a Part::Box to its Cuboids
+# expects error: Joint 'Lid001 hinge': choose the Edge it turns about
 import json
 import os
 import tempfile
@@ -122,9 +125,10 @@ def the_relationship_panel_colours_the_faces():
 def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
     doc, mech, lid = state["doc"], state["mech"], state["lid"]
     doc.openTransaction("Narrow lid")
-    narrow = relationships.create(doc, "geometric", "Lid 40 wide", Left=["Lid.width"], Offset=40)
+    body = state["body"]
+    narrow = relationships.create(doc, "geometric", "Lid 40 wide", Left=[(lid, "width")], Offset=40)
     mech.Group = mech.Group + [narrow]
-    mech.Locks = ["Body.left", "Body.right"]
+    mech.Locks = [(body, "left"), (body, "right")]
     doc.recompute()
     doc.commitTransaction()
     assert mech.Status.startswith("Conflict: Lid 40 wide"), mech.Status
@@ -135,6 +139,32 @@ def a_conflict_turns_the_parts_red_and_undo_takes_it_back():
     doc.undo()
     doc.recompute()
     assert doc.getObject(name) is None and mech.Status == "Solved", mech.Status
+
+
+def a_box_renamed_keeps_the_mechanism_and_a_box_deleted_marks_it():
+    doc, mech, lid, cover = state["doc"], state["mech"], state["lid"], state["cover"]
+    doc.openTransaction("Rename")
+    lid.Label = "Cap"
+    mech.touch()
+    doc.recompute()
+    doc.commitTransaction()
+    assert mech.Status == "Solved" and cover.Status == "Satisfied", (mech.Status, cover.Status)
+    assert relationships.pair_texts(cover) == ["Cap.bottom -> Body.top"], relationships.pair_texts(cover)
+    doc.openTransaction("Delete")
+    doc.removeObject(lid.Name)
+    doc.recompute()
+    doc.commitTransaction()
+    assert mech.Error == mech.Status == "Mechanism 'Mechanism': Part 'Lid001' has no boxes: add a Part::Box to " \
+        "its Cuboids", mech.Status
+    assert cover.Status == mechanism.STALE and mech.ViewObject.Proxy.getIcon().endswith("FabGuide_Error.svg")
+    print("window: " + guitest.screenshot("function_box_deleted"))
+    doc.undo()
+    doc.undo()
+    state["lid"] = lid = doc.getObjectsByLabel("Lid")[0]
+    mech.touch()
+    doc.recompute()
+    assert mech.Status == "Solved" and not mech.Error and cover.Status == "Satisfied", mech.Status
+    assert mech.ViewObject.Proxy.getIcon().endswith("FabGuide_Mechanism.svg")
 
 
 def the_crate_bed_folds_along_its_four_bar_motion():
@@ -150,7 +180,8 @@ def the_crate_bed_folds_along_its_four_bar_motion():
     Gui.runCommand("FabGuide_Configurations")
     QtGui.QApplication.processEvents()
     panel = mech.ViewObject.Proxy.panel
-    panel.slider.setValue(50)  # half way: the headboard is lifted over the bed's end, turned less than 90°
+    panel.slider.setValue(25)  # turns take the first half of the way: a quarter in, the headboard is lifted over
+    # the bed's end, turned less than 90° (as the print's sweeps and clearance check have it)
     head = doc.getObjectsByLabel("headboard")[0]
     q = head.ViewObject.RootNode.getChild(0).rotation.getValue().getValue()
     assert 0.2 < abs(q[0]) < 0.6, q
@@ -254,7 +285,7 @@ def a_sloppy_kitchen_cabinet_solves_with_its_notes_and_overlaps_in_red():
     doc.openTransaction("Push the door in")
     mech.Group = [o for o in mech.Group if o != cover]  # no longer a door that covers: a panel in front
     door.Placement.Base.y += 10  # 10 mm into the carcass, whose front is locked
-    mech.Locks = list(mech.Locks) + ["left door.near", "left door.far"]
+    mech.Locks = list(mech.Locks) + [(door, "near"), (door, "far")]
     doc.recompute()
     doc.commitTransaction()
     assert "no overlap: carcass part, left door part" in mech.Status, mech.Status
@@ -273,6 +304,7 @@ guitest.run([
     a_clamshell_from_plain_boxes_with_the_commands,
     the_relationship_panel_colours_the_faces,
     a_conflict_turns_the_parts_red_and_undo_takes_it_back,
+    a_box_renamed_keeps_the_mechanism_and_a_box_deleted_marks_it,
     a_double_pivot_from_two_picked_points,
     export_writes_a_model_the_core_solves,
     the_crate_bed_folds_along_its_four_bar_motion,

@@ -5,7 +5,8 @@ Usage: run_in_freecad.py TEST_SCRIPT
 The test script uses `guitest.run(...)`, which reports through FreeCAD's exit status. This
 runner fails the test as well when FreeCAD logged an error (an `Err:` line of its --log-file:
 a Python traceback, Console.PrintError), so a workbench that loads or runs with errors in the
-report view does not pass. The log is read rather than stdout because FreeCAD 1.0's GUI sends
+report view does not pass; a user's mistake a journey makes on purpose is said in one plain line,
+which its script names in a line `# expects error: TEXT`. A traceback fails it always. The log is read rather than stdout because FreeCAD 1.0's GUI sends
 print() and Console messages to the report view only.
 """
 import os
@@ -21,9 +22,14 @@ FREECAD_NOISE = (
 )
 
 
-def problems(log):
-    return [line for line in log.splitlines()
-            if line.startswith("Err:") and not any(noise in line for noise in FREECAD_NOISE)]
+def problems(log, expected=()):
+    return [line for line in log.splitlines() if "Traceback" in line or
+            line.startswith("Err:") and not any(text in line for text in FREECAD_NOISE + tuple(expected))]
+
+
+def expected_errors(script):
+    with open(script, encoding="utf-8") as f:
+        return [line.split(":", 1)[1].strip() for line in f if line.startswith("# expects error:")]
 
 
 def main(script):
@@ -43,7 +49,7 @@ def main(script):
         log = open(log_file, encoding="utf-8", errors="replace").read() if os.path.exists(log_file) else ""
     print(run.stdout)
     print("".join(line + "\n" for line in log.splitlines() if line[:4] in ("Err:", "Wrn:", "Msg:")))
-    bad = problems(log)
+    bad = problems(log, expected_errors(script))
     if bad:
         print("FAILED: FreeCAD reported errors:\n  " + "\n  ".join(bad))
         return 1

@@ -188,7 +188,7 @@ def test_every_example_imports_and_exports_as_the_same_design(doc, source_dir, n
     path = os.path.join(source_dir, "examples", name + ".flatpack.json")
     obj = design.from_file(doc, path)
     doc.recompute()
-    assert "Invalid" not in obj.State, obj.Status
+    assert not obj.Error, obj.Status
     with open(path) as f:
         assert obj.Usage == pytest.approx(fabguide_core.lay_out_design(json.load(f))["usage"])
     exported = json.loads(json.dumps(design.flatpack(obj)))  # as Export writes it
@@ -202,7 +202,7 @@ def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
     obj = design.create(doc, boxes, [master_board.create(doc, 900, 600, 12)])
     obj.Parameters = ["Params.side 200 400", "Params.height 100 300"]
     doc.recompute()
-    assert "Invalid" not in obj.State, obj.Status
+    assert not obj.Error, obj.Status
     result = parametric.optimise(obj, time_limit=6, rounds=1)
     assert parametric.value(sheet, "side") == 300  # restored
     best = result["suggestions"][0]
@@ -219,25 +219,31 @@ def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
         parametric.parameters(obj)
 
 
-def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
+def two_boards(doc, second_length):
+    """Boards a (300 mm) and b, side by side on a 1000 x 600 master board, in a design recomputed."""
     a = doc.addObject("Part::Box", "a")
     a.Length, a.Width, a.Height = 300, 200, 12
     b = doc.addObject("Part::Box", "b")
-    b.Length, b.Width, b.Height = 340, 200, 12
+    b.Length, b.Width, b.Height = second_length, 200, 12
     b.Placement.Base = FreeCAD.Vector(0, 400, 0)
     doc.recompute()
     obj = design.create(doc, [a, b], [master_board.create(doc, 1000, 600, 12)])
     doc.recompute()
+    return a, b, obj
+
+
+def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
+    a, b, obj = two_boards(doc, 340)
     design.add_constraint(obj, "equal", "same length", Refs=["a.size.x", "b.size.x"])
     doc.recompute()
-    assert "Invalid" not in obj.State, obj.Status
+    assert not obj.Error, obj.Status
     assert a.Length.Value == pytest.approx(b.Length.Value)
     assert {a.Length.Value, b.Length.Value} <= {300.0, 340.0}  # one board changed, not both
     assert "boards moved so that every constraint holds" in obj.Status
     design.add_constraint(obj, "fixed", "a is 300", Refs=["a.size.x"], Value=250)
     design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
     doc.recompute()
-    assert "Invalid" in obj.State and obj.Status.startswith("Constraints broken:")
+    assert obj.Error and obj.Status.startswith("Constraints broken:")
 
 
 @pytest.fixture
@@ -372,7 +378,7 @@ def test_a_box_grain_lays_its_board_with_the_width_along_the_sheet_grain(doc, ta
     box(doc, "shelf").Grain = "Y"  # across the shelf: its 260 mm along the sheet's grain
     box(doc, "left").Grain = "Z"  # up the leg
     doc.recompute()
-    assert "Invalid" not in table.State, table.Status
+    assert not table.Error, table.Status
     assert placed(table, "shelf") == (260, 260) and placed(table, "left") == (400, 400)
     assert [p.get("grain") for p in design.parts_of(table)] == [None, "z", None, "y"]
     box(doc, "shelf").Grain = "X"
@@ -383,12 +389,12 @@ def test_a_box_grain_lays_its_board_with_the_width_along_the_sheet_grain(doc, ta
 def test_a_grain_through_the_thickness_is_refused_with_the_box_named(doc, table):
     box(doc, "shelf").Grain = "Z"
     doc.recompute()
-    assert "Invalid" in table.State
+    assert table.Error
     assert table.Status == ("Design '{}': box 'shelf': its Grain Z runs across the board, through its 12 mm "
                             "thickness; choose an axis of its face (X or Y) or Free".format(table.Label))
     box(doc, "shelf").Grain = "Y"
     doc.recompute()
-    assert "Invalid" not in table.State, table.Status
+    assert not table.Error, table.Status
 
 
 def test_grain_reads_from_a_file_and_is_kept_by_a_suggestion_and_reopening(doc, bookcase, tmp_path, source_dir):
@@ -407,7 +413,7 @@ def test_grain_reads_from_a_file_and_is_kept_by_a_suggestion_and_reopening(doc, 
     doc.recompute()
     doc.commitTransaction()
     assert {p["id"]: p.get("grain") for p in design.parts_of(bookcase)} == grains
-    assert "Invalid" not in bookcase.State, bookcase.Status
+    assert not bookcase.Error, bookcase.Status
     assert not entered(bookcase)
     again, obj = reopened(doc, tmp_path)
     try:
@@ -428,7 +434,23 @@ def test_an_offcut_master_board_of_cost_0_is_cut_before_new_sheets(doc, table):
     laid = json.loads(table.LayoutJson)["layout"]
     used = [b["name"] for b in laid["boards"]]
     assert used == ["offcut"], used
-    assert "Invalid" not in table.State, table.Status
+    assert not table.Error, table.Status
     offcut.Cost = -1
     doc.recompute()
-    assert "Invalid" in offcut.State
+    assert offcut.Error
+
+
+def test_renaming_a_board_keeps_its_constraints_and_deleting_one_says_which(doc):
+    a, b, obj = two_boards(doc, 300)
+    same = design.add_constraint(obj, "equal", "same length", Refs=["a.size.x", "b.size.x"])
+    doc.recompute()
+    a.Label = "Left side"
+    b.Length = 320
+    doc.recompute()
+    assert not obj.Error, obj.Status
+    assert a.Length.Value == pytest.approx(320) and same.Status == design.SATISFIED
+    assert design.constraint_dict(same)["refs"] == ["Left side.size.x", "b.size.x"]
+    doc.removeObject(b.Name)
+    doc.recompute()  # no traceback: the design says what is wrong
+    assert "constraint 'same length' refs: needs at least 2 references" in obj.Error, obj.Error
+    assert obj.Status.startswith("Constraints broken: ") and same.Status.startswith("Broken: "), obj.Status

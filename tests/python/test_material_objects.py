@@ -47,7 +47,7 @@ def test_thickness_and_outline_are_detected_from_thin_solids(doc):
     doc.recompute()
     b = board.create(doc, tilted, thickness=99)
     doc.recompute()
-    assert "Invalid" not in b.State
+    assert not b.Error
     assert b.Thickness.Value == pytest.approx(12)
     assert (b.OutlineWidth.Value, b.OutlineHeight.Value) == (pytest.approx(400), pytest.approx(250))
 
@@ -94,16 +94,16 @@ def test_solids_that_are_not_boards_are_refused_by_name(doc, make, message):
     source.Shape = make(doc)
     b = board.create(doc, source, label="Odd")
     with pytest.raises(board.BoardError, match="Board 'Odd' \\(source 'Blob'\\): .*" + message):
-        b.Proxy.execute(b)
+        b.Proxy.recompute(b)
     doc.recompute()
-    assert "Invalid" in b.State
+    assert b.Error
 
 
 def test_layout_packs_every_board_and_reports_usage(doc):
     boards, masters = shelf_unit(doc)
     lay = layout.create(doc, boards, masters)
     doc.recompute()
-    assert "Invalid" not in lay.State
+    assert not lay.Error
     result = json.loads(lay.LayoutJson)
     assert len(result["placements"]) == 5 and lay.SheetCount == len(result["boards"]) == 1
     assert 0 < lay.SheetUtilisation <= lay.Usage <= 1
@@ -131,14 +131,14 @@ def test_layout_errors_name_the_board_at_fault(doc):
     lay = layout.create(doc, boards, masters)
     masters[0].Thickness = 12
     doc.recompute()
-    assert "Invalid" in lay.State
+    assert lay.Error
     with pytest.raises(layout.LayoutError, match="board 'sidel' is 18 mm thick but master board"):
-        lay.Proxy.execute(lay)
+        lay.Proxy.recompute(lay)
     masters[0].Thickness = 18
     masters[0].Width, masters[0].Height = 500, 500
     with pytest.raises(layout.LayoutError, match="board 'side.' is larger than every master board|part 'side.'"):
-        lay.Proxy.execute(lay)
-    assert all("Invalid" not in b.State for b in boards)  # the user's boards are untouched
+        lay.Proxy.recompute(lay)
+    assert all(not b.Error for b in boards)  # the user's boards are untouched
 
 
 def test_save_and_reload_reproduce_the_layout(doc, tmp_path):
@@ -156,7 +156,7 @@ def test_save_and_reload_reproduce_the_layout(doc, tmp_path):
         for obj in reopened.Objects:
             obj.touch()
         reopened.recompute()
-        assert "Invalid" not in again.State
+        assert not again.Error
         assert again.LayoutJson == saved
     finally:
         FreeCAD.closeDocument(reopened.Name)
@@ -322,7 +322,7 @@ def test_coplanar_boards_in_contact_are_cut_as_one_piece(doc):
     assert lay.Usage < 1  # the T's notches are part of its layout rectangle
     boards[1].Quantity = 2
     with pytest.raises(layout.LayoutError, match="'Bar board', 'Stem board' lie in one plane and touch"):
-        lay.Proxy.execute(lay)
+        lay.Proxy.recompute(lay)
 
 
 def test_core_errors_about_a_part_name_the_piece_it_is(doc):

@@ -27,7 +27,7 @@ class Joint(properties.Proxy):
                 "The face of the base's box, in the same plane, with the other pivot")
             add(obj, "App::PropertyVector", "BasePivot", "Double pivot", "The pivot on the base (placed by the solve)")
 
-    def execute(self, obj):
+    def recompute(self, obj):
         as_dict(obj)
 
 

@@ -6,11 +6,11 @@ import json
 import FreeCAD
 
 import fabguide_core
-from fabguide import properties
-from fabguide import cuboids
+from fabguide import cuboids, properties, references
 from fabguide.function import configuration, joints, parts, relationships
 
 SATISFIED = "Satisfied"
+STALE = "Unknown: the mechanism did not solve (see its Status)"
 
 
 
@@ -27,8 +27,7 @@ class Mechanism(properties.Proxy):
         add(obj, "App::PropertyLength", "MinimumSize", "Mechanism", "Smallest size of a box along any axis", 1)
         add(obj, "App::PropertyLength", "MinimumWall", "Mechanism",
             "Least wall around a cavity on its sides that are not openings", 1)
-        add(obj, "App::PropertyStringList", "Locks", "Mechanism",
-            "Coordinates that keep their value, e.g. 'Body.top' (box label . side)")
+        references.define(obj, "Locks", "Mechanism", "Coordinates that keep their value: a box and its side")
         add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
             "Box coordinates you changed since the last solve keep their new value while the rest adapts", True)
         add(obj, "App::PropertyLink", "ShownConfiguration", "Mechanism",
@@ -40,8 +39,12 @@ class Mechanism(properties.Proxy):
             "Parts a conflict blames besides its relationships' (overlapping parts, thin walls)", mode=1)
         add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
 
-    def execute(self, obj):
-        solve(obj)
+    def recompute(self, obj):
+        try:
+            solve(obj)
+        except ValueError as error:
+            unsolved(obj, str(error))
+            raise
 
 
 def create(doc, label="Mechanism"):
@@ -83,7 +86,7 @@ def model(obj, locks=()):
             "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
             "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
             "relationships": [relationships.as_dict(r) for r in members(obj, relationships.is_relationship)],
-            "locks": list(dict.fromkeys(list(obj.Locks) + list(locks))),
+            "locks": list(dict.fromkeys(references.names(obj.Locks) + list(locks))),
         }
     except ValueError as error:
         raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
@@ -105,7 +108,7 @@ def solve(obj):
                   "Conflict: " + ", ".join(n for n in conflict if n != rel.Label) if rel.Label in conflict else "")
         if rel.Status != status:
             rel.Status = status
-        relationships.keep_pairs(rel, by_name.get(rel.Label, {}))
+        relationships.keep_pairs(rel, by_name.get(rel.Label, {}), {box.Label: box for box in boxes(obj)})
     obj.Violation = report["violation"]
     if obj.Blamed != report["parts"]:
         obj.Blamed = report["parts"]
@@ -121,6 +124,16 @@ def solve(obj):
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
+
+
+def unsolved(obj, error):
+    """A mechanism that could not be read says why in its Status; its relationships' statuses no longer hold."""
+    obj.Status = error
+    if obj.Blamed:
+        obj.Blamed = []
+    for rel in members(obj, relationships.is_relationship):
+        if rel.Status != STALE:
+            rel.Status = STALE
 
 
 def satisfied(rel, notes):

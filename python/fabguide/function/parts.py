@@ -12,7 +12,7 @@ class FunctionalPart(properties.Proxy):
         properties.add(obj, "App::PropertyLinkList", "Cavities", "Part",
                        "Boxes cut out of it: openings and compartments that can be covered or fitted into")
 
-    def execute(self, obj):
+    def recompute(self, obj):
         as_dict(obj)  # says which box is unusable
 
 

@@ -47,7 +47,7 @@ class Printable(properties.Proxy):
         if prop == "FitToBuildVolume" and "Scale" in obj.PropertiesList:
             obj.setEditorMode("Scale", 1 if obj.FitToBuildVolume else 0)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         if obj.Scale <= 0:
             raise PrintableError("Printable '{}': Scale must be greater than 0".format(obj.Label))
         data = bodies(obj)
@@ -148,7 +148,7 @@ def is_printable(obj):
 def export(obj, folder):
     """assembly.stl/.3mf/.step and one of each per body into folder, the bodies as made (turned a quarter on the
     bed when the fit says so); the paths written."""
-    stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State or "Invalid" in o.State]
+    stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State or properties.failed(o)]
     if stale:
         raise PrintableError("Printable '{}': not made from the mechanism as it stands ({} changed); recompute first"
                              .format(obj.Label, ", ".join(stale)))

@@ -1,7 +1,6 @@
 """Functional relationships (thesis 4.2–4.3): cover, fit inside, support, flush, and geometric relations. Each
 names the configuration it must hold in and shows its Status after the Mechanism solves."""
-from fabguide import properties
-from fabguide import cuboids
+from fabguide import cuboids, properties, references
 
 ARROW = " -> "  # how a pair of the corresponding-faces graph is written in Pairs
 
@@ -91,16 +90,16 @@ class Geometric(Relationship):
     TYPE, KIND = "FabGuide::Geometric", "geometric"
 
     def define_fields(self, obj, add):
-        add(obj, "App::PropertyStringList", "Left", "Geometric",
-            "Quantities summed, e.g. 'Door.width', 'Lid.top', '2*Shelf.height', '-Lid.left' "
-            "(box label . side or width/depth/height)")
+        references.define(obj, "Left", "Geometric",
+                          "Quantities summed: a box and its side or size (width/depth/height), with a factor "
+                          "in front if not 1 (the formats write 'Door.width', '2*Shelf.height', '-Lid.left')")
         add(obj, "App::PropertyEnumeration", "Relation", "Geometric", "Left = or <= right + offset",
             ["Equal", "AtMost"])
-        add(obj, "App::PropertyStringList", "Right", "Geometric", "Quantities summed (may be empty)")
+        references.define(obj, "Right", "Geometric", "Quantities summed (may be empty)")
         add(obj, "App::PropertyFloat", "Offset", "Geometric", "Added to the right side, mm")
 
     def fields(self, obj):
-        return {"left": terms(obj, obj.Left), "right": terms(obj, obj.Right),
+        return {"left": terms(obj, references.names(obj.Left)), "right": terms(obj, references.names(obj.Right)),
                 "relation": "equal" if obj.Relation == "Equal" else "at_most", "offset": obj.Offset}
 
 
@@ -124,8 +123,8 @@ def terms(obj, texts):
 
 def define_pairs(obj, add, group, pairs, distance, default):
     """The corresponding-faces graph a cover or support infers, which the user may correct."""
-    add(obj, "App::PropertyStringList", "Pairs", group,
-        "Corresponding faces " + pairs + "; empty: inferred on the next solve")
+    references.define(obj, "Pairs", group, "Corresponding faces, two by two: " + pairs +
+                      "; empty: inferred on the next solve", lambda text: text.split(ARROW.strip()))
     add(obj, "App::PropertyLength", "Distance", group, distance + " when inferring the pairs", default)
 
 
@@ -136,13 +135,11 @@ def labels(objs):
 def pairs_or_distance(obj):
     if not obj.Pairs:
         return {"distance": obj.Distance.Value}
-    out = []
-    for text in obj.Pairs:
-        if ARROW.strip() not in text:
-            raise ValueError("{} '{}': pair '{}' must read 'Box.side -> Box.side'".format(
-                type(obj.Proxy).__name__, obj.Label, text))
-        out.append([t.strip() for t in text.split(ARROW.strip(), 1)])
-    return {"pairs": out}
+    faces = references.names(obj.Pairs)
+    if len(faces) % 2:
+        raise ValueError("{} '{}': its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or "
+                         "correct them".format(type(obj.Proxy).__name__, obj.Label))
+    return {"pairs": [faces[i:i + 2] for i in range(0, len(faces), 2)]}
 
 
 def create(doc, kind, label=None, configuration=None, **fields):
@@ -168,7 +165,26 @@ def as_dict(obj):
     return out
 
 
-def keep_pairs(obj, solved):
-    """After a solve, an inferred graph is written into Pairs, so it stays as the user saw it."""
+def keep_pairs(obj, solved, boxes):
+    """After a solve, an inferred graph is written into Pairs, so it stays as the user saw it; `boxes` are the
+    mechanism's by label."""
     if "Pairs" in obj.PropertiesList and not obj.Pairs and solved.get("pairs"):
-        obj.Pairs = [a + ARROW + b for a, b in solved["pairs"]]
+        obj.Pairs = references.links(boxes, [face for pair in solved["pairs"] for face in pair], obj.Label)
+
+
+def pair_texts(obj):
+    """Pairs as the panel shows them: 'Lid.bottom -> Body.top'."""
+    faces = references.names(obj.Pairs)
+    return [ARROW.join(faces[i:i + 2]) for i in range(0, len(faces), 2)]
+
+
+def pair_links(obj, texts, boxes):
+    """Pairs typed as 'Box.side -> Box.side' → the property's links; ValueError naming a text that is not."""
+    faces = []
+    for text in texts:
+        ends = [t.strip() for t in text.split(ARROW.strip())]
+        if len(ends) != 2:
+            raise ValueError("{} '{}': pair '{}' must read 'Box.side -> Box.side'".format(
+                type(obj.Proxy).__name__, obj.Label, text))
+        faces += ends
+    return references.links(boxes, faces, "{} '{}' pairs".format(type(obj.Proxy).__name__, obj.Label))

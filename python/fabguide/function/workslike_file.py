@@ -1,10 +1,12 @@
 """*.workslike.json ↔ FreeCAD: import builds boxes, parts, joints, configurations and relationships in a new
 Mechanism; export writes the mechanism as the core reads it (docs/formats.md)."""
 import json
+import os
 
 import FreeCAD
 
-from fabguide import cuboids
+import fabguide_core
+from fabguide import cuboids, references
 from fabguide.function import configuration, joints, mechanism, parts, relationships
 
 
@@ -17,7 +19,7 @@ def import_model(doc, data, label="Mechanism"):
     for p in data.get("parts", []):
         for c in p["cuboids"]:
             box = doc.addObject("Part::Box", "Box")
-            box.Label = c["name"]  # FreeCAD may make it unique: files are rewritten through `rename`
+            box.Label = c["name"]  # FreeCAD may make it unique: the links hold
             cuboids.set_coordinates(box, [v for a in range(3) for v in (c["min"][a], c["max"][a])])
             boxes[c["name"]] = box
     for p in data.get("parts", []):  # FreeCAD labels are unique: a part named like its box is "… part"
@@ -29,10 +31,9 @@ def import_model(doc, data, label="Mechanism"):
         members.append(made_parts[p["name"]])
     doc.recompute()  # the boxes' shapes, to find their edges
 
-    def rename(face):
-        """"lid.top" in the file → the face of the box made for cuboid "lid"."""
-        cuboid, side = face.rsplit(".", 1)
-        return boxes[cuboid].Label + "." + side
+    def link(name):
+        """"2*lid.width" in the file → (the box made for cuboid "lid", "2*width")."""
+        return references.link(boxes, name, "'{}'".format(name))
 
     for j in data.get("joints", []):
         edge = None
@@ -57,8 +58,8 @@ def import_model(doc, data, label="Mechanism"):
         members.append(made_configurations[c["name"]])
     for r in data.get("relationships", []):
         members.append(relationships.create(doc, r["type"], r["name"], made_configurations.get(r.get("configuration")),
-                                            **relationship_fields(r, made_parts, boxes, rename)))
-    mech.Locks = [rename(f) for f in data.get("locks", [])]
+                                            **relationship_fields(r, made_parts, boxes, link)))
+    mech.Locks = [link(f) for f in data.get("locks", [])]
     mech.Group = members
     return mech
 
@@ -69,20 +70,19 @@ def box_face(boxes, name):
     return boxes[cuboid], "Face{}".format(cuboids.SIDES.index(side) + 1)
 
 
-def relationship_fields(r, made_parts, boxes, rename):
+def relationship_fields(r, made_parts, boxes, link):
     """The relationship object's properties from its *.workslike.json entry."""
-    
 
     def pairs(r):
-        return {"Pairs": [rename(a) + relationships.ARROW + rename(b) for a, b in r["pairs"]]} if "pairs" in r else {}
+        return {"Pairs": [link(face) for pair in r["pairs"] for face in pair]} if "pairs" in r else {}
 
     def quantities(side):
         items = side if isinstance(side, list) else [side]
         out = []
         for item in items:
             times = item.get("times", 1) if isinstance(item, dict) else 1
-            name = rename(item["quantity"] if isinstance(item, dict) else item)
-            out.append(name if times == 1 else "-" + name if times == -1 else "{:g}*{}".format(times, name))
+            name = item["quantity"] if isinstance(item, dict) else item
+            out.append(link(name if times == 1 else "-" + name if times == -1 else "{:g}*{}".format(times, name)))
         return out
 
     kind = r["type"]
@@ -107,8 +107,15 @@ def relationship_fields(r, made_parts, boxes, rename):
 
 
 def read(doc, path):
+    """A Mechanism from a file the core reads first: a file it refuses is refused with its message, which
+    names the field (the file's name in front); the objects follow the file's order."""
     with open(path) as f:
-        return import_model(doc, json.load(f), label=label_of(path))
+        try:
+            data = json.load(f)
+            fabguide_core.read_workslike(data)
+        except ValueError as error:
+            raise ValueError("{}: {}".format(os.path.basename(path), error))
+    return import_model(doc, data, label=label_of(path))
 
 
 def write(mech, path):
@@ -117,7 +124,5 @@ def write(mech, path):
 
 
 def label_of(path):
-    import os
-
     name = os.path.basename(path)
     return name[:-len(".workslike.json")] if name.endswith(".workslike.json") else os.path.splitext(name)[0]

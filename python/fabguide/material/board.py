@@ -30,7 +30,7 @@ class Board(properties.Proxy):
         add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
         add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         slab, thickness = make_slab(obj)
         # During a recompute FreeCAD moves an assigned shape to the object's Placement: the board sits
         # where its source is, so it takes the slab's placement first.

@@ -4,12 +4,13 @@ holding as the user edits a box (thesis 5.3.5: the edit is kept, the rest adapts
 show the material usage live; an edit that no longer fits the master boards is absorbed by the dynamic packer
 (5.3.2: the parts sharing its line across the board give way) or undone with the reason."""
 import json
+import re
 
 import FreeCAD
 import Part
 
 import fabguide_core
-from fabguide import cuboids, properties
+from fabguide import cuboids, properties, references
 from fabguide.material import master_board
 
 SATISFIED = "Satisfied"
@@ -45,7 +46,7 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyString", "Valid", "Data", "Boards after the last valid recompute (JSON)", mode=2)
         add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         recompute(obj)
 
     def onChanged(self, obj, prop):
@@ -58,25 +59,23 @@ class FlatpackDesign(properties.Proxy):
 
 
 class DesignConstraint(properties.Proxy):
-    """One design constraint of thesis 5.1 as docs/formats.md writes it; references are "Box.size.x",
-    "Box.centre.z", "Box.min.y" or "Box.max.x" with the box's label."""
+    """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
+    what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
     TYPE = "FabGuide::DesignConstraint"
 
     def define(self, obj):
         add = properties.add
         add(obj, "App::PropertyEnumeration", "Kind", "Constraint", "What must hold", list(KINDS))
-        add(obj, "App::PropertyStringList", "Refs", "Constraint",
-            "References: equal, symmetric (two), sum (left side), fixed and range (one)")
-        add(obj, "App::PropertyStringList", "Rhs", "Constraint", "Right side of a sum")
+        references.define(obj, "Refs", "Constraint",
+                          "Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), "
+                          "sum (left side), fixed and range (one)")
+        references.define(obj, "Rhs", "Constraint", "Right side of a sum")
         add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
         add(obj, "App::PropertyFloat", "Value", "Constraint", "Fixed value (mm) or sum offset")
         add(obj, "App::PropertyFloat", "Min", "Constraint", "Range: smallest value, mm")
         add(obj, "App::PropertyFloat", "Max", "Constraint", "Range: largest value, mm")
-        add(obj, "App::PropertyString", "About", "Constraint", "Symmetric about this reference (empty: midway now)")
+        references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
         add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
-
-    def execute(self, obj):
-        pass
 
 
 class Volume(properties.Proxy):
@@ -94,7 +93,7 @@ class Volume(properties.Proxy):
         add(obj, "App::PropertyLength", "Height", "Volume", "Size along z", 100)
         add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or the boards that break it", mode=1)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         obj.Shape = Part.makeBox(obj.Length.Value, obj.Width.Value, obj.Height.Value)
 
 
@@ -107,15 +106,21 @@ def create(doc, boxes, master_boards, label="FlatpackDesign"):
     return obj
 
 
-def add_constraint(design, kind, label=None, **values):
-    """A constraint in `design`: values are its properties (Refs, Rhs, Parts, Value, Min, Max, About)."""
+def add_constraint(design, kind, label=None, named=None, **values):
+    """A constraint in `design`: values are its properties (Refs, Rhs, Parts, Value, Min, Max, About), references
+    given as the format writes them ("Box.size.x") linked to the boxes `named` (by default the design's boxes
+    by label)."""
     doc = design.Document
     obj = doc.addObject("App::FeaturePython", "DesignConstraint")
     DesignConstraint(obj)
     obj.Kind = kind
+    named = named or {box.Label: box for box in boxes(design)}
     for name, value in values.items():
+        if name in ("Refs", "Rhs", "About"):
+            value = references.links(named, [value] if isinstance(value, str) else value,
+                                     "{} constraint {}".format(kind, name))
         setattr(obj, name, value)
-    obj.Label = label or "{} {}".format(kind.capitalize(), ", ".join(values.get("Refs", [])) or
+    obj.Label = label or "{} {}".format(kind.capitalize(), ", ".join(references.names(obj.Refs)) or
                                         ", ".join(p.Label for p in values.get("Parts", [])))
     design.addObject(obj)
     return obj
@@ -186,16 +191,17 @@ def grain_of(box, size):
 
 def constraint_dict(c):
     d = {"kind": c.Kind, "name": c.Label}
+    refs = references.names(c.Refs)
     if c.Kind in ("equal", "symmetric"):
-        d["refs"] = list(c.Refs)
+        d["refs"] = refs
     if c.Kind == "symmetric" and c.About:
-        d["about"] = c.About
+        d["about"] = references.names(c.About)[0]
     if c.Kind == "sum":
-        d.update(lhs=list(c.Refs), rhs=list(c.Rhs), offset=c.Value)
+        d.update(lhs=refs, rhs=references.names(c.Rhs), offset=c.Value)
     if c.Kind in ("fixed", "range"):
-        if len(c.Refs) != 1:
+        if len(refs) != 1:
             raise DesignError("constraint '{}': a {} constraint takes one reference".format(c.Label, c.Kind))
-        d["ref"] = c.Refs[0]
+        d["ref"] = refs[0]
     if c.Kind == "fixed":
         d["value"] = c.Value
     if c.Kind == "range":
@@ -269,7 +275,8 @@ def recompute(obj):
     try:
         laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
-        mark_constraints(obj, str(error))
+        error = named(obj, str(error))
+        mark_constraints(obj, error)
         obj.Status = "Constraints broken: {}".format(error)
         raise DesignError("Design '{}': {}".format(obj.Label, error))
     except fabguide_core.PackingError as error:
@@ -291,6 +298,14 @@ def recompute(obj):
         status = obj.Status  # FreeCAD recomputes again after boxes moved: keep what the first pass said
     obj.Status = status
     obj.Valid = json.dumps(edited["parts"])
+
+
+def named(obj, message):
+    """The core's field paths as the user knows them: "constraints[0].refs: ..." → "constraint 'same length'
+    refs: ..."."""
+    labels = [c.Label for c in obj.Group if is_constraint(c)]
+    return re.sub(r"constraints\[(\d+)\]\.?", lambda m: "constraint '{}' ".format(labels[int(m.group(1))])
+                  if int(m.group(1)) < len(labels) else m.group(0), message)
 
 
 def held(obj, corrected):
@@ -422,7 +437,7 @@ def from_file(doc, path, label=None):
             values["About"] = c["about"]
         if "parts" in c:
             values["Parts"] = [made[p] for p in c["parts"]]
-        add_constraint(obj, c["kind"], c.get("name"), **values)
+        add_constraint(obj, c["kind"], c.get("name"), made, **values)
     for v in data.get("inner_volumes", []):
         add_volume(obj, "Inner", v["position"], v["size"], made[v["on"]], v.get("name"))
     if "outer_volume" in data:

@@ -52,7 +52,7 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyString", "ProblemJson", "Data", "The problem laid out (*.pack.json)", mode=2)
         add(obj, "App::PropertyString", "LayoutJson", "Data", "The layout (layout JSON)", mode=2)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         problem, boards = make_problem(obj)
         try:
             joined = join(obj, boards)

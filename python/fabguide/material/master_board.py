@@ -21,7 +21,7 @@ class MasterBoard(properties.Proxy):
             "What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new "
             "sheets", 1.0)
 
-    def execute(self, obj):
+    def recompute(self, obj):
         for name in ("Width", "Height", "Thickness"):
             if getattr(obj, name).Value <= 0:
                 raise ValueError("Master board '{}': {} must be greater than 0".format(obj.Label, name))
