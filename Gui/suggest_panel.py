@@ -75,7 +75,7 @@ class Boxes:
         design.write_parts(self.obj, state, self.start)
 
     def apply(self, state):
-        design.apply_parts(self.obj, state)
+        design.apply_parts(self.obj, state, self.start["parts"] if self.start else None)
 
 
 class Aliases:

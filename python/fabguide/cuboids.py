@@ -42,6 +42,19 @@ def set_coordinates(box, values, tolerance=1e-9):
     return True
 
 
+def change(label, before, after, tolerance=1e-6):
+    """What a solve did to a box, [left, right, near, far, bottom, top] `before` → `after`, as the user reads
+    it: "Lid: Length 120 → 115 mm, moved -2.5 mm along x"; "" when nothing changed."""
+    said = []
+    for a, size in enumerate(SIZES):
+        was, now = before[2 * a + 1] - before[2 * a], after[2 * a + 1] - after[2 * a]
+        if abs(now - was) > tolerance:
+            said.append("{} {:g} → {:g} mm".format(size, round(was, 4), round(now, 4)))
+    moved = [(after[2 * a] - before[2 * a], "xyz"[a]) for a in range(3)]
+    said += ["moved {:+g} mm along {}".format(round(d, 4), axis) for d, axis in moved if abs(d) > tolerance]
+    return "{}: {}".format(label, ", ".join(said)) if said else ""
+
+
 def face_name(box, element):
     """"Face6" of a box → "Box.top" (the core's face name)."""
     if not element.startswith("Face") or not 1 <= int(element[4:]) <= 6:

@@ -33,10 +33,27 @@ class Stateless:
         return None
 
 
+def value(v):
+    """A property's number, whether a Quantity or a plain number."""
+    return getattr(v, "Value", v)
+
+
+def more_than(limit):
+    return lambda obj, v: value(v) > limit, "greater than {:g}".format(limit)
+
+
+def at_least(limit, meaning=""):
+    return lambda obj, v: value(v) >= limit, "{:g}{} or more".format(limit, meaning)
+
+
 class Proxy(Stateless):
     """Base of FabGuide's FeaturePython proxies. Subclasses list their properties in `define(obj)` with
     `add`; restoring a document calls it again, so documents saved by an older FabGuide gain new properties.
-    They recompute in `recompute(obj)`."""
+    They recompute in `recompute(obj)`. VALID lists what a property's value must be, {name: (test(obj, value),
+    what it must be)}: a value that fails is refused as it is typed (the old one stays, the report view says
+    why), and a document that holds one anyway does not recompute."""
+
+    VALID, NOUN = {}, "Object"
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -50,11 +67,32 @@ class Proxy(Stateless):
         add(obj, "App::PropertyString", "Error", "Base", "Why the last recompute failed; empty when it did not",
             mode=2)
 
+    def onBeforeChange(self, obj, prop):
+        if prop in self.VALID:
+            self.before = prop, getattr(obj, prop)  # on the proxy only: never saved
+
+    def onChanged(self, obj, prop):
+        before = getattr(self, "before", (None, None))
+        problem = self.invalid(obj, prop)
+        if problem and before[0] == prop and not obj.Document.Restoring:
+            FreeCAD.Console.PrintError("{}; kept {}\n".format(problem, getattr(before[1], "UserString", before[1])))
+            setattr(obj, prop, before[1])
+
+    def invalid(self, obj, prop):
+        """What is wrong with property `prop`'s value, as a sentence; "" when it is valid."""
+        test, must = self.VALID.get(prop, (None, ""))
+        if test is None or prop not in obj.PropertiesList or test(obj, getattr(obj, prop)):
+            return ""
+        return "{} '{}': {} must be {}".format(self.NOUN, obj.Label, prop, must)
+
     def execute(self, obj):
         """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError) is one plain
         sentence in the report view and in the object's Error (its tree icon is marked), never a traceback;
         `recompute` says it in the object's Status too, and clears the statuses it can no longer vouch for."""
         try:
+            problem = next(filter(None, (self.invalid(obj, prop) for prop in self.VALID)), "")
+            if problem:
+                raise ValueError(problem)
             self.recompute(obj)
         except ValueError as error:
             fail(obj, str(error))

@@ -240,6 +240,7 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     assert a.Length.Value == pytest.approx(b.Length.Value)
     assert {a.Length.Value, b.Length.Value} <= {300.0, 340.0}  # one board changed, not both
     assert "boards moved so that every constraint holds" in obj.Status
+    assert len(obj.Changes) == 1 and obj.Changes[0].startswith(("a: Length 300 → 340 mm", "b: Length 340 → 300 mm"))
     design.add_constraint(obj, "fixed", "a is 300", Refs=["a.size.x"], Value=250)
     design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
     doc.recompute()
@@ -435,9 +436,8 @@ def test_an_offcut_master_board_of_cost_0_is_cut_before_new_sheets(doc, table):
     used = [b["name"] for b in laid["boards"]]
     assert used == ["offcut"], used
     assert not table.Error, table.Status
-    offcut.Cost = -1
-    doc.recompute()
-    assert offcut.Error
+    offcut.Cost = -1  # refused as it is typed
+    assert offcut.Cost == 0
 
 
 def test_renaming_a_board_keeps_its_constraints_and_deleting_one_says_which(doc):
@@ -454,3 +454,15 @@ def test_renaming_a_board_keeps_its_constraints_and_deleting_one_says_which(doc)
     doc.recompute()  # no traceback: the design says what is wrong
     assert "constraint 'same length' refs: needs at least 2 references" in obj.Error, obj.Error
     assert obj.Status.startswith("Constraints broken: ") and same.Status.startswith("Broken: "), obj.Status
+
+
+def test_a_range_refuses_a_min_above_its_max_as_it_is_typed(doc):
+    a, b, obj = two_boards(doc, 340)
+    span = design.add_constraint(obj, "range", "a's length", Refs=["a.size.x"], Min=250, Max=350)
+    doc.recompute()
+    span.Min = 400  # above Max: refused, the range stays as it was
+    assert (span.Min, span.Max) == (250, 350)
+    span.Max, span.Min = 500, 280  # Max first, then Min: both kept
+    assert (span.Min, span.Max) == (280, 500)
+    doc.recompute()
+    assert not obj.Error and span.Status == design.SATISFIED, obj.Status

@@ -67,11 +67,13 @@ def test_the_mechanism_solves_on_recompute_and_writes_the_boxes_back(doc):
 
 def test_an_edit_is_kept_and_the_rest_adapts(doc):
     mech, body, lid, cover = clamshell(doc)
+    was = lid.Length.Value
     body.Length = 80
     doc.recompute()
     assert cuboids.coordinates(body)[1] - cuboids.coordinates(body)[0] == pytest.approx(80)
     assert lid.Length.Value == pytest.approx(80, abs=1e-6)  # the lid follows to keep covering
     assert mech.Status == "Solved" and touched(doc) == []
+    assert mech.Changes == ["Lid: Length {:g} → 80 mm".format(was)]  # the solve's doing, not the user's edit
 
 
 def test_conflicts_are_named_and_leave_the_boxes_alone(doc):
@@ -286,6 +288,9 @@ def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc
             printable.fit(reloaded)
         again.recompute()
         assert reloaded.Error and reloaded.Scale == pytest.approx(250 / 541.6, rel=0.01)
+        reloaded.FitToBuildVolume = False
+        reloaded.Scale = 0  # refused as it is typed
+        assert reloaded.Scale == pytest.approx(250 / 541.6, rel=0.01)
     finally:
         FreeCAD.closeDocument(again.Name)
 

@@ -329,3 +329,21 @@ def test_core_errors_about_a_part_name_the_piece_it_is(doc):
     assert layout.name_parts("parts[1].outline: encloses no area",
                              [{"id": "Bar board + Stem board"}, {"id": "Leg board"}]) == \
         "board 'Leg board'.outline: encloses no area"
+
+
+@pytest.mark.parametrize("make, prop, bad, message", [
+    (lambda doc: master_board.create(doc, 1000, 600, 12), "Count", -5,
+     "Master board 'MasterBoard': Count must be 0 (as many as needed) or more; kept 1"),
+    (lambda doc: master_board.create(doc, 1000, 600, 12), "Thickness", 0,
+     "Master board 'MasterBoard': Thickness must be greater than 0; kept 12"),
+])
+def test_a_bad_value_is_refused_as_it_is_typed(doc, make, prop, bad, message, monkeypatch):
+    obj = make(doc)
+    doc.recompute()
+    before, said = getattr(obj, prop), []
+    monkeypatch.setattr(FreeCAD.Console, "PrintError", said.append)
+    setattr(obj, prop, bad)
+    assert getattr(obj, prop) == before  # refused at once: the old value stays
+    assert len(said) == 1 and said[0].startswith(message), said
+    doc.recompute()
+    assert not obj.Error

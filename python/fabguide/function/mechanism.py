@@ -20,7 +20,8 @@ class MechanismError(ValueError):
 
 
 class Mechanism(properties.Proxy):
-    TYPE = "FabGuide::Mechanism"
+    TYPE, NOUN = "FabGuide::Mechanism", "Mechanism"
+    VALID = dict(MinimumSize=properties.more_than(0))
 
     def define(self, obj):
         add = properties.add
@@ -37,6 +38,8 @@ class Mechanism(properties.Proxy):
             mode=1)
         add(obj, "App::PropertyStringList", "Blamed", "Result",
             "Parts a conflict blames besides its relationships' (overlapping parts, thin walls)", mode=1)
+        add(obj, "App::PropertyStringList", "Changes", "Result",
+            "What the last solve changed: box, size old → new, how far it moved", mode=1)
         add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
 
     def recompute(self, obj):
@@ -120,7 +123,11 @@ def solve(obj):
         for note in report.get("notes", []):
             FreeCAD.Console.PrintWarning("  {}\n".format(note))
         return solved
-    write_back(obj, solved)
+    changes = write_back(obj, solved)
+    if obj.Changes != changes:
+        obj.Changes = changes
+    for change in changes:
+        FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
@@ -159,14 +166,18 @@ def place_pivots(obj, solved):
 
 
 def write_back(obj, solved):
-    """Sizes and places the boxes as solved; remembers them to tell the user's next edits apart."""
+    """Sizes and places the boxes as solved; remembers them to tell the user's next edits apart. Returns what
+    changed, a line per box (cuboids.change)."""
     by_label = {c["name"]: c for p in solved["parts"] for c in p["cuboids"]}
-    after = {}
+    after, changes = {}, []
     for box in boxes(obj):
         c = by_label[box.Label]
         values = [round(v, 7) for a in range(3) for v in (c["min"][a], c["max"][a])]  # IPM noise off
+        before = cuboids.coordinates(box)
         if cuboids.set_coordinates(box, values):
             box.recompute()  # its shape now, within this recompute
             box.purgeTouched()
+            changes.append(cuboids.change(box.Label, before, values))
         after[box.Name] = values
     obj.Solved = json.dumps(after)
+    return [c for c in changes if c]

@@ -17,6 +17,7 @@ class PrintableError(ValueError):
 
 class Printable(properties.Proxy):
     TYPE = "FabGuide::Printable"
+    NOUN, VALID = "Printable", dict(Scale=properties.more_than(0))
 
     def define(self, obj):
         add = properties.add
@@ -42,14 +43,13 @@ class Printable(properties.Proxy):
         add(obj, "App::PropertyStringList", "Notes", "Result", "Joints made without geometry, and why", mode=1)
 
     def onChanged(self, obj, prop):
+        super().onChanged(obj, prop)
         if prop == "Printer" and PRINTERS.get(obj.Printer) is not None and "Gap" in obj.PropertiesList:
             obj.Gap = PRINTERS[obj.Printer]
         if prop == "FitToBuildVolume" and "Scale" in obj.PropertiesList:
             obj.setEditorMode("Scale", 1 if obj.FitToBuildVolume else 0)
 
     def recompute(self, obj):
-        if obj.Scale <= 0:
-            raise PrintableError("Printable '{}': Scale must be greater than 0".format(obj.Label))
         data = bodies(obj)
         by_name = {child.BodyName: child for child in obj.Group if hasattr(child, "BodyName")}
         missing = [b["name"] for b in data["bodies"] if b["name"] not in by_name]

@@ -17,7 +17,8 @@ class BoardError(ValueError):
 
 
 class Board(properties.Proxy):
-    TYPE = "FabGuide::Board"
+    TYPE, NOUN = "FabGuide::Board", "Board"
+    VALID = dict(Quantity=properties.at_least(1))
 
     def define(self, obj):
         add = properties.add

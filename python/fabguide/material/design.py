@@ -3,6 +3,7 @@ constraints, inner and outer volumes and the master boards to cut from. Its reco
 holding as the user edits a box (thesis 5.3.5: the edit is kept, the rest adapts) and lays the boards out to
 show the material usage live; an edit that no longer fits the master boards is absorbed by the dynamic packer
 (5.3.2: the parts sharing its line across the board give way) or undone with the reason."""
+import contextlib
 import json
 import re
 
@@ -24,7 +25,8 @@ class DesignError(ValueError):
 
 
 class FlatpackDesign(properties.Proxy):
-    TYPE = "FabGuide::FlatpackDesign"
+    TYPE, NOUN = "FabGuide::FlatpackDesign", "Design"
+    VALID = dict(Resolution=properties.more_than(0))
 
     def define(self, obj):
         add = properties.add
@@ -43,13 +45,18 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / layout bounding rectangle (thesis 5.2.3)",
             mode=1)
         add(obj, "App::PropertyString", "Status", "Result", "Laid out, or what is wrong", mode=1)
+        add(obj, "App::PropertyStringList", "Changes", "Result",
+            "What the last recompute or accepted suggestion that moved boards did: size old → new, how far",
+            mode=1)
         add(obj, "App::PropertyString", "Valid", "Data", "Boards after the last valid recompute (JSON)", mode=2)
         add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
 
     def recompute(self, obj):
-        recompute(obj)
+        with saying_changes(obj):
+            recompute(obj)
 
     def onChanged(self, obj, prop):
+        super().onChanged(obj, prop)
         if prop == "Group" and not obj.Document.Restoring:
             add_grain(boxes(obj))
 
@@ -61,7 +68,9 @@ class FlatpackDesign(properties.Proxy):
 class DesignConstraint(properties.Proxy):
     """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
     what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
-    TYPE = "FabGuide::DesignConstraint"
+    TYPE, NOUN = "FabGuide::DesignConstraint", "Constraint"
+    VALID = dict(Min=(lambda obj, v: obj.Kind != "range" or v <= obj.Max, "at most its Max"),
+                 Max=(lambda obj, v: obj.Kind != "range" or v >= obj.Min, "at least its Min"))
 
     def define(self, obj):
         add = properties.add
@@ -72,8 +81,8 @@ class DesignConstraint(properties.Proxy):
         references.define(obj, "Rhs", "Constraint", "Right side of a sum")
         add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
         add(obj, "App::PropertyFloat", "Value", "Constraint", "Fixed value (mm) or sum offset")
-        add(obj, "App::PropertyFloat", "Min", "Constraint", "Range: smallest value, mm")
-        add(obj, "App::PropertyFloat", "Max", "Constraint", "Range: largest value, mm")
+        add(obj, "App::PropertyFloat", "Min", "Constraint", "Range: smallest value, mm", -10 * UNBOUNDED)
+        add(obj, "App::PropertyFloat", "Max", "Constraint", "Range: largest value, mm", 10 * UNBOUNDED)
         references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
         add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
 
@@ -389,9 +398,32 @@ def centres(parts):
     return {p["id"]: [p["position"][a] + p["size"][a] / 2 for a in range(3)] for p in parts}
 
 
-def apply_parts(obj, parts):
-    """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept)."""
-    write_parts(obj, parts)
+@contextlib.contextmanager
+def saying_changes(obj, start=None):
+    """What the block does to the boards (from `start`, the format's parts, if given), in the design's Changes
+    and the report view (cuboids.change)."""
+    try:
+        before = ({p["id"]: [v for a in range(3) for v in (p["position"][a], p["position"][a] + p["size"][a])]
+                   for p in start} if start else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
+    except cuboids.CuboidError:  # a rotated box: the recompute says so
+        before = {}
+    try:
+        yield
+    finally:
+        changes = [cuboids.change(box.Label, before[box.Label], cuboids.coordinates(box))
+                   for box in boxes(obj) if box.Label in before]
+        changes = [c for c in changes if c]
+        if changes:  # FreeCAD recomputes again after boxes moved: that pass changes nothing and says nothing
+            obj.Changes = changes
+        for change in changes:
+            FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
+
+
+def apply_parts(obj, parts, start=None):
+    """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept); the changes are
+    said from `start` (the design before the suggestions were previewed)."""
+    with saying_changes(obj, start):
+        write_parts(obj, parts)
     obj.Valid = json.dumps(parts_of(obj))
     obj.touch()
 

@@ -20,7 +20,8 @@ class LayoutError(ValueError):
 
 
 class Layout(properties.Proxy):
-    TYPE = "FabGuide::Layout"
+    TYPE, NOUN = "FabGuide::Layout", "Layout"
+    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"))
 
     def define(self, obj):
         add = properties.add

@@ -6,7 +6,9 @@ GRAIN = {"None": "none", "Along width": "width", "Along height": "height"}
 
 
 class MasterBoard(properties.Proxy):
-    TYPE = "FabGuide::MasterBoard"
+    TYPE, NOUN = "FabGuide::MasterBoard", "Master board"
+    VALID = dict(Width=properties.more_than(0), Height=properties.more_than(0), Thickness=properties.more_than(0),
+                 Count=properties.at_least(0, " (as many as needed)"), Cost=properties.at_least(0, " (an offcut you have)"))
 
     def define(self, obj):
         add = properties.add
@@ -20,15 +22,6 @@ class MasterBoard(properties.Proxy):
         add(obj, "App::PropertyFloat", "Cost", "Master board",
             "What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new "
             "sheets", 1.0)
-
-    def recompute(self, obj):
-        for name in ("Width", "Height", "Thickness"):
-            if getattr(obj, name).Value <= 0:
-                raise ValueError("Master board '{}': {} must be greater than 0".format(obj.Label, name))
-        if obj.Count < 0:
-            raise ValueError("Master board '{}': Count must be 0 (as many as needed) or more".format(obj.Label))
-        if obj.Cost < 0:
-            raise ValueError("Master board '{}': Cost must be 0 (an offcut you have) or more".format(obj.Label))
 
 
 def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard",
