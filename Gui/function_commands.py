@@ -67,12 +67,19 @@ def finish(doc, obj, mech):
     FreeCAD.Console.PrintMessage("{}: {}\n".format(mech.Label, mech.Status))
 
 
+def usable(boxes):
+    """The boxes, each checked to be one FabGuide can solve (CuboidError naming one that is rotated)."""
+    for box in boxes:
+        cuboids.coordinates(box)
+    return boxes
+
+
 class NewMechanism(Command):
     ICON, MENU = "FabGuide_Mechanism.svg", "Mechanism from Boxes"
     TIP = "Make a mechanism; each selected box (Part::Box) becomes one of its parts"
 
     def run(self, doc):
-        boxes = [o for o in selected(cuboids.is_box) if parts.part_of(doc.Objects, o) is None]
+        boxes = usable([o for o in selected(cuboids.is_box) if parts.part_of(doc.Objects, o) is None])
         with transaction(doc, "New mechanism"):
             mech = vp.attach(mechanism.create(doc))
             mech.Group = [vp.attach(parts.create(doc, [b])) for b in boxes]
@@ -84,7 +91,7 @@ class MakePart(Command):
     TIP = "Make one part of the selected boxes: they move together"
 
     def run(self, doc):
-        boxes = selected(cuboids.is_box)
+        boxes = usable(selected(cuboids.is_box))
         if not boxes:
             return tell("Select the boxes (Part::Box) the part is made of.")
         owned = [b.Label for b in boxes if parts.part_of(doc.Objects, b)]

@@ -126,6 +126,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
                           std::to_string(p.quantity));
     p.orientations = readOrientations(part);
     p.followsGrain = part.flag("follow_grain", p.followsGrain);
+    p.thickness = part.number("thickness", 0.0, 0.0);
     return p;
 }
 
@@ -366,6 +367,8 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
                                {"quantity", p.quantity},
                                {"orientations", p.orientations},
                                {"follow_grain", p.followsGrain}};
+        if (p.thickness > 0)
+            part["thickness"] = p.thickness;
         if (geometry::isRectangle(p.outline)) {
             part["width"] = p.width();
             part["height"] = p.height();

@@ -115,7 +115,7 @@ void checkSettings(const PackProblem& problem)
         if (std::none_of(problem.boards.begin(), problem.boards.end(),
                          [&](const MasterBoard& b) { return ofThickness(part.thickness, b.thickness); }))
             throw PackingError("part '" + part.id + "' is " + mm(part.thickness) +
-                               " mm thick: no master board is");
+                               " mm thick: no master board is (add one that thick)");
         if (std::none_of(problem.boards.begin(), problem.boards.end(),
                          [&](const MasterBoard& b) { return fitsOn(part, b, s, problem.strip); }))
             throw PackingError("part '" + part.id + "' is larger than every master board" +

@@ -198,7 +198,7 @@ TEST(Pack, PartsAreCutOnlyFromBoardsOfTheirThickness)
         pack(problem, quick());
         FAIL() << "a 12 mm part was laid out with no 12 mm board";
     } catch (const PackingError& e) {
-        EXPECT_STREQ(e.what(), "part 'back' is 12 mm thick: no master board is");
+        EXPECT_STREQ(e.what(), "part 'back' is 12 mm thick: no master board is (add one that thick)");
     }
 }
 

@@ -167,6 +167,22 @@ def a_box_renamed_keeps_the_mechanism_and_a_box_deleted_marks_it():
     assert mech.ViewObject.Proxy.getIcon().endswith("FabGuide_Mechanism.svg")
 
 
+def mistakes_are_told_in_a_sentence_and_change_nothing():
+    doc = guitest.new_document("Mistakes")
+    tilted = doc.addObject("Part::Box", "Tilted")
+    tilted.Placement = FreeCAD.Placement(FreeCAD.Vector(), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 10))
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(tilted)
+    said = guitest.told("FabGuide_NewMechanism")
+    assert said and said.startswith("'Tilted' is rotated: FabGuide parts are axis-aligned boxes"), said
+    assert [o.Label for o in doc.Objects] == ["Tilted"], "nothing made"
+    Gui.Selection.clearSelection()
+    said = guitest.told("FabGuide_AddHinge")
+    assert said and "edge" in said.lower(), said
+    FreeCAD.closeDocument(doc.Name)
+
+
 def the_crate_bed_folds_along_its_four_bar_motion():
     doc = guitest.new_document("CrateBed")
     guitest.with_file_dialog("getOpenFileName", os.path.join(SOURCE, "examples", "crate-bed.workslike.json"),
@@ -305,6 +321,7 @@ guitest.run([
     the_relationship_panel_colours_the_faces,
     a_conflict_turns_the_parts_red_and_undo_takes_it_back,
     a_box_renamed_keeps_the_mechanism_and_a_box_deleted_marks_it,
+    mistakes_are_told_in_a_sentence_and_change_nothing,
     a_double_pivot_from_two_picked_points,
     export_writes_a_model_the_core_solves,
     the_crate_bed_folds_along_its_four_bar_motion,

@@ -1,5 +1,9 @@
 """Material toolbar in the real FreeCAD GUI: a shelf unit made of Part boxes becomes boards, is laid out
-(task panel with the usage), edited live, undone, and exported; screenshots of the 3-D view and panel."""
+(task panel with the usage), edited live, undone, and exported; screenshots of the 3-D view and panel. Mistakes
+are refused or said in one sentence.
+"""
+# expects error: Master board 'MasterBoard': Count must be 0 (as many as needed) or more; kept 1
+# expects error: Layout 'Layout': part 'Back board' is 6 mm thick: no master board is (add one that thick)
 import os
 import tempfile
 
@@ -79,6 +83,32 @@ def editing_the_kerf_in_the_panel_relays_out_live():
     state["doc"].commitTransaction()
 
 
+def mistakes_are_refused_or_said_in_one_sentence():
+    doc, layout = state["doc"], state["layout"]
+    master = [o for o in doc.Objects if hasattr(o, "Count")][0]
+    master.Count = -5
+    assert master.Count == 1, "refused as typed"
+    thin = doc.addObject("Part::Box", "Back")
+    thin.Length, thin.Width, thin.Height = 600, 6, 800
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(thin)
+    Gui.runCommand("FabGuide_BoardsFromSolids")
+    back = doc.ActiveObject
+    doc.openTransaction("Add a 6 mm board")
+    layout.Boards = layout.Boards + [back]
+    doc.recompute()
+    doc.commitTransaction()
+    assert layout.Error.startswith("Layout 'Layout': ") and "\n" not in layout.Error, layout.Error
+    assert layout.ViewObject.Proxy.getIcon().endswith("FabGuide_Error.svg")
+    print("window: " + guitest.screenshot("material_two_thicknesses"))
+    doc.undo()  # the 6 mm board out of the layout
+    doc.undo()  # and made no more, so the next steps undo what they expect
+    doc.removeObject(thin.Name)
+    doc.recompute()
+    assert not layout.Error, layout.Error
+
+
 def top_view_of_the_sheet():
     Gui.activeDocument().activeView().viewTop()
     Gui.SendMsgToActiveView("ViewFit")
@@ -141,6 +171,7 @@ guitest.run([
     boards_from_solids_makes_one_board_per_solid,
     master_board_and_layout_open_the_usage_panel,
     editing_the_kerf_in_the_panel_relays_out_live,
+    mistakes_are_refused_or_said_in_one_sentence,
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,
     techdraw_page_opens_with_the_cut_sheet,

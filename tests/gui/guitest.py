@@ -38,6 +38,27 @@ def new_document(name):
     return doc
 
 
+def told(command):
+    """Runs `command`, which should tell the user something in a message box; closes the box and returns its
+    text (None when no box came)."""
+    from PySide import QtGui
+
+    seen, running = [], [True]
+
+    def close():
+        box = QtGui.QApplication.activeModalWidget()
+        if isinstance(box, QtGui.QMessageBox):
+            seen.append(box.text())
+            box.accept()
+        elif running[0]:
+            QtCore.QTimer.singleShot(20, close)
+
+    QtCore.QTimer.singleShot(20, close)
+    FreeCADGui.runCommand(command)
+    running[0] = False
+    return seen[0] if seen else None
+
+
 def isometric():
     """The active 3-D view from the isometric direction, fitted, with no camera animation (on by default in 1.0: a
     render right after viewIsometric would catch the camera half-way)."""

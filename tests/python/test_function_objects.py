@@ -448,3 +448,16 @@ def test_the_preview_moves_parts_as_the_print_does_turns_first_then_slides(doc, 
     assert whole.Rotation.Angle == pytest.approx(math.pi / 2)
     assert (whole.Base - half.Base).Length == pytest.approx(60)  # then the 60 mm slide, along y
     assert abs((whole.Base - half.Base).y) == pytest.approx(60)
+
+
+def test_a_length_typed_stays_a_length_or_is_refused_by_name_never_a_move(doc):
+    mech, body, lid, cover = clamshell(doc, just=False)
+    width = lid.Length.Value
+    fixed = relationships.create(doc, "geometric", "Lid as wide as now", Left=[(lid, "width")], Offset=width)
+    mech.Group = mech.Group + [fixed]
+    doc.recompute()
+    left = cuboids.coordinates(lid)[0]
+    lid.Length = width + 40  # the user types a length the fixed width refuses: not a 40 mm move of the lid
+    doc.recompute()
+    assert mech.Status.startswith("Conflict: ") and "lock: Lid.left" in mech.Status, mech.Status
+    assert "lock: Lid.right" in mech.Status and cuboids.coordinates(lid)[0] == left

@@ -132,13 +132,26 @@ def test_layout_errors_name_the_board_at_fault(doc):
     masters[0].Thickness = 12
     doc.recompute()
     assert lay.Error
-    with pytest.raises(layout.LayoutError, match="board 'sidel' is 18 mm thick but master board"):
+    with pytest.raises(layout.LayoutError, match="'sidel' is 18 mm thick: no master board is"):
         lay.Proxy.recompute(lay)
     masters[0].Thickness = 18
     masters[0].Width, masters[0].Height = 500, 500
     with pytest.raises(layout.LayoutError, match="board 'side.' is larger than every master board|part 'side.'"):
         lay.Proxy.recompute(lay)
     assert all(not b.Error for b in boards)  # the user's boards are untouched
+
+
+def test_boards_of_two_thicknesses_are_each_cut_from_master_boards_of_theirs(doc):
+    boards, masters = shelf_unit(doc)
+    back = board.create(doc, box(doc, "Back", 600, 6, 800, at=(0, 300, 0)), thickness=6, label="back")
+    thin = master_board.create(doc, 1220, 1220, 6, label="hardboard")
+    lay = layout.create(doc, boards + [back], masters + [thin])
+    doc.recompute()
+    assert not lay.Error, lay.Error
+    laid = json.loads(lay.LayoutJson)
+    sheets = {i: b["name"] for i, b in enumerate(laid["boards"])}
+    on = {p["part"]: sheets[p["board"]] for p in laid["placements"]}
+    assert on["back"] == "hardboard" and all(on[b.Label] != "hardboard" for b in boards), on
 
 
 def test_save_and_reload_reproduce_the_layout(doc, tmp_path):

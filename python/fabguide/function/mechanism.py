@@ -70,13 +70,14 @@ def boxes(obj):
 
 
 def edits(obj):
-    """Box coordinates changed since the last solve, as lock names ("Lid.top")."""
+    """Box coordinates changed since the last solve, as lock names ("Lid.top"): both sides along an axis the
+    user changed, so a Length typed stays a length with the box's corner where it was, never becomes a move."""
     if not obj.KeepEdits or not obj.Solved:
         return []
     before = json.loads(obj.Solved)
-    return ["{}.{}".format(box.Label, side) for box in boxes(obj) if box.Name in before
-            for side, was, now in zip(cuboids.SIDES, before[box.Name], cuboids.coordinates(box))
-            if abs(was - now) > 1e-7]
+    return ["{}.{}".format(box.Label, cuboids.SIDES[2 * a + high]) for box in boxes(obj) if box.Name in before
+            for a, now in enumerate(zip(*[iter(cuboids.coordinates(box))] * 2))
+            if any(abs(w - n) > 1e-7 for w, n in zip(before[box.Name][2 * a:2 * a + 2], now)) for high in (0, 1)]
 
 
 def model(obj, locks=()):

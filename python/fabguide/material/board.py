@@ -171,4 +171,4 @@ def packing_of(obj):
     """How the board is packed, as *.pack.json part fields (its shape comes from the connectors' pieces);
     Follow grain leaves the turns to each master board's grain."""
     return {"quantity": obj.Quantity, "orientations": [0] if obj.Rotation == "Fixed" else [0, 90, 180, 270],
-            "follow_grain": obj.Rotation == "Follow grain"}
+            "follow_grain": obj.Rotation == "Follow grain", "thickness": obj.Thickness.Value}

@@ -107,10 +107,6 @@ def make_problem(obj):
     for b in boards:
         if b.Shape.isNull():
             raise LayoutError("Layout '{}': board '{}' has no shape; recompute it first".format(obj.Label, b.Label))
-        for m in masters:
-            if abs(b.Thickness.Value - m.Thickness.Value) > 0.01:
-                raise LayoutError("Layout '{}': board '{}' is {:g} mm thick but master board '{}' is {:g} mm"
-                                  .format(obj.Label, b.Label, b.Thickness.Value, m.Label, m.Thickness.Value))
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
