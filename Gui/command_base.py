@@ -61,6 +61,26 @@ def ask_save(title, name, filter):
     return QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), title, name, filter)[0]
 
 
+class Group:
+    """Commands behind one drop-down toolbar button (FreeCAD's Python group command), as FreeCAD's own
+    workbenches group theirs; the button shows the command used last."""
+
+    def __init__(self, menu, tip, names):
+        self.menu, self.tip, self.names = menu, tip, tuple(names)
+
+    def GetCommands(self):
+        return self.names
+
+    def GetDefaultCommand(self):
+        return 0
+
+    def GetResources(self):
+        return {"MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+
 class Command:
     """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
 

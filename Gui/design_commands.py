@@ -88,7 +88,7 @@ class DesignFromBoxes(Command):
 
 
 class ImportFlatpack(Command):
-    ICON, MENU = "FabGuide_Import.svg", "Import Flat-pack Design"
+    ICON, MENU = "FabGuide_ImportFlatpack.svg", "Import Flat-pack Design"
     TIP = "Open a *.flatpack.json design: boxes, master boards, constraints and volumes"
 
     def run(self, doc):
@@ -120,7 +120,7 @@ def decorate(obj):
 
 
 class ExportFlatpack(Command):
-    ICON, MENU = "FabGuide_Export.svg", "Export Flat-pack Design"
+    ICON, MENU = "FabGuide_ExportFlatpack.svg", "Export Flat-pack Design"
     TIP = "Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)"
 
     def run(self, doc):

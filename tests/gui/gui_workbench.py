@@ -24,6 +24,26 @@ def workbench_activates_with_function_and_material_toolbars():
     assert {"Function", "Material"} <= bars, bars
 
 
+def toolbars_fit_a_1366_px_screen_and_reach_every_command():
+    from fabguide_gui import commands
+
+    window = Gui.getMainWindow()
+    window.showNormal()
+    window.setGeometry(0, 0, 1366, 768)
+    guitest.settle(0.5)
+    print("screenshot: " + guitest.screenshot("workbench_1366"))
+    for title in commands.TOOLBARS:
+        bar = [b for b in window.findChildren(QtGui.QToolBar) if b.objectName() == title][0]
+        more = bar.findChild(QtGui.QToolButton, "qt_toolbar_ext_button")
+        assert bar.isVisible() and (more is None or not more.isVisible()), title + " does not fit"
+    every = set(commands.function_commands.COMMANDS) | set(commands.material_commands.COMMANDS) | set(
+        commands.design_commands.COMMANDS)
+    shown = {n for names in commands.TOOLBARS.values() for n in names}
+    shown |= {n for name in shown & set(commands.GROUPS) for n in commands.GROUPS[name].GetCommands()}
+    assert every <= shown, every - shown
+    assert every <= {n for _, names in commands.MENUS for n in names}
+
+
 def about_command_is_registered():
     assert "FabGuide_About" in Gui.listCommands()
 
@@ -37,6 +57,7 @@ def window_screenshot_is_saved():
 guitest.run([
     workbench_is_listed_with_its_icon,
     workbench_activates_with_function_and_material_toolbars,
+    toolbars_fit_a_1366_px_screen_and_reach_every_command,
     about_command_is_registered,
     window_screenshot_is_saved,
 ])
