@@ -16,22 +16,29 @@ class LayoutPanel:
         self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "LayoutPanel.ui"))
         self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Layout.svg")))
         layout.Document.openTransaction("Edit layout")
-        for name in SETTINGS:
+        self.bindings = []
+        for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
             box = getattr(self.form, name.lower())
-            box.setValue(getattr(layout, name).Value)
-            box.valueChanged.connect(lambda value, name=name: self.set(name, value))
+            box.setProperty("rawValue", getattr(layout, name).Value)
+            binding = FreeCADGui.ExpressionBinding(box)
+            binding.bind(layout, name)
+            binding.setAutoApply(True)
+            self.bindings.append(binding)
+            box.valueChanged.connect(lambda *_, name=name, box=box: self.set(name, box.property("rawValue")))
         self.show()
 
     def set(self, name, value):
-        setattr(self.layout, name, value)
-        self.layout.Document.recompute()
+        if abs(getattr(self.layout, name).Value - value) > 1e-12:
+            setattr(self.layout, name, value)
+            self.layout.Document.recompute()
         self.show()
 
     def show(self):
         """The layout's figures, or why it could not be made."""
         layout, form = self.layout, self.form
         if properties.failed(layout):
-            form.message.setText("<b>The layout could not be made.</b> See the report view for the reason.")
+            form.message.setText("<b>The layout could not be made:</b> {}".format(
+                getattr(layout, "Error", "") or "see the report view"))
             return
         form.message.setText("")
         form.usage.setText("{:.1%}".format(layout.Usage))

@@ -70,10 +70,11 @@ def master_board_and_layout_open_the_usage_panel():
 
 def editing_the_kerf_in_the_panel_relays_out_live():
     layout = state["layout"]
-    form = [w for w in Gui.getMainWindow().findChildren(QtGui.QDoubleSpinBox) if w.objectName() == "kerf"]
+    form = [w for w in Gui.getMainWindow().findChildren(QtGui.QAbstractSpinBox) if w.objectName() == "kerf"]
     assert form, "kerf field in the panel"
+    assert form[0].property("unit") == "mm" or "mm" in form[0].text(), form[0].text()
     before = layout.LayoutJson
-    form[0].setValue(8.0)
+    form[0].setProperty("rawValue", 8.0)
     assert layout.Kerf.Value == 8.0
     assert layout.LayoutJson != before
     usage = [w for w in Gui.getMainWindow().findChildren(QtGui.QLabel) if w.objectName() == "usage"][0]
