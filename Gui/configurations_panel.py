@@ -1,12 +1,14 @@
 """Configurations task panel (thesis 4.1.2): name a configuration, pose its joints, and move the mechanism
 between the base pose and that configuration with a slider; OK stores it (one undo step) and makes it the one
 new relationships hold in."""
+import os
+
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
 from fabguide.function import configuration, joints, mechanism
-from fabguide_gui import editing, function_viewproviders as vp
+from fabguide_gui import editing, function_viewproviders as vp, resources
 from fabguide_gui.posing import Poser
 
 NEW = "New configuration"
@@ -25,27 +27,27 @@ class ConfigurationsPanel:
         self.joints = mechanism.members(mech, joints.is_joint)
         self.configurations = mechanism.members(mech, configuration.is_configuration)
         self.poser = Poser(mech)
-        self.form = QtGui.QWidget()
-        self.form.setWindowTitle("Configurations")
-        layout = QtGui.QVBoxLayout(self.form)
-        self.choice = QtGui.QComboBox()
+        self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "ConfigurationsPanel.ui"))
+        self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Configurations.svg")))
+        for name in ("choice", "name", "table", "slider", "play", "status"):
+            setattr(self, name, getattr(self.form, name))
         self.choice.addItems([c.Label for c in self.configurations] + [NEW])
-        self.name = QtGui.QLineEdit()
-        form = QtGui.QFormLayout()
-        form.addRow("Configuration", self.choice)
-        form.addRow("Name", self.name)
-        layout.addLayout(form)
-        self.table = QtGui.QTableWidget(len(self.joints), 4)
-        self.table.setHorizontalHeaderLabels(["Joint", "Moves", "Angle (°)", "Offset (mm)"])
-        self.table.verticalHeader().setVisible(False)
+        self.table.setRowCount(len(self.joints))
         self.moves, self.angles, self.offsets = [], [], []
         for row, joint in enumerate(self.joints):
             self.table.setItem(row, 0, QtGui.QTableWidgetItem(joint.Label))
             self.table.item(row, 0).setFlags(QtCore.Qt.ItemIsEnabled)
+            self.table.item(row, 0).setToolTip(joint.Label)
             moves = QtGui.QCheckBox()
             angle, offset = QtGui.QDoubleSpinBox(), QtGui.QDoubleSpinBox()
             angle.setRange(-360, 360)
             offset.setRange(-1e5, 1e5)
+            angle.setSuffix("°")
+            offset.setSuffix(" mm")
+            for box in (angle, offset):  # narrow, so the joint's name has room in a 300 px combo view
+                box.setDecimals(1)
+                box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)
+                box.setMaximumWidth(box.fontMetrics().horizontalAdvance("-000.0 mm") + 8)
             angle.setEnabled(joints.kind(joint) not in ("slide", "fixed"))
             offset.setEnabled(joints.slides(joint))
             moves.setEnabled(joints.moves(joint))
@@ -57,23 +59,12 @@ class ConfigurationsPanel:
             self.moves.append(moves)
             self.angles.append(angle)
             self.offsets.append(offset)
-        self.table.resizeColumnsToContents()
-        layout.addWidget(self.table)
-        slide = QtGui.QHBoxLayout()
-        slide.addWidget(QtGui.QLabel("Base"))
-        self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
-        self.slider.setRange(0, 100)
-        self.slider.setValue(100)
+        header = self.table.horizontalHeader()
+        header.setSectionResizeMode(0, QtGui.QHeaderView.Stretch)  # the joint's name takes what is left
+        for column in (1, 2, 3):
+            header.setSectionResizeMode(column, QtGui.QHeaderView.ResizeToContents)
         self.slider.valueChanged.connect(self.preview)
-        slide.addWidget(self.slider)
-        slide.addWidget(QtGui.QLabel("Configuration"))
-        self.play = QtGui.QPushButton("Play")
         self.play.clicked.connect(self.animate)
-        slide.addWidget(self.play)
-        layout.addLayout(slide)
-        self.status = QtGui.QLabel()
-        self.status.setWordWrap(True)
-        layout.addWidget(self.status)
         self.timer = QtCore.QTimer()
         self.timer.timeout.connect(self.step)
         self.direction = -4
