@@ -1,12 +1,17 @@
 """Relationship task panel: its status (conflicts in red), and for cover and support the corresponding faces
 (thesis 4.3.1, 4.3.3), which the user can correct; while it is open the faces are coloured, covering or
 supporting in blue, covered or supported in red."""
+import os
+
 import FreeCAD
+import FreeCADGui
 from PySide import QtCore, QtGui
 
 from fabguide import cuboids, references
 from fabguide.function import mechanism, parts, relationships
+from fabguide_gui import resources
 from fabguide_gui.configurations_panel import close_panel
+from fabguide_gui.function_commands import picked_elements
 
 BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
 
@@ -14,26 +19,15 @@ BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
 class RelationshipPanel:
     def __init__(self, rel):
         self.rel, self.coloured = rel, set()
-        self.form = QtGui.QWidget()
+        self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "RelationshipPanel.ui"))
         self.form.setWindowTitle(rel.Label)
-        layout = QtGui.QVBoxLayout(self.form)
-        self.status = QtGui.QLabel()
-        self.status.setWordWrap(True)
-        layout.addWidget(self.status)
-        self.pairs = None
+        self.status, self.pairs = self.form.status, None
+        self.form.pairsBox.setVisible("Pairs" in rel.PropertiesList)
         if "Pairs" in rel.PropertiesList:
-            explain = QtGui.QLabel("Corresponding faces, first -> second (blue -> red in the 3-D view). Double-click one "
-                                   "to correct it.")
-            explain.setWordWrap(True)
-            layout.addWidget(explain)
-            self.pairs = QtGui.QListWidget()
-            layout.addWidget(self.pairs)
-            buttons = QtGui.QHBoxLayout()
-            for text, slot in (("Add", self.add_pair), ("Remove", self.remove_pair), ("Re-infer", self.infer)):
-                button = QtGui.QPushButton(text)
+            self.pairs = self.form.pairs
+            for button, slot in ((self.form.add, self.add_pair), (self.form.remove, self.remove_pair),
+                                 (self.form.infer, self.infer)):
                 button.clicked.connect(slot)
-                buttons.addWidget(button)
-            layout.addLayout(buttons)
             self.pairs.itemChanged.connect(self.colour)
         rel.Document.openTransaction("Edit " + rel.Label)
         self.fill()
@@ -56,10 +50,17 @@ class RelationshipPanel:
         return [self.pairs.item(i).text() for i in range(self.pairs.count())]
 
     def add_pair(self):
-        item = QtGui.QListWidgetItem("Box.side" + relationships.ARROW + "Box.side")
+        """The two faces picked in the 3-D view, first → second, as a new pair."""
+        faces = picked_elements("Face")
+        if len(faces) != 2:
+            self.status.setText("<b>Pick two faces of boxes in the 3-D view</b> (the first, then the second of "
+                                "the pair) and press Add; {} picked.".format(len(faces)))
+            return
+        item = QtGui.QListWidgetItem(relationships.ARROW.join(cuboids.face_name(*face) for face in faces))
         item.setFlags(item.flags() | QtCore.Qt.ItemIsEditable)
         self.pairs.addItem(item)
-        self.pairs.editItem(item)
+        FreeCADGui.Selection.clearSelection()
+        self.colour()
 
     def remove_pair(self):
         for item in self.pairs.selectedItems():

@@ -116,6 +116,22 @@ def the_relationship_panel_colours_the_faces():
     assert [lists[0].item(i).text() for i in range(lists[0].count())] == ["Lid.bottom -> Body.top"]
     assert lid.ViewObject.DiffuseColor[4][:3] != lid.ViewObject.DiffuseColor[5][:3], "the covering face coloured"
     print("screenshot: " + guitest.screenshot("function_relationship_panel"))
+    body = state["body"]
+    form = [w for w in Gui.getMainWindow().findChildren(QtGui.QWidget) if w.objectName() == "RelationshipPanel"][0]
+    Gui.Selection.clearSelection()
+    form.findChild(QtGui.QPushButton, "add").click()  # nothing picked: it says what to do
+    status = form.findChild(QtGui.QLabel, "status").text()
+    assert "Pick two faces" in status and lists[0].count() == 1, status
+    Gui.Selection.addSelection(lid, "Face1")
+    Gui.Selection.addSelection(body, "Face1")
+    form.findChild(QtGui.QPushButton, "add").click()  # the two picked faces, first to second
+    assert lists[0].item(1).text() == "Lid.left -> Body.left", lists[0].item(1).text()
+    lists[0].item(1).setText("Lid.left Body.left")  # mistyped: OK keeps the panel open and says why
+    buttons = {b.text().replace("&", ""): b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton)}
+    buttons["OK"].click()
+    QtGui.QApplication.processEvents()
+    status = form.findChild(QtGui.QLabel, "status").text()
+    assert Gui.Control.activeDialog() and "must read 'Box.side -> Box.side'" in status, status
     Gui.Control.activeDialog() and [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton)
                                     if b.text() in ("Cancel", "&Cancel")][0].click()
     QtGui.QApplication.processEvents()
