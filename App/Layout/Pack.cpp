@@ -1,12 +1,15 @@
 #include "Layout/Pack.h"
 
+#include "Layout/MaxRects.h"
 #include "Layout/Raster.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
 
 namespace fabguide::material {
 
@@ -224,17 +227,53 @@ Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const R
     return layout;
 }
 
+bool better(const Layout& a, const Layout& b)
+{
+    const auto measure = [](const Layout& l) {
+        double cost = 0;
+        for (const MasterBoard& sheet : l.sheets)
+            cost += sheet.cost;
+        return std::make_tuple(cost, l.sheets.size(), l.boundingArea);
+    };
+    return measure(a) < measure(b);
+}
+
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
     checkSettings(problem);
+    long units = 0;
+    for (const PartSpec& part : problem.parts)
+        units += part.quantity;
+    // Rectangles are laid out exactly by MaxRects first: at shop scale that is the layout, below it the
+    // better of it and Docking's search.
+    std::optional<Layout> exact;
+    if (!problem.strip && allRectangles(problem)) {
+        try {
+            exact =
+                maxRects(problem, started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                std::chrono::duration<double>(search.timeLimit)));
+        } catch (const PackingError&) {
+            if (units > kDockedUnits)
+                throw;
+        }
+        if (exact && units > kDockedUnits)
+            return *exact;
+    }
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
     options.timeLimit =
         std::max(0.0, options.timeLimit -
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-    return inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
+    try {
+        Layout docked = inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
+        return exact && better(*exact, docked) ? *exact : docked;
+    } catch (const PackingError&) {
+        if (!exact)
+            throw;
+        return *exact;
+    }
 }
 
 }  // namespace fabguide::material

@@ -79,10 +79,18 @@ struct Layout {
     double wasteArea() const { return sheetArea - partArea; }
 };
 
+/// Whether layout `a` is better than `b` as the ordering search's LayoutCost has it: what its sheets cost,
+/// then how many, then the summed bounding rectangles of their layouts.
+bool better(const Layout& a, const Layout& b);
+
 /// What a workshop could use: boards up to 20 m long and 2·10^8 grid cells (a 5 x 10 m sheet at 0.5 mm), and
 /// 200,000 parts to lay out.
 constexpr double kLongest = 20000, kMostCells = 2e8;
 constexpr long kMostUnits = 200000;
+
+/// Jobs of rectangles with more units than this are laid out by MaxRects alone: Docking's search would spend
+/// the time limit rasterising and docking them once.
+constexpr long kDockedUnits = 400;
 
 /// Throws std::invalid_argument naming a bad setting, a board beyond kLongest / kMostCells, more than
 /// kMostUnits parts, or no boards or parts; PackingError naming a part larger than every master board.
@@ -111,7 +119,8 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
                             OrderingSearchOptions options);
 
 /// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
-/// order search with Docking (or Bottom-Left), convert back to mm.
+/// order search with Docking (or Bottom-Left), convert back to mm; a job of rectangles is laid out by
+/// MaxRects too, which is kept when it is better (and alone beyond kDockedUnits units).
 /// Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search);
 

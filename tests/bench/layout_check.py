@@ -36,11 +36,14 @@ def problems(layout, demand, board_sizes, clearance=0.0, eps=1e-6):
     for part, (_, _, quantity) in demand.items():
         if placed.get(part, 0) != quantity:
             found.append("part {!r}: placed {} times, demand {}".format(part, placed.get(part, 0), quantity))
-    for (i, a), (j, b) in itertools.combinations(enumerate(layout["placements"]), 2):
-        if a["board"] != b["board"]:
-            continue
-        apart_x = a["x"] + a["width"] + clearance <= b["x"] + eps or b["x"] + b["width"] + clearance <= a["x"] + eps
-        apart_y = a["y"] + a["height"] + clearance <= b["y"] + eps or b["y"] + b["height"] + clearance <= a["y"] + eps
-        if not (apart_x or apart_y):
-            found.append("placements {} and {} overlap (or are closer than {})".format(i, j, clearance))
+    on_board = {}
+    for n, p in enumerate(layout["placements"]):
+        on_board.setdefault(p["board"], []).append((n, p))
+    for placed_on in on_board.values():
+        for (i, a), (j, b) in itertools.combinations(placed_on, 2):
+            apart_x = a["x"] + a["width"] + clearance <= b["x"] + eps or b["x"] + b["width"] + clearance <= a["x"] + eps
+            apart_y = (a["y"] + a["height"] + clearance <= b["y"] + eps or
+                       b["y"] + b["height"] + clearance <= a["y"] + eps)
+            if not (apart_x or apart_y):
+                found.append("placements {} and {} overlap (or are closer than {})".format(i, j, clearance))
     return found

@@ -1,0 +1,118 @@
+#include "Layout/MaxRects.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <random>
+
+using namespace fabguide::material;
+
+namespace {
+
+const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+
+/// Every placement inside its sheet's trim and `kerf + spacing` from every other on its sheet; every unit
+/// placed once.
+void expectValid(const PackProblem& problem, const Layout& layout)
+{
+    const PackSettings& s = problem.settings;
+    const double gap = s.kerf + s.spacing, eps = 1e-9;
+    std::vector<int> placed(problem.parts.size(), 0);
+    for (size_t i = 0; i < layout.placements.size(); ++i) {
+        const Placement& a = layout.placements[i];
+        const MasterBoard& sheet = layout.sheets[a.sheet];
+        ++placed[a.part];
+        EXPECT_GE(a.x, s.trim - eps);
+        EXPECT_GE(a.y, s.trim - eps);
+        EXPECT_LE(a.x + a.width, sheet.width - s.trim + eps) << problem.parts[a.part].id;
+        EXPECT_LE(a.y + a.height, sheet.height - s.trim + eps) << problem.parts[a.part].id;
+        for (size_t j = i + 1; j < layout.placements.size(); ++j) {
+            const Placement& b = layout.placements[j];
+            EXPECT_TRUE(a.sheet != b.sheet || a.x + a.width + gap <= b.x + eps ||
+                        b.x + b.width + gap <= a.x + eps || a.y + a.height + gap <= b.y + eps ||
+                        b.y + b.height + gap <= a.y + eps)
+                << problem.parts[a.part].id << " and " << problem.parts[b.part].id << " on sheet " << a.sheet;
+        }
+    }
+    for (size_t p = 0; p < problem.parts.size(); ++p)
+        EXPECT_EQ(placed[p], problem.parts[p].quantity) << problem.parts[p].id;
+}
+
+}  // namespace
+
+TEST(MaxRects, AGuillotinePerfectPackingFillsOneBoardExactly)
+{
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "ply", 100, 60, 18, 1});
+    problem.parts = {rectangularPart("a", 60, 40), rectangularPart("b", 40, 60),
+                     rectangularPart("c", 30, 20, 2)};
+    const Layout layout = maxRects(problem, kNoDeadline);
+    expectValid(problem, layout);
+    EXPECT_EQ(layout.sheets.size(), 1u);
+    EXPECT_DOUBLE_EQ(layout.partArea, 100.0 * 60);
+}
+
+TEST(MaxRects, KerfSpacingAndTrimKeepEveryPartApartAndOffTheEdges)
+{
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "ply", 1220, 610, 12, -1});
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> side(30, 400);
+    for (int k = 0; k < 60; ++k)
+        problem.parts.push_back(rectangularPart("p" + std::to_string(k), side(random), side(random)));
+    problem.settings = {0.5, 3, 1, 10};
+    const Layout layout = maxRects(problem, kNoDeadline);
+    expectValid(problem, layout);
+    EXPECT_NEAR(layout.sheetArea, 1220.0 * 610 * static_cast<double>(layout.sheets.size()), 1e-6);
+}
+
+TEST(MaxRects, GrainAndThicknessChooseTheBoardsAndTurns)
+{
+    PackProblem problem;
+    problem.boards.push_back({"oak", "oak", 1000, 2000, 18, -1, Grain::AlongHeight});
+    problem.boards.push_back({"hardboard", "hdf", 1000, 1000, 6, -1});
+    PartSpec stile = rectangularPart("stile", 800, 60, 4);
+    stile.followsGrain = true;
+    stile.thickness = 18;
+    PartSpec back = rectangularPart("back", 900, 900, 1);
+    back.thickness = 6;
+    problem.parts = {stile, back};
+    const Layout layout = maxRects(problem, kNoDeadline);
+    expectValid(problem, layout);
+    for (const Placement& p : layout.placements) {
+        EXPECT_EQ(layout.sheets[p.sheet].thickness, problem.parts[p.part].thickness);
+        if (p.part == 0) {
+            EXPECT_EQ(p.rotation % 180, 90) << "the stile's length runs along the board's grain (its height)";
+        }
+    }
+}
+
+TEST(MaxRects, BoardsRunningOutNameThePartAndHowManyMore)
+{
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "ply", 100, 100, 18, 1});
+    problem.parts = {rectangularPart("tile", 60, 60, 3)};
+    try {
+        maxRects(problem, kNoDeadline);
+        FAIL() << "three 60 mm tiles do not fit one 100 mm board";
+    } catch (const PackingError& e) {
+        EXPECT_STREQ(e.what(),
+                     "not enough master boards: part 'tile' and 1 more do not fit on the boards available");
+    }
+}
+
+TEST(MaxRects, PackKeepsTheBetterOfMaxRectsAndDockingAndLaysOutAShopJobWhole)
+{
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "ply", 2440, 1220, 18, -1});
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> side(40, 900);
+    for (int k = 0; k < 500; ++k)  // beyond kDockedUnits: MaxRects alone
+        problem.parts.push_back(rectangularPart("p" + std::to_string(k), side(random), side(random) / 2));
+    problem.settings = {0.5, 3, 0, 10};
+    OrderingSearchOptions options;
+    options.timeLimit = 30;
+    const Layout layout = pack(problem, options);
+    expectValid(problem, layout);
+    EXPECT_EQ(layout.sheets.size(), maxRects(problem, kNoDeadline).sheets.size());
+}
