@@ -292,7 +292,16 @@ bool allRectangles(const PackProblem& problem)
     });
 }
 
-Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline)
+namespace {
+
+using Deadline = std::chrono::steady_clock::time_point;
+
+/// Every MaxRects run on `problem` while the time lasts, each layout handed to `keep` (which returns false to
+/// stop); the first PackingError (boards ran out) of the runs that raised one, if any. The first run places
+/// each unit among the last kWindow sheets opened only, so it takes a time linear in the parts whatever the
+/// job; when a layout is `needed` it completes even past `deadline`.
+std::optional<PackingError> eachRun(const PackProblem& problem, Deadline deadline, bool needed,
+                                    const std::function<bool(Layout&&)>& keep)
 {
     std::vector<int> units;  // a part index per unit of demand
     for (size_t i = 0; i < problem.parts.size(); ++i)
@@ -315,43 +324,92 @@ Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_poin
         std::stable_sort(units.begin(), units.end(),
                          [&](int a, int b) { return key(problem.parts[a]) > key(problem.parts[b]); });
     };
-    std::optional<Layout> best;
-    std::optional<PackingError> firstRanOut;
-    const auto tried = [&](const std::function<Layout()>& run) {  // false once the time is up
+    std::optional<PackingError> ranOutFirst;
+    const auto tried = [&](const std::function<Layout()>& run) {  // false: stop
         try {
-            Layout layout = run();
-            if (!best || better(layout, *best))
-                best = std::move(layout);
+            return keep(run());
         } catch (const PastDeadline&) {
             return false;
         } catch (const PackingError& e) {
-            firstRanOut = firstRanOut.value_or(e);
+            ranOutFirst = ranOutFirst.value_or(e);
         }
         return true;
     };
-    const auto search = [&] {
-        for (const auto& key : orders) {
-            sortBy(key);
-            for (Rule rule : {Rule::ShortSide, Rule::LongSide, Rule::Area, Rule::BottomLeft})
-                if (!tried([&] { return laidOut(problem, units, rule, deadline, units.size()); }))
-                    return;
-        }
-        sortBy(orders[1]);
-        for (Rule rule : {Rule::ShortSide, Rule::Area})
-            if (!tried([&] { return sheetBySheet(problem, units, rule, deadline); }))
-                return;
-    };
-    // A first layout whatever the time limit: each unit among the last kWindow sheets opened only, a time
-    // linear in the parts; then the runs above while the time lasts.
     sortBy(orders[0]);
-    tried([&] {
-        return laidOut(problem, units, Rule::ShortSide, std::chrono::steady_clock::time_point::max(),
-                       kWindow);
+    if (!tried([&] {
+            return laidOut(problem, units, Rule::ShortSide, needed ? Deadline::max() : deadline, kWindow);
+        }))
+        return ranOutFirst;
+    for (const auto& key : orders) {
+        sortBy(key);
+        for (Rule rule : {Rule::ShortSide, Rule::LongSide, Rule::Area, Rule::BottomLeft})
+            if (!tried([&] { return laidOut(problem, units, rule, deadline, units.size()); }))
+                return ranOutFirst;
+    }
+    sortBy(orders[1]);
+    for (Rule rule : {Rule::ShortSide, Rule::Area})
+        if (!tried([&] { return sheetBySheet(problem, units, rule, deadline); }))
+            break;
+    return ranOutFirst;
+}
+
+/// The height a one-sheet layout uses.
+double usedHeight(const Layout& layout, const PackSettings& s)
+{
+    double top = s.trim;
+    for (const Placement& p : layout.placements)
+        top = std::max(top, p.y + p.height);
+    return top + s.trim;
+}
+
+}  // namespace
+
+Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline)
+{
+    std::optional<Layout> best;
+    const auto ranOutFirst = eachRun(problem, deadline, true, [&](Layout&& layout) {
+        if (!best || better(layout, *best))
+            best = std::move(layout);
+        return true;
     });
-    search();
     if (!best)
-        throw *firstRanOut;
+        throw *ranOutFirst;
     return *best;
+}
+
+std::optional<Layout> maxRectsStrip(const PackProblem& problem,
+                                    std::chrono::steady_clock::time_point deadline)
+{
+    const PackSettings& s = problem.settings;
+    const double width = problem.boards[0].width, clearance = s.kerf + s.spacing;
+    double area = 0, high = 2 * s.trim;  // every part stacked on its longer side: a height that fits
+    for (const PartSpec& part : problem.parts) {
+        area += (part.width() + clearance) * (part.height() + clearance) * part.quantity;
+        high += (std::max(part.width(), part.height()) + clearance) * part.quantity;
+    }
+    double low = area / (width - 2 * s.trim + clearance) + 2 * s.trim - clearance;
+    std::optional<Layout> best;
+    while (high - low > 1e-3 * high && std::chrono::steady_clock::now() < deadline) {
+        PackProblem on = problem;  // one board of the height halfway
+        on.strip = false;
+        on.boards = {problem.boards[0]};
+        on.boards[0].height = (low + high) / 2;
+        on.boards[0].count = 1;
+        std::optional<Layout> found;
+        eachRun(on, deadline, false, [&](Layout&& layout) {
+            found = std::move(layout);
+            return false;  // one layout at this height is enough
+        });
+        if (!found) {
+            low = on.boards[0].height;
+            continue;
+        }
+        high = usedHeight(*found, s);
+        found->stripHeight = found->sheets[0].height = high;
+        found->sheetArea = found->boundingArea = width * high;
+        best = std::move(found);
+    }
+    return best;
 }
 
 }  // namespace fabguide::material

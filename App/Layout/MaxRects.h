@@ -6,6 +6,7 @@
 #include "Layout/Pack.h"
 
 #include <chrono>
+#include <optional>
 
 namespace fabguide::material {
 
@@ -20,5 +21,11 @@ bool allRectangles(const PackProblem& problem);
 /// of all the parts left (Jylänki's global variant). The first run always completes. Throws PackingError
 /// naming a part the boards run out before in every run.
 Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline);
+
+/// Strip packing by MaxRects: the strip's height bisected between the parts' area over its width and every
+/// part stacked, each height tried by the runs above until one lays every part out; the lowest layout found
+/// by `deadline`, or nothing.
+std::optional<Layout> maxRectsStrip(const PackProblem& problem,
+                                    std::chrono::steady_clock::time_point deadline);
 
 }  // namespace fabguide::material

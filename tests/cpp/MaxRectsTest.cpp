@@ -116,3 +116,18 @@ TEST(MaxRects, PackKeepsTheBetterOfMaxRectsAndDockingAndLaysOutAShopJobWhole)
     expectValid(problem, layout);
     EXPECT_EQ(layout.sheets.size(), maxRects(problem, kNoDeadline).sheets.size());
 }
+
+TEST(MaxRects, AStripOfAPerfectPackingIsAsLowAsItsArea)
+{
+    PackProblem problem;
+    problem.strip = true;
+    problem.boards.push_back({"strip", "", 100, 0, 0, 1});
+    problem.parts = {rectangularPart("a", 60, 40), rectangularPart("b", 40, 60),
+                     rectangularPart("c", 30, 20, 2)};
+    const auto layout = maxRectsStrip(problem, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+    ASSERT_TRUE(layout);
+    EXPECT_NEAR(layout->stripHeight, 60, 60e-3);  // the bisection stops within 0.1 % of the height
+    PackProblem board = problem;
+    board.boards[0].height = layout->stripHeight;
+    expectValid(board, *layout);
+}
