@@ -354,8 +354,8 @@ void checkSatisfied(const Design& design)
     std::string names;
     for (size_t k = 0; k < broken.size() && k < 5; ++k)
         names += (k ? "; " : "") + broken[k];
-    throw FormatError("the design does not satisfy its own constraints: " + names +
-                      (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
+    throw ConstraintError("the design does not satisfy its own constraints: " + names +
+                          (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "Design/Design.h"
 #include "Design/MinWastage.h"
+#include "IO/Json.h"
 #include "Layout/Pack.h"
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,12 @@ struct FlatpackDesign {
     material::Design design;
     std::vector<material::MasterBoard> boards;
     material::PackSettings settings;
+};
+
+/// A design that does not satisfy its own constraints (the message names them): a FormatError the caller may
+/// answer by moving the boards (thesis 5.3.5.2).
+struct ConstraintError : FormatError {
+    using FormatError::FormatError;
 };
 
 /// Whether a design read must already satisfy its constraints.

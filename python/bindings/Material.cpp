@@ -1,6 +1,7 @@
 // Bindings of the flat-pack layout (thesis ch. 5): problems and layouts are the dicts of docs/formats.md.
 #include "Bindings.h"
 #include "IO/CutSheetFiles.h"
+#include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 #include "Json.h"
@@ -99,7 +100,8 @@ std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::o
 
 void bindMaterial(py::module_& m)
 {
-    py::register_exception<io::FormatError>(m, "FormatError", PyExc_ValueError);
+    const auto formatError = py::register_exception<io::FormatError>(m, "FormatError", PyExc_ValueError);
+    py::register_exception<io::ConstraintError>(m, "ConstraintError", formatError.ptr());
     py::register_exception<material::PackingError>(m, "PackingError", PyExc_RuntimeError);
     m.def(
         "pack", &pack, py::arg("problem"), py::arg("iterations") = -1, py::arg("time_limit") = 60.0,

@@ -245,6 +245,8 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
     doc.recompute()
     assert obj.Error and obj.Status.startswith("Constraints broken:")
+    with pytest.raises(fabguide_core.ConstraintError, match="does not satisfy its own constraints: a is 300"):
+        fabguide_core.lay_out_design(design.flatpack(obj))  # a FormatError of its own kind, told apart by type
 
 
 @pytest.fixture

@@ -337,12 +337,10 @@ def adopt(obj, edited, parts, start):
 
 def lay_out_satisfied(obj, edited, note):
     """The layout; when the boards break a constraint (one just added), they first move the least so that every
-    constraint holds (thesis 5.3.5.2 with nothing to keep). Raises FormatError when they cannot."""
+    constraint holds (thesis 5.3.5.2 with nothing to keep). Raises ConstraintError when they cannot."""
     try:
         return fabguide_core.lay_out_design(edited), note
-    except fabguide_core.FormatError as error:
-        if "does not satisfy its own constraints" not in str(error):
-            raise
+    except fabguide_core.ConstraintError:
         satisfied = fabguide_core.satisfy_design(edited)
         if not satisfied["solved"]:
             raise
