@@ -256,9 +256,15 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
         const std::string grain = part.text("grain");
         const char* axes[] = {"x", "y", "z"};
         const auto axis = std::find(std::begin(axes), std::end(axes), grain);
-        if (grain != "free" && (axis == std::end(axes) || axis - std::begin(axes) == board.normal))
-            throw FormatError(part.pathOf("grain") +
-                              ": must be \"free\" or an axis in the board's plane, got \"" + grain + "\"");
+        const std::string face = std::string(axes[board.normal == 0 ? 1 : 0]) + " or " +
+                                 axes[board.normal == 2 ? 1 : 2];  // the axes in the board's plane
+        if (axis != std::end(axes) && axis - std::begin(axes) == board.normal)
+            throw FormatError(part.pathOf("grain") + ": \"" + grain +
+                              "\" runs across the board, through its " + show(board.size[board.normal]) +
+                              " mm thickness; choose an axis of its face (" + face + ") or \"free\"");
+        if (grain != "free" && axis == std::end(axes))
+            throw FormatError(part.pathOf("grain") + ": must be \"free\" or an axis of the board's face (" +
+                              face + "), got \"" + grain + "\"");
         board.followsGrain = grain != "free";
         board.grainAxis = grain == "free" ? -1 : static_cast<int>(axis - std::begin(axes));
     }

@@ -84,7 +84,8 @@ def test_grain_runs_along_the_axis_a_part_names(fabguide_cli, tmp_path):
     design["parts"][0]["grain"] = "w"
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "bad", "--time-limit", "1")
-    assert run.returncode == 1 and 'parts[0].grain: must be "free" or an axis in the board\'s plane' in run.stderr
+    assert run.returncode == 1 and 'parts[0].grain: must be "free" or an axis of the board\'s face (y or z), got "w"' \
+        in run.stderr
 
 
 def test_offcuts_of_one_job_are_used_before_new_sheets_in_the_next(fabguide_cli, source_dir, tmp_path):

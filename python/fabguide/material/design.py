@@ -182,20 +182,9 @@ def parts_of(obj):
         c = cuboids.coordinates(box)
         part = {"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]}
         if getattr(box, "Grain", "Free") != "Free":
-            part["grain"] = grain_of(box, part["size"])
+            part["grain"] = box.Grain.lower()  # one across the board is refused by the core, by name
         parts.append(part)
     return parts
-
-
-def grain_of(box, size):
-    """The box's Grain as the format names it ("x"); refused when it runs across the board (the core's rule)."""
-    axis = GRAINS.index(box.Grain) - 1
-    face = cuboids.in_plane(size)
-    if axis not in face:
-        raise DesignError("box '{}': its Grain {} runs across the board, through its {:g} mm thickness; choose an "
-                          "axis of its face ({} or {}) or Free".format(box.Label, box.Grain, size[axis],
-                                                                       *(GRAINS[a + 1] for a in face)))
-    return "xyz"[axis]
 
 
 def constraint_dict(c):
@@ -284,10 +273,11 @@ def recompute(obj):
     try:
         laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
-        error = named(obj, str(error))
-        mark_constraints(obj, error)
-        obj.Status = "Constraints broken: {}".format(error)
-        raise DesignError("Design '{}': {}".format(obj.Label, error))
+        said = named(obj, str(error))
+        mark_constraints(obj, said)
+        obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
+                      else "Design '" + obj.Label + "': {}").format(said)
+        raise DesignError("Design '{}': {}".format(obj.Label, said))
     except fabguide_core.PackingError as error:
         if not same_boards:
             obj.Status = str(error)
@@ -311,10 +301,12 @@ def recompute(obj):
 
 def named(obj, message):
     """The core's field paths as the user knows them: "constraints[0].refs: ..." → "constraint 'same length'
-    refs: ..."."""
-    labels = [c.Label for c in obj.Group if is_constraint(c)]
-    return re.sub(r"constraints\[(\d+)\]\.?", lambda m: "constraint '{}' ".format(labels[int(m.group(1))])
-                  if int(m.group(1)) < len(labels) else m.group(0), message)
+    refs: ...", "parts[3].grain: ..." → "box 'shelf' grain: ..."."""
+    for field, kind, labels in (("constraints", "constraint", [c.Label for c in obj.Group if is_constraint(c)]),
+                                ("parts", "box", [b.Label for b in boxes(obj)])):
+        message = re.sub(field + r"\[(\d+)\]\.?", lambda m: "{} '{}' ".format(kind, labels[int(m.group(1))])
+                         if int(m.group(1)) < len(labels) else m.group(0), message)
+    return message
 
 
 def held(obj, corrected):
