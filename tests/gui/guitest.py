@@ -80,8 +80,14 @@ def screenshot(name):
     return path
 
 
-def view_image(name, width=1200, height=900):
-    """Render the active 3-D view into $FABGUIDE_SCREENSHOTS/name.png; returns the path."""
+REFERENCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference")
+TOLERANCE = 0.02  # mean difference of the channels, of their range, between a view and its reference
+
+
+def view_image(name, width=1200, height=900, compared=True):
+    """Render the active 3-D view into $FABGUIDE_SCREENSHOTS/name.png and, when `compared`, check it against its
+    reference image of this FreeCAD version (tests/gui/reference/<major.minor>/name.png; as freecad.gears'
+    visual tests do); FABGUIDE_UPDATE_REFERENCES=1 writes the reference instead. Returns the path."""
     path = _path(name)
     view = FreeCADGui.activeDocument().activeView()
     view.setAnimationEnabled(False)
@@ -89,7 +95,38 @@ def view_image(name, width=1200, height=900):
     view.saveImage(path, width, height, "White")
     if not os.path.isfile(path):
         raise RuntimeError("could not save 3-D view " + path)
+    if compared:
+        looks_like_its_reference(path, name)
     return path
+
+
+def looks_like_its_reference(path, name):
+    """Both images scaled to 160 × 120 (small shifts and antialiasing average out), their mean channel
+    difference at most TOLERANCE; AssertionError saying by how much otherwise."""
+    import shutil
+
+    from PySide import QtGui
+
+    reference = os.path.join(REFERENCES, ".".join(FreeCAD.Version()[:2]), name + ".png")
+    if os.environ.get("FABGUIDE_UPDATE_REFERENCES") == "1":
+        os.makedirs(os.path.dirname(reference), exist_ok=True)
+        shutil.copyfile(path, reference)
+        return
+    assert os.path.isfile(reference), "no reference image " + reference + " (FABGUIDE_UPDATE_REFERENCES=1 makes it)"
+
+    def small(file):
+        image = QtGui.QImage(file).scaled(160, 120, QtCore.Qt.IgnoreAspectRatio, QtCore.Qt.SmoothTransformation)
+        return image.convertToFormat(QtGui.QImage.Format_RGB32)
+
+    a, b = small(path), small(reference)
+    total = 0
+    for y in range(120):
+        for x in range(160):
+            p, q = a.pixel(x, y), b.pixel(x, y)
+            total += sum(abs((p >> shift & 255) - (q >> shift & 255)) for shift in (0, 8, 16))
+    difference = total / (160 * 120 * 3 * 255)
+    assert difference <= TOLERANCE, "{} differs from {} by {:.1%} (tolerance {:.0%})".format(
+        path, reference, difference, TOLERANCE)
 
 
 def with_file_dialog(name, path, command):
