@@ -20,9 +20,9 @@ def define(obj, name, group, doc, split=lambda text: [text]):
         texts, by_label, kept = [value] if isinstance(value, str) else list(value), boxes_by_label(obj.Document), []
         obj.removeProperty(name)
         add(obj, "App::PropertyLinkSubList", name, group, doc)
-        for text in (name for text in filter(None, texts) for name in split(text)):
+        for piece in (piece for text in filter(None, texts) for piece in split(text)):
             try:
-                kept.append(link(by_label, text, "{} of '{}'".format(name, obj.Label)))
+                kept.append(link(by_label, piece, "{} of '{}'".format(name, obj.Label)))
             except BrokenReference as error:
                 FreeCAD.Console.PrintWarning("{}; left out when opening the document\n".format(error))
         setattr(obj, name, kept)
