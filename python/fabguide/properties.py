@@ -4,10 +4,20 @@ object, which says a mistake in the model in one plain sentence."""
 import FreeCAD
 
 
+NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance")
+
+
 def add(obj, kind, name, group, doc, value=None, mode=0):
     """Adds property `name` if missing and sets `value` on creation (for an enumeration, the list of choices);
-    mode 1 = read-only, 2 = hidden."""
+    mode 1 = read-only, 2 = hidden. A number an older FabGuide saved as another kind of number (a Float now a
+    Distance) becomes `kind`, keeping its value (migration 2: lengths in units)."""
     if name in obj.PropertiesList:
+        was = obj.getTypeIdOfProperty(name)
+        if was == kind or was not in NUMBERS or kind not in NUMBERS:
+            return
+        kept = number(getattr(obj, name))
+        obj.removeProperty(name)
+        add(obj, kind, name, group, doc, kept, mode)
         return
     obj.addProperty(kind, name, group, doc)
     if value is not None:
@@ -33,17 +43,17 @@ class Stateless:
         return None
 
 
-def value(v):
+def number(v):
     """A property's number, whether a Quantity or a plain number."""
     return getattr(v, "Value", v)
 
 
 def more_than(limit):
-    return lambda obj, v: value(v) > limit, "greater than {:g}".format(limit)
+    return lambda obj, v: number(v) > limit, "greater than {:g}".format(limit)
 
 
 def at_least(limit, meaning=""):
-    return lambda obj, v: value(v) >= limit, "{:g}{} or more".format(limit, meaning)
+    return lambda obj, v: number(v) >= limit, "{:g}{} or more".format(limit, meaning)
 
 
 class Proxy(Stateless):

@@ -463,8 +463,25 @@ def test_a_range_refuses_a_min_above_its_max_as_it_is_typed(doc):
     span = design.add_constraint(obj, "range", "a's length", Refs=["a.size.x"], Min=250, Max=350)
     doc.recompute()
     span.Min = 400  # above Max: refused, the range stays as it was
-    assert (span.Min, span.Max) == (250, 350)
+    assert (span.Min.Value, span.Max.Value) == (250, 350)
     span.Max, span.Min = 500, 280  # Max first, then Min: both kept
-    assert (span.Min, span.Max) == (280, 500)
+    assert (span.Min.Value, span.Max.Value) == (280, 500)
     doc.recompute()
     assert not obj.Error and span.Status == design.SATISFIED, obj.Status
+
+
+def test_a_document_of_plain_numbers_opens_with_lengths(doc, tmp_path):
+    a, b, obj = two_boards(doc, 340)
+    span = design.add_constraint(obj, "range", "a's length", Refs=["a.size.x"], Min=250, Max=350)
+    span.removeProperty("Min")  # as FabGuide saved a range before its bounds were lengths
+    span.addProperty("App::PropertyFloat", "Min", "Constraint", "")
+    span.Min = 250.0
+    path = str(tmp_path / "old.FCStd")
+    doc.saveAs(path)
+    again = FreeCAD.openDocument(path)
+    try:
+        span = again.getObjectsByLabel("a's length")[0]
+        assert span.getTypeIdOfProperty("Min") == "App::PropertyDistance" and span.Min.Value == 250
+        assert design.constraint_dict(span)["min"] == 250 and design.constraint_dict(span)["max"] == 350
+    finally:
+        FreeCAD.closeDocument(again.Name)

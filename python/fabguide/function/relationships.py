@@ -96,11 +96,11 @@ class Geometric(Relationship):
         add(obj, "App::PropertyEnumeration", "Relation", "Geometric", "Left = or <= right + offset",
             ["Equal", "AtMost"])
         references.define(obj, "Right", "Geometric", "Quantities summed (may be empty)")
-        add(obj, "App::PropertyFloat", "Offset", "Geometric", "Added to the right side, mm")
+        add(obj, "App::PropertyDistance", "Offset", "Geometric", "Added to the right side")
 
     def fields(self, obj):
         return {"left": terms(obj, references.names(obj.Left)), "right": terms(obj, references.names(obj.Right)),
-                "relation": "equal" if obj.Relation == "Equal" else "at_most", "offset": obj.Offset}
+                "relation": "equal" if obj.Relation == "Equal" else "at_most", "offset": obj.Offset.Value}
 
 
 KINDS = {cls.KIND: cls for cls in (Cover, FitInside, Support, Flush, Geometric)}

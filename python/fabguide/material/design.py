@@ -69,8 +69,8 @@ class DesignConstraint(properties.Proxy):
     """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
     what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
     TYPE, NOUN = "FabGuide::DesignConstraint", "Constraint"
-    VALID = dict(Min=(lambda obj, v: obj.Kind != "range" or v <= obj.Max, "at most its Max"),
-                 Max=(lambda obj, v: obj.Kind != "range" or v >= obj.Min, "at least its Min"))
+    VALID = dict(Min=(lambda obj, v: obj.Kind != "range" or v.Value <= obj.Max.Value, "at most its Max"),
+                 Max=(lambda obj, v: obj.Kind != "range" or v.Value >= obj.Min.Value, "at least its Min"))
 
     def define(self, obj):
         add = properties.add
@@ -80,9 +80,11 @@ class DesignConstraint(properties.Proxy):
                           "sum (left side), fixed and range (one)")
         references.define(obj, "Rhs", "Constraint", "Right side of a sum")
         add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
-        add(obj, "App::PropertyFloat", "Value", "Constraint", "Fixed value (mm) or sum offset")
-        add(obj, "App::PropertyFloat", "Min", "Constraint", "Range: smallest value, mm", -10 * UNBOUNDED)
-        add(obj, "App::PropertyFloat", "Max", "Constraint", "Range: largest value, mm", 10 * UNBOUNDED)
+        add(obj, "App::PropertyDistance", "Value", "Constraint", "Fixed value or sum offset")
+        add(obj, "App::PropertyDistance", "Min", "Constraint", "Range: smallest value (beyond ±10⁸ m: none)",
+            -10 * UNBOUNDED)
+        add(obj, "App::PropertyDistance", "Max", "Constraint", "Range: largest value (beyond ±10⁸ m: none)",
+            10 * UNBOUNDED)
         references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
         add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
 
@@ -195,15 +197,15 @@ def constraint_dict(c):
     if c.Kind == "symmetric" and c.About:
         d["about"] = references.names(c.About)[0]
     if c.Kind == "sum":
-        d.update(lhs=refs, rhs=references.names(c.Rhs), offset=c.Value)
+        d.update(lhs=refs, rhs=references.names(c.Rhs), offset=c.Value.Value)
     if c.Kind in ("fixed", "range"):
         if len(refs) != 1:
             raise DesignError("constraint '{}': a {} constraint takes one reference".format(c.Label, c.Kind))
         d["ref"] = refs[0]
     if c.Kind == "fixed":
-        d["value"] = c.Value
+        d["value"] = c.Value.Value
     if c.Kind == "range":
-        d.update({key: value for key, value in (("min", c.Min), ("max", c.Max)) if abs(value) < UNBOUNDED})
+        d.update({key: value for key, value in (("min", c.Min.Value), ("max", c.Max.Value)) if abs(value) < UNBOUNDED})
     if c.Kind in ("ground", "coplanar", "snap"):
         d["parts"] = [p.Label for p in c.Parts]
     return d
