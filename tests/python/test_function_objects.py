@@ -170,10 +170,11 @@ def test_parts_are_kept_apart_and_parts_that_must_overlap_are_blamed(doc):
     assert mech.Status == "Solved" and mech.Blamed == []
     assert cuboids.coordinates(a)[1] == 98.5 and cuboids.coordinates(b)[0] == 98.5  # 1.5 mm each, exactly
     mech.Locks = [(a, "right")]
-    b.Placement.Base.x = 90  # the user pushes B into A, whose side is locked
+    b.Placement.Base.x = 90  # the user pushes B into A, whose side is locked: refused, B goes back
     doc.recompute()
-    assert mech.Status == "Conflict: lock: A.right, lock: B.left, no overlap: Part A, Part B", mech.Status
-    assert mech.Blamed == ["Part A", "Part B"]
+    assert mech.Status == ("Edit refused: lock: A.right, lock: B.left, no overlap: Part A, Part B cannot hold "
+                           "together; the boxes are as they were"), mech.Status
+    assert mech.Blamed == ["Part A", "Part B"] and cuboids.coordinates(b)[0] == 98.5
 
 
 def test_a_door_beyond_the_face_distance_takes_part_and_says_so(doc):
@@ -459,5 +460,6 @@ def test_a_length_typed_stays_a_length_or_is_refused_by_name_never_a_move(doc):
     left = cuboids.coordinates(lid)[0]
     lid.Length = width + 40  # the user types a length the fixed width refuses: not a 40 mm move of the lid
     doc.recompute()
-    assert mech.Status.startswith("Conflict: ") and "lock: Lid.left" in mech.Status, mech.Status
+    assert mech.Status.startswith("Edit refused: ") and "lock: Lid.left" in mech.Status, mech.Status
     assert "lock: Lid.right" in mech.Status and cuboids.coordinates(lid)[0] == left
+    assert lid.Length.Value == width and fixed.Status == "Satisfied"  # the model exactly as it was

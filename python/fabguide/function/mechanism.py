@@ -97,15 +97,20 @@ def model(obj, locks=()):
 
 
 def solve(obj):
-    """Solve once; write back the boxes and each relationship's Status. A conflict leaves the boxes as the
-    user has them and names the relationships (and edits) that cannot hold together."""
-    data = model(obj, edits(obj))
+    """Solve once; write back the boxes and each relationship's Status. A conflict names the relationships
+    (and locks) that cannot hold together; one the user's latest edit takes part in refuses the edit: the
+    boxes go back to the last solve, exactly."""
+    edited = edits(obj)
+    data = model(obj, edited)
     try:
         solved = fabguide_core.solve(data)
     except fabguide_core.FormatError as error:
         raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
     report = solved["report"]
     conflict = report["conflict"]
+    if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:
+        refuse(obj, report)
+        return solved
     by_name = {r["name"]: r for r in solved["relationships"]}
     for rel in members(obj, relationships.is_relationship):
         status = (satisfied(rel, report["notes"]) if report["solved"] else
@@ -132,6 +137,21 @@ def solve(obj):
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
+
+
+def refuse(obj, report):
+    """The user's edit cannot hold with the rest: every box back where the last solve left it, the parts that
+    would clash blamed (red), the relationships' statuses as they were."""
+    before = json.loads(obj.Solved)
+    for box in boxes(obj):
+        if box.Name in before and cuboids.set_coordinates(box, before[box.Name]):
+            box.recompute()
+            box.purgeTouched()
+    if obj.Blamed != report["parts"]:
+        obj.Blamed = report["parts"]
+    obj.Status = "Edit refused: {} cannot hold together; the boxes are as they were".format(
+        ", ".join(report["conflict"]))
+    FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, obj.Status))
 
 
 def unsolved(obj, error):
