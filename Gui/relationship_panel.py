@@ -18,7 +18,7 @@ BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
 
 class RelationshipPanel:
     def __init__(self, rel):
-        self.rel, self.coloured = rel, set()
+        self.rel, self.coloured, self.changes = rel, set(), []
         self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "RelationshipPanel.ui"))
         self.form.setWindowTitle(rel.Label)
         self.status, self.pairs = self.form.status, None
@@ -35,7 +35,9 @@ class RelationshipPanel:
     def fill(self):
         status = self.rel.Status or "Not solved yet"
         colour = "#b22222" if status.startswith("Conflict") else "#2e7d32"
-        self.status.setText("<b style='color:{}'>{}</b>".format(colour, status))
+        changed = "".join("<br>{}".format(c) for c in self.changes)
+        self.status.setText("<b style='color:{}'>{}</b>{}".format(
+            colour, status, "<br>The solve changed:" + changed if changed else ""))
         if self.pairs is not None:
             self.pairs.blockSignals(True)
             self.pairs.clear()
@@ -72,10 +74,13 @@ class RelationshipPanel:
         self.solve()
 
     def solve(self):
-        for m in self.rel.InList:
-            if mechanism.is_mechanism(m):
-                m.touch()
+        """Solves the mechanism again; the panel then lists what the solve changed."""
+        mechs = [m for m in self.rel.InList if mechanism.is_mechanism(m)]
+        for m in mechs:
+            m.Changes = []
+            m.touch()
         self.rel.Document.recompute()
+        self.changes = [c for m in mechs for c in m.Changes]
         self.fill()
 
     def colour(self, *args):
