@@ -2,8 +2,8 @@
 made from plain boxes with the commands (mechanism, hinge, configuration panel, cover), its faces coloured in
 the relationship panel, a conflict shown in red, undo, a box renamed and deleted, and export; screenshots of
 the 3-D view and panels."""
-# expects error: Part 'Lid001' has no boxes: add a Part::Box to its Cuboids
-# expects error: Joint 'Lid001 hinge': choose the Edge it turns about
+# expects error: Part 'Lid part' has no boxes: add a Part::Box to its Cuboids
+# expects error: Joint 'Lid hinge': choose the Edge it turns about
 import json
 import os
 import tempfile
@@ -170,7 +170,7 @@ def a_box_renamed_keeps_the_mechanism_and_a_box_deleted_marks_it():
     doc.removeObject(lid.Name)
     doc.recompute()
     doc.commitTransaction()
-    assert mech.Error == mech.Status == "Mechanism 'Mechanism': Part 'Lid001' has no boxes: add a Part::Box to " \
+    assert mech.Error == mech.Status == "Mechanism 'Mechanism': Part 'Lid part' has no boxes: add a Part::Box to " \
         "its Cuboids", mech.Status
     assert cover.Status == mechanism.STALE and mech.ViewObject.Proxy.getIcon().endswith("FabGuide_Error.svg")
     print("window: " + guitest.screenshot("function_box_deleted"))

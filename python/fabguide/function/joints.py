@@ -64,7 +64,8 @@ def create(doc, kind, part, edge=None, axis=None, base=None, label=None, pivots=
     cls = KINDS[kind]
     obj = doc.addObject("App::FeaturePython", cls.__name__)
     cls(obj)
-    obj.Label = label or "{} {}".format(part.Label, kind.replace("_", " "))
+    name = part.Label[:-len(" part")] if part.Label.endswith(" part") else part.Label
+    obj.Label = label or "{} {}".format(name, kind.replace("_", " "))  # "Lid hinge"
     obj.Part, obj.Base = part, base
     if edge is not None:
         obj.Edge = edge

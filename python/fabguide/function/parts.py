@@ -21,7 +21,7 @@ def create(doc, boxes, label=None, cavities=()):
     FunctionalPart(obj)
     obj.Cuboids = list(boxes)
     obj.Cavities = list(cavities)
-    obj.Label = label or boxes[0].Label
+    obj.Label = label or boxes[0].Label + " part"  # its box keeps its label: no FreeCAD "001" suffix
     return obj
 
 
