@@ -296,6 +296,26 @@ namespace {
 
 using Deadline = std::chrono::steady_clock::time_point;
 
+/// The orders MaxRects takes the units in, largest first by: longest side, area, perimeter, shortest side.
+enum class Order { LongestSide, Area, Perimeter, ShortestSide };
+
+/// What a part is sorted by in `order` (ties by the second).
+std::pair<double, double> orderKey(Order order, const PartSpec& p)
+{
+    const double w = p.width(), h = p.height();
+    switch (order) {
+        case Order::Area:
+            return {w * h, std::max(w, h)};
+        case Order::Perimeter:
+            return {w + h, w * h};
+        case Order::ShortestSide:
+            return {std::min(w, h), std::max(w, h)};
+        case Order::LongestSide:
+            break;
+    }
+    return {std::max(w, h), w * h};
+}
+
 /// Every MaxRects run on `problem` while the time lasts, each layout handed to `keep` (which returns false to
 /// stop); the first PackingError (boards ran out) of the runs that raised one, if any. The first run places
 /// each unit among the last kWindow sheets opened only, so it takes a time linear in the parts whatever the
@@ -306,23 +326,11 @@ std::optional<PackingError> eachRun(const PackProblem& problem, Deadline deadlin
     std::vector<int> units;  // a part index per unit of demand
     for (size_t i = 0; i < problem.parts.size(); ++i)
         units.insert(units.end(), problem.parts[i].quantity, static_cast<int>(i));
-    using Key = std::pair<double, double>;
-    const std::vector<std::function<Key(const PartSpec&)>> orders = {
-        [](const PartSpec& p) {
-            return Key{std::max(p.width(), p.height()), p.width() * p.height()};
-        },
-        [](const PartSpec& p) {
-            return Key{p.width() * p.height(), std::max(p.width(), p.height())};
-        },
-        [](const PartSpec& p) {
-            return Key{p.width() + p.height(), p.width() * p.height()};
-        },
-        [](const PartSpec& p) {
-            return Key{std::min(p.width(), p.height()), std::max(p.width(), p.height())};
-        }};
-    const auto sortBy = [&](const std::function<Key(const PartSpec&)>& key) {
-        std::stable_sort(units.begin(), units.end(),
-                         [&](int a, int b) { return key(problem.parts[a]) > key(problem.parts[b]); });
+    const auto sortBy = [&](Order order) {
+        std::vector<std::pair<double, double>> key;  // per part, computed once: sizes come from outlines
+        for (const PartSpec& part : problem.parts)
+            key.push_back(orderKey(order, part));
+        std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return key[a] > key[b]; });
     };
     std::optional<PackingError> ranOutFirst;
     const auto tried = [&](const std::function<Layout()>& run) {  // false: stop
@@ -335,18 +343,18 @@ std::optional<PackingError> eachRun(const PackProblem& problem, Deadline deadlin
         }
         return true;
     };
-    sortBy(orders[0]);
+    sortBy(Order::LongestSide);
     if (!tried([&] {
             return laidOut(problem, units, Rule::ShortSide, needed ? Deadline::max() : deadline, kWindow);
         }))
         return ranOutFirst;
-    for (const auto& key : orders) {
-        sortBy(key);
+    for (Order order : {Order::LongestSide, Order::Area, Order::Perimeter, Order::ShortestSide}) {
+        sortBy(order);
         for (Rule rule : {Rule::ShortSide, Rule::LongSide, Rule::Area, Rule::BottomLeft})
             if (!tried([&] { return laidOut(problem, units, rule, deadline, units.size()); }))
                 return ranOutFirst;
     }
-    sortBy(orders[1]);
+    sortBy(Order::Area);
     for (Rule rule : {Rule::ShortSide, Rule::Area})
         if (!tried([&] { return sheetBySheet(problem, units, rule, deadline); }))
             break;

@@ -53,7 +53,7 @@ def the_configurations_panel_shows_the_doors_stowed():
     QtGui.QApplication.processEvents()
     node = door.ViewObject.RootNode.getChild(0)
     assert abs(node.rotation.getValue().getValue()[3]) < 0.99, "the door is shown turned"
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric()
     print("screenshot: " + guitest.screenshot("function_configurations_panel"))
     print("3-D view: " + guitest.view_image("function_cabinet_doors_stowed"))
     Gui.ActiveDocument.resetEdit()
@@ -217,8 +217,7 @@ def the_crate_bed_folds_along_its_four_bar_motion():
     head = doc.getObjectsByLabel("headboard")[0]
     q = head.ViewObject.RootNode.getChild(0).rotation.getValue().getValue()
     assert 0.2 < abs(q[0]) < 0.6, q
-    Gui.activeDocument().activeView().viewRight()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric("Right")
     print("3-D view: " + guitest.view_image("function_crate_bed_half_folded"))
     Gui.ActiveDocument.resetEdit()
 

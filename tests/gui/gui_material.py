@@ -111,8 +111,7 @@ def mistakes_are_refused_or_said_in_one_sentence():
 
 
 def top_view_of_the_sheet():
-    Gui.activeDocument().activeView().viewTop()
-    Gui.SendMsgToActiveView("ViewFit")
+    guitest.isometric("Top")
     print("3-D view: " + guitest.view_image("material_layout_top"))
 
 

@@ -59,12 +59,12 @@ def told(command):
     return seen[0] if seen else None
 
 
-def isometric():
-    """The active 3-D view from the isometric direction, fitted, with no camera animation (on by default in 1.0: a
-    render right after viewIsometric would catch the camera half-way)."""
+def isometric(direction="Isometric"):
+    """The active 3-D view from a direction (Isometric, Right, Top, ...), fitted, with no camera animation (on by
+    default in 1.0: a render right after viewIsometric would catch the camera half-way)."""
     view = FreeCADGui.activeDocument().activeView()
     view.setAnimationEnabled(False)
-    view.viewIsometric()
+    getattr(view, "view" + direction)()
     view.fitAll()
     FreeCADGui.updateGui()
 
