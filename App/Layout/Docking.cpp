@@ -67,12 +67,8 @@ bool fitsOn(const RasterPart& part, const BoardStock& board)
 
 bool allowedOn(const RasterPart& part, int shape, const BoardStock& board)
 {
-    if (!ofThickness(part.thickness, board.thickness))
-        return false;
-    if (!part.followsGrain || board.grain == Grain::None)
-        return true;
-    const bool turned = part.rotations[shape] % 180 != 0;
-    return turned == (board.grain == Grain::AlongHeight);
+    return ofThickness(part.thickness, board.thickness) &&
+           grainAllows(part.followsGrain, part.rotations[shape], board.grain);
 }
 
 Docker::Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds)

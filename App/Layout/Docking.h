@@ -38,6 +38,13 @@ inline bool ofThickness(double part, double board)
     return part == 0 || board == 0 || std::abs(part - board) <= 1e-6;
 }
 
+/// Whether a part turned by `rotation` degrees may lie so on a board of `grain`: any turn unless the part
+/// follows the grain of a board that has one (then 0°/180° along the width, 90°/270° along the height).
+inline bool grainAllows(bool followsGrain, int rotation, Grain grain)
+{
+    return !followsGrain || grain == Grain::None || (rotation % 180 != 0) == (grain == Grain::AlongHeight);
+}
+
 /// Whether shape `shape` of the part may be cut from the board: one of its thickness, any shape unless the
 /// part follows the grain of a board that has one (then 0°/180° along the width, 90°/270° along the height).
 bool allowedOn(const RasterPart& part, int shape, const BoardStock& board);

@@ -76,7 +76,7 @@ std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double
         return poses;
     for (int rotation : part.orientations) {
         const bool turned = rotation % 180 != 0;
-        if (part.followsGrain && board.grain != Grain::None && turned != (board.grain == Grain::AlongHeight))
+        if (!grainAllows(part.followsGrain, rotation, board.grain))
             continue;
         if (std::any_of(poses.begin(), poses.end(),
                         [&](const Pose& p) { return p.rotation % 180 == rotation % 180; }))
@@ -131,18 +131,25 @@ void occupy(Bin& bin, const Rect& placed)
     bin.usedHeight = std::max(bin.usedHeight, placed.y + placed.h);
 }
 
+/// The free rectangle of a fresh sheet: the board less its trim, with one clearance added back at the far
+/// edges (every pose carries its clearance on those sides).
+Rect usable(const MasterBoard& board, const PackSettings& s)
+{
+    const double clearance = s.kerf + s.spacing;
+    return {0, 0, board.width - 2 * s.trim + clearance, board.height - 2 * s.trim + clearance};
+}
+
 /// The kind of sheet to open for `part`: the first listed of the least cost left that it fits on; -1: none.
 int kindFor(const PackProblem& problem, const PartSpec& part, const std::vector<int>& left)
 {
     const PackSettings& s = problem.settings;
-    const double clearance = s.kerf + s.spacing;
     int kind = -1;
     for (size_t k = 0; k < problem.boards.size(); ++k) {
         const MasterBoard& board = problem.boards[k];
-        const std::vector<Pose> poses = posesOn(part, board, clearance);
+        const Rect sheet = usable(board, s);
+        const std::vector<Pose> poses = posesOn(part, board, s.kerf + s.spacing);
         const bool fits = std::any_of(poses.begin(), poses.end(), [&](const Pose& p) {
-            return p.w <= board.width - 2 * s.trim + clearance + kHair &&
-                   p.h <= board.height - 2 * s.trim + clearance + kHair;
+            return p.w <= sheet.w + kHair && p.h <= sheet.h + kHair;
         });
         if (left[k] != 0 && fits && (kind < 0 || board.cost < problem.boards[kind].cost))
             kind = static_cast<int>(k);
@@ -161,13 +168,10 @@ PackingError ranOut(const PartSpec& part, size_t more)
 void open(const PackProblem& problem, int kind, std::vector<int>& left, std::vector<Bin>& bins,
           Layout& layout)
 {
-    const PackSettings& s = problem.settings;
-    const double clearance = s.kerf + s.spacing;
     const MasterBoard& board = problem.boards[kind];
     if (left[kind] > 0)
         --left[kind];
-    bins.push_back(
-        {kind, {{0, 0, board.width - 2 * s.trim + clearance, board.height - 2 * s.trim + clearance}}});
+    bins.push_back({kind, {usable(board, problem.settings)}});
     MasterBoard sheet = board;
     sheet.count = 1;
     layout.sheets.push_back(sheet);
@@ -195,10 +199,7 @@ void finish(const PackProblem& problem, const std::vector<Bin>& bins, Layout& la
 }
 
 /// The time limit ran out before a layout was complete.
-struct PastDeadline {
-    std::string part;
-    size_t more = 0;
-};
+struct PastDeadline {};
 
 /// Sheets a unit may go on in the first run: the last ones opened.
 constexpr size_t kWindow = 32;
@@ -217,7 +218,7 @@ Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule r
     for (size_t u = 0; u < units.size(); ++u) {
         const PartSpec& part = problem.parts[units[u]];
         if (std::chrono::steady_clock::now() > deadline)
-            throw PastDeadline{part.id, units.size() - u - 1};
+            throw PastDeadline{};
         Choice best;
         for (size_t b = bins.size() > window ? bins.size() - window : 0; b < bins.size(); ++b)
             bestIn(rule, bins[b], static_cast<int>(b), posesOn(part, problem.boards[bins[b].kind], clearance),
@@ -260,7 +261,7 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
         open(problem, kind, left, bins, layout);
         for (;;) {
             if (std::chrono::steady_clock::now() > deadline)
-                throw PastDeadline{problem.parts[*largest].id, units.size() - done};
+                throw PastDeadline{};
             Choice best;
             int chosen = -1;
             for (int p : order) {
@@ -282,17 +283,6 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
     finish(problem, bins, layout);
     return layout;
 }
-
-}  // namespace
-
-bool allRectangles(const PackProblem& problem)
-{
-    return std::all_of(problem.parts.begin(), problem.parts.end(), [](const PartSpec& p) {
-        return p.outline.holes.empty() && geometry::isRectangle(p.outline);
-    });
-}
-
-namespace {
 
 using Deadline = std::chrono::steady_clock::time_point;
 
@@ -372,6 +362,13 @@ double usedHeight(const Layout& layout, const PackSettings& s)
 
 }  // namespace
 
+bool allRectangles(const PackProblem& problem)
+{
+    return std::all_of(problem.parts.begin(), problem.parts.end(), [](const PartSpec& p) {
+        return p.outline.holes.empty() && geometry::isRectangle(p.outline);
+    });
+}
+
 Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline)
 {
     std::optional<Layout> best;
@@ -396,13 +393,13 @@ std::optional<Layout> maxRectsStrip(const PackProblem& problem,
         high += (std::max(part.width(), part.height()) + clearance) * part.quantity;
     }
     double low = area / (width - 2 * s.trim + clearance) + 2 * s.trim - clearance;
+    PackProblem on = problem;  // one board, of the height halfway at each step
+    on.strip = false;
+    on.boards = {problem.boards[0]};
+    on.boards[0].count = 1;
     std::optional<Layout> best;
     while (high - low > 1e-3 * high && std::chrono::steady_clock::now() < deadline) {
-        PackProblem on = problem;  // one board of the height halfway
-        on.strip = false;
-        on.boards = {problem.boards[0]};
         on.boards[0].height = (low + high) / 2;
-        on.boards[0].count = 1;
         std::optional<Layout> found;
         eachRun(on, deadline, false, [&](Layout&& layout) {
             found = std::move(layout);
