@@ -76,8 +76,7 @@ class RelationshipPanel:
     def solve(self):
         """Solves the mechanism again; the panel then lists what the solve changed."""
         mechs = [m for m in self.rel.InList if mechanism.is_mechanism(m)]
-        for m in mechs:
-            m.Changes = []
+        for m in mechs:  # its solve writes its Changes, an empty list when it changed nothing
             m.touch()
         self.rel.Document.recompute()
         self.changes = [c for m in mechs for c in m.Changes]

@@ -42,6 +42,16 @@ def set_coordinates(box, values, tolerance=1e-9):
     return True
 
 
+def place(box, values):
+    """set_coordinates, and when the box changed its shape at once (within the recompute that moved it), not
+    marked touched; returns whether it changed."""
+    if not set_coordinates(box, values):
+        return False
+    box.recompute()
+    box.purgeTouched()
+    return True
+
+
 def change(label, before, after, tolerance=1e-6):
     """What a solve did to a box, [left, right, near, far, bottom, top] `before` → `after`, as the user reads
     it: "Lid: Length 120 → 115 mm, moved -2.5 mm along x"; "" when nothing changed."""

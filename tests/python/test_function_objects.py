@@ -463,3 +463,15 @@ def test_a_length_typed_stays_a_length_or_is_refused_by_name_never_a_move(doc):
     assert mech.Status.startswith("Edit refused: ") and "lock: Lid.left" in mech.Status, mech.Status
     assert "lock: Lid.right" in mech.Status and cuboids.coordinates(lid)[0] == left
     assert lid.Length.Value == width and fixed.Status == "Satisfied"  # the model exactly as it was
+
+
+def test_a_solve_that_changes_nothing_lists_no_changes(doc):
+    mech, body, lid, cover = clamshell(doc)
+    body.Length = 80
+    doc.recompute()
+    assert mech.Changes  # the lid followed
+    narrow = relationships.create(doc, "geometric", "Top 40 wide", Left=[(lid, "width")], Offset=40)
+    mech.Group = mech.Group + [narrow]
+    mech.Locks = [(body, "left"), (body, "right")]
+    doc.recompute()
+    assert mech.Status.startswith("Conflict: ") and mech.Changes == []  # nothing written back

@@ -110,6 +110,7 @@ def solve(obj):
     conflict = report["conflict"]
     if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:
         refuse(obj, report)
+        say_changes(obj, [])
         return solved
     by_name = {r["name"]: r for r in solved["relationships"]}
     for rel in members(obj, relationships.is_relationship):
@@ -128,15 +129,21 @@ def solve(obj):
         FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
         for note in report.get("notes", []):
             FreeCAD.Console.PrintWarning("  {}\n".format(note))
+        say_changes(obj, [])
         return solved
-    changes = write_back(obj, solved)
+    say_changes(obj, write_back(obj, solved))
+    place_pivots(obj, solved)
+    obj.Status = "Solved"
+    return solved
+
+
+def say_changes(obj, changes):
+    """The mechanism's Changes, what this solve did to the boxes (nothing when it wrote none back), also in the
+    report view."""
     if obj.Changes != changes:
         obj.Changes = changes
     for change in changes:
         FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
-    place_pivots(obj, solved)
-    obj.Status = "Solved"
-    return solved
 
 
 def refuse(obj, report):
@@ -144,9 +151,8 @@ def refuse(obj, report):
     would clash blamed (red), the relationships' statuses as they were."""
     before = json.loads(obj.Solved)
     for box in boxes(obj):
-        if box.Name in before and cuboids.set_coordinates(box, before[box.Name]):
-            box.recompute()
-            box.purgeTouched()
+        if box.Name in before:
+            cuboids.place(box, before[box.Name])
     if obj.Blamed != report["parts"]:
         obj.Blamed = report["parts"]
     obj.Status = "Edit refused: {} cannot hold together; the boxes are as they were".format(
@@ -195,9 +201,7 @@ def write_back(obj, solved):
         c = by_label[box.Label]
         values = [round(v, 7) for a in range(3) for v in (c["min"][a], c["max"][a])]  # IPM noise off
         before = cuboids.coordinates(box)
-        if cuboids.set_coordinates(box, values):
-            box.recompute()  # its shape now, within this recompute
-            box.purgeTouched()
+        if cuboids.place(box, values):
             changes.append(cuboids.change(box.Label, before, values))
         after[box.Name] = values
     obj.Solved = json.dumps(after)

@@ -373,10 +373,7 @@ def write_parts(obj, parts, start=None):
     by_id = {p["id"]: p for p in parts}
     for box in boxes(obj):
         p = by_id[box.Label]
-        values = [round(v, 9) for a in range(3) for v in (p["position"][a], p["position"][a] + p["size"][a])]
-        if cuboids.set_coordinates(box, values):
-            box.recompute()
-            box.purgeTouched()
+        cuboids.place(box, [round(v, 9) for v in corners(p)])
     before, after = centres(start["parts"]), centres(parts)
     for v, was in zip(inner_volumes(obj), start["inner_volumes"]):
         on = was["on"]
@@ -384,6 +381,11 @@ def write_parts(obj, parts, start=None):
         if (v.Placement.Base - at).Length > 1e-9:
             v.Placement = FreeCAD.Placement(at, FreeCAD.Rotation())
             v.purgeTouched()
+
+
+def corners(part):
+    """A format part's [left, right, near, far, bottom, top], as cuboids.coordinates has a box's."""
+    return [v for a in range(3) for v in (part["position"][a], part["position"][a] + part["size"][a])]
 
 
 def centres(parts):
@@ -395,8 +397,7 @@ def saying_changes(obj, start=None):
     """What the block does to the boards (from `start`, the format's parts, if given), in the design's Changes
     and the report view (cuboids.change)."""
     try:
-        before = ({p["id"]: [v for a in range(3) for v in (p["position"][a], p["position"][a] + p["size"][a])]
-                   for p in start} if start else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
+        before = ({p["id"]: corners(p) for p in start} if start else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
     except cuboids.CuboidError:  # a rotated box: the recompute says so
         before = {}
     try:
