@@ -20,6 +20,22 @@ def close_panel(doc):
         FreeCADGui.Control.closeDialog()
 
 
+def quantity_box(unit, largest):
+    """A narrow unit-aware spin box (the joint's name needs the room in a 300 px combo view): it takes what
+    FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in the user's units."""
+    box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
+    box.setProperty("unit", unit)
+    box.setProperty("minimum", -largest)
+    box.setProperty("maximum", largest)
+    box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)
+    box.setMaximumWidth(box.fontMetrics().horizontalAdvance("-000.0 mm") + 12)
+    return box
+
+
+def value(box):
+    """A quantity spin box's value in mm or degrees."""
+    return float(box.property("rawValue"))
+
 
 class ConfigurationsPanel:
     def __init__(self, mech, shown=None):
@@ -39,23 +55,15 @@ class ConfigurationsPanel:
             self.table.item(row, 0).setFlags(QtCore.Qt.ItemIsEnabled)
             self.table.item(row, 0).setToolTip(joint.Label)
             moves = QtGui.QCheckBox()
-            angle, offset = QtGui.QDoubleSpinBox(), QtGui.QDoubleSpinBox()
-            angle.setRange(-360, 360)
-            offset.setRange(-1e5, 1e5)
-            angle.setSuffix("°")
-            offset.setSuffix(" mm")
-            for box in (angle, offset):  # narrow, so the joint's name has room in a 300 px combo view
-                box.setDecimals(1)
-                box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)
-                box.setMaximumWidth(box.fontMetrics().horizontalAdvance("-000.0 mm") + 8)
+            angle, offset = quantity_box("deg", 360), quantity_box("mm", 1e5)
             angle.setEnabled(joints.kind(joint) not in ("slide", "fixed"))
             offset.setEnabled(joints.slides(joint))
             moves.setEnabled(joints.moves(joint))
             for column, widget in ((1, moves), (2, angle), (3, offset)):
                 self.table.setCellWidget(row, column, widget)
             moves.toggled.connect(self.preview)
-            angle.valueChanged.connect(self.preview)
-            offset.valueChanged.connect(self.preview)
+            for box in (angle, offset):
+                box.valueChanged.connect(self.preview)
             self.moves.append(moves)
             self.angles.append(angle)
             self.offsets.append(offset)
@@ -83,14 +91,17 @@ class ConfigurationsPanel:
             for widget, value in ((self.moves[row], joint.Name in poses), (self.angles[row], angle),
                                   (self.offsets[row], offset)):
                 widget.blockSignals(True)
-                (widget.setChecked if isinstance(widget, QtGui.QCheckBox) else widget.setValue)(value)
+                if isinstance(widget, QtGui.QCheckBox):
+                    widget.setChecked(value)
+                else:
+                    widget.setProperty("rawValue", value)
                 widget.blockSignals(False)
         self.preview()
 
     def poses(self):
         """{joint name: (angle, offset, pole)} of the checked joints."""
         chosen = self.chosen()
-        return {j.Name: (self.angles[r].value(), self.offsets[r].value(),
+        return {j.Name: (value(self.angles[r]), value(self.offsets[r]),
                          configuration.pole(chosen, j) if chosen else j.BasePivot if joints.kind(j) == "double_pivot"
                          else FreeCAD.Vector())
                 for r, j in enumerate(self.joints) if self.moves[r].isChecked()}
@@ -115,11 +126,11 @@ class ConfigurationsPanel:
             self.play.setText("Stop")
 
     def step(self):
-        value = self.slider.value() + self.direction
-        if not 0 <= value <= 100:
+        position = self.slider.value() + self.direction
+        if not 0 <= position <= 100:
             self.direction = -self.direction
-            value = max(0, min(100, value))
-        self.slider.setValue(value)
+            position = max(0, min(100, position))
+        self.slider.setValue(position)
 
     def accept(self):
         self.close()
@@ -132,7 +143,7 @@ class ConfigurationsPanel:
             self.mech.Group = self.mech.Group + [chosen]
         chosen.Label = self.name.text() or chosen.Label
         poses = self.poses()
-        configuration.set_poses(chosen, [(j, self.angles[r].value(), self.offsets[r].value())
+        configuration.set_poses(chosen, [(j, value(self.angles[r]), value(self.offsets[r]))
                                          for r, j in enumerate(self.joints) if self.moves[r].isChecked()],
                                 [poses[j.Name][2] for r, j in enumerate(self.joints) if self.moves[r].isChecked()])
         self.mech.ShownConfiguration = chosen

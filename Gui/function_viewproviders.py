@@ -96,8 +96,14 @@ class ViewProviderJoint(ViewProvider):
         super().updateData(obj, prop)
         self.redraw()
 
-    def redraw(self):
-        points = axis_points(self.Object)
+    def redraw(self, motions=None):
+        """Draws the joint as modelled, or posed by motions {part label: Placement} (the Configurations preview):
+        each point moves with the part that carries it."""
+        import FreeCAD
+
+        motions = motions or {}
+        points = [motions.get(rider.Label, FreeCAD.Placement()).multVec(p) if rider is not None else p
+                  for p, rider in axis_points(self.Object)]
         if hasattr(self, "coordinates"):
             self.coordinates.point.setValues(0, len(points), [tuple(p) for p in points])
             self.coordinates.point.setNum(len(points))
@@ -129,24 +135,26 @@ class ViewProviderPrintable(ViewProvider):
 
 
 def axis_points(joint):
-    """Pairs of points of the lines that show a joint: the hinge's edge, the slide's axis through its part, the
-    double pivot's link, the fixed joint's hold."""
+    """Pairs of points of the lines that show a joint, each with the part that carries it (None: the ground):
+    the hinge's edge (points on it stay on it as the part turns), the slide's axis through its part, the double pivot's link (a pivot on each
+    part), the fixed joint's hold."""
     import FreeCAD
 
     points = []
     try:
+        part, base = joint.Part, joint.Base
         if joints.turns(joint) and joint.Edge:
             edge = joint.Edge[0].Shape.getElement(joint.Edge[1][0])
-            points += [edge.Vertexes[0].Point, edge.Vertexes[-1].Point]
-        if joints.slides(joint) and joint.Part and joint.Part.Cuboids:
-            box = joint.Part.Cuboids[0].Shape.BoundBox
+            points += [(edge.Vertexes[0].Point, part), (edge.Vertexes[-1].Point, part)]
+        if joints.slides(joint) and part and part.Cuboids:
+            box = part.Cuboids[0].Shape.BoundBox
             direction = FreeCAD.Vector(*[1 if joint.Axis == a else 0 for a in "xyz"])
             half = direction * (0.75 * max(box.XLength, box.YLength, box.ZLength))
-            points += [box.Center - half, box.Center + half]
+            points += [(box.Center - half, part), (box.Center + half, part)]
         if joints.kind(joint) == "double_pivot":
-            points += [joint.Pivot, joint.BasePivot]
-        if joints.kind(joint) == "fixed" and joint.Part and joint.Base:  # from the part to what holds it
-            points += [joint.Part.Cuboids[0].Shape.BoundBox.Center, joint.Base.Cuboids[0].Shape.BoundBox.Center]
+            points += [(joint.Pivot, part), (joint.BasePivot, base)]
+        if joints.kind(joint) == "fixed" and part and base:  # from the part to what holds it
+            points += [(part.Cuboids[0].Shape.BoundBox.Center, part), (base.Cuboids[0].Shape.BoundBox.Center, base)]
     except (AttributeError, IndexError, ValueError, ReferenceError):  # half-made or deleted input
         return []
     return points

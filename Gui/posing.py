@@ -22,7 +22,8 @@ def part_motions(model, mech, poses, fraction=1.0):
 
 
 class Poser:
-    """Adds a transform node in front of each box's scene; `show` sets them; `clear` removes them."""
+    """Adds a transform node in front of each box's scene; `show` sets them and draws the joints posed; `clear`
+    removes them and draws the joints as modelled."""
 
     def __init__(self, mech):
         from pivy import coin
@@ -34,6 +35,8 @@ class Poser:
                     node = coin.SoTransform()
                     box.ViewObject.RootNode.insertChild(node, 0)
                     self.nodes[box.Name] = (box, part, node)
+        self.joints = [j.ViewObject.Proxy for j in mechanism.members(mech, joints.is_joint)
+                       if j.ViewObject is not None and hasattr(j.ViewObject.Proxy, "redraw")]
 
     def show(self, poses, fraction=1.0):
         """Poses the boxes; a model the core cannot read stays as modelled, and the reason is returned."""
@@ -49,6 +52,8 @@ class Poser:
             m = motions.get(part.Label, FreeCAD.Placement())
             node.translation.setValue(tuple(m.Base))
             node.rotation.setValue(tuple(m.Rotation.Q))
+        for joint in self.joints:
+            joint.redraw(motions)
         return reason
 
     def clear(self):
@@ -57,4 +62,6 @@ class Poser:
                 box.ViewObject.RootNode.removeChild(node)
             except (ReferenceError, RuntimeError, AttributeError):  # deleted meanwhile
                 pass
-        self.nodes = {}
+        for joint in self.joints:
+            joint.redraw()
+        self.nodes, self.joints = {}, []

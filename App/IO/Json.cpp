@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace fabguide::io {
@@ -13,6 +14,14 @@ std::string show(double x)
     std::ostringstream out;
     out << x;
     return out.str();
+}
+
+std::string FormatError::field() const
+{
+    static const std::regex path(R"(([A-Za-z_]\w*(\[\d+\]|\.[A-Za-z_]\w*)*): [\s\S]*)");
+    std::smatch match;
+    const std::string message = what();
+    return std::regex_match(message, match, path) ? match[1].str() : "";
 }
 
 namespace {

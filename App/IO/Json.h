@@ -13,6 +13,8 @@ namespace fabguide::io {
 /// Malformed input: the message names the offending field, e.g. "parts[2].width: must be > 0".
 struct FormatError : std::runtime_error {
     using std::runtime_error::runtime_error;
+    /// The field path the message starts with ("parts[2].width"), or "" when it names none.
+    std::string field() const;
 };
 
 /// A number as people write it in messages: 0, -3, 0.25.

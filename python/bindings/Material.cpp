@@ -96,12 +96,33 @@ std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::o
     return texts;
 }
 
+/// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names.
+void bindFormatErrors(py::module_& m)
+{
+    static const py::exception<io::FormatError> formatError(m, "FormatError", PyExc_ValueError);
+    static const py::exception<io::ConstraintError> constraintError(m, "ConstraintError", formatError.ptr());
+    py::register_exception_translator([](std::exception_ptr thrown) {
+        const auto raise = [](const py::object& type, const io::FormatError& error) {
+            py::object raised = type(error.what());
+            raised.attr("field") = error.field();
+            PyErr_SetObject(type.ptr(), raised.ptr());
+        };
+        try {
+            if (thrown)
+                std::rethrow_exception(thrown);
+        } catch (const io::ConstraintError& error) {
+            raise(constraintError, error);
+        } catch (const io::FormatError& error) {
+            raise(formatError, error);
+        }
+    });
+}
+
 }  // namespace
 
 void bindMaterial(py::module_& m)
 {
-    const auto formatError = py::register_exception<io::FormatError>(m, "FormatError", PyExc_ValueError);
-    py::register_exception<io::ConstraintError>(m, "ConstraintError", formatError.ptr());
+    bindFormatErrors(m);
     py::register_exception<material::PackingError>(m, "PackingError", PyExc_RuntimeError);
     m.def(
         "pack", &pack, py::arg("problem"), py::arg("iterations") = -1, py::arg("time_limit") = 60.0,

@@ -107,6 +107,15 @@ TEST(PackFormat, ErrorsNameTheOffendingField)
     EXPECT_EQ(errorOf(json::array()), "document: must be a JSON object");
 }
 
+TEST(PackFormat, ErrorsCarryTheirFieldPath)
+{
+    EXPECT_EQ(io::FormatError("parts[0].orientations[1]: must be 0, 90, 180 or 270").field(),
+              "parts[0].orientations[1]");
+    EXPECT_EQ(io::FormatError("settings.kerf: must be at least 0,\ngot -1").field(), "settings.kerf");
+    EXPECT_EQ(io::FormatError("no configuration named 'open'").field(), "");
+    EXPECT_EQ(io::FormatError("body 'lid': a union failed").field(), "");
+}
+
 TEST(PackFormat, ReadsOrDatasetsStripInstances)
 {
     const json instance = json::parse(R"({"Name": "t", "Objects": [{"Length": 20, "Height": 20}],

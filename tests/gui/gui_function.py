@@ -88,7 +88,9 @@ def a_clamshell_from_plain_boxes_with_the_commands():
     panel = mech.ViewObject.Proxy.panel
     assert Gui.Control.activeDialog() and panel.choice.currentText() == "New configuration"
     panel.moves[0].setChecked(True)
-    panel.angles[0].setValue(180)
+    panel.angles[0].lineEdit().setText("360/2 °")  # typed as a quantity
+    QtGui.QApplication.processEvents()
+    assert abs(panel.angles[0].property("rawValue") - 180) < 1e-9, panel.angles[0].property("rawValue")
     panel.name.setText("Closed")
     assert not panel.offsets[0].isEnabled(), "a hinge has no offset"
     [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton) if b.text() in ("OK", "&OK")][0].click()
@@ -217,9 +219,18 @@ def the_crate_bed_folds_along_its_four_bar_motion():
     head = doc.getObjectsByLabel("headboard")[0]
     q = head.ViewObject.RootNode.getChild(0).rotation.getValue().getValue()
     assert 0.2 < abs(q[0]) < 0.6, q
+    modelled = (pivot.Pivot, pivot.BasePivot)
+
+    def drawn():
+        return [FreeCAD.Vector(pivot.ViewObject.Proxy.coordinates.point[k].getValue()) for k in (0, 1)]
+
+    link = drawn()
+    assert (link[0] - modelled[0]).Length > 1, "the link's end on the headboard moves with it"
+    assert abs((link[0] - link[1]).Length - (modelled[0] - modelled[1]).Length) < 1e-3, "the link stays rigid"
     guitest.isometric("Right")
     print("3-D view: " + guitest.view_image("function_crate_bed_half_folded"))
     Gui.ActiveDocument.resetEdit()
+    assert all((a - b).Length < 1e-3 for a, b in zip(drawn(), modelled)), "closed: the link is drawn as modelled"
 
 
 def a_double_pivot_from_two_picked_points():

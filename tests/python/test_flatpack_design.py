@@ -247,6 +247,9 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     assert obj.Error and obj.Status.startswith("Constraints broken:")
     with pytest.raises(fabguide_core.ConstraintError, match="does not satisfy its own constraints: a is 300"):
         fabguide_core.lay_out_design(design.flatpack(obj))  # a FormatError of its own kind, told apart by type
+    with pytest.raises(fabguide_core.FormatError) as raised:
+        fabguide_core.lay_out_design(dict(design.flatpack(obj), constraints=[{"name": "x", "type": "fixed"}]))
+    assert raised.value.field.startswith("constraints[0].")
 
 
 @pytest.fixture

@@ -6,6 +6,7 @@ import FreeCAD
 import Part
 import fabguide
 import fabguide_core
+import pytest
 from fabguide_gui import about, resources
 
 
@@ -72,9 +73,7 @@ def test_core_solves_a_works_like_model_from_python(source_dir):
                                    "faces": ["lid.top", "body.top"]})
     report = fabguide_core.solve(model)["report"]
     assert not report["solved"] and "lid top level with body top" in report["conflict"]
-    try:
+    with pytest.raises(fabguide_core.FormatError) as raised:  # a ValueError carrying the field it names
         fabguide_core.solve({"parts": [{"name": "a", "cuboids": []}]})
-    except ValueError as error:  # FormatError
-        assert "parts[0].cuboids: a part needs at least one cuboid" in str(error)
-    else:
-        raise AssertionError("malformed model accepted")
+    assert isinstance(raised.value, ValueError) and raised.value.field == "parts[0].cuboids"
+    assert "a part needs at least one cuboid" in str(raised.value)
