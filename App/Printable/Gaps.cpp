@@ -3,8 +3,13 @@
 #include "Function/Pose.h"
 #include "Printable/Motion.h"
 
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace fabguide::printable {
 
@@ -32,6 +37,81 @@ int modelledSide(const Model& m, int part, int c, int k, int side)
     return -1;
 }
 
+/// Whether a rigid motion turns (a translation or none does not).
+bool turns(const gp_Trsf& t)
+{
+    for (int r = 1; r <= 3; ++r)
+        for (int c = 1; c <= 3; ++c)
+            if (std::abs(t.Value(r, c) - (r == c ? 1 : 0)) > 1e-12)
+                return true;
+    return false;
+}
+
+/// The least step back of one side of box `a` (side, mm) that leaves box `b`, moved by `t` into a's frame,
+/// the gap away from it; {-1, 0} when it is that far already. The part of b inside a grown by the gap is
+/// found exactly (a Boolean common of two boxes); a side steps back to the gap from its nearest point.
+std::pair<int, double> leastStep(const Coordinates& a, const Coordinates& b, const gp_Trsf& t, double gap)
+{
+    Coordinates grown = a;
+    for (int i = 0; i < 6; ++i)
+        grown[i] += i % 2 ? gap : -gap;
+    Bnd_Box around, near;
+    around.Update(grown[0], grown[2], grown[4], grown[1], grown[3], grown[5]);
+    for (int corner = 0; corner < 8; ++corner)
+        near.Add(gp_Pnt(b[corner & 1], b[2 + (corner >> 1 & 1)], b[4 + (corner >> 2)]).Transformed(t));
+    if (around.IsOut(near))
+        return {-1, 0};
+    const TopoDS_Shape inside = BRepAlgoAPI_Common(box(grown), moved(box(b), t)).Shape();
+    if (volumeOf(inside) < 1e-9)
+        return {-1, 0};
+    Bnd_Box r;
+    BRepBndLib::AddOptimal(inside, r, false, false);
+    double lo[3], hi[3];
+    r.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    std::pair<int, double> least{-1, 0};
+    for (int side = 0; side < 6; ++side) {
+        const int axis = side / 2;
+        const double step = side % 2 ? a[side] - (lo[axis] - gap) : hi[axis] + gap - a[side];
+        if (least.first < 0 || step < least.second)
+            least = {side, step};
+    }
+    return least;
+}
+
+/// Near misses along the motions (4.5.3 between the poses): where a cuboid turning relative to another's
+/// passes within the gap of it (an ironing board's leg frame folding on its links grazes the board), the side
+/// of the one that steps (`steps`) that clears it with the least step backs off, if by at most a third of the
+/// cuboid; a hinge and its base are left to the hinge (clearHingeBases).
+void stepAlongMotions(const Model& m, double gap, const std::vector<int>& partOf,
+                      const std::function<bool(int, int)>& steps, std::vector<std::array<double, 6>>& out)
+{
+    auto hingedOn = [&](int p, int base) {
+        const int j = jointMoving(m, function::carrierOf(m, p));
+        return j >= 0 && m.joints[j].turns() && m.joints[j].base == base;
+    };
+    constexpr int kSamples = 64;  // twice the clearance check's
+    for (int k = 0; k < static_cast<int>(m.configurations.size()); ++k)
+        for (int s = 1; s <= kSamples; ++s) {
+            std::vector<gp_Trsf> motions;
+            for (size_t p = 0; p < m.parts.size(); ++p)
+                motions.push_back(partMotion(m, static_cast<int>(p), k, static_cast<double>(s) / kSamples));
+            for (size_t a = 0; a < m.cuboids.size(); ++a)
+                for (size_t b = 0; b < m.cuboids.size(); ++b) {
+                    const int pa = partOf[a], pb = partOf[b];
+                    if (!steps(static_cast<int>(a), static_cast<int>(b)) || m.cuboids[b].cavity() ||
+                        hingedOn(pa, pb) || hingedOn(pb, pa))
+                        continue;
+                    const gp_Trsf relative = motions[pa].Inverted() * motions[pb];
+                    if (!turns(relative))
+                        continue;
+                    const auto& x = m.cuboids[a].coordinates;
+                    const auto [side, step] = leastStep(x, m.cuboids[b].coordinates, relative, gap);
+                    if (side >= 0 && step <= (x[2 * (side / 2) + 1] - x[2 * (side / 2)]) / 3)
+                        out[a][side] = std::max(out[a][side], step);
+                }
+        }
+}
+
 }  // namespace
 
 std::vector<Coordinates> gapped(const Model& m, double gap)
@@ -47,6 +127,15 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
             bodyOf[p] = static_cast<int>(b);
     std::vector<std::array<double, 6>> steps(m.cuboids.size(), std::array<double, 6>{});
     const double hair = 1e-6;
+    // Of two cuboids of different bodies, a steps back from b: from a cavity, or when it moves and b stands
+    // still, or else the later one.
+    auto aSteps = [&](int a, int b) {
+        if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity() ||
+            bodyOf[partOf[a]] == bodyOf[partOf[b]])
+            return false;  // parts that print as one body (rigidBodies) keep no gap between them
+        return m.cuboids[b].cavity() ||
+               (standsStill(m, partOf[a]) != standsStill(m, partOf[b]) ? !standsStill(m, partOf[a]) : a > b);
+    };
     for (int k = -1; k < static_cast<int>(m.configurations.size()); ++k) {
         std::vector<Coordinates> posed(m.cuboids.size());
         for (size_t c = 0; c < m.cuboids.size(); ++c)
@@ -55,16 +144,9 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                     function::evaluate(m, function::posed(m, {static_cast<int>(c), static_cast<Side>(s)}, k));
         for (size_t a = 0; a < m.cuboids.size(); ++a)
             for (size_t b = 0; b < m.cuboids.size(); ++b) {
-                if (a == b || partOf[a] == partOf[b] || m.cuboids[a].cavity() ||
-                    bodyOf[partOf[a]] == bodyOf[partOf[b]])
-                    continue;  // parts that print as one body (rigidBodies) keep no gap between them
-                const Coordinates &ca = posed[a], &cb = posed[b];
-                const bool aSteps =
-                    m.cuboids[b].cavity() ||
-                    (standsStill(m, partOf[a]) != standsStill(m, partOf[b]) ? !standsStill(m, partOf[a])
-                                                                            : a > b);
-                if (!aSteps)
+                if (!aSteps(static_cast<int>(a), static_cast<int>(b)))
                     continue;
+                const Coordinates &ca = posed[a], &cb = posed[b];
                 for (int axis = 0; axis < 3; ++axis) {
                     bool overlaps = true;  // across the other two axes
                     for (int o = 0; o < 3; ++o)
@@ -92,6 +174,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                 }
             }
     }
+    stepAlongMotions(m, gap, partOf, aSteps, steps);
     std::vector<Coordinates> out;
     for (size_t c = 0; c < m.cuboids.size(); ++c) {
         Coordinates x = m.cuboids[c].coordinates;

@@ -51,7 +51,12 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
             near.Enlarge(g);
             if (near.IsOut(other))
                 continue;
-            shapes[b] = cut(shapes[b], pathRelative(m, k, a, b, grown));
+            std::vector<TopoDS_Shape> path = pathRelative(m, k, a, b, grown);
+            path.erase(std::remove_if(path.begin(), path.end(),
+                                      [&](const TopoDS_Shape& s) { return !touches(s, shapes[b]); }),
+                       path.end());
+            if (!path.empty())  // only the poses that come within the gap: fewer tools, a quicker cut
+                shapes[b] = cut(shapes[b], path);
         }
 }
 

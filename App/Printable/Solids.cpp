@@ -3,6 +3,7 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -36,6 +37,7 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
     Operation operation;
     operation.SetArguments(first);
     operation.SetTools(rest);
+    operation.SetRunParallel(true);
     operation.Build();
     if (operation.HasErrors()) {
         std::ostringstream report;
@@ -59,6 +61,12 @@ TopoDS_Shape box(const Coordinates& c)
 TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
     return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>({a, b}, "union");
+}
+
+bool touches(const TopoDS_Shape& a, const TopoDS_Shape& b)
+{
+    BRepExtrema_DistShapeShape d(a, b, Extrema_ExtFlag_MIN);
+    return d.IsDone() && d.NbSolution() > 0 && (d.InnerSolution() || d.Value() < 1e-9);
 }
 
 double volumeOf(const TopoDS_Shape& s)

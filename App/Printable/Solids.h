@@ -28,6 +28,9 @@ TopoDS_Shape box(const Coordinates& c);
 /// a united with b (b when a is null); std::runtime_error naming the failure, "try another --gap or --scale".
 TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b);
 
+/// Whether a and b share material or touch.
+bool touches(const TopoDS_Shape& a, const TopoDS_Shape& b);
+
 /// In mm³.
 double volumeOf(const TopoDS_Shape& s);
 

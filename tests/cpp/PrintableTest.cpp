@@ -69,6 +69,29 @@ TEST(Gaps, TheMovingPartStepsBackFromTheFaceItTouches)
     EXPECT_NEAR(distance(box(gapped[0]), box(gapped[1])), 0.4, 1e-9);
 }
 
+TEST(Gaps, APartTurningPastAnotherStepsBackWhereItWouldGrazeIt)
+{
+    // The flap's far end swings 0.1 to 0.3 mm past the wall's corner: 24 mm apart at either end of the swing.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "wall", "cuboids": [{"name": "wall", "min": [28.5, 28.5, 0], "max": [60, 60, 10]}]},
+                  {"name": "flap", "cuboids": [{"name": "flap", "min": [0, 0, 0], "max": [40, 4, 10]}]}],
+        "joints": [{"name": "flap hinge", "type": "hinge", "part": "flap", "edge": ["flap.left", "flap.near"]}],
+        "configurations": [{"name": "open", "poses": {"flap hinge": 90}}]})"));
+    auto least = [&](const std::vector<Coordinates>& at) {
+        double d = 1e9;
+        for (int s = 0; s <= 32; ++s)
+            d = std::min(d, distance(box(at[0]), moved(box(at[1]), partMotion(m, 1, 0, s / 32.0))));
+        return d;
+    };
+    const std::vector<Coordinates> modelled{m.cuboids[0].coordinates, m.cuboids[1].coordinates};
+    ASSERT_LT(least(modelled), 0.4);
+    const std::vector<Coordinates> at = gapped(m, 0.4);
+    EXPECT_EQ(at[0], modelled[0]);  // the wall stands still
+    EXPECT_GE(least(at), 0.4 - 1e-6);
+    EXPECT_GT(at[1][1], 39.5);  // the flap's far end stepped back less than half a millimetre
+}
+
 TEST(Sweeps, AShiftSweepsAPrismAndATurnAQuarterCylinder)
 {
     const TopoDS_Shape shifted = turnedThenShifted(box({0, 10, 0, 10, 0, 10}), gp_Ax1(), 0, gp_Vec(5, 0, 0));
