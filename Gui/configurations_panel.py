@@ -21,14 +21,13 @@ def close_panel(doc):
 
 
 def quantity_box(unit, largest):
-    """A narrow unit-aware spin box (the joint's name needs the room in a 300 px combo view): it takes what
-    FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in the user's units."""
+    """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
+    the user's units."""
     box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
     box.setProperty("unit", unit)
     box.setProperty("minimum", -largest)
     box.setProperty("maximum", largest)
-    box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)
-    box.setMaximumWidth(box.fontMetrics().horizontalAdvance("-000.0 mm") + 12)
+    box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)  # room for "-180.00 °" in a narrow combo view
     return box
 
 
@@ -45,32 +44,29 @@ class ConfigurationsPanel:
         self.poser = Poser(mech)
         self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "ConfigurationsPanel.ui"))
         self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Configurations.svg")))
-        for name in ("choice", "name", "table", "slider", "play", "status"):
+        for name in ("choice", "name", "slider", "play", "status"):
             setattr(self, name, getattr(self.form, name))
         self.choice.addItems([c.Label for c in self.configurations] + [NEW])
-        self.table.setRowCount(len(self.joints))
+        grid = self.form.poses
         self.moves, self.angles, self.offsets = [], [], []
-        for row, joint in enumerate(self.joints):
-            self.table.setItem(row, 0, QtGui.QTableWidgetItem(joint.Label))
-            self.table.item(row, 0).setFlags(QtCore.Qt.ItemIsEnabled)
-            self.table.item(row, 0).setToolTip(joint.Label)
-            moves = QtGui.QCheckBox()
+        for row, joint in enumerate(self.joints):  # the joint's name on a line, its angle and offset below it
+            moves = QtGui.QCheckBox(joint.Label)
+            moves.setToolTip(joint.Label)
             angle, offset = quantity_box("deg", 360), quantity_box("mm", 1e5)
-            angle.setEnabled(joints.kind(joint) not in ("slide", "fixed"))
-            offset.setEnabled(joints.slides(joint))
+            angle.setToolTip("Angle: its sign is the way the part swings")
+            offset.setToolTip("Offset along the slide")
             moves.setEnabled(joints.moves(joint))
-            for column, widget in ((1, moves), (2, angle), (3, offset)):
-                self.table.setCellWidget(row, column, widget)
-            moves.toggled.connect(self.preview)
-            for box in (angle, offset):
+            grid.addWidget(moves, 2 * row, 0, 1, 3)
+            for column, box, used in ((1, angle, joints.kind(joint) not in ("slide", "fixed")),
+                                      (2, offset, joints.slides(joint))):
+                box.setEnabled(used)
+                box.setVisible(used)
+                grid.addWidget(box, 2 * row + 1, column)
                 box.valueChanged.connect(self.preview)
+            moves.toggled.connect(self.preview)
             self.moves.append(moves)
             self.angles.append(angle)
             self.offsets.append(offset)
-        header = self.table.horizontalHeader()
-        header.setSectionResizeMode(0, QtGui.QHeaderView.Stretch)  # the joint's name takes what is left
-        for column in (1, 2, 3):
-            header.setSectionResizeMode(column, QtGui.QHeaderView.ResizeToContents)
         self.slider.valueChanged.connect(self.preview)
         self.play.clicked.connect(self.animate)
         self.timer = QtCore.QTimer()
