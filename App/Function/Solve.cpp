@@ -13,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 namespace fabguide::function {
 
@@ -362,6 +363,43 @@ void addNotes(std::vector<std::string>& notes, const std::string& name, const In
         notes.push_back(name + ": " + note);
 }
 
+/// Stage 1 of thesis 4.4, the least change of the coordinates, except that it does not collapse a part: the
+/// least change would rather thin a part than move it (a laptop's 8 mm screen made 1 mm thick so that its
+/// hinge edge moves 8 mm back; then no hinge fits it). A size it cuts to less than half of what the user drew
+/// is held as drawn, all such sizes at once or, when the relationships cannot have that, one at a time (the
+/// thinnest first), and the parts move instead.
+LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
+                              const Eigen::VectorXd* start)
+{
+    LeastChangeResult least = solveLeastChange(target, rows, start);
+    std::vector<std::pair<double, int>> collapsed;  // (size left / size drawn, the axis' low variable)
+    for (int i = 0; least.solved && i + 1 < target.size(); i += 2)
+        if (const double drawn = target[i + 1] - target[i], now = least.x[i + 1] - least.x[i]; now < drawn / 2)
+            collapsed.push_back({now / drawn, i});
+    std::sort(collapsed.begin(), collapsed.end());
+    auto held = [&](std::vector<LinearConstraint> more, int i) {
+        const double drawn = target[i + 1] - target[i];
+        more.push_back({{{i + 1, 1.0}, {i, -1.0}}, drawn, drawn, ""});
+        return more;
+    };
+    if (collapsed.empty())
+        return least;
+    std::vector<LinearConstraint> all = rows;
+    for (const auto& [left, i] : collapsed)
+        all = held(all, i);
+    if (LeastChangeResult kept = solveLeastChange(target, all, &least.x); kept.solved)
+        return kept;
+    std::vector<LinearConstraint> some = rows;
+    for (const auto& [left, i] : collapsed) {
+        std::vector<LinearConstraint> more = held(some, i);
+        if (LeastChangeResult kept = solveLeastChange(target, more, &least.x); kept.solved) {
+            some = std::move(more);
+            least = std::move(kept);
+        }
+    }
+    return least;
+}
+
 }  // namespace
 
 SolveResult solve(const Model& model)
@@ -371,7 +409,7 @@ SolveResult solve(const Model& model)
         for (int k = 0; k < 6; ++k)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
     const std::vector<LinearConstraint> relationships = constraints(model);
-    LeastChangeResult r = solveLeastChange(target, relationships);
+    LeastChangeResult r = leastChange(target, relationships, nullptr);
     // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
     // in that solution, the arrangement the relationships give; pairs the solve then brings together are
     // added round by round (constraint generation: the pairs stay few).
@@ -384,7 +422,7 @@ SolveResult solve(const Model& model)
         for (const Separation& s : separations)
             separate(rows, model, s);
         if (violation(r.x, rows) > 1e-6)
-            r = solveLeastChange(target, rows, &r.x);
+            r = leastChange(target, rows, &r.x);
         if (!r.solved || separateNear(arranged, withCoordinates(model, r.x), -1e-6, seen, separations) == 0)
             break;
     }

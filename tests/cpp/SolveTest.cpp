@@ -39,6 +39,27 @@ TEST(Solve, FlushSharesTheChangeBetweenBothParts)
     EXPECT_LE(r.violation, 1e-6);
 }
 
+TEST(Solve, APartIsMovedRatherThanThinnedToNothing)
+{
+    // A laptop drawn open: the 8 mm screen stands 8 mm in front of the base's back edge, so folded shut about
+    // its bottom edge it cannot cover the keyboard. The least change of the coordinates alone moves the front
+    // face 8 mm back and the back face 1 mm, leaving a 1 mm screen; it keeps its 8 mm and moves instead.
+    const json d = json::parse(R"({"format": "fabguide.workslike", "version": 1,
+      "parts": [{"name": "base", "cuboids": [{"name": "base", "min": [0, 0, 0], "max": [330, 230, 18]}]},
+                {"name": "screen", "cuboids": [{"name": "screen", "min": [0, 222, 18], "max": [330, 230, 238]}]}],
+      "joints": [{"name": "screen hinge", "type": "hinge", "part": "screen", "edge": ["screen.near", "screen.bottom"]}],
+      "configurations": [{"name": "closed", "poses": {"screen hinge": 90}}],
+      "relationships": [{"type": "cover", "name": "screen covers the keyboard", "configuration": "closed",
+                         "covering": ["screen"], "covered": ["base"]}],
+      "locks": ["base.left", "base.right", "base.near", "base.far", "base.bottom", "base.top"]})");
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    const auto& screen = r.model.cuboids[1];
+    EXPECT_NEAR(screen.at(Side::Far) - screen.at(Side::Near), 8, 1e-6);
+    EXPECT_NEAR(screen.at(Side::Near), 230, 1e-6);  // its hinge edge on the base's back edge
+    EXPECT_NEAR(screen.at(Side::Top) - screen.at(Side::Bottom), 230, 1e-6);  // as deep as the base, shut
+}
+
 TEST(Solve, ALockedCoordinateStaysAndTheRestFollows)
 {
     json d = boxWithLid();
