@@ -374,7 +374,8 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<L
     LeastChangeResult least = solveLeastChange(target, rows, start);
     std::vector<std::pair<double, int>> collapsed;  // (size left / size drawn, the axis' low variable)
     for (int i = 0; least.solved && i + 1 < target.size(); i += 2)
-        if (const double drawn = target[i + 1] - target[i], now = least.x[i + 1] - least.x[i]; now < drawn / 2)
+        if (const double drawn = target[i + 1] - target[i], now = least.x[i + 1] - least.x[i];
+            now < drawn / 2)
             collapsed.push_back({now / drawn, i});
     std::sort(collapsed.begin(), collapsed.end());
     auto held = [&](std::vector<LinearConstraint> more, int i) {
