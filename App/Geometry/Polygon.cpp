@@ -257,6 +257,12 @@ std::pair<int, int> selfCrossing(const Polygon& polygon)
     return {-1, -1};
 }
 
+bool contains(const Polygon& polygon, Point2 p)
+{
+    return ClipperLib::PointInPolygon({std::llround(p.x * kClipperScale), std::llround(p.y * kClipperScale)},
+                                      toClipper(polygon)) != 0;
+}
+
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
 {
     ClipperLib::Clipper clipper;

@@ -70,6 +70,9 @@ Outline unite(const Outline& outline, const std::vector<Polygon>& polygons);
 /// Throws std::runtime_error if it falls into pieces.
 Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons);
 
+/// Whether p lies inside the polygon (on its edge counts as either).
+bool contains(const Polygon& polygon, Point2 p);
+
 /// The parts of `polygon` inside `outline`.
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 

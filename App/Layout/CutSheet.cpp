@@ -29,39 +29,70 @@ geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem
 
 std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem)
 {
+    const PackSettings& s = problem.settings;
+    const size_t n = layout.placements.size();
+    std::vector<geometry::Outline> placed;
+    for (size_t k = 0; k < n; ++k)
+        placed.push_back(placedOutline(layout, problem, k));
+    // Part-in-hole: how many holes of other parts hold each part, and which holes hold one.
+    std::vector<int> depth(n);
+    std::vector<std::vector<bool>> holding(n);
+    for (size_t j = 0; j < n; ++j) {
+        holding[j].assign(placed[j].holes.size(), false);
+        for (size_t h = 0; h < placed[j].holes.size(); ++h)
+            for (size_t k = 0; k < n; ++k)
+                if (k != j && layout.placements[k].sheet == layout.placements[j].sheet &&
+                    geometry::contains(placed[j].holes[h], placed[k].outer.front())) {
+                    holding[j][h] = true;
+                    ++depth[k];
+                }
+    }
+    const int deepest = n ? *std::max_element(depth.begin(), depth.end()) : 0;
     std::vector<CutSheet> sheets;
     for (const MasterBoard& board : layout.sheets)
         sheets.push_back({board, {}, {}, {}, {}, {}});
-    std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
-    for (size_t k = 0; k < layout.placements.size(); ++k) {
-        const Placement& p = layout.placements[k];
-        const PartSpec& spec = problem.parts[p.part];
-        const geometry::Outline placed = placedOutline(layout, problem, k);
-        const double bit = problem.settings.dogbone;
-        const geometry::Outline path =
-            geometry::offset(bit > 0 ? geometry::dogboned(placed, bit) : placed, problem.settings.kerf / 2);
-        CutSheet& sheet = sheets[p.sheet];
-        sheet.cuts.insert(sheet.cuts.end(), path.holes.begin(), path.holes.end());
-        const PackSettings& s = problem.settings;
-        if (s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow) {
-            const std::vector<geometry::Polygon> pieces = geometry::withTabs(path.outer, 2, s.tabWidth);
-            sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
-        } else {
-            outers[p.sheet].push_back(path.outer);
+    // Inner cuts first: a part never drops out before its holes are cut, and a part in another's hole is cut
+    // before that hole (deepest first). With holding tabs, a hole that holds a part is tabbed too, so the
+    // ring round the part stays in the sheet until the part is cut.
+    for (int level = deepest; level >= 0; --level) {
+        std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
+        for (size_t k = 0; k < n; ++k) {
+            if (depth[k] != level)
+                continue;
+            const Placement& p = layout.placements[k];
+            const PartSpec& spec = problem.parts[p.part];
+            const geometry::Outline path = geometry::offset(
+                s.dogbone > 0 ? geometry::dogboned(placed[k], s.dogbone) : placed[k], s.kerf / 2);
+            CutSheet& sheet = sheets[p.sheet];
+            const bool tabs = s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow;
+            for (size_t h = 0; h < path.holes.size(); ++h) {
+                if (s.tabWidth > 0 && h < holding[k].size() && holding[k][h]) {
+                    const std::vector<geometry::Polygon> pieces =
+                        geometry::withTabs(path.holes[h], 2, s.tabWidth);
+                    sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
+                } else {
+                    sheet.cuts.push_back(path.holes[h]);
+                }
+            }
+            if (tabs) {
+                const std::vector<geometry::Polygon> pieces = geometry::withTabs(path.outer, 2, s.tabWidth);
+                sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
+            } else {
+                outers[p.sheet].push_back(path.outer);
+            }
+            sheet.labels.push_back(labelOf(spec.id, placed[k], p));
+            const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
+            for (const Drill& drill : spec.drills)
+                sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
+            for (const geometry::Polygon& mark : spec.marks) {
+                sheet.engraved.emplace_back();
+                for (const geometry::Point2& q : mark)
+                    sheet.engraved.back().push_back(move(q));
+            }
         }
-        sheet.labels.push_back(labelOf(spec.id, placed, p));
-        const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
-        for (const Drill& drill : spec.drills)
-            sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
-        for (const geometry::Polygon& mark : spec.marks) {
-            sheet.engraved.emplace_back();
-            for (const geometry::Point2& q : mark)
-                sheet.engraved.back().push_back(move(q));
-        }
+        for (size_t i = 0; i < sheets.size(); ++i)
+            sheets[i].cuts.insert(sheets[i].cuts.end(), outers[i].begin(), outers[i].end());
     }
-    // Inner cuts first: a part never drops out before its holes are cut.
-    for (size_t s = 0; s < sheets.size(); ++s)
-        sheets[s].cuts.insert(sheets[s].cuts.end(), outers[s].begin(), outers[s].end());
     return sheets;
 }
 

@@ -1,9 +1,11 @@
 #include "Layout/Pack.h"
 
+#include "Layout/HoleFill.h"
 #include "Layout/MaxRects.h"
 #include "Layout/Raster.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -238,7 +240,9 @@ bool better(const Layout& a, const Layout& b)
     return measure(a) < measure(b);
 }
 
-Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+namespace {
+
+Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
     const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -282,6 +286,35 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
             throw;
         return *exact;
     }
+}
+
+}  // namespace
+
+Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+{
+    const auto started = std::chrono::steady_clock::now();
+    checkSettings(problem);
+    std::vector<int> left;
+    for (const PartSpec& part : problem.parts)
+        left.push_back(part.quantity);
+    const std::vector<int> quantities = left;
+    const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left);
+    if (left == quantities)
+        return layOut(problem, search);
+    PackProblem rest = problem;  // the parts less the units laid in holes
+    rest.parts.clear();
+    std::vector<int> original;
+    for (size_t k = 0; k < problem.parts.size(); ++k)
+        if (left[k] > 0) {
+            rest.parts.push_back(problem.parts[k]);
+            rest.parts.back().quantity = left[k];
+            original.push_back(static_cast<int>(k));
+        }
+    OrderingSearchOptions options = search;
+    options.timeLimit =
+        std::max(0.0, search.timeLimit -
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    return withGuests(layOut(rest, options), problem, original, guests);
 }
 
 }  // namespace fabguide::material

@@ -9,6 +9,7 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "bench"))
 import layout_check  # noqa: E402
+import outline_check  # noqa: E402
 
 
 def pack(cli, *args):
@@ -115,6 +116,35 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     rows = list(csv.DictReader((tmp_path / "cutlist.csv").open()))
     assert sum(int(r["quantity"]) for r in rows) == len(layout["placements"])
     assert {r["material"] for r in rows} == {"birch plywood"} and {r["thickness"] for r in rows} == {"18"}
+
+
+def test_small_parts_are_cut_from_the_holes_of_big_ones(fabguide_cli, source_dir, tmp_path):
+    # Picture frames whose windows would be waste, a side table top with a cable hole, hexagon coasters with a
+    # hole, key tags: every coaster and tag is laid in a window or the cable hole, clear of its edge by the kerf
+    # and spacing (checked on the outlines), and the router cuts each of them before the hole around it.
+    import ezdxf
+
+    source = os.path.join(source_dir, "tests", "data", "holes-job.pack.json")
+    run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--time-limit", "2", "--dxf",
+               str(tmp_path / "dxf"))
+    assert run.returncode == 0, run.stderr
+    problem, layout = json.load(open(source)), json.load((tmp_path / "layout.json").open())
+    assert outline_check.problems(layout, problem) == []
+    parts = {p["id"]: p for p in problem["parts"]}
+    shapes = [(p["part"], p["board"], outline_check.placed(parts[p["part"]], p)) for p in layout["placements"]]
+    guests = [(part, board, rings) for part, board, rings in shapes if part in ("coaster", "key tag")]
+    assert len(guests) == 18
+    for part, board, rings in guests:
+        assert any(b == board and any(outline_check.inside(hole, rings[0][0]) for hole in host[1:])
+                   for _, b, host in shapes), part
+    assert len(layout["boards"]) == 2  # the second for a shelf only
+    for sheet in sorted((tmp_path / "dxf").glob("sheet-*.dxf")):
+        cuts = [[tuple(p[:2]) for p in e.get_points()]
+                for e in ezdxf.readfile(str(sheet)).modelspace().query("LWPOLYLINE[layer=='CUT']")]
+        for i, inner in enumerate(cuts):  # a cut comes after every cut it encloses
+            for j, outer in enumerate(cuts):
+                if i != j and all(outline_check.inside(outer, q) for q in inner[:3]):
+                    assert i < j, (sheet.name, i, j)
 
 
 def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_dir, tmp_path):
