@@ -206,9 +206,60 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
     return problem;
 }
 
+namespace {
+
+/// An ESICUP irregular strip instance as the sparrow nester distributes it ({"items": [{"demand",
+/// "allowed_orientations", "shape": {"type": "simple_polygon", "data"}}], "strip_height"}): its strip is
+/// `strip_height` high and its length is minimised. Turned a quarter clockwise as a whole, so that the strip's
+/// height is our strip's width and its length our height; the pieces keep their shapes and orientations.
+material::PackProblem readEsicupInstance(const nlohmann::json& document)
+{
+    const Fields root(document, "");
+    material::PackProblem problem;
+    problem.strip = true;
+    material::MasterBoard strip;
+    strip.name = "strip";
+    strip.width = root.positive("strip_height");
+    problem.boards.push_back(strip);
+    problem.settings.resolution = strip.width / 400;  // the grid as fine across any instance's strip
+    const nlohmann::json& items = root.array("items");
+    for (size_t i = 0; i < items.size(); ++i) {
+        const Fields item(items[i], at("items", i));
+        if (!item.has("shape") || !items[i]["shape"].is_object())
+            throw FormatError(item.pathOf("shape") + ": must be {\"type\": \"simple_polygon\", \"data\": [[x, y], ...]}");
+        const Fields shape(items[i]["shape"], item.pathOf("shape"));
+        if (shape.text("type") != "simple_polygon")
+            throw FormatError(shape.pathOf("type") + ": only \"simple_polygon\" shapes are read");
+        geometry::Polygon outline = readPolygon(shape.array("data"), shape.pathOf("data"), true);
+        for (geometry::Point2& q : outline)
+            q = {q.y, -q.x};  // a quarter clockwise: still counter-clockwise
+        material::PartSpec p{std::to_string(i), geometry::placed({outline, {}}, 0, 0, 0), 1, {}, {}, {}};
+        p.quantity = item.integer("demand", 1);
+        if (p.quantity < 1)
+            throw FormatError(item.pathOf("demand") + ": must be at least 1");
+        const nlohmann::json& turns = item.array("allowed_orientations", true);
+        for (size_t k = 0; k < turns.size(); ++k) {
+            const double degrees = turns[k].is_number() ? turns[k].get<double>() : -1;
+            if (degrees < 0 || degrees >= 360 || std::fmod(degrees, 90) != 0)
+                throw FormatError(at(item.pathOf("allowed_orientations"), k) + ": must be 0, 90, 180 or 270");
+            p.orientations.push_back(static_cast<int>(degrees));
+        }
+        if (p.orientations.empty())
+            p.orientations = {0};
+        problem.parts.push_back(p);
+    }
+    if (problem.parts.empty())
+        throw FormatError("items: no items to pack");
+    return problem;
+}
+
+}  // namespace
+
 material::PackProblem readStripInstance(const nlohmann::json& document)
 {
     checkNumbers(document);
+    if (document.is_object() && document.contains("items"))
+        return readEsicupInstance(document);
     const Fields root(document, "");
     const nlohmann::json& objects = root.array("Objects");
     if (objects.empty())

@@ -20,9 +20,11 @@ std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& docume
 /// Reads a `*.pack.json` document. Throws FormatError naming the offending field.
 material::PackProblem readPackProblem(const nlohmann::json& document);
 
-/// Reads an OR-Datasets rectangle instance ({"Objects": [{"Length", "Height"}], "Items": [{"Length",
-/// "Height", "Demand"}]}) as a strip-packing problem: width Objects[0].Length, grid resolution 1,
-/// part ids = 0-based item indices.
+/// Reads a strip-packing instance, part ids = 0-based item indices: an OR-Datasets rectangle instance
+/// ({"Objects": [{"Length", "Height"}], "Items": [{"Length", "Height", "Demand"}]}: width Objects[0].Length,
+/// grid resolution 1), or an ESICUP irregular one as sparrow distributes it ({"items": [{"demand",
+/// "allowed_orientations", "shape": {"type": "simple_polygon", "data"}}], "strip_height"}: turned a quarter
+/// clockwise, so its strip height is the width, 250 grid cells across).
 material::PackProblem readStripInstance(const nlohmann::json& document);
 
 /// How placements name their part: by the part's id, or (OR-Datasets) by its index in the input.

@@ -13,6 +13,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 BUILD = os.path.join(ROOT, "build")
 sys.path.insert(0, HERE)
+import esicup_benchmark  # noqa: E402
 import optimise_benchmark  # noqa: E402
 import printable_benchmark  # noqa: E402
 import shop_scale_benchmark  # noqa: E402
@@ -61,6 +62,8 @@ def main():
                 "", strip_benchmark.table(strip, 1.0), "",
                 shop_scale_benchmark.table([shop_scale_benchmark.run(BUILD, n, limit)
                                             for n, limit in shop_scale_benchmark.JOBS]), "",
+                esicup_benchmark.table([esicup_benchmark.run(BUILD, name, 60) for name in sorted(esicup_benchmark.RECORDS)],
+                                       60), "",
                 core_timings(), "", docking_study(), "",
                 optimise_benchmark.table(optimise_benchmark.run(BUILD), optimise_benchmark.suite(BUILD)), "",
                 workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",

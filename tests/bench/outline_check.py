@@ -35,11 +35,18 @@ def in_material(rings, point):
     return inside(rings[0], point) and not any(inside(hole, point) for hole in rings[1:])
 
 
+def cross(o, p, q):
+    return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
+
+
+def cross_through(a, b, c, d, eps=1e-9):
+    """Whether segments ab and cd cross, each passing through the other (touching does not count)."""
+    return cross(a, b, c) * cross(a, b, d) < -eps and cross(c, d, a) * cross(c, d, b) < -eps
+
+
 def segment_distance(a, b, c, d):
-    def cross(o, p, q):
-        return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
-    if (cross(a, b, c) > 0) != (cross(a, b, d) > 0) and (cross(c, d, a) > 0) != (cross(c, d, b) > 0):
-        return 0.0  # they cross
+    if cross_through(a, b, c, d, 0.0):
+        return 0.0
 
     def to_segment(p, s, t):
         dx, dy = t[0] - s[0], t[1] - s[1]
@@ -52,6 +59,15 @@ def segment_distance(a, b, c, d):
 def edges(rings):
     for ring in rings:
         yield from zip(ring, ring[1:] + ring[:1])
+
+
+def overlap(a, b, eps=1e-6):
+    """Whether two placed parts share material: a vertex of one deeper than eps in the other's material, or edges
+    crossing through each other (parts that only touch do not overlap)."""
+    def deep(rings, point):
+        return in_material(rings, point) and min(segment_distance(point, point, p, q) for p, q in edges(rings)) > eps
+    return any(deep(b, v) for v in a[0]) or any(deep(a, v) for v in b[0]) or \
+        any(cross_through(p, q, r, s) for p, q in edges(a) for r, s in edges(b))
 
 
 def bounds(rings):
@@ -85,7 +101,7 @@ def problems(layout, problem, eps=1e-6):
         if board_a != board_b or box_a[2] + clearance <= box_b[0] or box_b[2] + clearance <= box_a[0] or \
                 box_a[3] + clearance <= box_b[1] or box_b[3] + clearance <= box_a[1]:
             continue
-        if in_material(a, b[0][0]) or in_material(b, a[0][0]):
+        if overlap(a, b):
             found.append("placements {} and {} overlap".format(i, j))
             continue
         nearest = min(segment_distance(p, q, r, s) for p, q in edges(a) for r, s in edges(b))

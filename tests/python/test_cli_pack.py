@@ -118,6 +118,25 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     assert {r["material"] for r in rows} == {"birch plywood"} and {r["thickness"] for r in rows} == {"18"}
 
 
+def test_an_esicup_irregular_instance_packs_valid_on_its_outlines(fabguide_cli, benchmarks, tmp_path):
+    import esicup_benchmark
+
+    path = os.path.join(benchmarks, "packing", "esicup-irregular", "jakobs1.json")
+    out = tmp_path / "layout.json"
+    run = pack(fabguide_cli, "--strip", path, "-o", str(out), "--time-limit", "1")
+    assert run.returncode == 0, run.stderr
+    instance, layout = json.load(open(path)), json.load(out.open())
+    assert layout["boards"][0]["width"] == instance["strip_height"]  # turned a quarter: its height our width
+    assert outline_check.problems(layout, esicup_benchmark.as_problem(instance)) == []
+    pieces = sum(item["demand"] * esicup_benchmark.area(item["shape"]["data"]) for item in instance["items"])
+    assert pieces / (instance["strip_height"] * layout["strip_height"]) > 0.70  # the record is 0.8925
+    instance["items"][3]["shape"]["type"] = "multi_polygon"
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(instance))
+    run = pack(fabguide_cli, "--strip", str(bad), "-o", str(tmp_path / "x.json"))
+    assert run.returncode != 0 and "items[3].shape.type" in run.stderr
+
+
 def test_small_parts_are_cut_from_the_holes_of_big_ones(fabguide_cli, source_dir, tmp_path):
     # Picture frames whose windows would be waste, a side table top with a cable hole, hexagon coasters with a
     # hole, key tags: every coaster and tag is laid in a window or the cable hole, clear of its edge by the kerf
