@@ -219,10 +219,11 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
 
 /// The nearest other hinge whose axis runs beside this one's (parallel, overlapping along it) within `reach`:
 /// the distance between the axes and its name, or "" (two doors hinged on neighbouring edges).
-std::pair<double, std::string> nearestHinge(const Model& m, int j, const gp_Ax1& axis, int along,
-                                            double reach)
+/// The hinge whose axis runs nearest joint j's, parallel and overlapping along it, within `reach`: its
+/// distance and index (-1: none).
+std::pair<double, int> nearestHinge(const Model& m, int j, const gp_Ax1& axis, int along, double reach)
 {
-    std::pair<double, std::string> nearest{reach, ""};
+    std::pair<double, int> nearest{reach, -1};
     const Cuboid& own = m.cuboids[m.joints[j].edgeA.cuboid];
     for (size_t k = 0; k < m.joints.size(); ++k) {
         const Joint& other = m.joints[k];
@@ -238,9 +239,26 @@ std::pair<double, std::string> nearestHinge(const Model& m, int j, const gp_Ax1&
         gp_Vec apart(axis.Location(), beside.Location());
         apart.SetCoord(along + 1, 0);
         if (apart.Magnitude() < nearest.first)
-            nearest = {apart.Magnitude(), other.name};
+            nearest = {apart.Magnitude(), static_cast<int>(k)};
     }
     return nearest;
+}
+
+/// Hinge k's part gives way, along [lo, hi], round its own axis out to `radius` (another hinge's round parts
+/// and the gap: turning about that axis it stays clear of them) and round `bridges` (the other hinge's, grown
+/// by the gap) all along its turns.
+void giveWay(const Model& m, int k, int along, double lo, double hi, double radius,
+             const std::vector<Coordinates>& bridges, double g, std::vector<TopoDS_Shape>& shapes)
+{
+    const gp_Ax1 axis = hingeAxis(m, m.joints[k]);
+    std::vector<TopoDS_Shape> around{rod(axis.Location(), along, lo - g, hi + g, radius)};
+    for (size_t c = 0; c < m.configurations.size(); ++c)
+        if (const function::JointPose* pose = poseOf(m, k, static_cast<int>(c)))
+            for (const TopoDS_Shape& swept :
+                 turnedThenShifted(bridges, axis, -pose->angle * kPi / 180, {0, 0, 0}))
+                around.push_back(swept);
+    TopoDS_Shape& part = shapes[m.joints[k].part];
+    part = cut(part, around);
 }
 
 }  // namespace
@@ -274,19 +292,32 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             " mm of it, to hold the hinge's yokes: move the edge onto the part it turns on");
     const int base = function::partOf(m, onEdge);
     const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
-    const double lo = edge[2 * along], hi = edge[2 * along + 1];
+    double lo = edge[2 * along], hi = edge[2 * along + 1];
     Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
     // Round parts share the room with a neighbouring hinge's (a door hinged 4 mm from the next door's
-    // hinge): each takes half of it, less half the gap.
-    if (const auto [near, name] = nearestHinge(m, j, axis, along, 2 * r.outer + g); !name.empty()) {
-        const double least = kLeastPin + g + kLeastWall;
-        if ((near - g) / 2 < least)
-            throw std::invalid_argument(
-                "joint '" + joint.name + "': no room for its pin and yokes beside joint '" + name +
-                "': their axes are " + function::millimetres(near) + " mm apart as printed, and each needs " +
-                function::millimetres(least) + " mm round its axis with a " + function::millimetres(g) +
-                " mm gap between: move the parts apart, or print larger");
-        r = sized(near - g, g);
+    // hinge): each takes half of it, less half the gap. Where that leaves too little for a pin, the two
+    // hinges take the two halves of the length they share instead (the first joint the lower half), and each
+    // door gives way round its own axis, out to the other hinge's round parts and the gap, along the other's
+    // half: turning about its own axis, it stays clear of them.
+    std::pair<int, double> beside{-1, 0};  // the hinge sharing the edge's length, and how far off its axis is
+    if (const auto [near, k] = nearestHinge(m, j, axis, along, 2 * r.outer + g); k >= 0) {
+        if ((near - g) / 2 >= kLeastPin + g + kLeastWall) {
+            r = sized(near - g, g);
+        } else {
+            const Coordinates& its = gapped[m.joints[k].edgeA.cuboid];
+            const double mid = (std::max(lo, its[2 * along]) + std::min(hi, its[2 * along + 1])) / 2;
+            if (j < k)
+                hi = std::min(hi, mid - g / 2);
+            else
+                lo = std::max(lo, mid + g / 2);
+            if (hi - lo < 4 * (r.outer + g))
+                throw std::invalid_argument(
+                    "joint '" + joint.name + "': no room for its pin and yokes beside joint '" +
+                    m.joints[k].name + "': their axes are " + function::millimetres(near) +
+                    " mm apart as printed and share " + function::millimetres(2 * (hi - lo)) +
+                    " mm along them: move the parts apart, or print larger");
+            beside = {k, near};
+        }
     }
     const double yoke = (hi - lo) / 4;
     const gp_Pnt at = axis.Location();
@@ -306,6 +337,8 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             for (int i = 0; i < 6; ++i)
                 clear.back()[i] += i % 2 ? g : -g;
         }
+    if (beside.first >= 0)
+        giveWay(m, beside.first, along, lo, hi, beside.second + r.outer + g, clear, g, shapes);
     // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis;
     // round yokes that only turn need no turning back.
     std::vector<TopoDS_Shape> around{yokes};

@@ -10,6 +10,7 @@
 #include "Printable/Sweeps.h"
 
 #include <gtest/gtest.h>
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -148,6 +149,36 @@ TEST(Joints, AHingeGetsAPinAKnuckleAndTwoYokesThatClearEachOther)
     const Check c = check(m, p, 0.4, 8);
     EXPECT_TRUE(c.invalid.empty());
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
+TEST(Joints, NeighbouringHingesTooCloseForTwoPinsTakeHalfTheEdgeEach)
+{
+    // Two doors 8 mm thick on a cabinet front, hinged on the edges they share, 1 mm apart (too little for two
+    // pins side by side); each opens outwards.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "cabinet", "cuboids": [{"name": "cabinet", "min": [0, 10, 0], "max": [81, 50, 60]}]},
+                  {"name": "left", "cuboids": [{"name": "left", "min": [0, 2, 0], "max": [40, 10, 60]}]},
+                  {"name": "right", "cuboids": [{"name": "right", "min": [41, 2, 0], "max": [81, 10, 60]}]}],
+        "joints": [{"name": "left hinge", "type": "hinge", "part": "left", "edge": ["left.right", "left.near"]},
+                   {"name": "right hinge", "type": "hinge", "part": "right", "edge": ["right.left", "right.near"]}],
+        "configurations": [{"name": "open", "poses": {"left hinge": 60, "right hinge": -60}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    for (const Body& b : p.bodies)
+        EXPECT_TRUE(valid(b.shape)) << b.name;
+    const Check c = check(m, p, 0.4, 16);
+    EXPECT_TRUE(c.loose.empty());
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+    // Each door's knuckle stands out in front of it along its own half of the edge only.
+    for (const auto& [body, from, to] : {std::tuple{1, 0.0, 30.0}, std::tuple{2, 30.0, 60.0}}) {
+        Bnd_Box proud;
+        BRepBndLib::Add(BRepAlgoAPI_Common(p.bodies[body].shape, box({0, 81, -10, 1, -1, 61})).Shape(),
+                        proud);
+        ASSERT_FALSE(proud.IsVoid()) << p.bodies[body].name;
+        EXPECT_GE(proud.CornerMin().Z(), from - 1e-6) << p.bodies[body].name;
+        EXPECT_LE(proud.CornerMax().Z(), to + 1e-6) << p.bodies[body].name;
+    }
 }
 
 TEST(Joints, AnUnguidedSlideRunsOnADovetailRail)

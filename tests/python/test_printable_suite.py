@@ -14,7 +14,6 @@ import pytest
 VOLUME = (250, 210, 210)
 SUITE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data", "printable")
 NOT_YET = {  # strict: a product that starts printing fails here until it is moved to the suite proper
-    "cabinet-wall": "neighbouring hinges 0.83 mm apart at the fitted scale: no room for two pins side by side",
     "folding-table-leaf": "as drawn, one link of the four-bar passes over the other's pin",
 }
 PRODUCTS = [pytest.param(name, marks=pytest.mark.xfail(reason=NOT_YET[name], strict=True)) if name in NOT_YET
