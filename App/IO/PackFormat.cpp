@@ -210,8 +210,9 @@ namespace {
 
 /// An ESICUP irregular strip instance as the sparrow nester distributes it ({"items": [{"demand",
 /// "allowed_orientations", "shape": {"type": "simple_polygon", "data"}}], "strip_height"}): its strip is
-/// `strip_height` high and its length is minimised. Turned a quarter clockwise as a whole, so that the strip's
-/// height is our strip's width and its length our height; the pieces keep their shapes and orientations.
+/// `strip_height` high and its length is minimised. Turned a quarter clockwise as a whole, so that the
+/// strip's height is our strip's width and its length our height; the pieces keep their shapes and
+/// orientations.
 material::PackProblem readEsicupInstance(const nlohmann::json& document)
 {
     const Fields root(document, "");
@@ -226,7 +227,8 @@ material::PackProblem readEsicupInstance(const nlohmann::json& document)
     for (size_t i = 0; i < items.size(); ++i) {
         const Fields item(items[i], at("items", i));
         if (!item.has("shape") || !items[i]["shape"].is_object())
-            throw FormatError(item.pathOf("shape") + ": must be {\"type\": \"simple_polygon\", \"data\": [[x, y], ...]}");
+            throw FormatError(item.pathOf("shape") +
+                              ": must be {\"type\": \"simple_polygon\", \"data\": [[x, y], ...]}");
         const Fields shape(items[i]["shape"], item.pathOf("shape"));
         if (shape.text("type") != "simple_polygon")
             throw FormatError(shape.pathOf("type") + ": only \"simple_polygon\" shapes are read");
