@@ -4,6 +4,7 @@
 
 #include "Layout/Pack.h"
 
+#include <chrono>
 #include <vector>
 
 namespace fabguide::material {
@@ -19,8 +20,10 @@ struct Guest {
 /// The guests of each unit of each part, [part][unit]: units of smaller parts laid first-fit in the holes,
 /// kerf + spacing clear of the hole's edge and of each other, the largest parts first, in a relative turn
 /// that keeps every orientation the host may take allowed for the guest (and its grain with the host's), of
-/// the host's thickness. `left` (units per part still to lay out) loses the units taken as guests.
-std::vector<std::vector<std::vector<Guest>>> fillHoles(const PackProblem& problem, std::vector<int>& left);
+/// the host's thickness. `left` (units per part still to lay out) loses the units taken as guests. Stops
+/// filling at `deadline`: what is not in a hole by then is laid out on the boards.
+std::vector<std::vector<std::vector<Guest>>> fillHoles(const PackProblem& problem, std::vector<int>& left,
+                                                       std::chrono::steady_clock::time_point deadline);
 
 /// `layout` of `rest` (the problem's parts less their guests; rest part k is problem part `original[k]`) with
 /// the guests added, each turned and moved with its host: the j-th placed unit of a part carries the guests

@@ -298,7 +298,9 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);
     const std::vector<int> quantities = left;
-    const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left);
+    const auto filled = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(0.25 * search.timeLimit));
+    const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left, filled);
     if (left == quantities)
         return layOut(problem, search);
     PackProblem rest = problem;  // the parts less the units laid in holes

@@ -7,6 +7,8 @@ using namespace fabguide::material;
 
 namespace {
 
+const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+
 /// A 300 x 200 frame with a 200 x 100 window at (50, 50), and 40 x 30 tags.
 PackProblem frameAndTags(int tags)
 {
@@ -26,7 +28,7 @@ TEST(HoleFill, SmallPartsFillTheWindowClearOfItsEdgeAndEachOther)
 {
     const PackProblem problem = frameAndTags(20);
     std::vector<int> left{1, 20};
-    const auto guests = fillHoles(problem, left);
+    const auto guests = fillHoles(problem, left, kNoDeadline);
     ASSERT_EQ(guests[0].size(), 1u);
     const std::vector<Guest>& in = guests[0][0];
     // 200 x 100 less 5 mm all round: 190 x 90 holds 4 tags across (45 each with the gap) and 2 up (35 each).
@@ -52,10 +54,10 @@ TEST(HoleFill, APartOfAnotherThicknessOrGrainStaysOut)
     PackProblem problem = frameAndTags(3);
     problem.parts[1].thickness = 6;  // the frame is cut from any board, the tags from 6 mm only
     std::vector<int> left{1, 3};
-    EXPECT_TRUE(fillHoles(problem, left)[0][0].empty());
+    EXPECT_TRUE(fillHoles(problem, left, kNoDeadline)[0][0].empty());
     problem.parts[1].thickness = 0;
     problem.parts[1].followsGrain = true;  // the frame may turn any way: the tags' grain would not follow
-    EXPECT_TRUE(fillHoles(problem, left)[0][0].empty());
+    EXPECT_TRUE(fillHoles(problem, left, kNoDeadline)[0][0].empty());
     EXPECT_EQ(left[1], 3);
 }
 
@@ -63,7 +65,7 @@ TEST(HoleFill, GuestsTurnAndMoveWithTheirHost)
 {
     const PackProblem problem = frameAndTags(1);
     std::vector<int> left{1, 1};
-    const auto guests = fillHoles(problem, left);
+    const auto guests = fillHoles(problem, left, kNoDeadline);
     ASSERT_EQ(guests[0][0].size(), 1u);
     const Guest g = guests[0][0][0];
     // The frame alone laid out turned a quarter, its bounding box at (10, 20): 200 wide, 300 tall.
@@ -83,4 +85,13 @@ TEST(HoleFill, GuestsTurnAndMoveWithTheirHost)
     EXPECT_GE(tag.y, 20 + 55 - 1e-9);
     EXPECT_LE(tag.y + tag.height, 20 + 245 + 1e-9);
     EXPECT_DOUBLE_EQ(all.partArea, laid.partArea + 40 * 30);
+}
+
+TEST(HoleFill, PastItsDeadlineItLeavesTheRestToTheBoards)
+{
+    const PackProblem problem = frameAndTags(20);
+    std::vector<int> left{1, 20};
+    const auto guests = fillHoles(problem, left, std::chrono::steady_clock::now());
+    EXPECT_TRUE(guests[0][0].empty());
+    EXPECT_EQ(left[1], 20);
 }
