@@ -259,8 +259,13 @@ std::pair<int, int> selfCrossing(const Polygon& polygon)
 
 bool contains(const Polygon& polygon, Point2 p)
 {
-    return ClipperLib::PointInPolygon({std::llround(p.x * kClipperScale), std::llround(p.y * kClipperScale)},
-                                      toClipper(polygon)) != 0;
+    bool inside = false;  // a ray to the right crosses the boundary an odd number of times
+    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Point2 &a = polygon[i], &b = polygon[j];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+            inside = !inside;
+    }
+    return inside;
 }
 
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
