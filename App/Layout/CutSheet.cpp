@@ -34,19 +34,16 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     std::vector<geometry::Outline> placed;
     for (size_t k = 0; k < n; ++k)
         placed.push_back(placedOutline(layout, problem, k));
-    // Part-in-hole: how many holes of other parts hold each part, and which holes hold one.
+    // Part-in-hole: a polygon on a sheet holds the parts whose outline starts inside it; a part's depth is
+    // how many holes of other parts hold it.
+    const auto holds = [&](int sheet, const geometry::Polygon& polygon, size_t k) {
+        return layout.placements[k].sheet == sheet && geometry::contains(polygon, placed[k].outer.front());
+    };
     std::vector<int> depth(n);
-    std::vector<std::vector<bool>> holding(n);
-    for (size_t j = 0; j < n; ++j) {
-        holding[j].assign(placed[j].holes.size(), false);
-        for (size_t h = 0; h < placed[j].holes.size(); ++h)
+    for (size_t j = 0; j < n; ++j)
+        for (const geometry::Polygon& hole : placed[j].holes)
             for (size_t k = 0; k < n; ++k)
-                if (k != j && layout.placements[k].sheet == layout.placements[j].sheet &&
-                    geometry::contains(placed[j].holes[h], placed[k].outer.front())) {
-                    holding[j][h] = true;
-                    ++depth[k];
-                }
-    }
+                depth[k] += k != j && holds(layout.placements[j].sheet, hole, k);
     const int deepest = n ? *std::max_element(depth.begin(), depth.end()) : 0;
     std::vector<CutSheet> sheets;
     for (const MasterBoard& board : layout.sheets)
@@ -65,13 +62,15 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
                 s.dogbone > 0 ? geometry::dogboned(placed[k], s.dogbone) : placed[k], s.kerf / 2);
             CutSheet& sheet = sheets[p.sheet];
             const bool tabs = s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow;
-            for (size_t h = 0; h < path.holes.size(); ++h) {
-                if (s.tabWidth > 0 && h < holding[k].size() && holding[k][h]) {
-                    const std::vector<geometry::Polygon> pieces =
-                        geometry::withTabs(path.holes[h], 2, s.tabWidth);
+            for (const geometry::Polygon& hole : path.holes) {
+                bool tabbed = false;  // with tabs on, a hole holding a part (kerf + spacing inside the cut)
+                for (size_t other = 0; other < n && s.tabWidth > 0 && !tabbed; ++other)
+                    tabbed = other != k && holds(p.sheet, hole, other);
+                if (tabbed) {
+                    const std::vector<geometry::Polygon> pieces = geometry::withTabs(hole, 2, s.tabWidth);
                     sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
                 } else {
-                    sheet.cuts.push_back(path.holes[h]);
+                    sheet.cuts.push_back(hole);
                 }
             }
             if (tabs) {

@@ -118,6 +118,41 @@ TEST(CutSheet, SmallPartsAreHeldByTabsAndCutLast)
     EXPECT_EQ(sheet.cuts.size(), layout.placements.size() - small);  // the others closed as before
 }
 
+TEST(CutSheet, APartInAHoleIsCutBeforeTheHoleWhichKeepsTabsWithTheirs)
+{
+    // A 300 x 200 frame with a 200 x 100 window at (50, 50), laid at (10, 10), and a 40 x 30 tag in the
+    // window.
+    PackProblem p = problem();
+    p.parts[0] = rectangularPart("frame", 300, 200);
+    p.parts[0].outline.holes.push_back({{50, 50}, {50, 150}, {250, 150}, {250, 50}});
+    p.parts[1] = rectangularPart("tag", 40, 30);
+    Layout layout;
+    layout.sheets = {p.boards[0]};
+    layout.placements = {{0, 0, 10, 10, 0, 300, 200}, {1, 0, 100, 100, 0, 40, 30}};
+    const auto left = [](const fabguide::geometry::Polygon& cut) {  // its leftmost x
+        return std::min_element(cut.begin(), cut.end(),
+                                [](const auto& a, const auto& b) { return a.x < b.x; })
+            ->x;
+    };
+    // Without tabs: the tag, then the window round it, then the frame.
+    CutSheet sheet = cutSheets(layout, p)[0];
+    ASSERT_EQ(sheet.cuts.size(), 3u);
+    EXPECT_NEAR(left(sheet.cuts[0]), 100 - 0.1, 1e-6);  // the tag, grown by half the kerf
+    EXPECT_NEAR(left(sheet.cuts[1]), 60 + 0.1, 1e-6);   // the window, shrunk by it
+    EXPECT_NEAR(left(sheet.cuts[2]), 10 - 0.1, 1e-6);   // the frame
+    // With tabs for the tag, the window keeps tabs too, and both are cut after the frame's closed outline.
+    p.settings.tabWidth = 4;
+    p.settings.tabBelow = 100;
+    sheet = cutSheets(layout, p)[0];
+    ASSERT_EQ(sheet.cuts.size(), 1u);
+    EXPECT_NEAR(left(sheet.cuts[0]), 10 - 0.1, 1e-6);
+    ASSERT_EQ(sheet.tabbed.size(), 4u);  // the tag's two pieces, then the window's
+    EXPECT_GE(left(sheet.tabbed[0]), 100 - 0.1 - 1e-6);
+    EXPECT_GE(left(sheet.tabbed[1]), 100 - 0.1 - 1e-6);
+    EXPECT_LE(std::min(left(sheet.tabbed[2]), left(sheet.tabbed[3])), 60 + 0.1 + 1e-6);
+    EXPECT_GE(std::min(left(sheet.tabbed[2]), left(sheet.tabbed[3])), 60 + 0.1 - 1e-6);
+}
+
 TEST(CutSheet, CutListCountsPartsPerBoard)
 {
     const PackProblem p = problem();
