@@ -136,8 +136,8 @@ class ViewProviderPrintable(ViewProvider):
 
 def axis_points(joint):
     """Pairs of points of the lines that show a joint, each with the part that carries it (None: the ground):
-    the hinge's edge (points on it stay on it as the part turns), the slide's axis through its part, the double pivot's link (a pivot on each
-    part), the fixed joint's hold."""
+    the hinge's edge (points on it stay on it as the part turns), the slide's axis through its part, the double
+    pivot's link (a pivot on each part), the fixed joint's hold."""
     import FreeCAD
 
     points = []

@@ -43,11 +43,6 @@ std::uint64_t seedOf(std::uint64_t seed, int round, int task)
     return z ^ (z >> 31);
 }
 
-Clock::duration seconds(double s)
-{
-    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
-}
-
 /// Seconds a design's own layout may search on when a short share of the time limit left a part over, and
 /// the seconds a suggestion's fresh layout is given to show that it reopens (the former covers the latter).
 constexpr double kSearchOn = 10, kReopenCheck = 2;

@@ -377,26 +377,25 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<L
         if (const double drawn = target[i + 1] - target[i], now = least.x[i + 1] - least.x[i];
             now < drawn / 2)
             collapsed.push_back({now / drawn, i});
-    std::sort(collapsed.begin(), collapsed.end());
-    auto held = [&](std::vector<LinearConstraint> more, int i) {
-        const double drawn = target[i + 1] - target[i];
-        more.push_back({{{i + 1, 1.0}, {i, -1.0}}, drawn, drawn, ""});
-        return more;
-    };
     if (collapsed.empty())
         return least;
+    std::sort(collapsed.begin(), collapsed.end());
+    auto asDrawn = [&](int i) {  // the row holding the size of the axis whose low variable is i
+        const double drawn = target[i + 1] - target[i];
+        return LinearConstraint{{{i + 1, 1.0}, {i, -1.0}}, drawn, drawn, ""};
+    };
     std::vector<LinearConstraint> all = rows;
     for (const auto& [left, i] : collapsed)
-        all = held(all, i);
+        all.push_back(asDrawn(i));
     if (LeastChangeResult kept = solveLeastChange(target, all, &least.x); kept.solved)
         return kept;
     std::vector<LinearConstraint> some = rows;
     for (const auto& [left, i] : collapsed) {
-        std::vector<LinearConstraint> more = held(some, i);
-        if (LeastChangeResult kept = solveLeastChange(target, more, &least.x); kept.solved) {
-            some = std::move(more);
+        some.push_back(asDrawn(i));
+        if (LeastChangeResult kept = solveLeastChange(target, some, &least.x); kept.solved)
             least = std::move(kept);
-        }
+        else
+            some.pop_back();
     }
     return least;
 }

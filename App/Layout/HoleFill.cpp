@@ -98,11 +98,12 @@ std::vector<Guest> fill(const PackProblem& problem, int host, const std::vector<
 std::vector<std::vector<std::vector<Guest>>> fillHoles(const PackProblem& problem, std::vector<int>& left,
                                                        std::chrono::steady_clock::time_point deadline)
 {
+    std::vector<double> area;
+    for (const PartSpec& part : problem.parts)
+        area.push_back(geometry::area(part.outline));
     std::vector<int> bySize(problem.parts.size());
     std::iota(bySize.begin(), bySize.end(), 0);
-    std::stable_sort(bySize.begin(), bySize.end(), [&](int a, int b) {
-        return geometry::area(problem.parts[a].outline) > geometry::area(problem.parts[b].outline);
-    });
+    std::stable_sort(bySize.begin(), bySize.end(), [&](int a, int b) { return area[a] > area[b]; });
     std::vector<std::vector<std::vector<Guest>>> guests(problem.parts.size());
     for (int host : bySize) {  // the largest hosts first: their holes take the largest guests
         if (problem.parts[host].outline.holes.empty())

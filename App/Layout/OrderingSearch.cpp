@@ -27,6 +27,11 @@ double secondsUntil(std::chrono::steady_clock::time_point deadline)
     return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
 }
 
+std::chrono::steady_clock::duration seconds(double s)
+{
+    return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s));
+}
+
 OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds)
 {
     OrderingSearchOptions options;

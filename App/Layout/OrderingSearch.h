@@ -42,6 +42,9 @@ struct OrderingSearchOptions {
 /// Seconds left until `deadline` (0 when past it): what a time-limited search may still take.
 double secondsUntil(std::chrono::steady_clock::time_point deadline);
 
+/// `s` seconds as the steady clock counts them: a deadline is a time point plus these.
+std::chrono::steady_clock::duration seconds(double s);
+
 /// The thesis' ordering search for `parts` units: |parts|² swaps (5.4.3), for at most `seconds`.
 OrderingSearchOptions orderingSearch(size_t parts, std::uint64_t seed, double seconds);
 

@@ -145,9 +145,6 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
     // areas, and the thesis' decreasing extent (5.3.1). Building a best-fit order may take a sixth of the
     // time each; the searches from the starts share what is left equally.
     using Clock = std::chrono::steady_clock;
-    const auto seconds = [](double s) {
-        return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
-    };
     const auto end = Clock::now() + seconds(options.timeLimit);
     std::vector<std::vector<int>> starts;
     for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
@@ -245,8 +242,7 @@ namespace {
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
-    const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                        std::chrono::duration<double>(search.timeLimit));
+    const auto deadline = started + seconds(search.timeLimit);
     checkSettings(problem);
     const bool rectangles = allRectangles(problem);
     long units = 0;
@@ -269,9 +265,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     // the rest; the lower strip wins.
     std::optional<Layout> lower;
     if (problem.strip && rectangles)
-        lower =
-            maxRectsStrip(problem, started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                 std::chrono::duration<double>(0.4 * search.timeLimit)));
+        lower = maxRectsStrip(problem, started + seconds(0.4 * search.timeLimit));
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
@@ -298,9 +292,8 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);
     const std::vector<int> quantities = left;
-    const auto filled = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(0.25 * search.timeLimit));
-    const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left, filled);
+    const std::vector<std::vector<std::vector<Guest>>> guests =
+        fillHoles(problem, left, started + seconds(0.25 * search.timeLimit));
     if (left == quantities)
         return layOut(problem, search);
     PackProblem rest = problem;  // the parts less the units laid in holes
@@ -313,9 +306,7 @@ Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
             original.push_back(static_cast<int>(k));
         }
     OrderingSearchOptions options = search;
-    options.timeLimit =
-        std::max(0.0, search.timeLimit -
-                          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    options.timeLimit = secondsUntil(started + seconds(search.timeLimit));
     return withGuests(layOut(rest, options), problem, original, guests);
 }
 

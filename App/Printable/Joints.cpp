@@ -217,10 +217,8 @@ void addRecessedPivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>
     out.bodies.push_back({linkName(joint), -1, j, pivotLink(pivot, base, n, face, inward, g, link, r, g)});
 }
 
-/// The nearest other hinge whose axis runs beside this one's (parallel, overlapping along it) within `reach`:
-/// the distance between the axes and its name, or "" (two doors hinged on neighbouring edges).
-/// The hinge whose axis runs nearest joint j's, parallel and overlapping along it, within `reach`: its
-/// distance and index (-1: none).
+/// The nearest other hinge whose axis runs beside joint j's (parallel, overlapping along it) within `reach`
+/// (two doors hinged on neighbouring edges): the distance between the axes and its index, -1 for none.
 std::pair<double, int> nearestHinge(const Model& m, int j, const gp_Ax1& axis, int along, double reach)
 {
     std::pair<double, int> nearest{reach, -1};

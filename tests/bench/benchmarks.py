@@ -62,8 +62,8 @@ def main():
                 "", strip_benchmark.table(strip, 1.0), "",
                 shop_scale_benchmark.table([shop_scale_benchmark.run(BUILD, n, limit)
                                             for n, limit in shop_scale_benchmark.JOBS]), "",
-                esicup_benchmark.table([esicup_benchmark.run(BUILD, name, 60) for name in sorted(esicup_benchmark.RECORDS)],
-                                       60), "",
+                esicup_benchmark.table([esicup_benchmark.run(BUILD, name, 60)
+                                        for name in sorted(esicup_benchmark.RECORDS)], 60), "",
                 core_timings(), "", docking_study(), "",
                 optimise_benchmark.table(optimise_benchmark.run(BUILD), optimise_benchmark.suite(BUILD)), "",
                 workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",

@@ -34,8 +34,9 @@ def run(build, name, seconds):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "layout.json")
         started = time.monotonic()
-        done = subprocess.run([os.path.join(build, "fabguide"), "pack", "--strip", os.path.join(INSTANCES, name + ".json"),
-                               "-o", out, "--time-limit", str(seconds)], capture_output=True, text=True)
+        done = subprocess.run([os.path.join(build, "fabguide"), "pack", "--strip",
+                               os.path.join(INSTANCES, name + ".json"), "-o", out, "--time-limit", str(seconds)],
+                              capture_output=True, text=True)
         elapsed = time.monotonic() - started
         if done.returncode:
             return {"name": name, "error": done.stderr.strip().splitlines()[-1], "seconds": elapsed}

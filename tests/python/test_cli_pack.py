@@ -172,13 +172,6 @@ def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_di
     # part's outer cut, in none of its hole cuts), and the DXF turns a label along a standing leg.
     import ezdxf
 
-    def contains(polygon, x, y):  # ray casting
-        inside = False
-        for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1]):
-            if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
-                inside = not inside
-        return inside
-
     source = os.path.join(source_dir, "tests", "data", "curved-parts.pack.json")
     run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--time-limit", "1", "--dxf",
                str(tmp_path / "dxf"))
@@ -194,6 +187,6 @@ def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_di
         along = round(text.dxf.rotation) % 180 == 90
         for px, py in ((x, y), (x + (0 if along else half), y + (half if along else 0)),
                        (x - (0 if along else half), y - (half if along else 0))):
-            around = [c for c in cuts if contains(c, px, py)]
+            around = [c for c in cuts if outline_check.inside(c, (px, py))]
             # inside exactly one outer cut and no hole: the innermost path holding it is its part's outline
             assert len(around) == 1, (text.dxf.text, px, py, len(around))

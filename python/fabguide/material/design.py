@@ -397,7 +397,8 @@ def saying_changes(obj, start=None):
     """What the block does to the boards (from `start`, the format's parts, if given), in the design's Changes
     and the report view (cuboids.change)."""
     try:
-        before = ({p["id"]: corners(p) for p in start} if start else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
+        before = ({p["id"]: corners(p) for p in start} if start
+                  else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
     except cuboids.CuboidError:  # a rotated box: the recompute says so
         before = {}
     try:
