@@ -33,12 +33,6 @@ struct Bin {
     double usedWidth = 0, usedHeight = 0;
 };
 
-/// A unit of a part as it may lie: its rotation and its size with the clearance added.
-struct Pose {
-    int rotation = 0;
-    double w = 0, h = 0;
-};
-
 /// MaxRects' placement rules (Jylänki 2010): best short side fit, best long side fit, best area fit,
 /// bottom-left.
 enum class Rule { ShortSide, LongSide, Area, BottomLeft };
@@ -66,25 +60,6 @@ Choice scored(Rule rule, const Rect& free, const Pose& pose)
             break;
     }
     return {std::min(dw, dh), std::max(dw, dh), 0, pose.rotation, at};
-}
-
-/// The part's poses allowed on a board of `kind`: one per distinct footprint, grain and thickness kept.
-std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double clearance)
-{
-    std::vector<Pose> poses;
-    if (!ofThickness(part.thickness, board.thickness))
-        return poses;
-    for (int rotation : part.orientations) {
-        const bool turned = rotation % 180 != 0;
-        if (!grainAllows(part.followsGrain, rotation, board.grain))
-            continue;
-        if (std::any_of(poses.begin(), poses.end(),
-                        [&](const Pose& p) { return p.rotation % 180 == rotation % 180; }))
-            continue;
-        poses.push_back({rotation, (turned ? part.height() : part.width()) + clearance,
-                         (turned ? part.width() : part.height()) + clearance});
-    }
-    return poses;
 }
 
 void bestIn(Rule rule, const Bin& bin, int index, const std::vector<Pose>& poses, Choice& best)
@@ -361,6 +336,24 @@ double usedHeight(const Layout& layout, const PackSettings& s)
 }
 
 }  // namespace
+
+std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double clearance)
+{
+    std::vector<Pose> poses;
+    if (!ofThickness(part.thickness, board.thickness))
+        return poses;
+    for (int rotation : part.orientations) {
+        const bool turned = rotation % 180 != 0;
+        if (!grainAllows(part.followsGrain, rotation, board.grain))
+            continue;
+        if (std::any_of(poses.begin(), poses.end(),
+                        [&](const Pose& p) { return p.rotation % 180 == rotation % 180; }))
+            continue;
+        poses.push_back({rotation, (turned ? part.height() : part.width()) + clearance,
+                         (turned ? part.width() : part.height()) + clearance});
+    }
+    return poses;
+}
 
 bool allRectangles(const PackProblem& problem)
 {

@@ -7,8 +7,18 @@
 
 #include <chrono>
 #include <optional>
+#include <vector>
 
 namespace fabguide::material {
+
+/// A unit of a part as it may lie: its rotation and its size with the clearance added.
+struct Pose {
+    int rotation = 0;
+    double w = 0, h = 0;
+};
+
+/// The part's poses allowed on `board`: one per distinct footprint, grain and thickness kept.
+std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double clearance);
 
 /// Whether every part is a plain rectangle without holes, which MaxRects lays out exactly.
 bool allRectangles(const PackProblem& problem);

@@ -1,4 +1,5 @@
 #include "Layout/MaxRects.h"
+#include "PackingTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -6,37 +7,11 @@
 #include <random>
 
 using namespace fabguide::material;
+using fabguide::material::testing::expectValid;
 
 namespace {
 
 const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
-
-/// Every placement inside its sheet's trim and `kerf + spacing` from every other on its sheet; every unit
-/// placed once.
-void expectValid(const PackProblem& problem, const Layout& layout)
-{
-    const PackSettings& s = problem.settings;
-    const double gap = s.kerf + s.spacing, eps = 1e-9;
-    std::vector<int> placed(problem.parts.size(), 0);
-    for (size_t i = 0; i < layout.placements.size(); ++i) {
-        const Placement& a = layout.placements[i];
-        const MasterBoard& sheet = layout.sheets[a.sheet];
-        ++placed[a.part];
-        EXPECT_GE(a.x, s.trim - eps);
-        EXPECT_GE(a.y, s.trim - eps);
-        EXPECT_LE(a.x + a.width, sheet.width - s.trim + eps) << problem.parts[a.part].id;
-        EXPECT_LE(a.y + a.height, sheet.height - s.trim + eps) << problem.parts[a.part].id;
-        for (size_t j = i + 1; j < layout.placements.size(); ++j) {
-            const Placement& b = layout.placements[j];
-            EXPECT_TRUE(a.sheet != b.sheet || a.x + a.width + gap <= b.x + eps ||
-                        b.x + b.width + gap <= a.x + eps || a.y + a.height + gap <= b.y + eps ||
-                        b.y + b.height + gap <= a.y + eps)
-                << problem.parts[a.part].id << " and " << problem.parts[b.part].id << " on sheet " << a.sheet;
-        }
-    }
-    for (size_t p = 0; p < problem.parts.size(); ++p)
-        EXPECT_EQ(placed[p], problem.parts[p].quantity) << problem.parts[p].id;
-}
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Layout/Docking.h"
+#include "Layout/Pack.h"
 
 #include <gtest/gtest.h>
 
@@ -58,6 +59,33 @@ inline void expectValidLayout(const GridLayout& layout, const std::vector<Raster
     }
     for (size_t i = 0; i < parts.size(); ++i)
         EXPECT_EQ(seen[i], 1) << parts[i].name;
+}
+
+/// Every placement inside its sheet's trim and `kerf + spacing` from every other on its sheet; every unit
+/// placed once.
+inline void expectValid(const PackProblem& problem, const Layout& layout)
+{
+    const PackSettings& s = problem.settings;
+    const double gap = s.kerf + s.spacing, eps = 1e-9;
+    std::vector<int> placed(problem.parts.size(), 0);
+    for (size_t i = 0; i < layout.placements.size(); ++i) {
+        const Placement& a = layout.placements[i];
+        const MasterBoard& sheet = layout.sheets[a.sheet];
+        ++placed[a.part];
+        EXPECT_GE(a.x, s.trim - eps);
+        EXPECT_GE(a.y, s.trim - eps);
+        EXPECT_LE(a.x + a.width, sheet.width - s.trim + eps) << problem.parts[a.part].id;
+        EXPECT_LE(a.y + a.height, sheet.height - s.trim + eps) << problem.parts[a.part].id;
+        for (size_t j = i + 1; j < layout.placements.size(); ++j) {
+            const Placement& b = layout.placements[j];
+            EXPECT_TRUE(a.sheet != b.sheet || a.x + a.width + gap <= b.x + eps ||
+                        b.x + b.width + gap <= a.x + eps || a.y + a.height + gap <= b.y + eps ||
+                        b.y + b.height + gap <= a.y + eps)
+                << problem.parts[a.part].id << " and " << problem.parts[b.part].id << " on sheet " << a.sheet;
+        }
+    }
+    for (size_t p = 0; p < problem.parts.size(); ++p)
+        EXPECT_EQ(placed[p], problem.parts[p].quantity) << problem.parts[p].id;
 }
 
 }  // namespace fabguide::material::testing

@@ -1,0 +1,35 @@
+// Strip packing of rectangles by a tree search on the skyline at a target height (issue 16): the lowest,
+// leftmost gap of the skyline is filled by a part put at its left end, or left as waste while the waste
+// the target height allows lasts. In a packing without waste that gap is always some part's lower-left
+// corner, so the search is complete at the area's lower bound; limited by nodes, it is restarted with the
+// candidates shuffled, and the target height raised when it fails.
+#pragma once
+
+#include "Layout/Pack.h"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+
+namespace fabguide::material {
+
+/// Nodes `pack` gives the skyline search of a strip per second of its time limit: fewer than a core searches
+/// in that time, so the same seed gives the same strip unless the machine is loaded.
+constexpr long kSkylineNodesPerSecond = 500000;
+
+struct SkylineBudget {
+    long nodes = 0;  ///< parts placed or gaps wasted in all, over every target height: the search's size
+    std::uint64_t seed = 1;
+};
+
+/// The lowest strip of `problem` (rectangles; kerf + spacing around every part, trim along the strip's
+/// edges, grain kept) the search finds by `deadline` within `budget`; nothing when the time runs out before
+/// a first greedy strip.
+std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
+                                   std::chrono::steady_clock::time_point deadline);
+
+/// The least height any strip of `problem` needs: the parts' area over the strip's width, and the tallest
+/// part as it lies lowest, with clearance and trim.
+double leastStripHeight(const PackProblem& problem);
+
+}  // namespace fabguide::material
