@@ -262,16 +262,16 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (exact && units > kDockedUnits)
             return *exact;
     }
-    // A strip of rectangles: the skyline search within its nodes (by 70 % of the time), done when it reaches
-    // the least height; else MaxRects bisects the height (until 85 %), Docking's search takes the rest; the
+    // A strip of rectangles: the skyline search within its nodes (by 85 % of the time), done when it reaches
+    // the least height; else MaxRects bisects the height (until 95 %), Docking's search takes the rest; the
     // lowest strip wins.
     std::optional<Layout> lower;
     if (problem.strip && rectangles) {
         const long nodes = static_cast<long>(kSkylineNodesPerSecond * search.timeLimit);
-        lower = skylineStrip(problem, {nodes, search.seed}, started + seconds(0.7 * search.timeLimit));
+        lower = skylineStrip(problem, {nodes, search.seed}, started + seconds(0.85 * search.timeLimit));
         if (lower && lower->stripHeight <= leastStripHeight(problem) + 1e-6)
             return *lower;
-        std::optional<Layout> bisected = maxRectsStrip(problem, started + seconds(0.85 * search.timeLimit));
+        std::optional<Layout> bisected = maxRectsStrip(problem, started + seconds(0.95 * search.timeLimit));
         if (bisected && (!lower || bisected->stripHeight < lower->stripHeight))
             lower = std::move(bisected);
     }

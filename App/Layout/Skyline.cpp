@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <random>
 #include <tuple>
@@ -71,8 +70,20 @@ public:
           deadline_(deadline)
     {
         skyline_.push_back({0, width, 0});
-        for (const Kind& kind : kinds_)
-            unitsLeft_ += kind.left;
+        if (shuffled_)
+            widthWeight_ = std::uniform_real_distribution<double>(1.0, 3.0)(random_);
+        const auto lowest = [&](size_t k) {
+            double h = HUGE_VAL;
+            for (const Pose& pose : kinds_[k].poses)
+                h = std::min(h, pose.h);
+            return h;
+        };
+        for (size_t k = 0; k < kinds_.size(); ++k) {
+            unitsLeft_ += kinds_[k].left;
+            tallFirst_.push_back(k);
+        }
+        std::stable_sort(tallFirst_.begin(), tallFirst_.end(),
+                         [&](size_t a, size_t b) { return lowest(a) > lowest(b); });
     }
 
     /// Whether every unit was put within the nodes; then puts() is the packing.
@@ -90,8 +101,8 @@ public:
 
 private:
     struct Candidate {
-        std::tuple<bool, bool, bool, double> rank;  // lower first: leaves a dead gap, not the gap's width,
-        int kind = 0, pose = 0;                     // top not level with a neighbour, larger area
+        std::tuple<bool, bool, double> rank;  // lower first: top not level with a neighbour, not the gap's
+        int kind = 0, pose = 0;               // width, larger w²h (jittered when shuffled)
     };
 
     bool outOfNodes()
@@ -101,16 +112,6 @@ private:
         if (nodesLeft_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)
             nodesLeft_ = -1;
         return nodesLeft_ < 0;
-    }
-
-    double narrowestLeft() const
-    {
-        double narrowest = std::numeric_limits<double>::max();
-        for (const Kind& kind : kinds_)
-            if (kind.left > 0)
-                for (const Pose& pose : kind.poses)
-                    narrowest = std::min(narrowest, pose.w);
-        return narrowest;
     }
 
     /// Whether units go at the right end of segment `at`: its right neighbour is the higher (Wei et al.
@@ -130,8 +131,7 @@ private:
         const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
         const double right = at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL;
         const double near = atRight(at) ? right : left, far = atRight(at) ? left : right;
-        const double narrowest = narrowestLeft();
-        std::uniform_real_distribution<double> jitter(0.5, 1.5);
+        std::uniform_real_distribution<double> jitter(0.8, 1.2);
         std::vector<Candidate> found;
         for (size_t k = 0; k < kinds_.size(); ++k) {
             if (kinds_[k].left == 0)
@@ -143,10 +143,9 @@ private:
                 const bool exact = pose.w > s.w - kHair;
                 const double top = s.y + pose.h;
                 const bool level = std::abs(top - near) < kHair || (exact && std::abs(top - far) < kHair);
-                const double area = pose.w * pose.h * (shuffled_ ? jitter(random_) : 1.0);
-                found.push_back({{!exact && s.w - pose.w < narrowest - kHair, !exact, !level, -area},
-                                 static_cast<int>(k),
-                                 static_cast<int>(p)});
+                const double score =
+                    std::pow(pose.w, widthWeight_) * pose.h * (shuffled_ ? jitter(random_) : 1.0);
+                found.push_back({{!level, !exact, -score}, static_cast<int>(k), static_cast<int>(p)});
             }
         }
         std::sort(found.begin(), found.end(),
@@ -188,16 +187,46 @@ private:
         merge(at);
     }
 
+    /// Whether a stretch of the skyline is wide and low enough for some pose of each of the tallest kinds
+    /// left, which run out of room first as the skyline rises.
+    bool roomForTallest() const
+    {
+        const auto fits = [&](const Pose& pose) {
+            double run = 0;
+            for (const Segment& s : skyline_) {
+                run = s.y + pose.h <= height_ + kHair ? run + s.w : 0;
+                if (run >= pose.w - kHair)
+                    return true;
+            }
+            return false;
+        };
+        int checked = 0;
+        for (size_t k = 0; k < tallFirst_.size() && checked < 4; ++k) {
+            const Kind& kind = kinds_[tallFirst_[k]];
+            if (kind.left == 0)
+                continue;
+            ++checked;
+            if (std::none_of(kind.poses.begin(), kind.poses.end(), fits))
+                return false;
+        }
+        return true;
+    }
+
     /// The least waste the skyline's valleys leave (segments lower than both neighbours, which only units
     /// as narrow fill): in each, what no units left fill of its width, up to the lower of its neighbours and
     /// the shortest unit left.
     double wasteInValleys()
     {
         double shortest = HUGE_VAL, waste = 0;
+        widths_.clear();
         for (const Kind& kind : kinds_)
-            if (kind.left > 0)
+            if (kind.left > 0) {
                 for (const Pose& pose : kind.poses)
                     shortest = std::min(shortest, pose.h);
+                if (whole_)
+                    widths_.push_back({static_cast<size_t>(std::lround(kind.poses.front().w)),
+                                       static_cast<size_t>(std::lround(kind.poses.back().w)), kind.left});
+            }
         for (size_t at = 0; at < skyline_.size(); ++at) {
             const Segment& s = skyline_[at];
             const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
@@ -209,28 +238,29 @@ private:
         return waste;
     }
 
-    /// The widest the units left can fill of a gap `gap` wide, side by side, each on either side: a subset
-    /// sum of whole widths; `gap` itself when sizes are not whole.
+    /// The widest the units left (widths_) can fill of a gap `gap` wide, side by side, each on either side: a
+    /// subset sum of whole widths; `gap` itself when sizes are not whole.
     double widestFill(double gap)
     {
-        if (!whole_)
-            return gap;
         const size_t g = static_cast<size_t>(std::lround(gap));
+        if (!whole_ || std::any_of(widths_.begin(), widths_.end(),
+                                   [&](const UnitWidths& u) { return u.along == g || u.across == g; }))
+            return gap;
         sums_.assign(g / 64 + 1, 0);
         sums_[0] = 1;
-        const auto shiftedIn = [&](size_t by, std::vector<std::uint64_t>& into) {
+        const auto shiftedIn = [&](size_t by) {
             for (size_t i = sums_.size(); i-- > by / 64;) {
                 const size_t from = i - by / 64, bit = by % 64;
-                into[i] |= sums_[from] << bit | (bit && from > 0 ? sums_[from - 1] >> (64 - bit) : 0);
+                next_[i] |= sums_[from] << bit | (bit && from > 0 ? sums_[from - 1] >> (64 - bit) : 0);
             }
         };
         const auto reached = [&](size_t i) { return sums_[i / 64] >> (i % 64) & 1; };
-        for (const Kind& kind : kinds_)
-            for (int unit = 0; unit < kind.left && !reached(g); ++unit) {
+        for (const UnitWidths& u : widths_)
+            for (int unit = 0; unit < u.units && !reached(g); ++unit) {
                 next_ = sums_;
-                for (const Pose& pose : kind.poses)
-                    if (const size_t w = static_cast<size_t>(std::lround(pose.w)); w <= g)
-                        shiftedIn(w, next_);
+                for (const size_t w : {u.along, u.across})
+                    if (w <= g)
+                        shiftedIn(w);
                 if (next_ == sums_)
                     break;  // more of this kind add no sum
                 sums_.swap(next_);
@@ -247,7 +277,7 @@ private:
     {
         if (unitsLeft_ == 0)
             return true;
-        if (outOfNodes() || wasteInValleys() > wasteLeft_ + kHair)
+        if (outOfNodes() || wasteInValleys() > wasteLeft_ + kHair || !roomForTallest())
             return false;
         const auto lowest =
             std::min_element(skyline_.begin(), skyline_.end(),
@@ -290,6 +320,13 @@ private:
     std::chrono::steady_clock::time_point deadline_;
     std::vector<Segment> skyline_;
     std::vector<Put> puts_;
+    double widthWeight_ = 2;
+    std::vector<size_t> tallFirst_;  // the kinds, tallest lying lowest first
+    struct UnitWidths {
+        size_t along = 0, across = 0;  // whole widths of a kind's two poses (the same when it has one)
+        int units = 0;                 // of the kind left
+    };
+    std::vector<UnitWidths> widths_;
     std::vector<std::uint64_t> sums_, next_;  // bit i: the widths of some units left add up to i
 };
 
@@ -395,7 +432,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
                                    std::chrono::steady_clock::time_point deadline)
 {
     const auto [kinds, width, area, units, whole, step, least] = stripOf(problem);
-    const long base = std::max(1000L, static_cast<long>(10 * units));
+    const long base = std::max(200L, static_cast<long>(2 * units));
     long nodes = budget.nodes;
     std::uint64_t seed = budget.seed;
     std::optional<Layout> best;
@@ -422,7 +459,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
             low = height;
     }
     for (long round = 1; least < ceiling - kHair && left(); ++round)
-        tried(round % 2 ? least : std::max(least, ceiling - step), std::min(base * luby(round), nodes),
+        tried(round % 6 == 0 ? least : std::max(least, ceiling - step), std::min(base * luby(round), nodes),
               seed++);
     return best;
 }

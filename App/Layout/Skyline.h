@@ -15,7 +15,7 @@ namespace fabguide::material {
 
 /// Nodes `pack` gives the skyline search of a strip per second of its time limit: fewer than a core searches
 /// in that time, so the same seed gives the same strip unless the machine is loaded.
-constexpr long kSkylineNodesPerSecond = 500000;
+constexpr long kSkylineNodesPerSecond = 400000;
 
 struct SkylineBudget {
     long nodes = 0;  ///< parts placed or gaps wasted in all, over every target height: the search's size

@@ -6,7 +6,7 @@ around a centre (a pattern no guillotine cut can make) or, one time in four, str
 millimetres, every piece at least `smallest` on each side. Written as OR-Datasets strip instances, the format
 of C1-C7 and N1-N13.
 
-    python3 tests/bench/perfect_packings.py OUTDIR   # writes the benchmark's set
+    python3 tests/bench/perfect_packings.py OUTDIR   # writes the benchmark's set (seeds 1-10)
 """
 import json
 import os
@@ -72,11 +72,11 @@ def instance(seed, kind, board, items):
                       for _, _, w, h in pieces]}
 
 
-def benchmark_set(count=10):
-    """The set the benchmark runs: `count` of each kind, seeds 1.., 15-250 items, the boards in turn."""
+def benchmark_set(seeds=range(1, 11)):
+    """The instances of `seeds` for each kind: 15-250 items, the boards in turn."""
     found = []
     for kind in KINDS:
-        for seed in range(1, count + 1):
+        for seed in seeds:
             items = random.Random(seed).randint(15, 250)
             found.append(instance(seed, kind, BOARDS[(seed - 1) % len(BOARDS)], items))
     return found
