@@ -25,7 +25,7 @@ namespace {
 
 struct PrintableArguments {
     std::string input, output = "printable", printer = "fdm", fit;
-    double gap = -1, scale = 1;
+    double gap = -1, scale = 1, partSeconds = printable::Printer{}.partSeconds;
 };
 
 /// "250x210x210": a build volume in mm (width x depth x height); empty when the text is not one.
@@ -78,8 +78,8 @@ int run(const PrintableArguments& args)
     io::OutputBatch files;
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
     const std::optional<printable::Size> fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
-    const printable::Fitted fitted =
-        printable::printed(io::readWorkslike(io::readJsonFile(args.input)), {gap}, args.scale, fit);
+    const printable::Fitted fitted = printable::printed(io::readWorkslike(io::readJsonFile(args.input)),
+                                                        {gap, args.partSeconds}, args.scale, fit);
     if (fit)
         std::printf("scale %.4g: fits %s mm%s\n", fitted.scale, args.fit.c_str(),
                     fitted.turned ? ", turned a quarter about z" : "");
@@ -138,6 +138,12 @@ void addPrintableCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
         ->check(CLI::Range(0.01, 10.0));
+    cmd->add_option(
+           "--part-seconds", args->partSeconds,
+           "what OpenCASCADE may take on one part or joint at each step before the run stops with an "
+           "error naming it")
+        ->check(CLI::Range(0.001, 86400.0))
+        ->capture_default_str();
     auto* scale =
         cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
             ->check(CLI::Range(0.001, 100.0))

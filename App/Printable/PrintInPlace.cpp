@@ -51,6 +51,7 @@ void clearNeighbours(const Model& m, int k, const std::vector<Coordinates>& at, 
             near.Enlarge(g);
             if (near.IsOut(other))
                 continue;
+            const Work on(m.parts[b].name);
             std::vector<TopoDS_Shape> path = pathRelative(m, k, a, b, grown);
             path.erase(std::remove_if(path.begin(), path.end(),
                                       [&](const TopoDS_Shape& s) { return !touches(s, shapes[b]); }),
@@ -65,6 +66,7 @@ std::vector<TopoDS_Shape> partSolids(const Model& m, const std::vector<Coordinat
 {
     std::vector<TopoDS_Shape> shapes;
     for (size_t p = 0; p < m.parts.size(); ++p) {
+        const Work on(m.parts[p].name);
         TopoDS_Shape s = solid(m, static_cast<int>(p), at);
         for (int c : m.parts[p].cuboids)
             if (m.cuboids[c].cavity())
@@ -82,6 +84,7 @@ void cutCavities(const Model& m, const std::vector<Coordinates>& at, double g,
         if (f.configuration < 0)
             continue;
         for (int p : f.inner) {
+            const Work on(m.parts[f.enclosing].name);
             const std::vector<TopoDS_Shape> swept = sweep(m, p, f.configuration, boxesOf(m, p, at, g));
             out.sweeps.push_back(compound(swept));
             shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
@@ -98,10 +101,12 @@ void clearHingeBases(const Model& m, const std::vector<Coordinates>& at, double 
         const Joint& joint = m.joints[j];
         const int edge = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
         for (size_t k = 0; k < m.configurations.size() && edge >= 0; ++k)
-            if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k)))
+            if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k))) {
+                const Work on(m.parts[function::partOf(m, edge)].name);
                 shapes[function::partOf(m, edge)] =
                     cut(shapes[function::partOf(m, edge)],
                         hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
+            }
     }
 }
 
@@ -134,6 +139,7 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
 {
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
+        const Work on(joint.name);
         if (joint.turns())
             addHinge(m, static_cast<int>(j), at, g, shapes, out);
         else if (joint.type == Joint::Type::DoublePivot)
@@ -158,10 +164,11 @@ void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printabl
 {
     const std::vector<std::vector<int>> bodies = rigidBodies(m);
     for (size_t b = 0; b < bodies.size(); ++b) {
+        const std::string name = bodyName(m, bodies[b]);
+        const Work on(name);
         TopoDS_Shape shape;
         for (int p : bodies[b])
             shape = fuse(shape, shapes[p]);
-        const std::string name = bodyName(m, bodies[b]);
         ShapeUpgrade_UnifySameDomain unify(shape, true, true, false);
         unify.Build();
         int pieces = 0;
@@ -198,6 +205,7 @@ Model solvedToPrint(const Model& model, double scale)
 Printable makePrintable(const Model& m, const Printer& printer)
 {
     Printable out;
+    const Work all("", printer.partSeconds);
     const double g = printer.gap;
     const std::vector<Coordinates> at = gapped(m, g);
     std::vector<TopoDS_Shape> shapes = partSolids(m, at);

@@ -1,5 +1,6 @@
 #include "Printable/Solids.h"
 
+#include <BOPAlgo_Alerts.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -9,6 +10,8 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax2.hxx>
@@ -23,8 +26,51 @@ namespace fabguide::printable {
 
 namespace {
 
-/// A Boolean operation of the first shape with the others, or an error naming it: OpenCASCADE reports
-/// failures by flags, not exceptions. Many tools in one operation are much faster than one at a time.
+thread_local const Work* current = nullptr;  // the innermost work of this thread
+
+}  // namespace
+
+/// Stops an operation past the current work's deadline (OpenCASCADE asks its progress indicator whether the
+/// user broke off).
+struct Budget : Message_ProgressIndicator {
+    const Work* work = current;
+    Standard_Boolean UserBreak() override
+    {
+        return work && std::chrono::steady_clock::now() > work->deadline_;
+    }
+    void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
+    /// What the errors say of the part and its budget.
+    std::string part() const { return work && !work->part_.empty() ? " of '" + work->part_ + "'" : ""; }
+    std::string spent() const
+    {
+        std::ostringstream s;
+        s << (work ? work->seconds_ : 0);
+        return s.str();
+    }
+};
+
+Work::Work(std::string part, double seconds)
+    : part_(std::move(part)),
+      seconds_(seconds > 0 || !current ? seconds : current->seconds_),
+      deadline_(seconds_ > 0 ? std::chrono::steady_clock::now() +
+                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(seconds_))
+                             : std::chrono::steady_clock::time_point::max()),
+      enclosing_(current)
+{
+    current = this;
+}
+
+Work::~Work()
+{
+    current = enclosing_;
+}
+
+namespace {
+
+/// A Boolean operation of the first shape with the others, or an error naming it and the part worked on:
+/// OpenCASCADE reports failures by flags, not exceptions. Many tools in one operation are much faster than
+/// one at a time.
 template <typename Operation>
 TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
 {
@@ -38,15 +84,23 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
     operation.SetArguments(first);
     operation.SetTools(rest);
     operation.SetRunParallel(true);
-    operation.Build();
+    Handle(Budget) budget = new Budget();
+    operation.Build(budget->Start());
+    if (operation.HasError(STANDARD_TYPE(BOPAlgo_AlertUserBreak)))
+        throw std::runtime_error(std::string("geometry: the ") + what + budget->part() +
+                                 " took longer than its " + budget->spent() + " s (OpenCASCADE, " +
+                                 std::to_string(shapes.size() - 1) +
+                                 (shapes.size() == 2 ? " tool" : " tools") +
+                                 "); fewer cuboids or configurations make fewer faces, or allow more with "
+                                 "--part-seconds");
     if (operation.HasErrors()) {
         std::ostringstream report;
         operation.DumpErrors(report);
         std::string errors = report.str();
         while (!errors.empty() && std::isspace(static_cast<unsigned char>(errors.back())))
             errors.pop_back();
-        throw std::runtime_error(std::string("geometry: a ") + what + " failed: " + errors +
-                                 "; try another --gap or --scale");
+        throw std::runtime_error(std::string("geometry: the ") + what + budget->part() +
+                                 " failed: " + errors + "; try another --gap or --scale");
     }
     return operation.Shape();
 }

@@ -9,6 +9,8 @@
 #include <gp_Trsf.hxx>
 
 #include <array>
+#include <chrono>
+#include <string>
 #include <vector>
 
 namespace fabguide::printable {
@@ -21,6 +23,25 @@ using function::Side;
 using Coordinates = std::array<double, 6>;
 
 constexpr double kPi = 3.14159265358979323846;
+
+/// What the Boolean operations are for while it lives (issue 15): the part their errors name, and a time
+/// budget for that part's operations, so that OpenCASCADE stuck on a shape ends in an error naming the part
+/// and the operation rather than a hang. Nests, one stack per thread; a work without a budget (0) takes its
+/// enclosing one's seconds, counted afresh.
+class Work {
+public:
+    explicit Work(std::string part, double seconds = 0);
+    ~Work();
+    Work(const Work&) = delete;
+    Work& operator=(const Work&) = delete;
+
+private:
+    friend struct Budget;
+    std::string part_;
+    double seconds_;
+    std::chrono::steady_clock::time_point deadline_;
+    const Work* enclosing_;
+};
 
 /// The box with these corners.
 TopoDS_Shape box(const Coordinates& c);

@@ -382,3 +382,32 @@ TEST(PrintInPlace, AModelThatDoesNotSolveSaysWhy)
             << e.what();
     }
 }
+
+TEST(Solids, OpenCascadePastAPartsTimeBudgetStopsWithAnErrorNamingThePartAndTheOperation)
+{
+    const Work print("", 30);  // the print's budget per part
+    {
+        const Work lid("lid", 1e-9);  // spent before OpenCASCADE starts
+        try {
+            fuse(box({0, 10, 0, 10, 0, 10}), box({5, 15, 5, 15, 5, 15}));
+            FAIL() << "an operation past its budget is stopped";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("the union of 'lid' took longer than its 1e-09 s"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    const Work box2("box");  // the print's 30 s, counted afresh
+    EXPECT_NEAR(volumeOf(fuse(box({0, 10, 0, 10, 0, 10}), box({5, 15, 5, 15, 5, 15}))), 2000 - 125, 1e-6);
+}
+
+TEST(Solids, TheHingedLidPrintsWithinItsBudgetAndAnExhaustedOneNamesAPart)
+{
+    EXPECT_EQ(makePrintable(hinged(), {0.4, 60}).bodies.size(), 2u);
+    try {
+        makePrintable(hinged(), {0.4, 1e-9});
+        FAIL() << "no part is made in a nanosecond";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("of 'box' took longer"), std::string::npos) << e.what();
+    }
+}

@@ -88,6 +88,14 @@ def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_pat
     assert "'open drawer keeps 10 mm inside', 'no overlap: body, drawer in 'open'' cannot hold together" in run.stderr
 
 
+def test_opencascade_past_a_parts_time_budget_stops_with_its_name_not_a_hang(fabguide_cli, source_dir, tmp_path):
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "toolbox", "--part-seconds", "0.001")
+    assert run.returncode == 1
+    assert re.search(r"error: geometry: the (union|cut) of '[^']+' took longer than its 0.001 s", run.stderr), run.stderr
+    assert "--part-seconds" in run.stderr and "Traceback" not in run.stderr
+    assert not (out / "assembly.stl").exists()
+
+
 def test_the_box_with_a_lid_prints_its_drawer_in_its_bay(fabguide_cli, source_dir, tmp_path):
     run, out = printable(fabguide_cli, source_dir, tmp_path, "box-with-lid")
     assert run.returncode == 0, run.stdout + run.stderr
