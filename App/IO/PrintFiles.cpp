@@ -23,6 +23,7 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Vec.hxx>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -106,11 +107,31 @@ std::string prusaSlicerConfig(const std::string& name, const std::vector<printab
     return config.str();
 }
 
+/// A body's file name stem: its name with '-' for what is not a letter or digit. A body of many parts is
+/// named by its first and how many more ("cab-0-0-and-23-more": the joined names of a wall's carcasses passed
+/// the 255 bytes a file name may have); a name still longer than 80 is cut there and told apart by its FNV-1a
+/// hash.
 std::string fileName(const std::string& name)
 {
+    std::string stem = name;
+    const std::string joint = " + ";
+    if (stem.size() > 80 && stem.find(joint) != std::string::npos) {
+        int more = 0;
+        for (size_t at = stem.find(joint); at != std::string::npos; at = stem.find(joint, at + joint.size()))
+            ++more;
+        stem = stem.substr(0, stem.find(joint)) + " and " + std::to_string(more) + " more";
+    }
     std::string out;
-    for (char c : name)
+    for (char c : stem)
         out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+    if (out.size() > 80) {
+        std::uint32_t hash = 2166136261u;
+        for (unsigned char c : name)
+            hash = (hash ^ c) * 16777619u;
+        char hex[9];
+        std::snprintf(hex, sizeof hex, "%08x", hash);
+        out = out.substr(0, 71) + "-" + hex;
+    }
     return out;
 }
 

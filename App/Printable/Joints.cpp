@@ -5,10 +5,12 @@
 #include "Printable/Motion.h"
 #include "Printable/Sweeps.h"
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <Bnd_Box.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
 
@@ -356,7 +358,18 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                 around.push_back(swept);
         }
     part = cut(part, around);
-    other = cut(other, slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g));
+    // The knuckle's slot, in every part it would reach: the base, and a part beside it that the round
+    // reaches (a wall's next carcass, flush with the base, whose corner the knuckle would graze).
+    const TopoDS_Shape slot = slotted(m, j, at, along, lo + yoke, hi - yoke, r.outer + g);
+    Bnd_Box reach;
+    BRepBndLib::Add(slot, reach);
+    for (size_t p = 0; p < shapes.size(); ++p) {
+        Bnd_Box its;
+        BRepBndLib::Add(shapes[p], its);
+        if (static_cast<int>(p) != joint.part && function::carrierOf(m, static_cast<int>(p)) != joint.part &&
+            !reach.IsOut(its) && (static_cast<int>(p) == base || touches(slot, shapes[p])))
+            shapes[p] = cut(shapes[p], slot);
+    }
     // The pin's hole, the gap past its ends, through the other part's corner and through each yoke, before
     // they are joined.
     const TopoDS_Shape hole = slotted(m, j, at, along, lo - g - 1, hi + g + 1, r.pin + g);

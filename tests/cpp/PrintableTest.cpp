@@ -244,6 +244,25 @@ TEST(Joints, AJointThatWouldPrintLooseIsAnErrorNamingIt)
     }
 }
 
+TEST(Joints, AKnucklesSlotIsCutInTheNextCarcassItReaches)
+{
+    // Two carcasses of a wall flush side by side, one body; the right one's door hinged at its compartment's
+    // left edge, 12 mm from the joint between them, where its knuckle reaches the left carcass's corner.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "left", "cuboids": [{"name": "left", "min": [-300, 0, 0], "max": [0, 300, 350]}]},
+                  {"name": "right", "cuboids": [{"name": "right", "min": [0, 0, 0], "max": [300, 300, 350]},
+                     {"name": "inside", "min": [11.5, 0, 12], "max": [288, 288, 338], "cavity": true}]},
+                  {"name": "door", "cuboids": [{"name": "door", "min": [11.5, -23.7, 12], "max": [288, 0, 338]}]}],
+        "joints": [{"name": "door hinge", "type": "hinge", "part": "door", "edge": ["door.left", "door.far"]}],
+        "configurations": [{"name": "open", "poses": {"door hinge": -90}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    EXPECT_EQ(p.bodies[0].name, "left + right");
+    EXPECT_TRUE(valid(p.bodies[0].shape));
+    EXPECT_GE(check(m, p, 0.4, 16).clearance, 0.4 - 0.01);
+}
+
 TEST(Checks, ABodyInPiecesIsNamed)
 {
     Printable p;
