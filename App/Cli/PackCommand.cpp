@@ -20,6 +20,7 @@ struct PackArguments {
     std::string svgFolder, dxfFolder, csvFile;
     bool strip = false;
     bool bottomLeft = false;
+    int rotationStep = -1;  // -1: as the file's settings say
     material::OrderingSearchOptions search;
 };
 
@@ -33,8 +34,10 @@ void run(const PackArguments& args)
         io::checkWritableFile(args.csvFile);
     io::OutputBatch files;
     const nlohmann::json document = io::readJsonFile(args.input);
-    const material::PackProblem problem =
+    material::PackProblem problem =
         args.strip ? io::readStripInstance(document) : io::readPackProblem(document);
+    if (args.rotationStep >= 0)
+        problem.settings.rotationStep = args.rotationStep;
     material::OrderingSearchOptions search = args.search;
     search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
     const material::Layout layout = material::pack(problem, search);
@@ -73,6 +76,12 @@ void addPackCommand(CLI::App& app)
     cmd->add_flag("--strip", args->strip,
                   "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");
+    cmd->add_option(
+           "--rotation-step", args->rotationStep,
+           "free rotation: parts without grain that may take every quarter turn may take every multiple "
+           "of this many degrees (a divisor of 90, e.g. 15); 0: quarter turns (default: the file's "
+           "settings.rotation_step)")
+        ->check(CLI::Range(0, 90));
     cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
     cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
         ->check(CLI::Range(0.0, 86400.0))

@@ -40,8 +40,12 @@ Point2 turned(Point2 p, int degrees)
             return {-p.x, -p.y};
         case 270:
             return {p.y, -p.x};
-        default:
+        case 0:
             return p;
+        default: {  // free rotation (issue 16): any whole degree
+            const double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
+            return {c * p.x - s * p.y, s * p.x + c * p.y};
+        }
     }
 }
 

@@ -59,8 +59,8 @@ struct Placement2 {
 /// The placement that turns `outline` by `degrees` and moves its bounding box's lower-left corner to (x, y).
 Placement2 placement(const Outline& outline, int degrees, double x, double y);
 
-/// The outline turned by `degrees` (a multiple of 90) and moved so its bounding box's lower-left corner
-/// is at (x, y).
+/// The outline turned by `degrees` (counter-clockwise; quarter turns exact) and moved so its bounding box's
+/// lower-left corner is at (x, y).
 Outline placed(const Outline& outline, int degrees, double x, double y);
 
 /// The outline with `polygons` added (union); throws std::runtime_error if it falls into pieces.

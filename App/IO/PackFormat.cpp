@@ -147,6 +147,10 @@ material::PackSettings readSettings(const nlohmann::json& document)
     result.dogbone = settings.number("dogbone", 0.0, 0.0);
     result.tabWidth = settings.number("tab_width", 0.0, 0.0);
     result.tabBelow = settings.number("tab_below", 300.0, 0.0);
+    result.rotationStep = settings.integer("rotation_step", 0);
+    if (result.rotationStep < 0 || (result.rotationStep > 0 && 90 % result.rotationStep != 0))
+        throw FormatError("settings.rotation_step: must divide 90 (e.g. 15, 30, 45) or be 0, got " +
+                          std::to_string(result.rotationStep));
     return result;
 }
 
@@ -443,7 +447,8 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
               {"trim", s.trim},
               {"dogbone", s.dogbone},
               {"tab_width", s.tabWidth},
-              {"tab_below", s.tabBelow}}},
+              {"tab_below", s.tabBelow},
+              {"rotation_step", s.rotationStep}}},
             {"boards", boards},
             {"parts", parts}};
 }

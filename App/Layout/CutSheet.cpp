@@ -9,14 +9,20 @@ namespace fabguide::material {
 namespace {
 
 /// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
-/// longer side, as large as fits the circle free there (a text n characters long is about 0.6 n of its
-/// height wide) between 2 and 12 mm.
-Label labelOf(const std::string& text, const geometry::Outline& placed, const Placement& p)
+/// longer side (a freely turned part's own, kept within a quarter turn of upright), as large as fits the
+/// circle free there (a text n characters long is about 0.6 n of its height wide) between 2 and 12 mm.
+Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Placement& p)
 {
     const auto [at, room] = geometry::deepestPoint(placed);
-    const double n = static_cast<double>(std::max<size_t>(text.size(), 1));
+    const double n = static_cast<double>(std::max<size_t>(spec.id.size(), 1));
     const double fits = room / std::sqrt(0.09 * n * n + 0.25);  // half-diagonal of the text box = room
-    return {text, at, std::clamp(fits, 2.0, 12.0), p.height > p.width ? 90.0 : 0.0};
+    double angle = p.height > p.width ? 90.0 : 0.0;
+    if (p.rotation % 90 != 0) {
+        angle = std::fmod(p.rotation + (spec.height() > spec.width() ? 90.0 : 0.0), 180.0);
+        if (angle > 90)
+            angle -= 180;
+    }
+    return {spec.id, at, std::clamp(fits, 2.0, 12.0), angle};
 }
 
 }  // namespace
@@ -79,7 +85,7 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
             } else {
                 outers[p.sheet].push_back(path.outer);
             }
-            sheet.labels.push_back(labelOf(spec.id, placed[k], p));
+            sheet.labels.push_back(labelOf(spec, placed[k], p));
             const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
             for (const Drill& drill : spec.drills)
                 sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});

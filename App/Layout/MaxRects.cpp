@@ -344,8 +344,8 @@ std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double
         return poses;
     for (int rotation : part.orientations) {
         const bool turned = rotation % 180 != 0;
-        if (!grainAllows(part.followsGrain, rotation, board.grain))
-            continue;
+        if (rotation % 90 != 0 || !grainAllows(part.followsGrain, rotation, board.grain))
+            continue;  // free rotation is Docking's: rectangles lie square here
         if (std::any_of(poses.begin(), poses.end(),
                         [&](const Pose& p) { return p.rotation % 180 == rotation % 180; }))
             continue;

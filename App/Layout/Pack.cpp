@@ -45,9 +45,8 @@ bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& 
         return false;
     const double w = board.width - 2 * s.trim, h = strip ? HUGE_VAL : board.height - 2 * s.trim;
     for (int rotation : part.orientations) {
-        const bool turned = rotation % 180 != 0;
-        if ((turned ? part.height() : part.width()) <= w + 1e-9 &&
-            (turned ? part.width() : part.height()) <= h + 1e-9)
+        const auto [width, height] = part.turnedSize(rotation);
+        if (width <= w + 1e-9 && height <= h + 1e-9)
             return true;
     }
     return false;
@@ -89,6 +88,9 @@ void checkSettings(const PackProblem& problem)
         throw std::invalid_argument("boards: at least one master board is needed");
     if (problem.parts.empty())
         throw std::invalid_argument("parts: nothing to lay out");
+    if (s.rotationStep < 0 || (s.rotationStep > 0 && 90 % s.rotationStep != 0))
+        throw std::invalid_argument("settings.rotation_step must divide 90 (e.g. 15, 30, 45), got " +
+                                    std::to_string(s.rotationStep));
     // Sizes are checked before anything is rasterised: the grid is what takes time and memory.
     for (size_t k = 0; k < problem.boards.size(); ++k) {
         const MasterBoard& b = problem.boards[k];
@@ -166,6 +168,14 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
     return best;
 }
 
+std::pair<double, double> PartSpec::turnedSize(int rotation) const
+{
+    if (rotation % 90 == 0)
+        return rotation % 180 ? std::pair{height(), width()} : std::pair{width(), height()};
+    const geometry::Box2 box = geometry::bounds(geometry::placed(outline, rotation, 0, 0).outer);
+    return {box.width(), box.height()};
+}
+
 PartSpec rectangularPart(std::string id, double width, double height, int quantity,
                          std::vector<int> orientations)
 {
@@ -218,10 +228,9 @@ Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const R
     for (const Placed& p : grid.placed) {
         const PartSpec& spec = problem.parts[raster.specOf[p.part]];
         const int rotation = raster.parts[p.part].rotations[p.shape];
-        const bool turned = rotation % 180 != 0;
-        layout.placements.push_back(
-            {raster.specOf[p.part], p.sheet, settings.trim + p.x * tau, settings.trim + p.y * tau, rotation,
-             turned ? spec.height() : spec.width(), turned ? spec.width() : spec.height()});
+        const auto [width, height] = spec.turnedSize(rotation);
+        layout.placements.push_back({raster.specOf[p.part], p.sheet, settings.trim + p.x * tau,
+                                     settings.trim + p.y * tau, rotation, width, height});
         layout.partArea += geometry::area(spec.outline);
     }
     return layout;
@@ -293,9 +302,28 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 
 }  // namespace
 
-Layout pack(const PackProblem& problem, const OrderingSearchOptions& search)
+PackProblem freelyTurned(PackProblem problem)
+{
+    const int step = problem.settings.rotationStep;
+    if (step <= 0)
+        return problem;
+    for (PartSpec& part : problem.parts) {
+        const auto allows = [&](int r) {
+            return std::count(part.orientations.begin(), part.orientations.end(), r) > 0;
+        };
+        if (part.followsGrain || !allows(0) || !allows(90) || !allows(180) || !allows(270))
+            continue;
+        part.orientations.clear();
+        for (int r = 0; r < 360; r += step)
+            part.orientations.push_back(r);
+    }
+    return problem;
+}
+
+Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
+    const PackProblem problem = freelyTurned(given);
     checkSettings(problem);
     std::vector<int> left;
     for (const PartSpec& part : problem.parts)

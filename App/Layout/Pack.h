@@ -6,6 +6,7 @@
 #include "Layout/OrderingSearch.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fabguide::material {
@@ -35,6 +36,8 @@ struct PartSpec {
     double thickness = 0;       ///< mm: cut only from master boards this thick; 0: from any
     double width() const { return geometry::bounds(outline.outer).width(); }
     double height() const { return geometry::bounds(outline.outer).height(); }
+    /// The width and height of its bounding box turned by `rotation` degrees (counter-clockwise).
+    std::pair<double, double> turnedSize(int rotation) const;
 };
 
 /// A plain width × height rectangular part.
@@ -49,6 +52,8 @@ struct PackSettings {
     double dogbone = 0;       ///< router bit diameter for dogbones at inside corners, mm; 0: none
     double tabWidth = 0;      ///< holding tabs left in the outer cut of small parts, mm wide; 0: none
     double tabBelow = 300;    ///< parts whose longer side is under this (mm) get holding tabs
+    int rotationStep = 0;     ///< free rotation: parts without grain that may take every quarter turn take
+                              ///< every multiple of this many degrees (a divisor of 90); 0: quarter turns
 };
 
 struct PackProblem {
@@ -100,6 +105,10 @@ void checkSettings(const PackProblem& problem);
 /// A part's allowed orientations rasterised at the settings' resolution with kerf + spacing as clearance,
 /// identical shapes once (a turned one kept apart when the part follows the grain).
 RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings);
+
+/// The problem with free rotation applied (settings.rotationStep): each part without grain that may take
+/// every quarter turn may take every multiple of the step.
+PackProblem freelyTurned(PackProblem problem);
 
 /// A problem on the material-space grid: one RasterPart per unit of demand, the part (spec) each unit is
 /// of, and the master boards in cells (trim removed, clearance added back at the far edges).

@@ -9,13 +9,16 @@ import math
 def placed(part, placement):
     """The part's rings (outer first, then holes) turned by the placement's rotation and moved so the bounding box
     of its outer ring has its lower-left corner at (x, y)."""
-    turns = placement["rotation"] // 90 % 4
+    degrees = placement["rotation"] % 360
     rings = [part["outline"]] + part.get("holes", [])
 
     def turn(x, y):
-        for _ in range(turns):
-            x, y = -y, x
-        return x, y
+        if degrees % 90 == 0:  # quarter turns exactly
+            for _ in range(degrees // 90):
+                x, y = -y, x
+            return x, y
+        a = math.radians(degrees)
+        return x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
     rings = [[turn(x, y) for x, y in ring] for ring in rings]
     low_x = min(x for x, _ in rings[0])
     low_y = min(y for _, y in rings[0])
@@ -76,7 +79,8 @@ def bounds(rings):
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def problems(layout, problem, eps=1e-6):
+def problems(layout, problem, eps=1e-6, rotation_step=None):
+    """`rotation_step`: the free rotation the layout was asked for, when not the problem's settings.rotation_step."""
     settings = problem.get("settings", {})
     clearance = settings.get("kerf", 0) + settings.get("spacing", 0)
     trim = settings.get("trim", 0)
@@ -86,7 +90,12 @@ def problems(layout, problem, eps=1e-6):
     shapes = []
     for n, p in enumerate(layout["placements"]):
         count[p["part"]] = count.get(p["part"], 0) + 1
-        rings = placed(parts[p["part"]], p)
+        step, part = rotation_step or settings.get("rotation_step", 0), parts[p["part"]]
+        allowed = part.get("orientations", [0, 90, 180, 270])
+        free = step and not part.get("follow_grain") and all(r in allowed for r in (0, 90, 180, 270))
+        if p["rotation"] % 360 not in allowed and not (free and p["rotation"] % step == 0):
+            found.append("placement {}: {!r} turned {} degrees, which it may not".format(n, p["part"], p["rotation"]))
+        rings = placed(part, p)
         board = layout["boards"][p["board"]]
         low_x, low_y, high_x, high_y = bounds(rings)
         if low_x < trim - eps or low_y < trim - eps or high_x > board["width"] - trim + eps or \

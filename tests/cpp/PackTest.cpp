@@ -221,3 +221,35 @@ TEST(Pack, OffcutsAreUsedBeforeNewSheetsAndCostNothing)
                             [](const MasterBoard& b) { return b.name == "offcut"; }));
     EXPECT_LT(cost(with), cost(without));
 }
+
+TEST(Pack, FreeRotationTurnsAStickThatFitsTheBoardOnlyAcrossIt)
+{
+    // A 130 mm stick on a 100 mm square board: no quarter turn fits it, 45 degrees does.
+    PackProblem problem;
+    problem.boards.push_back({"square", "ply", 100, 100, 6, 1});
+    problem.parts.push_back(rectangularPart("stick", 130, 8));
+    problem.settings.resolution = 0.5;
+    try {
+        pack(problem, quick());
+        FAIL() << "the stick fits no quarter turn";
+    } catch (const PackingError& e) {
+        EXPECT_NE(std::string(e.what()).find("'stick'"), std::string::npos) << e.what();
+    }
+    problem.settings.rotationStep = 15;
+    const Layout layout = pack(problem, quick());
+    ASSERT_EQ(layout.placements.size(), 1u);
+    const Placement& p = layout.placements[0];
+    EXPECT_EQ(p.rotation % 90, 45);
+    const fabguide::geometry::Box2 at = fabguide::geometry::bounds(
+        fabguide::geometry::placed(problem.parts[0].outline, p.rotation, p.x, p.y).outer);
+    EXPECT_GE(at.minX, -1e-9);
+    EXPECT_GE(at.minY, -1e-9);
+    EXPECT_LE(at.maxX, 100 + 1e-9);
+    EXPECT_LE(at.maxY, 100 + 1e-9);
+    EXPECT_NEAR(p.width, at.width(), 1e-9);
+    problem.parts[0].followsGrain = true;  // a part along the grain keeps its quarter turns
+    problem.boards[0].grain = Grain::AlongWidth;
+    EXPECT_THROW(pack(problem, quick()), PackingError);
+    problem.settings.rotationStep = 7;
+    EXPECT_THROW(pack(problem, quick()), std::invalid_argument);
+}

@@ -22,6 +22,17 @@ TEST(Polygon, PlacedTurnsAndMovesTheBoundingBox)
     EXPECT_DOUBLE_EQ(b.maxY, 240);
 }
 
+TEST(Polygon, PlacedTurnsByAnyDegreeKeepingTheArea)
+{
+    const Outline o = placed(rectangle(40, 10), 30, 5, 7);
+    const Box2 b = bounds(o.outer);
+    EXPECT_NEAR(b.minX, 5, 1e-9);
+    EXPECT_NEAR(b.minY, 7, 1e-9);
+    EXPECT_NEAR(b.width(), 40 * std::cos(M_PI / 6) + 10 * std::sin(M_PI / 6), 1e-9);
+    EXPECT_NEAR(b.height(), 40 * std::sin(M_PI / 6) + 10 * std::cos(M_PI / 6), 1e-9);
+    EXPECT_NEAR(signedArea(o.outer), 400, 1e-9);
+}
+
 TEST(Polygon, OffsetGrowsOutlinesAndShrinksHolesKeepingCorners)
 {
     Outline frame = rectangle(100, 60);

@@ -190,3 +190,29 @@ def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_di
             around = [c for c in cuts if outline_check.inside(c, (px, py))]
             # inside exactly one outer cut and no hole: the innermost path holding it is its part's outline
             assert len(around) == 1, (text.dxf.text, px, py, len(around))
+
+
+def test_free_rotation_lays_slats_across_offcuts_too_small_for_them_square(fabguide_cli, source_dir, tmp_path):
+    # 620 mm slats on 500 mm offcuts fit only turned across the diagonal; gussets may turn freely; the name plate
+    # follows the grain and keeps its quarter turns. Checked on the real outlines, and the DXF audited.
+    import ezdxf
+
+    source = os.path.join(source_dir, "tests", "data", "free-rotation.pack.json")
+    square = pack(fabguide_cli, source, "-o", str(tmp_path / "square.json"))
+    assert square.returncode != 0 and "part 'slat' is larger than every master board" in square.stderr
+    run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--rotation-step", "15", "--time-limit",
+               "2", "--dxf", str(tmp_path / "dxf"), "--svg", str(tmp_path / "svg"))
+    assert run.returncode == 0, run.stderr
+    problem, layout = json.load(open(source)), json.load((tmp_path / "layout.json").open())
+    assert outline_check.problems(layout, problem, rotation_step=15) == []
+    assert outline_check.problems(layout, problem) != []  # the checker refuses the same turns when not asked for
+    turns = {p["part"]: p["rotation"] for p in layout["placements"]}
+    assert turns["slat"] % 90 != 0 and turns["slat"] % 15 == 0
+    assert turns["name plate"] in (0, 180)
+    assert len(layout["boards"]) == 2
+    for dxf in sorted((tmp_path / "dxf").iterdir()):
+        doc = ezdxf.readfile(str(dxf))
+        auditor = doc.audit()
+        assert not auditor.has_errors, [str(e) for e in auditor.errors]
+    bad = pack(fabguide_cli, source, "-o", str(tmp_path / "bad.json"), "--rotation-step", "7")
+    assert bad.returncode != 0 and "rotation_step must divide 90" in bad.stderr and "Traceback" not in bad.stderr

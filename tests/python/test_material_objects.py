@@ -349,6 +349,8 @@ def test_core_errors_about_a_part_name_the_piece_it_is(doc):
      "Master board 'MasterBoard': Count must be 0 (as many as needed) or more; kept 1"),
     (lambda doc: master_board.create(doc, 1000, 600, 12), "Thickness", 0,
      "Master board 'MasterBoard': Thickness must be greater than 0; kept 12"),
+    (lambda doc: layout.create(doc, *shelf_unit(doc)), "RotationStep", 7,
+     "Layout 'Layout': RotationStep must be 0 or a divisor of 90 (e.g. 15, 30, 45); kept 0"),
 ])
 def test_a_bad_value_is_refused_as_it_is_typed(doc, make, prop, bad, message, monkeypatch):
     obj = make(doc)
@@ -360,3 +362,17 @@ def test_a_bad_value_is_refused_as_it_is_typed(doc, make, prop, bad, message, mo
     assert len(said) == 1 and said[0].startswith(message), said
     doc.recompute()
     assert not obj.Error
+
+
+def test_free_rotation_lays_a_slat_across_an_offcut_it_fits_only_diagonally(doc):
+    slat = board.create(doc, box(doc, "Slat", 620, 40, 6), label="slat")
+    offcut = master_board.create(doc, 500, 500, 6, count=0, material="birch plywood")
+    lay = layout.create(doc, [slat], [offcut])
+    doc.recompute()
+    assert "slat" in lay.Error  # no quarter turn fits it
+    lay.RotationStep = 15
+    doc.recompute()
+    assert not lay.Error, lay.Error
+    placed = json.loads(lay.LayoutJson)["placements"][0]
+    assert placed["rotation"] % 90 != 0 and placed["rotation"] % 15 == 0
+    assert placed["width"] <= 500 and placed["height"] <= 500

@@ -21,7 +21,9 @@ class LayoutError(ValueError):
 
 class Layout(properties.Proxy):
     TYPE, NOUN = "FabGuide::Layout", "Layout"
-    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"))
+    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"),
+                 RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
+                               "0 or a divisor of 90 (e.g. 15, 30, 45)"))
 
     def define(self, obj):
         add = properties.add
@@ -42,6 +44,9 @@ class Layout(properties.Proxy):
             "Auto", list(JOINTS))
         add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
         add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyInteger", "RotationStep", "Search",
+            "Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, "
+            "e.g. 15); 0 = quarter turns only", 0)
         add(obj, "App::PropertyInteger", "Iterations", "Search",
             "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
         add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
@@ -111,7 +116,7 @@ def make_problem(obj):
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value, "tab_width": obj.TabWidth.Value,
-                     "tab_below": obj.TabBelow.Value},
+                     "tab_below": obj.TabBelow.Value, "rotation_step": obj.RotationStep},
         "boards": [master_board.as_problem_board(m) for m in masters],
     }
     return problem, boards
