@@ -60,7 +60,6 @@ public:
     Search(std::vector<Kind> kinds, double width, double height, double waste, bool whole, long nodes,
            std::optional<std::uint64_t> shuffle, std::chrono::steady_clock::time_point deadline)
         : kinds_(std::move(kinds)),
-          width_(width),
           height_(height),
           wasteLeft_(waste),
           whole_(whole),
@@ -312,7 +311,7 @@ private:
     }
 
     std::vector<Kind> kinds_;
-    double width_, height_, wasteLeft_;
+    double height_, wasteLeft_;
     bool whole_;  // every size a whole number: gaps are filled by subset sums of widths
     long nodesLeft_, unitsLeft_ = 0;
     std::mt19937_64 random_;
@@ -431,14 +430,16 @@ double leastStripHeight(const PackProblem& problem)
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
                                    std::chrono::steady_clock::time_point deadline)
 {
-    const auto [kinds, width, area, units, whole, step, least] = stripOf(problem);
-    const long base = std::max(200L, static_cast<long>(2 * units));
+    const Strip strip = stripOf(problem);
+    const double step = strip.step, least = strip.least;
+    const long base = std::max(200L, static_cast<long>(2 * strip.units));
     long nodes = budget.nodes;
     std::uint64_t seed = budget.seed;
     std::optional<Layout> best;
     double ceiling = HUGE_VAL;  // the lowest strip found, with clearance: lower ones are sought
     const auto tried = [&](double height, long size, std::optional<std::uint64_t> shuffle) {
-        Search search(kinds, width, height, height * width - area, whole, size, shuffle, deadline);
+        Search search(strip.kinds, strip.width, height, height * strip.width - strip.area, strip.whole, size,
+                      shuffle, deadline);
         const bool found = search.run();
         nodes -= size - std::max(0L, search.nodesLeft());
         if (found && search.top() < ceiling) {
@@ -452,7 +453,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
     // short search at heights bisected between the lower bound and the lowest strip found; then restarts,
     // shuffled and longer by the Luby sequence, at the lower bound and just below the lowest strip found, in
     // turn.
-    tried(HUGE_VAL, static_cast<long>(2 * units) + 1, std::nullopt);
+    tried(HUGE_VAL, static_cast<long>(2 * strip.units) + 1, std::nullopt);
     for (double low = least; ceiling - low > step + kHair && left();) {
         const double height = std::floor((low + ceiling) / 2 / step) * step;
         if (!tried(height, std::min(base, nodes), std::nullopt))
