@@ -101,7 +101,7 @@ public:
 private:
     struct Candidate {
         std::tuple<bool, bool, double> rank;  // lower first: top not level with a neighbour, not the gap's
-        int kind = 0, pose = 0;               // width, larger w²h (jittered when shuffled)
+        int kind = 0, pose = 0;               // width, larger w^k·h (jittered when shuffled)
     };
 
     bool outOfNodes()
@@ -430,6 +430,11 @@ double leastStripHeight(const PackProblem& problem)
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
                                    std::chrono::steady_clock::time_point deadline)
 {
+    const PackSettings& s = problem.settings;
+    if (std::any_of(problem.parts.begin(), problem.parts.end(), [&](const PartSpec& part) {
+            return posesOn(part, problem.boards[0], s.kerf + s.spacing).empty();
+        }))
+        return std::nullopt;  // a part that lies no square way on the strip: Docking's to place
     const Strip strip = stripOf(problem);
     const double step = strip.step, least = strip.least;
     const long base = std::max(200L, static_cast<long>(2 * strip.units));
