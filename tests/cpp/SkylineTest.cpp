@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace fabguide::material;
 using fabguide::material::testing::expectValid;
