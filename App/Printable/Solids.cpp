@@ -39,9 +39,9 @@ struct Budget : Message_ProgressIndicator {
         return work && std::chrono::steady_clock::now() > work->deadline_;
     }
     void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
-    /// What the errors say of the part and its budget.
+    /// What the errors say: the part worked on, and the seconds it was allowed.
     std::string part() const { return work && !work->part_.empty() ? " of '" + work->part_ + "'" : ""; }
-    std::string spent() const
+    std::string allowed() const
     {
         std::ostringstream s;
         s << (work ? work->seconds_ : 0);
@@ -88,7 +88,7 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& shapes, const char* what)
     operation.Build(budget->Start());
     if (operation.HasError(STANDARD_TYPE(BOPAlgo_AlertUserBreak)))
         throw std::runtime_error(std::string("geometry: the ") + what + budget->part() +
-                                 " took longer than its " + budget->spent() + " s (OpenCASCADE, " +
+                                 " took longer than its " + budget->allowed() + " s (OpenCASCADE, " +
                                  std::to_string(shapes.size() - 1) +
                                  (shapes.size() == 2 ? " tool" : " tools") +
                                  "); fewer cuboids or configurations make fewer faces, or allow more with "
