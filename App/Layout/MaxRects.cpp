@@ -343,14 +343,13 @@ std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double
     if (!ofThickness(part.thickness, board.thickness))
         return poses;
     for (int rotation : part.orientations) {
-        const bool turned = rotation % 180 != 0;
         if (rotation % 90 != 0 || !grainAllows(part.followsGrain, rotation, board.grain))
             continue;  // free rotation is Docking's: rectangles lie square here
         if (std::any_of(poses.begin(), poses.end(),
                         [&](const Pose& p) { return p.rotation % 180 == rotation % 180; }))
             continue;
-        poses.push_back({rotation, (turned ? part.height() : part.width()) + clearance,
-                         (turned ? part.width() : part.height()) + clearance});
+        const auto [width, height] = part.turnedSize(rotation);
+        poses.push_back({rotation, width + clearance, height + clearance});
     }
     return poses;
 }

@@ -249,11 +249,30 @@ bool better(const Layout& a, const Layout& b)
 
 namespace {
 
+/// The problem with free rotation applied (settings.rotationStep): each part without grain that may take
+/// every quarter turn may take every multiple of the step.
+PackProblem freelyTurned(PackProblem problem)
+{
+    const int step = problem.settings.rotationStep;
+    if (step <= 0)
+        return problem;
+    for (PartSpec& part : problem.parts) {
+        const auto allows = [&](int r) {
+            return std::count(part.orientations.begin(), part.orientations.end(), r) > 0;
+        };
+        if (part.followsGrain || !allows(0) || !allows(90) || !allows(180) || !allows(270))
+            continue;
+        part.orientations.clear();
+        for (int r = 0; r < 360; r += step)
+            part.orientations.push_back(r);
+    }
+    return problem;
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
     const auto deadline = started + seconds(search.timeLimit);
-    checkSettings(problem);
     const bool rectangles = allRectangles(problem);
     long units = 0;
     for (const PartSpec& part : problem.parts)
@@ -301,24 +320,6 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 }
 
 }  // namespace
-
-PackProblem freelyTurned(PackProblem problem)
-{
-    const int step = problem.settings.rotationStep;
-    if (step <= 0)
-        return problem;
-    for (PartSpec& part : problem.parts) {
-        const auto allows = [&](int r) {
-            return std::count(part.orientations.begin(), part.orientations.end(), r) > 0;
-        };
-        if (part.followsGrain || !allows(0) || !allows(90) || !allows(180) || !allows(270))
-            continue;
-        part.orientations.clear();
-        for (int r = 0; r < 360; r += step)
-            part.orientations.push_back(r);
-    }
-    return problem;
-}
 
 Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
 {

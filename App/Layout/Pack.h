@@ -106,10 +106,6 @@ void checkSettings(const PackProblem& problem);
 /// identical shapes once (a turned one kept apart when the part follows the grain).
 RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings);
 
-/// The problem with free rotation applied (settings.rotationStep): each part without grain that may take
-/// every quarter turn may take every multiple of the step.
-PackProblem freelyTurned(PackProblem problem);
-
 /// A problem on the material-space grid: one RasterPart per unit of demand, the part (spec) each unit is
 /// of, and the master boards in cells (trim removed, clearance added back at the far edges).
 struct RasterProblem {

@@ -7,6 +7,7 @@
 #include <map>
 #include <random>
 #include <tuple>
+#include <utility>
 
 namespace fabguide::material {
 
@@ -33,6 +34,7 @@ struct Put {
     double x = 0, y = 0;
 };
 
+/// The kinds of `problem`'s units; none when a part has no square pose on the strip.
 std::vector<Kind> kindsOf(const PackProblem& problem, double clearance)
 {
     std::map<std::vector<std::pair<double, double>>, size_t> index;  // sizes of the poses -> kind
@@ -40,6 +42,8 @@ std::vector<Kind> kindsOf(const PackProblem& problem, double clearance)
     for (size_t p = 0; p < problem.parts.size(); ++p) {
         const PartSpec& part = problem.parts[p];
         std::vector<Pose> poses = posesOn(part, problem.boards[0], clearance);
+        if (poses.empty())
+            return {};  // a part that lies no square way on the strip: Docking's to place
         std::vector<std::pair<double, double>> sizes;
         for (const Pose& pose : poses)
             sizes.emplace_back(std::round(pose.w / kHair) * kHair, std::round(pose.h / kHair) * kHair);
@@ -113,13 +117,19 @@ private:
         return nodesLeft_ < 0;
     }
 
+    /// The heights of segment `at`'s left and right neighbours; a wall is infinitely high.
+    std::pair<double, double> neighbours(size_t at) const
+    {
+        return {at > 0 ? skyline_[at - 1].y : HUGE_VAL,
+                at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL};
+    }
+
     /// Whether units go at the right end of segment `at`: its right neighbour is the higher (Wei et al.
     /// 2011), so what the unit leaves of the gap lies by the lower. Either end of the lowest gap is some
     /// unit's corner in a packing without waste.
     bool atRight(size_t at) const
     {
-        const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
-        const double right = at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL;
+        const auto [left, right] = neighbours(at);
         return right > left;
     }
 
@@ -127,8 +137,7 @@ private:
     std::vector<Candidate> candidates(size_t at)
     {
         const Segment& s = skyline_[at];
-        const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
-        const double right = at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL;
+        const auto [left, right] = neighbours(at);
         const double near = atRight(at) ? right : left, far = atRight(at) ? left : right;
         std::uniform_real_distribution<double> jitter(0.8, 1.2);
         std::vector<Candidate> found;
@@ -228,8 +237,7 @@ private:
             }
         for (size_t at = 0; at < skyline_.size(); ++at) {
             const Segment& s = skyline_[at];
-            const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
-            const double right = at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL;
+            const auto [left, right] = neighbours(at);
             const double rise = std::min({left - s.y, right - s.y, shortest});
             if (rise > 0 && rise < HUGE_VAL)
                 waste += (s.w - widestFill(s.w)) * rise;
@@ -295,8 +303,7 @@ private:
                 return false;
         }
         // Left as waste: the gap raised to its lower neighbour.
-        const double left = at > 0 ? skyline_[at - 1].y : HUGE_VAL;
-        const double right = at + 1 < skyline_.size() ? skyline_[at + 1].y : HUGE_VAL;
+        const auto [left, right] = neighbours(at);
         const double level = std::min(left, right), waste = skyline_[at].w * (level - skyline_[at].y);
         if (level == HUGE_VAL || waste > wasteLeft_ + kHair)
             return false;
@@ -430,12 +437,9 @@ double leastStripHeight(const PackProblem& problem)
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
                                    std::chrono::steady_clock::time_point deadline)
 {
-    const PackSettings& s = problem.settings;
-    if (std::any_of(problem.parts.begin(), problem.parts.end(), [&](const PartSpec& part) {
-            return posesOn(part, problem.boards[0], s.kerf + s.spacing).empty();
-        }))
-        return std::nullopt;  // a part that lies no square way on the strip: Docking's to place
     const Strip strip = stripOf(problem);
+    if (strip.kinds.empty())
+        return std::nullopt;
     const double step = strip.step, least = strip.least;
     const long base = std::max(200L, static_cast<long>(2 * strip.units));
     long nodes = budget.nodes;

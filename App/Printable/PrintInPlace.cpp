@@ -102,10 +102,9 @@ void clearHingeBases(const Model& m, const std::vector<Coordinates>& at, double 
         const int edge = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
         for (size_t k = 0; k < m.configurations.size() && edge >= 0; ++k)
             if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k))) {
-                const Work on(m.parts[function::partOf(m, edge)].name);
-                shapes[function::partOf(m, edge)] =
-                    cut(shapes[function::partOf(m, edge)],
-                        hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
+                const int base = function::partOf(m, edge);
+                const Work on(m.parts[base].name);
+                shapes[base] = cut(shapes[base], hingeSweep(m, joint, *pose, boxesOf(m, joint.part, at, g)));
             }
     }
 }

@@ -18,8 +18,8 @@ namespace fabguide::printable {
 /// What the printer needs: the clearance between parts that must not fuse (FDM 0.4 mm, resin 0.2 mm).
 struct Printer {
     double gap = 0.4;
-    double partSeconds =
-        60;  ///< what OpenCASCADE may take on one part (or joint) at each step before an error
+    /// What OpenCASCADE may take on one part (or joint) at each step before an error.
+    double partSeconds = 60;
 };
 
 /// One printed body: a part (with the parts that stand still with it, `part` the first), or a double pivot's
