@@ -1,12 +1,68 @@
 #include "Layout/Docking.h"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <tuple>
 
 namespace fabguide::material {
 
-Sheet::Sheet(int width, int height) : width_(width), height_(height), right_(height, 0), top_(width, 0) {}
+namespace {
+
+/// Adds `run` to the sorted, disjoint `runs`, merging it with those it touches.
+void occupy(std::vector<std::pair<int, int>>& runs, std::pair<int, int> run)
+{
+    auto first = std::lower_bound(runs.begin(), runs.end(), run.first,
+                                  [](const std::pair<int, int>& r, int y) { return r.second < y; });
+    auto last = first;
+    for (; last != runs.end() && last->first <= run.second; ++last)
+        run = {std::min(run.first, last->first), std::max(run.second, last->second)};
+    runs.insert(runs.erase(first, last), run);
+}
+
+}  // namespace
+
+Sheet::Sheet(int width, int height, bool holes)
+    : width_(width), height_(height), columns_(holes ? width : 0), right_(height, 0), top_(width, 0)
+{
+}
+
+std::vector<Sheet::Run>::const_iterator Sheet::runAbove(int column, int y) const
+{
+    const std::vector<Run>& runs = columns_[column];
+    return std::upper_bound(runs.begin(), runs.end(), y,
+                            [](int v, const Run& run) { return v < run.second; });
+}
+
+int Sheet::lowestFit(const Footprint& part, int x) const
+{
+    // Raised past each run it meets until it meets none.
+    int y = 0;
+    for (bool raised = true; raised;) {
+        raised = false;
+        for (int c = 0; c < part.width(); ++c)
+            for (const auto& [from, to] : part.runs(c)) {
+                const auto run = runAbove(x + c, y + from);
+                if (run != columns_[x + c].end() && run->first < y + to) {
+                    y = run->second - from;
+                    raised = true;
+                }
+            }
+    }
+    return y;
+}
+
+long Sheet::areaBelow(const Footprint& part, Position at) const
+{
+    long area = 0;
+    for (int c = 0; c < part.width(); ++c)
+        if (part.runs(c).begin() != part.runs(c).end()) {
+            const int lowest = at.y + part.runs(c).begin()->first;
+            const auto run = runAbove(at.x + c, lowest);
+            area += lowest - (run == columns_[at.x + c].begin() ? 0 : std::prev(run)->second);
+        }
+    return area;
+}
 
 int Sheet::dropFromRight(const Footprint& part, int y) const
 {
@@ -48,6 +104,10 @@ void Sheet::place(const Footprint& part, Position at)
             skylineArea_ += at.y + part.top()[c] - top_[at.x + c];
             top_[at.x + c] = at.y + part.top()[c];
         }
+    if (!columns_.empty())
+        for (int c = 0; c < part.width(); ++c)
+            for (const auto& [from, to] : part.runs(c))
+                occupy(columns_[at.x + c], {at.y + from, at.y + to});
     usedWidth_ = std::max(usedWidth_, at.x + part.width());
     usedHeight_ = std::max(usedHeight_, at.y + part.height());
 }
@@ -80,7 +140,7 @@ Docker::Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds
 Placed Docker::bestOn(int sheetIndex, const RasterPart& part) const
 {
     // Every candidate adds the same part area, so least wastage = least bounding-rectangle area.
-    using Score = std::tuple<long, long, int, int>;  // (bounding area, enclosed area, y, x)
+    using Score = std::tuple<long, long, int, int>;  // (bounding area, enclosed area / area below, y, x)
     const Sheet& sheet = sheets_[sheetIndex];
     Score best{std::numeric_limits<long>::max(), 0, 0, 0};
     Placed choice{0, sheetIndex, 0, 0, -1};
@@ -88,7 +148,7 @@ Placed Docker::bestOn(int sheetIndex, const RasterPart& part) const
         if (!allowedOn(part, s, stock_[layout_.stock[sheetIndex]]))
             continue;
         const Footprint& shape = part.shapes[s];
-        sheet.forEachDockingPosition(shape, [&](Sheet::Position at) {
+        const auto consider = [&](Sheet::Position at) {
             Score score;
             if (criterion_ == Criterion::BottomLeft) {
                 score = {0, 0, at.y, at.x};
@@ -97,15 +157,21 @@ Placed Docker::bestOn(int sheetIndex, const RasterPart& part) const
                                                         : std::max(sheet.usedWidth(), at.x + shape.width());
                 const long h = std::max(sheet.usedHeight(), at.y + shape.height());
                 score = {w * h, 0, at.y, at.x};
-                if (score > best)
-                    return;  // the enclosed area only breaks ties: skip computing it
-                std::get<1>(score) = sheet.enclosedArea(shape, at);
+                // The second term only breaks ties: computed for a candidate no worse than the best.
+                if (criterion_ == Criterion::Docking && !(best < score))
+                    std::get<1>(score) = sheet.enclosedArea(shape, at);
+                else if (criterion_ == Criterion::SnugFill && !(best < score))
+                    std::get<1>(score) = sheet.areaBelow(shape, at);
             }
             if (score < best) {
                 best = score;
                 choice = {0, sheetIndex, at.x, at.y, s};
             }
-        });
+        };
+        if (fills(criterion_))
+            sheet.forEachFillPosition(shape, consider);
+        else
+            sheet.forEachDockingPosition(shape, consider);
     }
     return choice;
 }
@@ -137,10 +203,15 @@ int Docker::openSheet(const RasterPart& part)
         throw PackingError("part '" + part.name + "' is larger than every master board");
     if (cheapest < 0)
         return -1;
-    --left_[cheapest];
-    layout_.stock.push_back(cheapest);
-    sheets_.emplace_back(stock_[cheapest].width, stock_[cheapest].height);
+    open(cheapest);
     return static_cast<int>(sheets_.size()) - 1;
+}
+
+void Docker::open(int stock)
+{
+    --left_[stock];
+    layout_.stock.push_back(stock);
+    sheets_.emplace_back(stock_[stock].width, stock_[stock].height, fills(criterion_));
 }
 
 void Docker::place(const std::vector<RasterPart>& parts, int index)
@@ -156,6 +227,18 @@ void Docker::place(const std::vector<RasterPart>& parts, int index)
         choice = bestOn(sheet, part);
     }
     choice.part = index;
+    commit(parts[index], choice);
+}
+
+void Docker::replay(const std::vector<RasterPart>& parts, const Placed& placed, int stock)
+{
+    if (placed.sheet == static_cast<int>(sheets_.size()))
+        open(stock);
+    commit(parts[placed.part], placed);
+}
+
+void Docker::commit(const RasterPart& part, const Placed& choice)
+{
     sheets_[choice.sheet].place(part.shapes[choice.shape], {choice.x, choice.y});
     layout_.placed.push_back(choice);
     const Sheet& sheet = sheets_[choice.sheet];
@@ -168,11 +251,16 @@ void Docker::place(const std::vector<RasterPart>& parts, int index)
 }
 
 GridLayout dock(const std::vector<RasterPart>& parts, const std::vector<int>& order,
-                const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds)
+                const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds,
+                const GridLayout* before, size_t same)
 {
     Docker docker(stock, criterion, bounds);
-    for (int index : order)
-        docker.place(parts, index);
+    size_t k = 0;
+    if (before)
+        for (; k < same && k < before->placed.size() && before->placed[k].part == order[k]; ++k)
+            docker.replay(parts, before->placed[k], before->stock[before->placed[k].sheet]);
+    for (; k < order.size(); ++k)
+        docker.place(parts, order[k]);
     return docker.layout();
 }
 

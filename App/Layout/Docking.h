@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fabguide::material {
@@ -72,7 +73,19 @@ struct GridLayout {
 enum class Criterion {
     Docking,     ///< least wastage of the layout's bounding rectangle, then least enclosed area (5.4.3.2)
     BottomLeft,  ///< lowest, then leftmost (5.3.1)
+    /// Bottom-left fill (Burke et al. 2006, past the thesis): at every column the lowest place the part fits,
+    /// holes and overhangs included; least wastage of the bounding rectangle, then lowest, then leftmost.
+    Fill,
+    /// Fill's places, least wastage of the bounding rectangle, then least area left under the part, then
+    /// lowest, then leftmost: the part that fits the profile below it.
+    SnugFill,
 };
+
+/// Whether the criterion places parts at fill positions (a sheet keeps its columns' runs for them).
+inline bool fills(Criterion criterion)
+{
+    return criterion == Criterion::Fill || criterion == Criterion::SnugFill;
+}
 
 /// Wastage is measured against the layout's bounding rectangle (thesis 5.4.3.2); in strip mode the
 /// rectangle always spans the full sheet width, so the criterion minimises the strip height.
@@ -86,7 +99,8 @@ struct PackingError : std::runtime_error {
 /// One master board being filled: the right and top height-fields of its layout (Fig. 5.14).
 class Sheet {
 public:
-    Sheet(int width, int height);
+    /// `holes`: also keep every column's occupied runs, for fill positions.
+    Sheet(int width, int height, bool holes = false);
 
     struct Position {
         int x = 0;
@@ -102,6 +116,15 @@ public:
     /// E(L, p, pos) of thesis 5.4.3.2: area newly enclosed behind the part, both directions.
     long enclosedArea(const Footprint& part, Position at) const;
 
+    /// Calls visit(position) for the lowest place the part fits at each column, inside the sheet (a sheet
+    /// made with `holes`).
+    template <class Visit>
+    void forEachFillPosition(const Footprint& part, Visit&& visit) const;
+
+    /// The empty cells between the part's lowest cell in each column and what lies below it (a sheet made
+    /// with `holes`).
+    long areaBelow(const Footprint& part, Position at) const;
+
     void place(const Footprint& part, Position at);
 
     int width() const { return width_; }
@@ -113,10 +136,16 @@ public:
 private:
     int dropFromRight(const Footprint& part, int y) const;
     int dropFromTop(const Footprint& part, int x) const;
+    int lowestFit(const Footprint& part, int x) const;
+
+    using Run = std::pair<int, int>;
+    /// The first of `column`'s occupied runs that ends above `y`.
+    std::vector<Run>::const_iterator runAbove(int column, int y) const;
 
     int width_, height_;
-    std::vector<int> right_;  ///< per row: one past the rightmost occupied cell
-    std::vector<int> top_;    ///< per column: one past the topmost occupied cell
+    std::vector<std::vector<Run>> columns_;  ///< with `holes`: per column, the occupied runs bottom up
+    std::vector<int> right_;                 ///< per row: one past the rightmost occupied cell
+    std::vector<int> top_;                   ///< per column: one past the topmost occupied cell
     int usedWidth_ = 0, usedHeight_ = 0;
     long skylineArea_ = 0;
 };
@@ -136,11 +165,17 @@ public:
     /// Throws PackingError naming the part when it is larger than every master board.
     void place(const std::vector<RasterPart>& parts, int index);
 
+    /// Places a part where an earlier docking of the same parts before it put it, opening its sheet (of
+    /// `stock`) when it was the first there.
+    void replay(const std::vector<RasterPart>& parts, const Placed& placed, int stock);
+
     const GridLayout& layout() const { return layout_; }
 
 private:
     Placed bestOn(int sheet, const RasterPart& part) const;
     int openSheet(const RasterPart& part);  ///< -1 when no board it fits on is left
+    void open(int stock);
+    void commit(const RasterPart& part, const Placed& choice);
 
     const std::vector<BoardStock>& stock_;
     Criterion criterion_;
@@ -151,10 +186,12 @@ private:
 };
 
 /// Lays the parts out in the given order (Algorithm 13): each part goes to the first open sheet
-/// where it has a docking position, at the best position by `criterion`.
-/// Throws PackingError naming a part larger than every master board.
+/// where it has a docking position, at the best position by `criterion`. The first `same` parts of `order`
+/// that `before` (a docking of an order that begins alike) placed in the same order are put where it put
+/// them. Throws PackingError naming a part larger than every master board.
 GridLayout dock(const std::vector<RasterPart>& parts, const std::vector<int>& order,
-                const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds = Bounds::Layout);
+                const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds = Bounds::Layout,
+                const GridLayout* before = nullptr, size_t same = 0);
 
 // ---------------------------------------------------------------------------------------------
 
@@ -180,6 +217,16 @@ void Sheet::forEachDockingPosition(const Footprint& part, Visit&& visit) const
             continue;
         const int y = dropFromTop(part, x);
         if (y <= lastY)
+            visit(Position{x, y});
+    }
+}
+
+template <class Visit>
+void Sheet::forEachFillPosition(const Footprint& part, Visit&& visit) const
+{
+    for (int x = 0; x + part.width() <= width_; ++x) {
+        const int y = lowestFit(part, x);
+        if (y + part.height() <= height_)
             visit(Position{x, y});
     }
 }

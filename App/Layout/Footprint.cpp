@@ -19,6 +19,9 @@ Footprint Footprint::rectangle(int width, int height)
     solid.right_.assign(height, width);
     solid.bottom_.assign(width, 0);
     solid.top_.assign(width, height);
+    solid.runs_.assign(width, {0, height});
+    for (int c = 0; c <= width; ++c)
+        solid.runStart_.push_back(c);
     return solid;
 }
 
@@ -44,6 +47,15 @@ Footprint::Footprint(int width, int height, std::vector<std::uint8_t> cells)
             }
     if (area_ == 0)
         throw std::invalid_argument("footprint has no filled cell");
+    for (int x = 0; x < width_; ++x) {
+        runStart_.push_back(static_cast<int>(runs_.size()));
+        for (int y = 0; y < height_; ++y)
+            if (filled(x, y) && (y == 0 || !filled(x, y - 1)))
+                runs_.push_back({y, y + 1});
+            else if (filled(x, y))
+                ++runs_.back().second;
+    }
+    runStart_.push_back(static_cast<int>(runs_.size()));
     if (area_ == static_cast<long>(width_) * height_)
         cells_.clear();  // solid: one representation for every full rectangle
 }

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace fabguide::material {
@@ -31,6 +32,15 @@ public:
     const std::vector<int>& bottom() const { return bottom_; }
     const std::vector<int>& top() const { return top_; }
 
+    /// The filled runs of column `c`, bottom up, as [first row, one past the last) pairs.
+    struct Runs {
+        const std::pair<int, int>* first;
+        const std::pair<int, int>* last;
+        const std::pair<int, int>* begin() const { return first; }
+        const std::pair<int, int>* end() const { return last; }
+    };
+    Runs runs(int c) const { return {runs_.data() + runStart_[c], runs_.data() + runStart_[c + 1]}; }
+
     /// The same part turned counter-clockwise by 90°.
     Footprint rotated90() const;
 
@@ -46,6 +56,8 @@ private:
     std::vector<std::uint8_t> cells_;  ///< row-major; empty when every cell is filled (a rectangle)
     long area_ = 0;
     std::vector<int> left_, right_, bottom_, top_;
+    std::vector<std::pair<int, int>> runs_;  ///< every column's runs, column by column
+    std::vector<int> runStart_;              ///< column c's runs are runs_[runStart_[c] .. runStart_[c + 1])
 };
 
 }  // namespace fabguide::material

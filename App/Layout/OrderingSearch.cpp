@@ -115,8 +115,9 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
     const long iterations = options.iterations >= 0 ? options.iterations : n * n;
 
     const auto started = Clock::now();
-    GridLayout best = dock(parts, order, stock, options.criterion, options.bounds);
+    GridLayout current = dock(parts, order, stock, options.criterion, options.bounds);
     const auto pass = Clock::now() - started;  // never start a docking pass that cannot end in time
+    GridLayout best = current;
     LayoutCost bestCost = cost(best, stock, options.bounds);
     LayoutCost currentCost = bestCost;
     // Late acceptance: a swap is kept when it is no worse than the current ordering or than the
@@ -129,15 +130,18 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
         if (a == b || parts[order[a]].shapes == parts[order[b]].shapes)
             continue;  // swapping identical parts changes nothing
         std::swap(order[a], order[b]);
-        GridLayout candidate = dock(parts, order, stock, options.criterion, options.bounds);
+        // The parts before the first swapped one go where the current layout has them.
+        GridLayout candidate = dock(parts, order, stock, options.criterion, options.bounds, &current,
+                                    static_cast<size_t>(std::min(a, b)));
         const LayoutCost candidateCost = cost(candidate, stock, options.bounds);
         LayoutCost& past = history[i % history.size()];
         if (currentCost < candidateCost && past < candidateCost) {
             std::swap(order[a], order[b]);
         } else {
             currentCost = candidateCost;
+            current = std::move(candidate);
             if (candidateCost < bestCost) {
-                best = std::move(candidate);
+                best = current;
                 bestCost = candidateCost;
             }
         }

@@ -145,20 +145,30 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
                             OrderingSearchOptions options)
 {
     // Each start wins on some instances: best-fit orders preferring large extents, wide parts and large
-    // areas, and the thesis' decreasing extent (5.3.1). Building a best-fit order may take a sixth of the
-    // time each; the searches from the starts share what is left equally.
+    // areas, and the thesis' decreasing extent (5.3.1); a fill starts from each with both its tie-breaks.
+    // Building the best-fit orders may take a sixth of the time; the searches from the starts share what is
+    // left equally.
     using Clock = std::chrono::steady_clock;
     const auto end = Clock::now() + seconds(options.timeLimit);
+    const std::vector<Criterion> ways = options.criterion == Criterion::Fill
+                                            ? std::vector<Criterion>{Criterion::Fill, Criterion::SnugFill}
+                                            : std::vector<Criterion>{options.criterion};
     std::vector<std::vector<int>> starts;
-    for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
-        starts.push_back(bestFitOrder(parts, stock, options.criterion, options.bounds, preference,
-                                      Clock::now() + seconds(options.timeLimit / 6)));
-    starts.push_back(decreasingExtentOrder(parts));
+    std::vector<Criterion> criteria;  // of each start
+    for (Criterion criterion : ways) {
+        for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
+            starts.push_back(bestFitOrder(parts, stock, criterion, options.bounds, preference,
+                                          Clock::now() + seconds(options.timeLimit / 6 / ways.size())));
+        starts.push_back(decreasingExtentOrder(parts));
+        criteria.resize(starts.size(), criterion);
+    }
     GridLayout best;
     LayoutCost bestCost;
     for (size_t k = 0; k < starts.size(); ++k) {
-        options.timeLimit = secondsUntil(end) / static_cast<double>(starts.size() - k);
-        GridLayout layout = exploreOrderings(parts, starts[k], stock, options);
+        OrderingSearchOptions search = options;
+        search.criterion = criteria[k];
+        search.timeLimit = secondsUntil(end) / static_cast<double>(starts.size() - k);
+        GridLayout layout = exploreOrderings(parts, starts[k], stock, search);
         const LayoutCost layoutCost = cost(layout, stock, options.bounds);
         if (k == 0 || layoutCost < bestCost) {
             best = std::move(layout);
@@ -269,6 +279,16 @@ PackProblem freelyTurned(PackProblem problem)
     return problem;
 }
 
+/// Column steps of one fill pass: every unit's shapes tried at every column of the strip, across their width.
+double fillPassSteps(const RasterProblem& raster)
+{
+    double steps = 0;
+    for (const RasterPart& part : raster.parts)
+        for (const Footprint& shape : part.shapes)
+            steps += std::max(1.0, raster.stock[0].width - shape.width() + 1.0) * shape.width();
+    return steps;
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -307,6 +327,11 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
     options.timeLimit = secondsUntil(deadline);
+    // A strip of irregular parts is filled bottom-left, holes included, when the search has time for
+    // kFillPasses passes; Docking's height-fields cannot reach under the parts' overhangs.
+    if (problem.strip && !rectangles && search.criterion == Criterion::Docking &&
+        fillPassSteps(raster) * kFillPasses <= kFillStepsPerSecond * search.timeLimit)
+        options.criterion = Criterion::Fill;
     try {
         Layout docked = inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
         if (lower && lower->stripHeight < docked.stripHeight)

@@ -97,6 +97,10 @@ constexpr long kMostUnits = 200000;
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;
 
+/// A strip of irregular parts is filled (Criterion::Fill) when the time limit allows this many passes, at
+/// this many column steps a second (measured on ESICUP instances: 1.2-1.6·10^8 on this kind of machine).
+constexpr double kFillPasses = 50, kFillStepsPerSecond = 1e8;
+
 /// Throws std::invalid_argument naming a bad setting, a board beyond kLongest / kMostCells, more than
 /// kMostUnits parts, or no boards or parts; PackingError naming a part larger than every master board.
 /// Takes no more than a pass over the parts: it runs before anything is rasterised.
@@ -124,9 +128,9 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
                             OrderingSearchOptions options);
 
 /// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
-/// order search with Docking (or Bottom-Left), convert back to mm; a job of rectangles is laid out by
-/// MaxRects too, which is kept when it is better (and alone beyond kDockedUnits units).
-/// Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
+/// order search with Docking (or Bottom-Left; a strip of irregular parts filled), convert back to mm; a job
+/// of rectangles is laid out by MaxRects too, which is kept when it is better (and alone beyond kDockedUnits
+/// units). Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search);
 
 }  // namespace fabguide::material

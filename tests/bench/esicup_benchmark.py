@@ -50,9 +50,10 @@ def run(build, name, seconds):
 def table(rows, seconds):
     lines = ["## Irregular strip packing (ESICUP)", "",
              "`fabguide pack --strip ../shared/benchmarks/packing/esicup-irregular/NAME.json --time-limit {}` "
-             "(the strip turned a quarter: its height is our width, 250 grid cells across; the orientations each "
-             "piece allows); density = the pieces' area / (strip height x length used), computed from the "
-             "instance; every layout checked on the real outlines (tests/bench/outline_check.py).".format(seconds),
+             "(the strip turned a quarter: its height is our width, 400 grid cells across, filled bottom-left; the "
+             "orientations each piece allows); density = the pieces' area / (strip height x length used), computed "
+             "from the instance; every layout checked on the real outlines (tests/bench/outline_check.py)."
+             .format(seconds),
              "", "| instance | FabGuide density % | best published % (sparrow, 2025) | points below | seconds | "
              "check |", "|---|---|---|---|---|---|"]
     for r in rows:

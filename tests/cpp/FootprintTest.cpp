@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 using fabguide::material::Footprint;
 
@@ -23,6 +25,17 @@ TEST(Footprint, LShapeProfilesFollowTheOutline)
     EXPECT_EQ(f.area(), 4);
     EXPECT_EQ(f.right(), (std::vector<int>{3, 1}));
     EXPECT_EQ(f.top(), (std::vector<int>{2, 1, 1}));
+}
+
+TEST(Footprint, ColumnsListTheirFilledRunsBottomUp)
+{
+    // Column 0: #.#  (rows 0 and 2), column 1: ### (a run of three), read bottom up.
+    const Footprint f(2, 3, {1, 1, 0, 1, 1, 1});
+    using Runs = std::vector<std::pair<int, int>>;
+    EXPECT_EQ(Runs(f.runs(0).begin(), f.runs(0).end()), (Runs{{0, 1}, {2, 3}}));
+    EXPECT_EQ(Runs(f.runs(1).begin(), f.runs(1).end()), (Runs{{0, 3}}));
+    const Footprint solid = Footprint::rectangle(2, 5);
+    EXPECT_EQ(Runs(solid.runs(1).begin(), solid.runs(1).end()), (Runs{{0, 5}}));
 }
 
 TEST(Footprint, RotatingTurnsCounterClockwise)

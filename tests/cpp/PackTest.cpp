@@ -152,6 +152,18 @@ double sharedArea(const fabguide::geometry::Outline& a, const fabguide::geometry
     return area;
 }
 
+/// Every placed outline grown by `grow` mm (negative: shrunk) shares no area with any other.
+void expectOutlinesApart(const PackProblem& problem, const Layout& layout, double grow)
+{
+    std::vector<fabguide::geometry::Outline> grown;
+    for (const Placement& p : layout.placements)
+        grown.push_back(fabguide::geometry::offset(
+            fabguide::geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y), grow));
+    for (size_t i = 0; i < grown.size(); ++i)
+        for (size_t j = i + 1; j < grown.size(); ++j)
+            EXPECT_EQ(sharedArea(grown[i], grown[j]), 0) << i << " and " << j;
+}
+
 }  // namespace
 
 TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
@@ -169,15 +181,26 @@ TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
     EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(ell) + 3 * 7200, 1e-6);
 
     // Every outline grown by just under half the clearance stays clear of every other one.
-    std::vector<Outline> grown;
-    for (const Placement& p : layout.placements)
-        grown.push_back(fabguide::geometry::offset(
-            fabguide::geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y), 1.1 - 1e-3));
-    for (size_t i = 0; i < grown.size(); ++i)
-        for (size_t j = i + 1; j < grown.size(); ++j)
-            EXPECT_EQ(sharedArea(grown[i], grown[j]), 0) << i << " and " << j;
+    expectOutlinesApart(problem, layout, 1.1 - 1e-3);
     // The L-shapes interlock: the layout is far smaller than their bounding boxes side by side.
     EXPECT_LT(layout.boundingArea, 2 * 200 * 200 + 3 * 120 * 120);
+}
+
+TEST(Pack, AStripOfArchesTakesItsBlocksUnderTheArches)
+{
+    // Arches as wide as the strip, open below: a block fits between each one's legs, which only a
+    // bottom-left fill reaches (docking would stack the blocks on top: a strip 150 mm long, not 120).
+    PackProblem problem;
+    problem.strip = true;
+    problem.boards.push_back({"strip", "", 60, 0, 0, 1});
+    problem.settings = {1, 0, 0, 0};
+    const fabguide::geometry::Outline arch{
+        {{0, 0}, {10, 0}, {10, 40}, {50, 40}, {50, 0}, {60, 0}, {60, 60}, {0, 60}}, {}};
+    problem.parts.push_back({"arch", arch, 2, {0}, {}, {}});
+    problem.parts.push_back(rectangularPart("block", 30, 30, 2, {0}));
+    const Layout layout = pack(problem, quick());
+    EXPECT_NEAR(layout.stripHeight, 120, 1e-6);
+    expectOutlinesApart(problem, layout, -1e-3);
 }
 
 TEST(Pack, PartsAreCutOnlyFromBoardsOfTheirThickness)

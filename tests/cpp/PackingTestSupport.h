@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,6 +30,25 @@ inline std::vector<RasterPart> randomParts(int count, int maxSide, unsigned seed
     std::vector<RasterPart> parts;
     for (int i = 0; i < count; ++i)
         parts.push_back(rectanglePart("p" + std::to_string(i), side(random), side(random)));
+    return parts;
+}
+
+/// Random blobs: each cell of a random box filled with probability 0.7 (the first cell always), so columns
+/// hold several runs and parts have holes and overhangs.
+inline std::vector<RasterPart> randomBlobs(int count, int maxSide, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_int_distribution<int> side(1, maxSide);
+    std::bernoulli_distribution filled(0.7);
+    std::vector<RasterPart> parts;
+    for (int i = 0; i < count; ++i) {
+        const int w = side(random), h = side(random);
+        std::vector<std::uint8_t> cells(static_cast<size_t>(w) * h);
+        for (std::uint8_t& cell : cells)
+            cell = &cell == cells.data() || filled(random);
+        const Footprint shape(w, h, std::move(cells));
+        parts.push_back({"b" + std::to_string(i), {shape, shape.rotated90()}, {0, 90}});
+    }
     return parts;
 }
 
