@@ -245,6 +245,20 @@ bool linksClear(const Point& a1, const Point& b1, const Point& a2, const Point& 
            toSegment(a1, b2, a2) >= apart && toSegment(b1, b2, a2) >= apart;
 }
 
+/// Whether `one` and `two`, double pivots of one part and base on opposite faces, are one link doubled: their
+/// pivots within the two links' widths of each other in the plane (a bed's head on a link at each side, drawn
+/// roughly). Links on opposite faces farther apart are a four-bar.
+bool doubled(const Model& model, const Joint& one, const Joint& two)
+{
+    if (one.type != Joint::Type::DoublePivot || two.type != Joint::Type::DoublePivot ||
+        one.part != two.part || one.base != two.base || one.pivotFace.side == two.pivotFace.side ||
+        static_cast<int>(one.pivotFace.side) / 2 != static_cast<int>(two.pivotFace.side) / 2)
+        return false;
+    const PivotPlane a = pivotPlane(model, one), b = pivotPlane(model, two);
+    const double width = linkRadius(model, one) + linkRadius(model, two);
+    return squared(a.pivot, b.pivot) < width * width && squared(a.basePivot, b.basePivot) < width * width;
+}
+
 /// A four-bar (issue 13.5): links `first` and `second` both move their part against one base, along
 /// fourBarPath in configuration k. Why it fails, or
 /// "" when the part arrives where the configuration puts it, clear of the parts standing still, its links
@@ -256,9 +270,13 @@ std::string fourBarMotion(const Model& model, const Joint& first, const Joint& s
     const auto moving = rectangles(model, first.part, one);
     const auto fixed = standingStill(model, first.part, one, k);
     const std::string where = "the four-bar of '" + first.name + "' and '" + second.name + "' ";
-    const double apart = linkRadius(model, first) + linkRadius(model, second);
+    // Links on opposite faces never meet, but placed one over the other they would be one link doubled.
+    const bool oneFace = first.pivotFace.side == second.pivotFace.side;
+    const double apart = oneFace ? linkRadius(model, first) + linkRadius(model, second) : 0;
     if (!linksClear(a1, b1, a2, b2, apart))
         return where + "has a link over the other's pin as placed";
+    if (!oneFace && doubled(model, first, second))
+        return where + "has its links one over the other as placed, one link doubled";
     const int steps = 64;
     const std::vector<FourBarTurns> path = fourBarPath(model, first, second, k, 1.0, steps);
     for (int step = 1; step <= steps; ++step) {
@@ -456,6 +474,32 @@ bool placeFourBar(Model& model, Joint& first, Joint& second)
     return false;
 }
 
+/// Puts `joint`'s pivots where `placed`, the link it doubles, has them in the plane, so the two move as one
+/// link. Whether both still lie on their faces (else `joint` is left as it was).
+bool placeLike(const Model& model, Joint& joint, const Joint& placed)
+{
+    const PivotPlane to = pivotPlane(model, placed), from = pivotPlane(model, joint);
+    Joint moved = joint;
+    for (int k = 0; k < 2; ++k) {
+        moved.pivot[k] = nanometres(joint.pivot[k] + to.pivot[k] - from.pivot[k]);
+        moved.basePivot[k] = nanometres(joint.basePivot[k] + to.basePivot[k] - from.basePivot[k]);
+    }
+    const auto onFace = [&](const Face& face, const std::array<double, 2>& at) {
+        const Cuboid& c = model.cuboids[face.cuboid];
+        for (int k = 0; k < 2; ++k) {
+            const int axis = k == 0 ? from.u : from.w;
+            const double extent = c.at(static_cast<Side>(2 * axis + 1)) - c.at(static_cast<Side>(2 * axis));
+            if (at[k] < -1e-9 || at[k] > extent + 1e-9)
+                return false;
+        }
+        return true;
+    };
+    if (!onFace(joint.pivotFace, moved.pivot) || !onFace(joint.basePivotFace, moved.basePivot))
+        return false;
+    joint = moved;
+    return true;
+}
+
 }  // namespace
 
 const Joint* fourBarPartner(const Model& model, const Joint& joint)
@@ -464,7 +508,10 @@ const Joint* fourBarPartner(const Model& model, const Joint& joint)
         return nullptr;
     for (const Joint& other : model.joints)
         if (&other != &joint && other.type == Joint::Type::DoublePivot && other.part == joint.part &&
-            other.base == joint.base && other.pivotFace.side == joint.pivotFace.side)
+            other.base == joint.base &&
+            (other.pivotFace.side == joint.pivotFace.side ||
+             (static_cast<int>(other.pivotFace.side) / 2 == static_cast<int>(joint.pivotFace.side) / 2 &&
+              !doubled(model, joint, other))))
             return &other;
     return nullptr;
 }
@@ -535,16 +582,37 @@ std::vector<FourBarTurns> fourBarPath(const Model& model, const Joint& first, co
 std::vector<Unplaced> placePivots(Model& model)
 {
     std::vector<Unplaced> failed;
+    // A link doubled on the opposite face goes where the first of the two is placed (as modelled, both).
+    // Which links are doubled and which make four-bars is decided as modelled, before any of them moves.
+    std::vector<int> twin(model.joints.size(), -1);
+    std::vector<const Joint*> partner(model.joints.size());
+    for (size_t j = 0; j < model.joints.size(); ++j) {
+        for (size_t i = 0; i < j && twin[j] < 0; ++i)
+            if (doubled(model, model.joints[i], model.joints[j]))
+                twin[j] = static_cast<int>(i);
+        partner[j] = fourBarPartner(model, model.joints[j]);
+    }
     for (Joint& joint : model.joints) {
         if (joint.type != Joint::Type::DoublePivot)
             continue;
+        if (const int first = twin[&joint - model.joints.data()]; first >= 0) {
+            const auto half = std::find_if(failed.begin(), failed.end(), [&](const Unplaced& u) {
+                return u.joint == model.joints[first].name;
+            });
+            if (half != failed.end()) {
+                failed.push_back({joint.name, half->reason});
+                continue;
+            }
+            if (placeLike(model, joint, model.joints[first]))
+                continue;
+        }
         auto [p, range] = placementOf(model, joint);
         if (p.poses.empty())
             continue;
         const auto reachable = leastChange(p, range);
         auto placed = reachable;
         // A four-bar's links move together: its motion is checked as one linkage below (fourBarFailure).
-        if (!fourBarPartner(model, joint) && (!placed || collides(p, placed->first, placed->second)))
+        if (!partner[&joint - model.joints.data()] && (!placed || collides(p, placed->first, placed->second)))
             placed = clearPlacement(p, range);
         if (!placed) {
             failed.push_back(
@@ -561,8 +629,8 @@ std::vector<Unplaced> placePivots(Model& model)
     if (!failed.empty())
         return failed;
     for (Joint& joint : model.joints)  // each four-bar once, from its first link
-        if (const Joint* partner = fourBarPartner(model, joint); partner && partner > &joint) {
-            Joint& second = model.joints[static_cast<size_t>(partner - model.joints.data())];
+        if (const Joint* other = partner[&joint - model.joints.data()]; other && other > &joint) {
+            Joint& second = model.joints[static_cast<size_t>(other - model.joints.data())];
             if (const std::string why = fourBarFailure(model, joint, second);
                 !why.empty() && !placeFourBar(model, joint, second))
                 failed.push_back(

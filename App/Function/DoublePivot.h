@@ -29,8 +29,9 @@ std::array<double, 2> fourBarAngles(const std::array<double, 2>& pivot, const st
 
 /// The other double pivot that makes a four-bar with `joint`: the same part and base, its pivot on a face of
 /// the same side (wherever its pivots sit: two links with one pivot in common make a four-bar that cannot
-/// move, or runs one link over the other), or nullptr. Links on both sides, one over the other, are one
-/// double pivot, each checked on its own.
+/// move, or runs one link over the other), or of the opposite side with its pivots elsewhere in the plane (a
+/// leaf carried by a link on each side), or nullptr. Links on both sides, one over the other (pivots within
+/// the two links' widths), are one link doubled: placed alike (placePivots), each checked on its own.
 const Joint* fourBarPartner(const Model& model, const Joint& joint);
 
 /// A four-bar's state along its motion (degrees): its first and second links' turns about their base pivots,

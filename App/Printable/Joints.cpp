@@ -488,10 +488,11 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
     const double link = r.outer;
-    // The link's layer: the gap off the faces; a four-bar's second link beyond the first one's heads, so the
-    // two may cross (the solve keeps each off the other's pins).
+    // The link's layer: the gap off the faces; a four-bar's second link on the same faces beyond the first
+    // one's heads, so the two may cross (the solve keeps each off the other's pins).
     double depth = g;
-    if (const Joint* first = function::fourBarPartner(m, joint); first && first < &joint) {
+    if (const Joint* first = function::fourBarPartner(m, joint);
+        first && first < &joint && first->pivotFace.side == joint.pivotFace.side) {
         const Radii under = sized(thinnestOf(m, {first->pivotFace.cuboid, first->basePivotFace.cuboid}), g);
         depth += 2 * g + under.outer + head(under);
     }

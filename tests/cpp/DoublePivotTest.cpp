@@ -159,3 +159,31 @@ TEST(FourBar, LinksThatWouldRunOverEachOthersPinsAreRefused)
         << unplaced[0].reason;
     EXPECT_NE(unplaced[0].reason.find("wherever its pivots sit along their faces"), std::string::npos);
 }
+
+TEST(FourBar, LinksOnOppositeFacesMoveAsOneLinkageUnlessTheyDoubleOneLink)
+{
+    // A table's leaf carried by a link on its left and another on its right, elsewhere in the plane: one
+    // four-bar (before: two lone links that moved the leaf two ways, and the print collided).
+    const std::string data = std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/printable/";
+    function::Model table = io::readWorkslike(io::readJsonFile(data + "folding-table-leaf.workslike.json"));
+    ASSERT_EQ(function::fourBarPartner(table, table.joints[0]), &table.joints[1]);
+    EXPECT_TRUE(function::placePivots(table).empty());
+    // Both links on the left, as first drawn: the lower one runs over the upper one's pin.
+    function::Model drawn =
+        io::readWorkslike(io::readJsonFile(data + "refused/folding-table-leaf-as-drawn.workslike.json"));
+    const std::vector<function::Unplaced> unplaced = function::placePivots(drawn);
+    ASSERT_EQ(unplaced.size(), 1u);
+    EXPECT_NE(unplaced[0].reason.find("has a link over the other's pin"), std::string::npos)
+        << unplaced[0].reason;
+    // A bed's head carried by one link on each side, the right one drawn 3 mm off: one link doubled, placed
+    // where its left half goes, not a four-bar.
+    json d = crateBed();
+    d["joints"][1]["pivot"][1][1] = d["joints"][1]["pivot"][1][1].get<double>() - 3;
+    function::Model bed = io::readWorkslike(d);
+    EXPECT_EQ(function::fourBarPartner(bed, bed.joints[0]), nullptr);
+    ASSERT_TRUE(function::placePivots(bed).empty());
+    const function::PivotPlane left = function::pivotPlane(bed, bed.joints[0]),
+                               right = function::pivotPlane(bed, bed.joints[1]);
+    EXPECT_EQ(left.pivot, right.pivot);
+    EXPECT_EQ(left.basePivot, right.basePivot);
+}

@@ -389,8 +389,9 @@ TEST(RigidBodies, AShelfAgainstACupboardsWallsIsPartOfItAndALooseBlockInItIsNot)
 TEST(PrintInPlace, AModelThatDoesNotSolveSaysWhy)
 {
     // The folding table's four-bar as drawn: the error carries the solve's reason, not only the joint's name.
-    const function::Model table = io::readWorkslike(io::readJsonFile(
-        std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/printable/folding-table-leaf.workslike.json"));
+    const function::Model table = io::readWorkslike(
+        io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) +
+                         "/tests/data/printable/refused/folding-table-leaf-as-drawn.workslike.json"));
     try {
         solvedToPrint(table, 1);
         ADD_FAILURE() << "the folding table solved";

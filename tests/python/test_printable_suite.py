@@ -13,14 +13,8 @@ import pytest
 
 VOLUME = (250, 210, 210)
 SUITE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data", "printable")
-NOT_YET = {  # strict: a product that starts printing fails here until it is moved to the suite proper
-    "folding-table-leaf": "as drawn, one link of the four-bar passes over the other's pin (refused by name); with "
-                          "the lower link moved to the right faces, the two links are not yet moved as one four-bar",
-}
-PRODUCTS = [pytest.param(name, marks=pytest.mark.xfail(reason=NOT_YET[name], strict=True)) if name in NOT_YET
-            else name
-            for name in sorted(os.path.basename(p)[:-len(".workslike.json")]
-                               for p in glob.glob(os.path.join(SUITE, "*.workslike.json")))]
+PRODUCTS = sorted(os.path.basename(p)[:-len(".workslike.json")]
+                  for p in glob.glob(os.path.join(SUITE, "*.workslike.json")))
 
 
 @pytest.mark.parametrize("name", PRODUCTS)
@@ -37,3 +31,15 @@ def test_the_product_prints_in_place_fitted_to_a_desktop_printer(fabguide_cli, t
     assert re.search(r"Number of parts\s*:\s*{}\b".format(len(report["bodies"])), mesh), mesh
     for check in ("Degenerate facets", "Edges fixed", "Facets reversed", "Backwards edges"):
         assert re.search(check + r"\s*:\s*0\b", mesh), check + "\n" + mesh
+
+
+def test_a_four_bar_drawn_with_a_link_over_the_others_pin_is_refused_by_name(fabguide_cli, tmp_path):
+    """The folding table as first drawn, both links on the left faces: refused naming both links and what to
+    change, and nothing written."""
+    run = subprocess.run([fabguide_cli, "printable", os.path.join(SUITE, "refused",
+                                                                  "folding-table-leaf-as-drawn.workslike.json"),
+                          "-o", str(tmp_path / "out")], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 1, run.stderr
+    assert "the four-bar of 'upper link' and 'lower link' has a link over the other's pin" in run.stderr
+    assert "put the links on other faces" in run.stderr
+    assert not (tmp_path / "out").exists()
