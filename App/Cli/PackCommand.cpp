@@ -1,5 +1,6 @@
 // `fabguide pack`: lay parts out on master boards (thesis 5.3.1, 5.4.3), or pack a strip.
 #include "Cli/Commands.h"
+#include "Core/Parallel.h"
 #include "IO/CutSheetFiles.h"
 #include "IO/Json.h"
 #include "IO/Output.h"
@@ -89,6 +90,11 @@ void addPackCommand(CLI::App& app)
     args->search.iterations = std::numeric_limits<long>::max();
     cmd->add_option("--iterations", args->search.iterations,
                     "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)");
+    args->search.threads = cores();
+    cmd->add_option("--threads", args->search.threads,
+                    "threads of the search: its starts, a strip's skyline searches, run at once")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
     cmd->add_option("--memory", args->search.memory, "late-acceptance history of the ordering search")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();

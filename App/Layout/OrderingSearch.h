@@ -37,6 +37,7 @@ struct OrderingSearchOptions {
     double timeLimit = 1.0;  ///< seconds; the search stops early when it runs out
     std::uint64_t seed = 1;  ///< same seed, same result
     int memory = 1;          ///< late-acceptance history length; 1 = the thesis' acceptance rule
+    int threads = 1;         ///< pack: starts searched at once, and a strip's skyline searches
 };
 
 /// Seconds left until `deadline` (0 when past it): what a time-limited search may still take.

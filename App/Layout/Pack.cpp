@@ -1,5 +1,6 @@
 #include "Layout/Pack.h"
 
+#include "Core/Parallel.h"
 #include "Layout/HoleFill.h"
 #include "Layout/MaxRects.h"
 #include "Layout/Raster.h"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -146,36 +148,38 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
 {
     // Each start wins on some instances: best-fit orders preferring large extents, wide parts and large
     // areas, and the thesis' decreasing extent (5.3.1); a fill starts from each with both its tie-breaks.
-    // Building the best-fit orders may take a sixth of the time; the searches from the starts share what is
-    // left equally.
+    // The starts run on the threads, each with an equal share of the time, of which building a best-fit
+    // order may take a sixth.
     using Clock = std::chrono::steady_clock;
     const auto end = Clock::now() + seconds(options.timeLimit);
     const std::vector<Criterion> ways = options.criterion == Criterion::Fill
                                             ? std::vector<Criterion>{Criterion::Fill, Criterion::SnugFill}
                                             : std::vector<Criterion>{options.criterion};
-    std::vector<std::vector<int>> starts;
-    std::vector<Criterion> criteria;  // of each start
-    for (Criterion criterion : ways) {
-        for (Preference preference : {Preference::LargestExtent, Preference::Widest, Preference::LargestArea})
-            starts.push_back(bestFitOrder(parts, stock, criterion, options.bounds, preference,
-                                          Clock::now() + seconds(options.timeLimit / 6 / ways.size())));
-        starts.push_back(decreasingExtentOrder(parts));
-        criteria.resize(starts.size(), criterion);
-    }
-    GridLayout best;
-    LayoutCost bestCost;
-    for (size_t k = 0; k < starts.size(); ++k) {
+    const std::vector<std::optional<Preference>> orders{Preference::LargestExtent, Preference::Widest,
+                                                        Preference::LargestArea, std::nullopt};
+    const int count = static_cast<int>(ways.size() * orders.size());
+    const int threads = std::clamp(options.threads, 1, count);
+    const double share = options.timeLimit * threads / count;
+    std::vector<GridLayout> found(count);
+    const auto start = [&](int k) {
+        const auto until = std::min(end, Clock::now() + seconds(share));
         OrderingSearchOptions search = options;
-        search.criterion = criteria[k];
-        search.timeLimit = secondsUntil(end) / static_cast<double>(starts.size() - k);
-        GridLayout layout = exploreOrderings(parts, starts[k], stock, search);
-        const LayoutCost layoutCost = cost(layout, stock, options.bounds);
-        if (k == 0 || layoutCost < bestCost) {
-            best = std::move(layout);
-            bestCost = layoutCost;
-        }
-    }
-    return best;
+        search.criterion = ways[k / orders.size()];
+        const std::optional<Preference> preference = orders[k % orders.size()];
+        const std::vector<int> order = preference
+                                           ? bestFitOrder(parts, stock, search.criterion, options.bounds,
+                                                          *preference, Clock::now() + seconds(share / 6))
+                                           : decreasingExtentOrder(parts);
+        search.timeLimit = secondsUntil(until);
+        found[k] = exploreOrderings(parts, order, stock, search);
+    };
+    runAll(count, threads, start, [](int) {});
+    // The lowest cost, the first start on a tie: the same whichever thread finished first.
+    size_t best = 0;
+    for (size_t k = 1; k < found.size(); ++k)
+        if (cost(found[k], stock, options.bounds) < cost(found[best], stock, options.bounds))
+            best = k;
+    return std::move(found[best]);
 }
 
 std::pair<double, double> PartSpec::turnedSize(int rotation) const
@@ -289,6 +293,28 @@ double fillPassSteps(const RasterProblem& raster)
     return steps;
 }
 
+/// The skyline search of a strip of rectangles on each thread, their seeds 2^32 apart, each within the nodes
+/// of the time limit; the lowest strip, the first thread's on a tie.
+std::optional<Layout> skylineOnThreads(const PackProblem& problem, const OrderingSearchOptions& search,
+                                       std::chrono::steady_clock::time_point deadline)
+{
+    const int threads = std::max(1, search.threads);
+    const long nodes = static_cast<long>(kSkylineNodesPerSecond * search.timeLimit);
+    std::vector<std::optional<Layout>> found(threads);
+    runAll(
+        threads, threads,
+        [&](int t) {
+            found[t] =
+                skylineStrip(problem, {nodes, search.seed + (static_cast<std::uint64_t>(t) << 32)}, deadline);
+        },
+        [](int) {});
+    std::optional<Layout> lowest;
+    for (std::optional<Layout>& strip : found)
+        if (strip && (!lowest || strip->stripHeight < lowest->stripHeight))
+            lowest = std::move(strip);
+    return lowest;
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -310,13 +336,12 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (exact && units > kDockedUnits)
             return *exact;
     }
-    // A strip of rectangles: the skyline search within its nodes (by 85 % of the time), done when it reaches
-    // the least height; else MaxRects bisects the height (until 95 %), Docking's search takes the rest; the
-    // lowest strip wins.
+    // A strip of rectangles: the skyline search on each thread within its nodes (by 85 % of the time), done
+    // when it reaches the least height; else MaxRects bisects the height (until 95 %), Docking's search takes
+    // the rest; the lowest strip wins.
     std::optional<Layout> lower;
     if (problem.strip && rectangles) {
-        const long nodes = static_cast<long>(kSkylineNodesPerSecond * search.timeLimit);
-        lower = skylineStrip(problem, {nodes, search.seed}, started + seconds(0.85 * search.timeLimit));
+        lower = skylineOnThreads(problem, search, started + seconds(0.85 * search.timeLimit));
         if (lower && lower->stripHeight <= leastStripHeight(problem) + 1e-6)
             return *lower;
         std::optional<Layout> bisected = maxRectsStrip(problem, started + seconds(0.95 * search.timeLimit));

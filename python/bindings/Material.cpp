@@ -1,5 +1,6 @@
 // Bindings of the flat-pack layout (thesis ch. 5): problems and layouts are the dicts of docs/formats.md.
 #include "Bindings.h"
+#include "Core/Parallel.h"
 #include "IO/CutSheetFiles.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
@@ -22,6 +23,7 @@ py::object pack(const py::object& problemDict, long iterations, double timeLimit
     options.iterations = iterations;
     options.timeLimit = timeLimit;
     options.seed = seed;
+    options.threads = cores();
     options.criterion = bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
     material::Layout layout;
     {

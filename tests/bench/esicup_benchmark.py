@@ -51,8 +51,9 @@ def table(rows, seconds):
     lines = ["## Irregular strip packing (ESICUP)", "",
              "`fabguide pack --strip ../shared/benchmarks/packing/esicup-irregular/NAME.json --time-limit {}` "
              "(the strip turned a quarter: its height is our width, 400 grid cells across, filled bottom-left; the "
-             "orientations each piece allows); density = the pieces' area / (strip height x length used), computed "
-             "from the instance; every layout checked on the real outlines (tests/bench/outline_check.py)."
+             "orientations each piece allows; the search's eight starts two at a time on this 2-core machine); "
+             "density = the pieces' area / (strip height x length used), computed from the instance; every layout "
+             "checked on the real outlines (tests/bench/outline_check.py)."
              .format(seconds),
              "", "| instance | FabGuide density % | best published % (sparrow, 2025) | points below | seconds | "
              "check |", "|---|---|---|---|---|---|"]

@@ -1,4 +1,5 @@
 #include "Layout/OrderingSearch.h"
+#include "Layout/Pack.h"
 #include "PackingTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -72,4 +73,23 @@ TEST(OrderingSearch, BestFitOrderHoldsEveryPartOnceAndStartsLow)
     EXPECT_EQ(docker.layout().placed[1].y, 0);
     const GridLayout layout = dock(parts, order, stock, Criterion::Docking, Bounds::Strip);
     expectValidLayout(layout, parts, stock);
+}
+
+TEST(OrderingSearch, StartsSearchedOnTwoThreadsFindWhatOneThreadFinds)
+{
+    const std::vector<RasterPart> parts = fabguide::material::testing::randomBlobs(16, 6, 5);
+    const std::vector<BoardStock> stock{{14, 400, 1}};
+    OrderingSearchOptions options;
+    options.criterion = Criterion::Fill;
+    options.bounds = Bounds::Strip;
+    options.iterations = 150;  // the iterations end each start, not the time: the same on any thread
+    options.timeLimit = 600;
+    const GridLayout one = searchFromStarts(parts, stock, options);
+    options.threads = 2;
+    const GridLayout two = searchFromStarts(parts, stock, options);
+    expectValidLayout(two, parts, stock);
+    ASSERT_EQ(one.placed.size(), two.placed.size());
+    for (size_t i = 0; i < one.placed.size(); ++i)
+        EXPECT_TRUE(one.placed[i].part == two.placed[i].part && one.placed[i].x == two.placed[i].x &&
+                    one.placed[i].y == two.placed[i].y && one.placed[i].shape == two.placed[i].shape);
 }
