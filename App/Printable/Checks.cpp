@@ -3,11 +3,11 @@
 #include "Printable/Motion.h"
 
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
 
 #include <string>
 
@@ -29,9 +29,10 @@ struct Placed {
     Bnd_Box bounds;
 };
 
+/// The body moved by t: located, not copied (a carcass that stands still is the same shape at every pose).
 Placed place(const Body& b, const gp_Trsf& t)
 {
-    Placed p{BRepBuilderAPI_Transform(b.shape, t, true).Shape(), {}};
+    Placed p{t.Form() == gp_Identity ? b.shape : b.shape.Moved(TopLoc_Location(t)), {}};
     BRepBndLib::Add(p.shape, p.bounds);
     return p;
 }

@@ -69,7 +69,7 @@ def main():
                 workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",
                 printable_benchmark.table(printable_benchmark.run(BUILD)), "",
                 printable_benchmark.suite_table(printable_benchmark.suite(BUILD)), "",
-                printable_benchmark.wall_line(BUILD), ""]
+                printable_benchmark.walls(BUILD), ""]
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as page:
         page.write("\n".join(sections))
     print("wrote docs/benchmarks.md")
