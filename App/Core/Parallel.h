@@ -33,7 +33,9 @@ void runAll(int count, int threads, Task&& task, const std::function<void(int)>&
     std::condition_variable changed;
     std::vector<int> done;  // tasks in the order they finished
     std::exception_ptr failure;
-    int next = 0, working = std::min(threads, count);
+    const int spawned = std::min(threads, count);
+    int next = 0,
+        working = spawned;  // read under the lock: a quick thread may be done before the next starts
     const auto work = [&] {
         std::unique_lock<std::mutex> lock(mutex);
         while (next < count && !failure) {
@@ -54,7 +56,7 @@ void runAll(int count, int threads, Task&& task, const std::function<void(int)>&
         changed.notify_one();
     };
     std::vector<std::thread> pool;
-    for (int k = 0; k < working; ++k)
+    for (int k = 0; k < spawned; ++k)
         pool.emplace_back(work);
     {
         std::unique_lock<std::mutex> lock(mutex);
