@@ -33,9 +33,10 @@ void runAll(int count, int threads, Task&& task, const std::function<void(int)>&
     std::condition_variable changed;
     std::vector<int> done;  // tasks in the order they finished
     std::exception_ptr failure;
+    // Started by a fixed count: `working` is read under the lock, as a quick thread may be done before the
+    // next starts.
     const int spawned = std::min(threads, count);
-    int next = 0,
-        working = spawned;  // read under the lock: a quick thread may be done before the next starts
+    int next = 0, working = spawned;
     const auto work = [&] {
         std::unique_lock<std::mutex> lock(mutex);
         while (next < count && !failure) {

@@ -11,11 +11,6 @@ namespace fabguide::function {
 
 namespace {
 
-int axisOf(Side side)
-{
-    return static_cast<int>(side) / 2;
-}
-
 double at(const Model& model, int cuboid, int side, int configuration)
 {
     return evaluate(model, posed(model, Face{cuboid, static_cast<Side>(side)}, configuration));

@@ -252,7 +252,7 @@ bool doubled(const Model& model, const Joint& one, const Joint& two)
 {
     if (one.type != Joint::Type::DoublePivot || two.type != Joint::Type::DoublePivot ||
         one.part != two.part || one.base != two.base || one.pivotFace.side == two.pivotFace.side ||
-        static_cast<int>(one.pivotFace.side) / 2 != static_cast<int>(two.pivotFace.side) / 2)
+        axisOf(one.pivotFace.side) != axisOf(two.pivotFace.side))
         return false;
     const PivotPlane a = pivotPlane(model, one), b = pivotPlane(model, two);
     const double width = linkRadius(model, one) + linkRadius(model, two);
@@ -510,8 +510,7 @@ const Joint* fourBarPartner(const Model& model, const Joint& joint)
         if (&other != &joint && other.type == Joint::Type::DoublePivot && other.part == joint.part &&
             other.base == joint.base &&
             (other.pivotFace.side == joint.pivotFace.side ||
-             (static_cast<int>(other.pivotFace.side) / 2 == static_cast<int>(joint.pivotFace.side) / 2 &&
-              !doubled(model, joint, other))))
+             (axisOf(other.pivotFace.side) == axisOf(joint.pivotFace.side) && !doubled(model, joint, other))))
             return &other;
     return nullptr;
 }
@@ -527,7 +526,7 @@ std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point&
 PivotPlane pivotPlane(const Model& model, const Joint& joint)
 {
     PivotPlane plane;
-    plane.normal = static_cast<int>(joint.pivotFace.side) / 2;
+    plane.normal = axisOf(joint.pivotFace.side);
     plane.u = (plane.normal + 1) % 3;
     plane.w = (plane.normal + 2) % 3;
     const Cuboid& a = model.cuboids[joint.pivotFace.cuboid];

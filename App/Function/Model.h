@@ -19,6 +19,12 @@ inline const char* sideName(Side side)
     return names[static_cast<int>(side)];
 }
 
+/// The axis a side lies across: 0 for left and right (x), 1 near and far (y), 2 bottom and top (z).
+inline int axisOf(Side side)
+{
+    return static_cast<int>(side) / 2;
+}
+
 /// A cuboid of a part, or a cavity cut out of one of its solid cuboids (thesis 4.1.1): a drawer's opening,
 /// a compartment. A cavity's faces can be covered (an opening behind a door) and enclose parts.
 struct Cuboid {

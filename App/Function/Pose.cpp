@@ -13,11 +13,6 @@ constexpr double kPi = 3.14159265358979323846;
 /// The six sides of a moved cuboid's bounding box, indexed by Side.
 using Box = std::array<Expression, 6>;
 
-int axisOf(Side side)
-{
-    return static_cast<int>(side) / 2;
-}
-
 /// Zero terms are left out, so a quarter turn keeps faces equal to the last bit.
 Expression sum(std::initializer_list<std::pair<double, const Expression*>> parts)
 {

@@ -21,11 +21,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-int axis(Side side)
-{
-    return static_cast<int>(side) / 2;
-}
-
 /// left − right measured in a configuration, as constraint terms and the constant that moves to the bound.
 std::pair<std::vector<std::pair<int, double>>, double> difference(const Model& model, const Expression& left,
                                                                   const Expression& right, int configuration)
@@ -212,7 +207,7 @@ std::vector<LinearConstraint> constraints(const Model& model)
             walls(rows, model, c, solid);
     }
     for (const Flush& f : model.flush) {  // thesis 4.2.4: the two faces coplanar
-        if (axis(f.a.side) != axis(f.b.side))
+        if (axisOf(f.a.side) != axisOf(f.b.side))
             throw std::invalid_argument("flush '" + f.name + "': " + faceName(model, f.a) + " and " +
                                         faceName(model, f.b) + " are not parallel");
         order(rows, model, f.name, f.configuration, f.a, f.b, true);

@@ -130,7 +130,7 @@ std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, c
     if (std::find(cuboids.begin(), cuboids.end(), f.cuboid) == cuboids.end())
         throw FormatError(path + "[0]: '" + function::faceName(model, f) + "' is not a face of part '" +
                           model.parts[part].name + "'");
-    const int n = static_cast<int>(f.side) / 2;
+    const int n = function::axisOf(f.side);
     std::array<double, 2> offsets{};
     for (int k = 0; k < 2; ++k) {
         const int a = (n + 1 + k) % 3;
@@ -150,7 +150,7 @@ void readPivots(const function::Model& model, const Fields& j, function::Joint& 
         throw FormatError(j.pathOf("base") + ": a double pivot links its part to a base part");
     std::tie(joint.pivotFace, joint.pivot) = readPivot(model, j, "pivot", joint.part);
     std::tie(joint.basePivotFace, joint.basePivot) = readPivot(model, j, "base_pivot", joint.base);
-    if (static_cast<int>(joint.pivotFace.side) / 2 != static_cast<int>(joint.basePivotFace.side) / 2)
+    if (function::axisOf(joint.pivotFace.side) != function::axisOf(joint.basePivotFace.side))
         throw FormatError(j.pathOf("base_pivot") + ": the pivots' faces must be parallel (coplanar)");
 }
 
@@ -158,7 +158,7 @@ void readPivots(const function::Model& model, const Fields& j, function::Joint& 
 nlohmann::json pivotJson(const function::Model& model, const Face& f, const std::array<double, 2>& offsets)
 {
     const auto& c = model.cuboids[f.cuboid].coordinates;
-    const int n = static_cast<int>(f.side) / 2;
+    const int n = function::axisOf(f.side);
     std::array<double, 3> point{};
     point[n] = c[static_cast<int>(f.side)];
     for (int k = 0; k < 2; ++k) {

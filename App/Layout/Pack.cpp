@@ -176,9 +176,10 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
     runAll(count, threads, start, [](int) {});
     // The lowest cost, the first start on a tie: the same whichever thread finished first.
     size_t best = 0;
+    LayoutCost least = cost(found[0], stock, options.bounds);
     for (size_t k = 1; k < found.size(); ++k)
-        if (cost(found[k], stock, options.bounds) < cost(found[best], stock, options.bounds))
-            best = k;
+        if (const LayoutCost c = cost(found[k], stock, options.bounds); c < least)
+            best = k, least = c;
     return std::move(found[best]);
 }
 

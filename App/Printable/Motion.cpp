@@ -96,7 +96,7 @@ std::pair<gp_Pnt, gp_Pnt> pivotPoints(const Model& model, const Joint& joint)
 gp_Ax1 hingeAxis(const Model& model, const Joint& joint)
 {
     const auto& c = model.cuboids[joint.edgeA.cuboid];
-    const int a = static_cast<int>(joint.edgeA.side) / 2, b = static_cast<int>(joint.edgeB.side) / 2;
+    const int a = function::axisOf(joint.edgeA.side), b = function::axisOf(joint.edgeB.side);
     const int along = 3 - a - b;
     double p[3];
     p[a] = c.at(joint.edgeA.side);
