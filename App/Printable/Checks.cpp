@@ -1,55 +1,149 @@
 #include "Printable/Checks.h"
 
+#include "Core/Parallel.h"
 #include "Printable/Motion.h"
 
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/distance.h>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Poly_Triangulation.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
-
-#include <string>
+#include <TopoDS.hxx>
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <string>
 #include <utility>
 
 namespace fabguide::printable {
 
 namespace {
 
+/// How far a body's mesh may lie from its surface (mm): distances found between meshes are within three times
+/// this of the bodies' (two meshes, and the search's own tolerance).
+constexpr double kDeflection = 0.002;
+
+using Tree = fcl::BVHModel<fcl::OBBRSSd>;
+
+/// A body to measure: its shape, its surface as triangles in FCL's bounding-volume tree (none when a face
+/// would not mesh: then it is measured on its shape), and its bounds.
+struct Measured {
+    TopoDS_Shape shape;
+    std::shared_ptr<Tree> surface;
+    Bnd_Box bounds;
+};
+
+/// The body's surface meshed kDeflection close, on a copy (the body keeps the coarser mesh it is written
+/// with).
+std::shared_ptr<Tree> surfaceOf(const TopoDS_Shape& shape)
+{
+    const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape).Shape();
+    BRepMesh_IncrementalMesh(copy, kDeflection, false, 0.5, true);
+    std::vector<fcl::Vector3d> points;
+    std::vector<fcl::Triangle> triangles;
+    for (TopExp_Explorer e(copy, TopAbs_FACE); e.More(); e.Next()) {
+        TopLoc_Location at;
+        const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(e.Current()), at);
+        if (mesh.IsNull())
+            return nullptr;
+        const size_t first = points.size();
+        for (int i = 1; i <= mesh->NbNodes(); ++i) {
+            const gp_Pnt p = mesh->Node(i).Transformed(at.Transformation());
+            points.emplace_back(p.X(), p.Y(), p.Z());
+        }
+        for (int i = 1; i <= mesh->NbTriangles(); ++i) {
+            int a, b, c;
+            mesh->Triangle(i).Get(a, b, c);
+            triangles.emplace_back(first + a - 1, first + b - 1, first + c - 1);
+        }
+    }
+    auto tree = std::make_shared<Tree>();
+    tree->beginModel();
+    tree->addSubModel(points, triangles);
+    tree->endModel();
+    return tree;
+}
+
 gp_Trsf motion(const function::Model& m, const Body& b, int k, double t)
 {
     return b.part >= 0 ? partMotion(m, b.part, k, t) : linkMotion(m, b.joint, k, t);
 }
 
-struct Placed {
-    TopoDS_Shape shape;
-    Bnd_Box bounds;
-};
+/// Bounds moved by t: the box round its moved corners.
+Bnd_Box moved(const Bnd_Box& bounds, const gp_Trsf& t)
+{
+    return t.Form() == gp_Identity ? bounds : bounds.Transformed(t);
+}
 
 /// The body moved by t: located, not copied (a carcass that stands still is the same shape at every pose).
-Placed place(const Body& b, const gp_Trsf& t)
+TopoDS_Shape placed(const TopoDS_Shape& shape, const gp_Trsf& t)
 {
-    Placed p{t.Form() == gp_Identity ? b.shape : b.shape.Moved(TopLoc_Location(t)), {}};
-    BRepBndLib::Add(p.shape, p.bounds);
-    return p;
+    return t.Form() == gp_Identity ? shape : shape.Moved(TopLoc_Location(t));
 }
 
 /// The distance between two solids, 0 when they intersect or one holds the other, and a point where it is
-/// (on the first).
-std::pair<double, gp_Pnt> distance(const Placed& a, const Placed& b)
+/// (on the first), on their shapes.
+std::pair<double, gp_Pnt> exactDistance(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
     BRepExtrema_DistShapeShape d;
     d.SetFlag(Extrema_ExtFlag_MIN);  // the least distance only
-    d.SetMultiThread(true);
-    d.LoadS1(a.shape);
-    d.LoadS2(b.shape);
+    d.LoadS1(a);
+    d.LoadS2(b);
     d.Perform();
     if (!d.IsDone() || d.NbSolution() == 0)
         return {0, gp_Pnt()};
     return {d.InnerSolution() ? 0 : d.Value(), d.PointOnShape1(1)};
+}
+
+fcl::Transform3d toFcl(const gp_Trsf& t)
+{
+    fcl::Transform3d x = fcl::Transform3d::Identity();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c)
+            x.matrix()(r, c) = t.Value(r + 1, c + 1);
+    return x;
+}
+
+/// Whether the one body lies wholly within the other (their surfaces apart): a point of it is inside.
+bool holds(const Measured& outer, const gp_Trsf& to, const Measured& inner, const gp_Trsf& ti)
+{
+    Bnd_Box big = moved(outer.bounds, to), small = moved(inner.bounds, ti);
+    double x0, y0, z0, x1, y1, z1;
+    small.Get(x0, y0, z0, x1, y1, z1);
+    if (big.IsOut(gp_Pnt(x0, y0, z0)) || big.IsOut(gp_Pnt(x1, y1, z1)))
+        return false;
+    TopExp_Explorer vertex(inner.shape, TopAbs_VERTEX);
+    if (!vertex.More())
+        return false;
+    const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())).Transformed(ti);
+    return BRepClass3d_SolidClassifier(placed(outer.shape, to), p, 1e-7).State() == TopAbs_IN;
+}
+
+/// The distance between two posed bodies if less than `bound` (else `bound` or more), 0 when they meet or one
+/// holds the other: on their meshes (within 3 kDeflection of theirs), on their shapes where a mesh is
+/// missing.
+double distance(const Measured& a, const gp_Trsf& ta, const Measured& b, const gp_Trsf& tb, double bound)
+{
+    if (holds(a, ta, b, tb) || holds(b, tb, a, ta))
+        return 0;
+    if (!a.surface || !b.surface)
+        return exactDistance(placed(a.shape, ta), placed(b.shape, tb)).first;
+    fcl::DistanceRequestd request;
+    request.abs_err =
+        kDeflection;  // boxes of triangles no more than this nearer than the nearest yet are passed
+    request.rel_err = 0.02;
+    fcl::DistanceResultd result(bound);  // and those no nearer than the bound: pairs farther are soon done
+    fcl::distance(a.surface.get(), toFcl(ta), b.surface.get(), toFcl(tb), request, result);
+    return std::max(0.0, result.min_distance);
 }
 
 /// Whether two bodies move alike (their distance is then as printed).
@@ -62,11 +156,25 @@ bool same(const gp_Trsf& a, const gp_Trsf& b)
     return true;
 }
 
+/// A pose of the check: configuration k (-1: as printed) t of the way.
+struct Pose {
+    int k;
+    double t;
+    std::string when;
+};
+
+/// The nearest two bodies at a pose.
+struct Nearest {
+    double d = 1e300;
+    size_t a = 0, b = 0;
+};
+
 }  // namespace
 
 Check check(const function::Model& m, const Printable& printable, double enough, int samples)
 {
     Check out;
+    std::vector<Measured> bodies;
     for (const Body& b : printable.bodies) {
         if (!BRepCheck_Analyzer(b.shape).IsValid())
             out.invalid.push_back(b.name);
@@ -75,37 +183,53 @@ Check check(const function::Model& m, const Printable& printable, double enough,
             ++pieces;
         if (pieces > 1)  // a cut through it: a joint turning the wrong way round, or a part in the way
             out.loose.push_back(b.name + ": " + std::to_string(pieces) + " pieces");
+        bodies.push_back({b.shape, surfaceOf(b.shape), {}});
+        BRepBndLib::Add(b.shape, bodies.back().bounds);
     }
-    auto measure = [&](int k, double t, const std::string& when) {
-        std::vector<Placed> placed;
-        std::vector<gp_Trsf> motions;
-        for (const Body& b : printable.bodies) {
-            motions.push_back(motion(m, b, k, t));
-            placed.push_back(place(b, motions.back()));
-        }
-        for (size_t a = 0; a < placed.size(); ++a)
-            for (size_t b = a + 1; b < placed.size(); ++b) {
-                if (k >= 0 && same(motions[a], motions[b]))
-                    continue;  // no nearer than as printed
-                Bnd_Box grown = placed[a].bounds;
-                grown.Enlarge(enough);
-                if (grown.IsOut(placed[b].bounds))
-                    continue;
-                const auto [d, at] = distance(placed[a], placed[b]);
-                if (d < out.clearance) {
-                    out.clearance = d;
-                    char point[96];
-                    std::snprintf(point, sizeof point, " near (%.1f, %.1f, %.1f) mm", at.X(), at.Y(), at.Z());
-                    out.where =
-                        printable.bodies[a].name + " and " + printable.bodies[b].name + " " + when + point;
-                }
-            }
-    };
-    measure(-1, 0, "as printed");
+    std::vector<Pose> poses{{-1, 0, "as printed"}};
     for (size_t k = 0; k < m.configurations.size(); ++k)
         for (int s = 1; s <= samples; ++s)
-            measure(static_cast<int>(k), static_cast<double>(s) / samples,
-                    "in '" + m.configurations[k].name + "' at " + std::to_string(100 * s / samples) + "%");
+            poses.push_back(
+                {static_cast<int>(k), static_cast<double>(s) / samples,
+                 "in '" + m.configurations[k].name + "' at " + std::to_string(100 * s / samples) + "%"});
+    auto motions = [&](const Pose& pose) {
+        std::vector<gp_Trsf> at;
+        for (const Body& b : printable.bodies)
+            at.push_back(motion(m, b, pose.k, pose.t));
+        return at;
+    };
+    // Every pose on the meshes, on every core; then the nearest two exactly where they are nearest.
+    std::vector<Nearest> nearest(poses.size());
+    const auto measure = [&](int p) {
+        const std::vector<gp_Trsf> at = motions(poses[p]);
+        for (size_t a = 0; a < bodies.size(); ++a)
+            for (size_t b = a + 1; b < bodies.size(); ++b) {
+                if (poses[p].k >= 0 && same(at[a], at[b]))
+                    continue;  // no nearer than as printed
+                Bnd_Box grown = moved(bodies[a].bounds, at[a]);
+                grown.Enlarge(enough);
+                if (grown.IsOut(moved(bodies[b].bounds, at[b])))
+                    continue;
+                if (const double d = distance(bodies[a], at[a], bodies[b], at[b], nearest[p].d);
+                    d < nearest[p].d)
+                    nearest[p] = {d, a, b};
+            }
+    };
+    runAll(static_cast<int>(poses.size()), cores(), measure, [](int) {});
+    size_t worst = 0;
+    for (size_t p = 1; p < poses.size(); ++p)
+        if (nearest[p].d < nearest[worst].d)
+            worst = p;
+    if (nearest[worst].d >= 1e300)
+        return out;
+    const auto [a, b] = std::pair{nearest[worst].a, nearest[worst].b};
+    const std::vector<gp_Trsf> at = motions(poses[worst]);
+    const auto [d, point] = exactDistance(placed(bodies[a].shape, at[a]), placed(bodies[b].shape, at[b]));
+    out.clearance = nearest[worst].d <= 0 ? 0 : d;
+    char near[96];
+    std::snprintf(near, sizeof near, " near (%.1f, %.1f, %.1f) mm", point.X(), point.Y(), point.Z());
+    out.where =
+        printable.bodies[a].name + " and " + printable.bodies[b].name + " " + poses[worst].when + near;
     return out;
 }
 

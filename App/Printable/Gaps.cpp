@@ -3,9 +3,8 @@
 #include "Function/Pose.h"
 #include "Printable/Motion.h"
 
-#include <BRepAlgoAPI_Common.hxx>
-#include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
+#include <gp_Dir.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -47,25 +46,81 @@ bool turns(const gp_Trsf& t)
     return false;
 }
 
+/// A box's corner i (bit 0: high x, bit 1: high y, bit 2: high z).
+gp_Pnt corner(const Coordinates& x, int i)
+{
+    return gp_Pnt(x[i & 1], x[2 + (i >> 1 & 1)], x[4 + (i >> 2)]);
+}
+
+/// A box's faces as the corner numbers round each, and its half-spaces (normal · p <= offset).
+constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                              {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+using HalfSpace = std::pair<gp_Dir, double>;
+
+/// Box x moved by t: its corners and its half-spaces.
+std::pair<std::array<gp_Pnt, 8>, std::array<HalfSpace, 6>> placedBox(const Coordinates& x, const gp_Trsf& t)
+{
+    std::array<gp_Pnt, 8> corners;
+    for (int i = 0; i < 8; ++i)
+        corners[i] = corner(x, i).Transformed(t);
+    std::array<HalfSpace, 6> sides;
+    for (int side = 0; side < 6; ++side) {
+        gp_Vec normal(0, 0, 0);
+        normal.SetCoord(side / 2 + 1, side % 2 ? 1 : -1);
+        const gp_Dir n = gp_Dir(normal).Transformed(t);
+        sides[side] = {n, gp_Vec(n).Dot(gp_Vec(corners[kFaces[side][0]].XYZ()))};
+    }
+    return {corners, sides};
+}
+
+/// The bounds of the part of box a inside box b, each placed: every face of each clipped by the other's
+/// half-spaces (Sutherland-Hodgman); the common's corners are among what is left. Void when they only touch.
+Bnd_Box common(const Coordinates& a, const gp_Trsf& ta, const Coordinates& b, const gp_Trsf& tb)
+{
+    const auto boxA = placedBox(a, ta), boxB = placedBox(b, tb);
+    Bnd_Box bounds;
+    for (const auto& [from, by] : {std::pair{&boxA, &boxB}, std::pair{&boxB, &boxA}})
+        for (const auto& face : kFaces) {
+            std::vector<gp_Pnt> polygon;
+            for (int i : face)
+                polygon.push_back(from->first[i]);
+            for (const auto& [n, offset] : by->second) {
+                std::vector<gp_Pnt> kept;
+                for (size_t i = 0; i < polygon.size(); ++i) {
+                    const gp_Pnt &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+                    const double dp = gp_Vec(n).Dot(gp_Vec(p.XYZ())) - offset,
+                                 dq = gp_Vec(n).Dot(gp_Vec(q.XYZ())) - offset;
+                    if (dp <= 0)
+                        kept.push_back(p);
+                    if ((dp < 0) != (dq < 0) && dp != 0 && dq != 0)
+                        kept.push_back(p.XYZ() + (q.XYZ() - p.XYZ()) * (dp / (dp - dq)));
+                }
+                polygon = kept;
+            }
+            for (const gp_Pnt& p : polygon)
+                bounds.Add(p);
+        }
+    if (bounds.IsVoid())
+        return bounds;
+    double lo[3], hi[3];
+    bounds.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    for (int axis = 0; axis < 3; ++axis)
+        if (hi[axis] - lo[axis] < 1e-6)  // a face, an edge or a corner in common: they touch
+            return Bnd_Box();
+    return bounds;
+}
+
 /// The least step back of one side of box `a` (side, mm) that leaves box `b`, moved by `t` into a's frame,
 /// the gap away from it; {-1, 0} when it is that far already. The part of b inside a grown by the gap is
-/// found exactly (a Boolean common of two boxes); a side steps back to the gap from its nearest point.
+/// found exactly; a side steps back to the gap from its nearest point.
 std::pair<int, double> leastStep(const Coordinates& a, const Coordinates& b, const gp_Trsf& t, double gap)
 {
     Coordinates grown = a;
     for (int i = 0; i < 6; ++i)
         grown[i] += i % 2 ? gap : -gap;
-    Bnd_Box around, near;
-    around.Update(grown[0], grown[2], grown[4], grown[1], grown[3], grown[5]);
-    for (int corner = 0; corner < 8; ++corner)
-        near.Add(gp_Pnt(b[corner & 1], b[2 + (corner >> 1 & 1)], b[4 + (corner >> 2)]).Transformed(t));
-    if (around.IsOut(near))
+    const Bnd_Box r = common(grown, gp_Trsf(), b, t);
+    if (r.IsVoid())
         return {-1, 0};
-    const TopoDS_Shape inside = BRepAlgoAPI_Common(box(grown), moved(box(b), t)).Shape();
-    if (volumeOf(inside) < 1e-9)
-        return {-1, 0};
-    Bnd_Box r;
-    BRepBndLib::AddOptimal(inside, r, false, false);
     double lo[3], hi[3];
     r.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     std::pair<int, double> least{-1, 0};

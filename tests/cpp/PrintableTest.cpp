@@ -308,6 +308,28 @@ TEST(Checks, TheClearanceIsTheLeastDistanceAlongTheMotionAndZeroWhenBodiesMeet)
     EXPECT_NE(c.where.find("lid"), std::string::npos);
 }
 
+TEST(Checks, ABodyHeldWhollyInsideAnotherMeetsIt)
+{
+    // The lid printed inside a hollow box, apart from its walls: the meshes never meet, the bodies do.
+    const function::Model m = slid();
+    Printable held;
+    held.bodies = {{"box", 0, -1, cut(box({0, 40, 0, 40, 0, 10}), box({2, 38, 2, 38, 2, 8}))},
+                   {"lid", 1, -1, box({10, 20, 10, 20, 4, 6})}};
+    EXPECT_EQ(check(m, held, 1.0, 4).clearance, 0);
+}
+
+TEST(Checks, ARoundPinTurningInItsHoleIsMeasuredExactlyWhereNearest)
+{
+    // A pin 0.4 mm inside a round hole, turning with the lid: found on meshes, measured on the shapes.
+    const function::Model m = hinged();
+    Printable pinned;
+    const gp_Pnt axis(0, 40, 10);
+    pinned.bodies = {{"box", 0, -1, cut(box({-5, 5, 35, 45, 5, 15}), rod(axis, 0, -6, 6, 2.4))},
+                     {"lid", 1, -1, rod(axis, 0, -4, 4, 2)}};
+    const Check c = check(m, pinned, 1.0, 8);
+    EXPECT_NEAR(c.clearance, 0.4, 1e-6) << c.where;
+}
+
 TEST(RigidBodies, PartsThatStandStillTogetherPrintAsOneBody)
 {
     // The hinged box on a plinth that no joint moves: box and plinth are one body with no gap between them,
