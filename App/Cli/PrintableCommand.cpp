@@ -78,14 +78,19 @@ int run(const PrintableArguments& args)
     io::OutputBatch files;
     const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
     const std::optional<printable::Size> fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
-    const printable::Fitted fitted = printable::printed(io::readWorkslike(io::readJsonFile(args.input)),
-                                                        {gap, args.partSeconds}, args.scale, fit);
+    const printable::Printer printer{gap, args.partSeconds};
+    printable::Fitted fitted =
+        printable::printed(io::readWorkslike(io::readJsonFile(args.input)), printer, args.scale, fit);
     if (fit)
         std::printf("scale %.4g: fits %s mm%s\n", fitted.scale, args.fit.c_str(),
                     fitted.turned ? ", turned a quarter about z" : "");
     const function::Model& model = fitted.model;
+    // Joint geometry placed where it clears (issue 15, item 1), then checked as written.
+    const printable::Checked placed = printable::placedByCheck(model, fitted.printable, printer);
+    fitted.printable = placed.printable;
     const printable::Printable& made = fitted.printable;
-    const printable::Printable onTheBed = printable::onTheBed(fitted.printable, fitted.turned);
+    const printable::Check& check = placed.check;
+    const printable::Printable onTheBed = printable::onTheBed(made, fitted.turned);
     const printable::Size size = printable::sizeOf(onTheBed);
     std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
     std::vector<double> volumes;
@@ -97,7 +102,6 @@ int run(const PrintableArguments& args)
     }
     for (const std::string& note : made.notes)
         std::printf("note: %s\n", note.c_str());
-    const printable::Check check = printable::check(model, made, gap);
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
     for (const std::string& body : check.loose)

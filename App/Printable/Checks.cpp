@@ -1,6 +1,7 @@
 #include "Printable/Checks.h"
 
 #include "Core/Parallel.h"
+#include "Printable/Joints.h"
 #include "Printable/Motion.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -18,8 +19,10 @@
 #include <TopLoc_Location.hxx>
 #include <TopoDS.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -169,7 +172,138 @@ struct Nearest {
     size_t a = 0, b = 0;
 };
 
+/// The distance from p to the segment from a to b.
+double toSegment(const gp_Pnt& p, const gp_Pnt& a, const gp_Pnt& b)
+{
+    const gp_Vec ab(a, b), ap(a, p);
+    const double along =
+        ab.SquareMagnitude() > 0 ? std::clamp(ap.Dot(ab) / ab.SquareMagnitude(), 0.0, 1.0) : 0;
+    return p.Distance(a.Translated(ab * along));
+}
+
+/// The distance from p to box x.
+double toBox(const gp_Pnt& p, const Coordinates& x)
+{
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double out = std::max({0.0, x[2 * a] - p.Coord(a + 1), p.Coord(a + 1) - x[2 * a + 1]});
+        d2 += out * out;
+    }
+    return std::sqrt(d2);
+}
+
+/// How far the point lies beyond the reach of joint j's geometry, p given in the model's frame of the part
+/// the geometry stands on (`frameOf`), and the parts that geometry belongs to.
+double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(int)>& frameOf,
+                   std::vector<int>& parts)
+{
+    const Joint& joint = m.joints[j];
+    const double thin = thinnest(
+        m.cuboids[joint.type == Joint::Type::DoublePivot ? joint.pivotFace.cuboid : joint.edgeA.cuboid]);
+    parts = {joint.part};
+    if (joint.turns()) {  // pin, knuckle and yokes round the axis along the edge, on the part and its base
+        const gp_Ax1 axis = hingeAxis(m, joint);
+        const int base = cuboidAtEdge(m, joint, axis);
+        if (base >= 0)
+            parts.push_back(function::partOf(m, base));
+        const Coordinates& edge = m.cuboids[joint.edgeA.cuboid].coordinates;
+        const int along = std::abs(axis.Direction().X()) > 0.5   ? 0
+                          : std::abs(axis.Direction().Y()) > 0.5 ? 1
+                                                                 : 2;
+        gp_Pnt a = axis.Location(), b = axis.Location();
+        a.SetCoord(along + 1, edge[2 * along]);
+        b.SetCoord(along + 1, edge[2 * along + 1]);
+        return toSegment(frameOf(joint.part), a, b) - std::max(thin, 4.0);
+    }
+    if (joint.type == Joint::Type::DoublePivot) {
+        parts.push_back(joint.base);
+        const auto [pivot, base] = pivotPoints(m, joint);
+        return std::min(toSegment(frameOf(joint.part), pivot, base),
+                        toSegment(frameOf(joint.base), pivot, base)) -
+               std::max(thin, 4.0);
+    }
+    double beyond = 1e300;  // rails: the tongue on a base, the groove in the part
+    for (const RailPlace& r : railPlaces(m, j)) {
+        const int base = function::partOf(m, r.base);
+        parts.push_back(base);
+        Coordinates strip{};
+        strip[2 * r.across] = r.low, strip[2 * r.across + 1] = r.high;
+        strip[2 * r.normal] = r.plane - 1, strip[2 * r.normal + 1] = r.plane + 1;
+        strip[2 * joint.axis] = r.from, strip[2 * joint.axis + 1] = r.to;
+        beyond =
+            std::min({beyond, toBox(frameOf(base), strip) - thin, toBox(frameOf(joint.part), strip) - thin});
+    }
+    return beyond;
+}
+
 }  // namespace
+
+int jointInTheWay(const function::Model& m, const Printable& printable, const Check& c)
+{
+    if (c.first < 0)
+        return -1;
+    const std::vector<std::vector<int>> rigid = rigidBodies(m);
+    auto holdsPart = [&](int body, int part) {
+        const Body& b = printable.bodies[body];
+        return b.part >= 0 && body < static_cast<int>(rigid.size()) &&
+               std::find(rigid[body].begin(), rigid[body].end(), part) != rigid[body].end();
+    };
+    const gp_Pnt at(c.point[0], c.point[1], c.point[2]);
+    const auto frameOf = [&](int part) {  // the point in the model's frame of the part
+        return c.configuration < 0 ? at
+                                   : at.Transformed(partMotion(m, part, c.configuration, c.t).Inverted());
+    };
+    int nearest = -1;
+    double least = 0;
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+        if (placesOf(m, static_cast<int>(j)) == 0)
+            continue;  // no geometry of its own (a slide a cavity guides, a fixed joint)
+        std::vector<int> parts;
+        const double beyond = beyondReach(m, static_cast<int>(j), frameOf, parts);
+        bool involved = false;
+        for (int body : {c.first, c.second}) {
+            involved = involved || printable.bodies[body].joint == static_cast<int>(j);
+            for (int p : parts)
+                involved = involved || (p >= 0 && holdsPart(body, p));
+        }
+        if (involved && beyond <= 0 && (nearest < 0 || beyond < least)) {
+            nearest = static_cast<int>(j);
+            least = beyond;
+        }
+    }
+    return nearest;
+}
+
+Checked placedByCheck(const function::Model& m, Printable made, const Printer& printer, int samples)
+{
+    const double g = printer.gap;
+    Check c = check(m, made, g, samples);
+    const auto fails = [&](const Check& k) { return k.clearance < g - 0.01; };
+    Places places(m.joints.size(), 0);
+    std::vector<bool> moved(m.joints.size(), false);
+    for (int j = jointInTheWay(m, made, c); fails(c) && j >= 0 && !moved[j]; j = jointInTheWay(m, made, c)) {
+        moved[j] = true;
+        const int kept = places[j];
+        int best = kept;
+        for (int place = 0; place < placesOf(m, j) && fails(c); ++place) {
+            if (place == kept)
+                continue;
+            places[j] = place;
+            Printable other = makePrintable(m, printer, places);
+            const Check checked = check(m, other, g, samples);
+            if (checked.clearance > c.clearance) {
+                made = std::move(other);
+                c = checked;
+                best = place;
+            }
+        }
+        places[j] = best;
+        if (fails(c) && jointInTheWay(m, made, c) == j)
+            c.where += "; joint '" + m.joints[j].name + "' is in the way, and none of its " +
+                       std::to_string(placesOf(m, j)) + " places clears";
+    }
+    return {std::move(made), c};
+}
 
 Check check(const function::Model& m, const Printable& printable, double enough, int samples)
 {
@@ -226,6 +360,9 @@ Check check(const function::Model& m, const Printable& printable, double enough,
     const std::vector<gp_Trsf> at = motions(poses[worst]);
     const auto [d, point] = exactDistance(placed(bodies[a].shape, at[a]), placed(bodies[b].shape, at[b]));
     out.clearance = nearest[worst].d <= 0 ? 0 : d;
+    out.first = static_cast<int>(a), out.second = static_cast<int>(b);
+    out.configuration = poses[worst].k, out.t = poses[worst].t;
+    out.point = {point.X(), point.Y(), point.Z()};
     char near[96];
     std::snprintf(near, sizeof near, " near (%.1f, %.1f, %.1f) mm", point.X(), point.Y(), point.Z());
     out.where =

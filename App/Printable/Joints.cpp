@@ -381,63 +381,83 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
 }
 
-void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
-              std::vector<TopoDS_Shape>& shapes)
+std::vector<RailPlace> railPlaces(const Model& m, int j)
 {
-    const Joint& joint = m.joints[j];
-    const int a = joint.axis;
-    // The widest contact between a cuboid of the part and one of another part, across the slide axis.
-    int mover = -1, base = -1, normal = -1;
-    double widest = 0;
-    for (int c : m.parts[joint.part].cuboids)
+    const int a = m.joints[j].axis;
+    std::vector<RailPlace> places;
+    for (int c : m.parts[m.joints[j].part].cuboids)
         for (size_t q = 0; q < m.cuboids.size(); ++q) {
             if (m.cuboids[c].cavity() || m.cuboids[q].cavity() ||
-                function::partOf(m, static_cast<int>(q)) == joint.part)
+                function::partOf(m, static_cast<int>(q)) == m.joints[j].part)
                 continue;
             const auto& x = m.cuboids[c].coordinates;
             const auto& y = m.cuboids[q].coordinates;
             for (int n = 0; n < 3; ++n) {
-                if (n == a ||
-                    (std::abs(x[2 * n] - y[2 * n + 1]) > 1e-6 && std::abs(x[2 * n + 1] - y[2 * n]) > 1e-6))
+                const int face = std::abs(x[2 * n] - y[2 * n + 1]) < 1e-6 ? 2 * n + 1
+                                 : std::abs(x[2 * n + 1] - y[2 * n]) < 1e-6
+                                     ? 2 * n
+                                     : -1;  // q's face the part rests on
+                if (n == a || face < 0)
                     continue;
-                double area = 1;
-                for (int o = 0; o < 3; ++o)
-                    if (o != n)
-                        area *= std::max(0.0,
-                                         std::min(x[2 * o + 1], y[2 * o + 1]) - std::max(x[2 * o], y[2 * o]));
-                if (area > widest) {
-                    widest = area;
-                    mover = c;
-                    base = static_cast<int>(q);
-                    normal = n;
+                const int across = 3 - a - n;
+                const double from = std::max(x[2 * a], y[2 * a]), to = std::min(x[2 * a + 1], y[2 * a + 1]);
+                // The contact across the axis, less the cavities of q that open under it (a pencil case's
+                // well).
+                std::vector<std::pair<double, double>> strips{
+                    {std::max(x[2 * across], y[2 * across]), std::min(x[2 * across + 1], y[2 * across + 1])}};
+                for (const Cuboid& hollow : m.cuboids) {
+                    const auto& h = hollow.coordinates;
+                    if (hollow.within != static_cast<int>(q) || std::abs(h[face] - y[face]) > 1e-6 ||
+                        std::min(to, h[2 * a + 1]) - std::max(from, h[2 * a]) <= 1e-9)
+                        continue;
+                    std::vector<std::pair<double, double>> left;
+                    for (const auto& [low, high] : strips)
+                        for (const auto& [l, r] : {std::pair{low, std::min(high, h[2 * across])},
+                                                   std::pair{std::max(low, h[2 * across + 1]), high}})
+                            if (r - l > 1e-9)
+                                left.emplace_back(l, r);
+                    strips = left;
                 }
+                for (const auto& [low, high] : strips)
+                    if (high - low > 1e-9 && to - from > 1e-9)
+                        places.push_back({c, static_cast<int>(q), n, across, face % 2 ? 1.0 : -1.0, y[face],
+                                          from, to, low, high});
             }
         }
-    if (mover < 0)  // printed without rails, the part would come out loose
+    std::stable_sort(places.begin(), places.end(), [](const RailPlace& p, const RailPlace& q) {
+        return (p.high - p.low) * (p.to - p.from) > (q.high - q.low) * (q.to - q.from);
+    });
+    return places;
+}
+
+void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
+              std::vector<TopoDS_Shape>& shapes, int place)
+{
+    const Joint& joint = m.joints[j];
+    const int a = joint.axis;
+    const std::vector<RailPlace> places = railPlaces(m, j);
+    if (places.empty())  // printed without rails, the part would come out loose
         throw std::invalid_argument("joint '" + joint.name + "': nothing guides part '" +
                                     m.parts[joint.part].name +
                                     "' (no cavity of another part holds it and it rests on no other part): "
                                     "put it in a cavity or against the part it slides on");
-    const auto& x = m.cuboids[mover].coordinates;
-    const auto& y = m.cuboids[base].coordinates;
-    const int across = 3 - a - normal;
-    const double dir =
-        std::abs(x[2 * normal] - y[2 * normal + 1]) < 1e-6 ? 1 : -1;  // from the base to the part
-    const double plane = dir > 0 ? y[2 * normal + 1] : y[2 * normal];
-    const double thin = std::min(gapped[mover][2 * normal + 1] - gapped[mover][2 * normal],
+    const RailPlace& at = places[std::min(static_cast<size_t>(place), places.size() - 1)];
+    const auto& x = m.cuboids[at.mover].coordinates;
+    const auto& y = m.cuboids[at.base].coordinates;
+    const int normal = at.normal, across = at.across;
+    const double dir = at.dir, plane = at.plane, from = at.from, to = at.to;
+    const double thin = std::min(gapped[at.mover][2 * normal + 1] - gapped[at.mover][2 * normal],
                                  y[2 * normal + 1] - y[2 * normal]);
-    const double h = 0.4 * thin, width = std::min(x[2 * across + 1], y[2 * across + 1]) -
-                                         std::max(x[2 * across], y[2 * across]);
-    const double centre =
-        (std::max(x[2 * across], y[2 * across]) + std::min(x[2 * across + 1], y[2 * across + 1])) / 2;
-    const double from = std::max(x[2 * a], y[2 * a]), to = std::min(x[2 * a + 1], y[2 * a + 1]);
-    if (h < 2 * g || width < 6 * h || to - from < 4 * h)
+    // A tongue 0.4 of the thinner part deep, its top (three times that) no wider than the material under it.
+    const double width = at.high - at.low, h = std::min(0.4 * thin, width / 3),
+                 centre = (at.low + at.high) / 2;
+    if (h < 2 * g || to - from < 4 * h)
         throw std::invalid_argument(
             "joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
-            m.cuboids[base].name + "' over " + function::millimetres(width) + " x " +
-            function::millimetres(to - from) + " mm, too little for rails " + function::millimetres(h) +
-            " mm deep at a " + function::millimetres(g) + " mm gap (they need " +
-            function::millimetres(6 * h) + " x " + function::millimetres(4 * h) + " mm, and parts " +
+            m.cuboids[at.base].name + "' over " + function::millimetres(width) + " x " +
+            function::millimetres(to - from) + " mm of material, too little for rails " +
+            function::millimetres(h) + " mm deep at a " + function::millimetres(g) + " mm gap (they need " +
+            function::millimetres(6 * g) + " x " + function::millimetres(8 * g) + " mm, and parts " +
             function::millimetres(5 * g) + " mm thick): widen the contact, or print larger");
     // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
     // groove's is the same offset outwards by the gap, edge by edge.
@@ -470,7 +490,7 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), along).Shape();
     };
     const auto [low, high] = travel(m, j);
-    const int q = function::partOf(m, base);
+    const int q = function::partOf(m, at.base);
     shapes[q] = fuse(shapes[q], tongue(0, from, to - from));
     // In the part's frame the tongue runs back over the travel; the groove is open at the part's ends.
     shapes[joint.part] = cut(shapes[joint.part], tongue(g, std::min(from, x[2 * a]) - high - 1,

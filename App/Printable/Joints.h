@@ -25,12 +25,25 @@ int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
 void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
               std::vector<TopoDS_Shape>& shapes, Printable& out);
 
+/// Where a slide's rails may run: a strip of the face of cuboid `base` that cuboid `mover` of the part rests
+/// on, `across` [low, high] by `from` .. `to` along the slide axis, with the base's material under it; `dir`
+/// the way from the base to the part along `normal`, `plane` the face.
+struct RailPlace {
+    int mover, base, normal, across;
+    double dir, plane, from, to, low, high;
+};
+
+/// The places for slide j's rails (issue 15, item 1): each contact of a cuboid of the part with one of
+/// another part across the slide axis, less the cavities that open under it (a well), the largest strip
+/// first.
+std::vector<RailPlace> railPlaces(const Model& m, int j);
+
 /// Slide (4.5.2) not guided by a cavity: mated rails. A dovetail tongue on the part it rests against, along
 /// the slide axis where the two meet, and the matching groove, the gap all round, cut into the moving part
-/// along its travel, so it can slide but not lift off. An error names the joint when the part rests on no
-/// other part, or on too little for rails.
+/// along its travel, so it can slide but not lift off; at railPlaces(m, j)[place]. An error names the joint
+/// when the part rests on no other part, or on too little for rails.
 void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
-              std::vector<TopoDS_Shape>& shapes);
+              std::vector<TopoDS_Shape>& shapes, int place = 0);
 
 /// Double pivot (4.5.2): a headed pin at each pivot, standing out of the two coplanar faces, and a separate
 /// rigid link between them, outside the faces, with a hole round each pin.

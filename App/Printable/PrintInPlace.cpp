@@ -133,7 +133,7 @@ bool inCavity(const Model& m, int part)
 
 /// Joint geometry (4.5.2): hinges and sliding hinges, double pivots, and rails for slides no cavity guides
 /// (a fixed joint's part is fused to its base as one body).
-void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
+void addJoints(const Model& m, const std::vector<Coordinates>& at, double g, const Places& places,
                std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     for (size_t j = 0; j < m.joints.size(); ++j) {
@@ -144,7 +144,7 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g,
         else if (joint.type == Joint::Type::DoublePivot)
             addDoublePivot(m, static_cast<int>(j), g, shapes, out);
         else if (joint.slides() && !inCavity(m, joint.part))
-            addRails(m, static_cast<int>(j), at, g, shapes);
+            addRails(m, static_cast<int>(j), at, g, shapes, j < places.size() ? places[j] : 0);
     }
 }
 
@@ -165,10 +165,10 @@ void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printabl
     for (size_t b = 0; b < bodies.size(); ++b) {
         const std::string name = bodyName(m, bodies[b]);
         const Work on(name);
-        TopoDS_Shape shape;
+        std::vector<TopoDS_Shape> parts;
         for (int p : bodies[b])
-            shape = fuse(shape, shapes[p]);
-        ShapeUpgrade_UnifySameDomain unify(shape, true, true, false);
+            parts.push_back(shapes[p]);
+        ShapeUpgrade_UnifySameDomain unify(fuse(parts), true, true, false);
         unify.Build();
         int pieces = 0;
         for (TopExp_Explorer e(unify.Shape(), TopAbs_SOLID); e.More(); e.Next())
@@ -201,7 +201,16 @@ Model solvedToPrint(const Model& model, double scale)
     return function::scaled(solved.model, scale);
 }
 
-Printable makePrintable(const Model& m, const Printer& printer)
+int placesOf(const Model& m, int j)
+{
+    const Joint& joint = m.joints[j];
+    if (joint.turns() || joint.type == Joint::Type::DoublePivot)
+        return 1;
+    return joint.slides() && !inCavity(m, joint.part) ? std::max(1, static_cast<int>(railPlaces(m, j).size()))
+                                                      : 0;
+}
+
+Printable makePrintable(const Model& m, const Printer& printer, const Places& places)
 {
     Printable out;
     const Work all("", printer.partSeconds);
@@ -212,7 +221,7 @@ Printable makePrintable(const Model& m, const Printer& printer)
     clearHingeBases(m, at, g, shapes);
     for (size_t k = 0; k < m.configurations.size(); ++k)
         clearNeighbours(m, static_cast<int>(k), at, g, shapes);
-    addJoints(m, at, g, shapes, out);
+    addJoints(m, at, g, places, shapes, out);
     addBodies(m, shapes, out);
     return out;
 }

@@ -40,9 +40,16 @@ struct Printable {
 /// the relationships that cannot hold together when it does not solve.
 function::Model solvedToPrint(const function::Model& model, double scale);
 
+/// Which of its candidate places each joint's geometry takes, by joint (0, the first, where not given).
+using Places = std::vector<int>;
+
+/// How many places joint j's geometry can take: a hinge's or a double pivot's one, a slide's rails one per
+/// railPlaces; 0 without geometry of its own (a slide a cavity guides, a fixed joint).
+int placesOf(const function::Model& m, int j);
+
 /// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too
 /// thin for its geometry at this gap.
-Printable makePrintable(const function::Model& solved, const Printer& printer);
+Printable makePrintable(const function::Model& solved, const Printer& printer, const Places& places = {});
 
 /// The names of the bodies makePrintable makes, in its order: each rigid body's (rigidBodies: its parts'
 /// names joined by " + "), then each double pivot's link.

@@ -117,6 +117,11 @@ TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b)
     return a.IsNull() ? b : boolean<BRepAlgoAPI_Fuse>({a, b}, "union");
 }
 
+TopoDS_Shape fuse(const std::vector<TopoDS_Shape>& shapes)
+{
+    return boolean<BRepAlgoAPI_Fuse>(shapes, "union");
+}
+
 bool touches(const TopoDS_Shape& a, const TopoDS_Shape& b)
 {
     BRepExtrema_DistShapeShape d(a, b, Extrema_ExtFlag_MIN);

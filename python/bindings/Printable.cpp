@@ -28,17 +28,24 @@ namespace {
 
 using Fit = std::optional<printable::Size>;
 
+/// OpenCASCADE's work, without the GIL, its failures as RuntimeError.
+template <class Work>
+auto geometry(Work&& work)
+{
+    py::gil_scoped_release release;
+    try {
+        return work();
+    } catch (const Standard_Failure& e) {
+        throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
+    }
+}
+
 /// The model solved and scaled, or fitted to a build volume, and its printable bodies (RuntimeError naming
 /// what conflicts).
 printable::Fitted made(const py::object& model, double gap, double scale, const Fit& fit)
 {
     const function::Model read = io::readWorkslike(toJson(model));
-    py::gil_scoped_release release;
-    try {
-        return printable::printed(read, {gap}, scale, fit);
-    } catch (const Standard_Failure& e) {
-        throw std::runtime_error(std::string("geometry: ") + e.GetMessageString());
-    }
+    return geometry([&] { return printable::printed(read, {gap}, scale, fit); });
 }
 
 std::string brep(const TopoDS_Shape& shape)
@@ -52,7 +59,14 @@ std::string brep(const TopoDS_Shape& shape)
 /// "where", "invalid", "loose"}
 py::dict printableBodies(const py::object& model, double gap, bool check, double scale, const Fit& fit)
 {
-    const printable::Fitted m = made(model, gap, scale, fit);
+    printable::Fitted m = made(model, gap, scale, fit);
+    printable::Check c;
+    if (check) {  // joint geometry placed where it clears (issue 15, item 1), as checked
+        const printable::Checked placed =
+            geometry([&] { return printable::placedByCheck(m.model, m.printable, {gap}); });
+        m.printable = placed.printable;
+        c = placed.check;
+    }
     const printable::Printable& p = m.printable;
     py::list bodies, sweeps;
     for (const printable::Body& b : p.bodies) {
@@ -75,11 +89,6 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["turned"] = m.turned;
     out["size"] = printable::sizeOf(printable::onTheBed(p, m.turned));
     if (check) {
-        printable::Check c;
-        {
-            py::gil_scoped_release release;
-            c = printable::check(m.model, p, gap);  // the model the bodies were made from, solved once
-        }
         out["clearance"] = c.clearance;
         out["where"] = c.where;
         out["invalid"] = c.invalid;

@@ -13,6 +13,7 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <Bnd_Box.hxx>
 #include <fstream>
@@ -192,6 +193,65 @@ TEST(Joints, AnUnguidedSlideRunsOnADovetailRail)
     EXPECT_LT(volumeOf(p.bodies[1].shape), 40 * 40 * 3.6 - 1);
     const Check c = check(m, p, 0.4, 8);
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
+/// A pencil case: a 210 x 60 x 25 mm case, its well open at the top inside 4 mm walls, and a 5 mm lid on it
+/// sliding along x (open: 150 mm).
+function::Model pencilCase()
+{
+    return io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike", "version": 1,
+        "parts": [{"name": "case", "cuboids": [{"name": "case", "min": [0, 0, 0], "max": [210, 60, 25]},
+                                               {"name": "well", "min": [4, 4, 4], "max": [206, 56, 25],
+                                                "cavity": true}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 25], "max": [210, 60, 30]}]}],
+        "joints": [{"name": "lid slide", "type": "slide", "part": "lid", "axis": "x"}],
+        "configurations": [{"name": "open", "poses": {"lid slide": 150}}]})"));
+}
+
+bool inside(const TopoDS_Shape& s, const gp_Pnt& p)
+{
+    return BRepClass3d_SolidClassifier(s, p, 1e-7).State() == TopAbs_IN;
+}
+
+TEST(Joints, ASlidesRailRunsAlongAWallNotAcrossTheWell)
+{
+    const function::Model m = pencilCase();
+    ASSERT_EQ(railPlaces(m, 0).size(), 2u);  // the two long walls' tops; the well is no place
+    const Printable p = makePrintable(m, {0.4});
+    EXPECT_FALSE(inside(p.bodies[0].shape, gp_Pnt(105, 30, 25.5)));  // nothing bridges the well
+    EXPECT_TRUE(inside(p.bodies[0].shape, gp_Pnt(105, 2, 25.5)));    // the tongue stands on the first wall
+    EXPECT_FALSE(inside(p.bodies[1].shape, gp_Pnt(105, 2, 25.5)));   // in the lid's groove
+    EXPECT_GE(check(m, p, 0.4, 8).clearance, 0.4 - 0.01);
+    const Printable other = makePrintable(m, {0.4}, {1});  // the second place: the other wall
+    EXPECT_TRUE(inside(other.bodies[0].shape, gp_Pnt(105, 58, 25.5)));
+    EXPECT_FALSE(inside(other.bodies[0].shape, gp_Pnt(105, 2, 25.5)));
+}
+
+TEST(Checks, AJointsGeometryThatMeetsAPartMovesToAPlaceThatClears)
+{
+    // The lid made with a lump where it slides over its first rail: the check finds the lid meeting the
+    // case's tongue there, so the rails move to the other wall, which clears.
+    const function::Model m = pencilCase();
+    Printable lumpy = makePrintable(m, {0.4});
+    lumpy.bodies[1].shape = fuse(lumpy.bodies[1].shape, box({100, 110, 0.5, 3.5, 25.2, 27}));
+    ASSERT_EQ(jointInTheWay(m, lumpy, check(m, lumpy, 0.4, 8)), 0);
+    const Checked placed = placedByCheck(m, lumpy, {0.4}, 8);
+    EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
+    EXPECT_TRUE(inside(placed.printable.bodies[0].shape, gp_Pnt(105, 58, 25.5)));
+}
+
+TEST(Checks, WhenNoPlaceClearsTheCheckNamesTheJointInTheWay)
+{
+    // A lid resting on the whole top of its box has one place for its rails; made with a lump in its groove,
+    // nothing else clears, and the failure says which joint.
+    const function::Model m = slid();
+    ASSERT_EQ(placesOf(m, 0), 1);
+    Printable lumpy = makePrintable(m, {0.4});
+    lumpy.bodies[1].shape = fuse(lumpy.bodies[1].shape, box({10, 20, 15, 25, 10.2, 11.5}));
+    const Checked placed = placedByCheck(m, lumpy, {0.4}, 8);
+    EXPECT_LT(placed.check.clearance, 0.4 - 0.01);
+    EXPECT_NE(placed.check.where.find("joint 'lid slide' is in the way"), std::string::npos)
+        << placed.check.where;
 }
 
 /// A 40 mm cube with a 4 mm flap standing `off` mm in front of it, hinged on the flap's outer top edge and
