@@ -448,10 +448,28 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const double dir = at.dir, plane = at.plane, from = at.from, to = at.to;
     const double thin = std::min(gapped[at.mover][2 * normal + 1] - gapped[at.mover][2 * normal],
                                  y[2 * normal + 1] - y[2 * normal]);
-    // A tongue 0.4 of the thinner part deep, its top (three times that) no wider than the material under it.
-    const double width = at.high - at.low, h = std::min(0.4 * thin, width / 3),
-                 centre = (at.low + at.high) / 2;
-    if (h < 2 * g || to - from < 4 * h)
+    // The tongue (0.4 of the thinner part deep, from 2 to 3 times that wide) stands on the strip's material,
+    // its groove (the gap all round) a wall inside the part's sides: the deepest that fits, as near the
+    // strip's middle as that allows (a pencil case's lid on its 4 mm wall: 1.1 mm deep, the wall's inner
+    // half).
+    const double sideLow = gapped[at.mover][2 * across] + kLeastWall,
+                 sideHigh = gapped[at.mover][2 * across + 1] - kLeastWall;
+    const auto centres = [&](double depth) {  // the lowest and highest centre a tongue this deep fits at
+        const double foot = depth + 0.5 * depth / (depth + 1), groove = 1.5 * depth + 1.5 * g;
+        return std::pair{std::max(at.low + foot, sideLow + groove),
+                         std::min(at.high - foot, sideHigh - groove)};
+    };
+    const auto fits = [&](double depth) { return centres(depth).first <= centres(depth).second; };
+    double h = 0.4 * thin;
+    if (!fits(h)) {
+        double deeper = h;
+        h = 0;
+        for (int step = 0; step < 40; ++step)
+            (fits((h + deeper) / 2) ? h : deeper) = (h + deeper) / 2;
+    }
+    const double width = at.high - at.low,
+                 centre = std::clamp((at.low + at.high) / 2, centres(h).first, centres(h).second);
+    if (h < 2 * g || !fits(h) || to - from < 4 * h)
         throw std::invalid_argument(
             "joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
             m.cuboids[at.base].name + "' over " + function::millimetres(width) + " x " +

@@ -219,12 +219,13 @@ TEST(Joints, ASlidesRailRunsAlongAWallNotAcrossTheWell)
     ASSERT_EQ(railPlaces(m, 0).size(), 2u);  // the two long walls' tops; the well is no place
     const Printable p = makePrintable(m, {0.4});
     EXPECT_FALSE(inside(p.bodies[0].shape, gp_Pnt(105, 30, 25.5)));  // nothing bridges the well
-    EXPECT_TRUE(inside(p.bodies[0].shape, gp_Pnt(105, 2, 25.5)));    // the tongue stands on the first wall
-    EXPECT_FALSE(inside(p.bodies[1].shape, gp_Pnt(105, 2, 25.5)));   // in the lid's groove
+    EXPECT_TRUE(inside(p.bodies[0].shape, gp_Pnt(105, 3, 25.5)));    // the tongue stands on the first wall
+    EXPECT_FALSE(inside(p.bodies[1].shape, gp_Pnt(105, 3, 25.5)));   // in the lid's groove,
+    EXPECT_TRUE(inside(p.bodies[1].shape, gp_Pnt(105, 0.4, 25.6)));  // which keeps a side outside it
     EXPECT_GE(check(m, p, 0.4, 8).clearance, 0.4 - 0.01);
     const Printable other = makePrintable(m, {0.4}, {1});  // the second place: the other wall
-    EXPECT_TRUE(inside(other.bodies[0].shape, gp_Pnt(105, 58, 25.5)));
-    EXPECT_FALSE(inside(other.bodies[0].shape, gp_Pnt(105, 2, 25.5)));
+    EXPECT_TRUE(inside(other.bodies[0].shape, gp_Pnt(105, 57, 25.5)));
+    EXPECT_FALSE(inside(other.bodies[0].shape, gp_Pnt(105, 3, 25.5)));
 }
 
 TEST(Checks, AJointsGeometryThatMeetsAPartMovesToAPlaceThatClears)
@@ -237,7 +238,7 @@ TEST(Checks, AJointsGeometryThatMeetsAPartMovesToAPlaceThatClears)
     ASSERT_EQ(jointInTheWay(m, lumpy, check(m, lumpy, 0.4, 8)), 0);
     const Checked placed = placedByCheck(m, lumpy, {0.4}, 8);
     EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
-    EXPECT_TRUE(inside(placed.printable.bodies[0].shape, gp_Pnt(105, 58, 25.5)));
+    EXPECT_TRUE(inside(placed.printable.bodies[0].shape, gp_Pnt(105, 57, 25.5)));
 }
 
 TEST(Checks, WhenNoPlaceClearsTheCheckNamesTheJointInTheWay)
