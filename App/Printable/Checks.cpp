@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -289,7 +290,12 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
             if (place == kept)
                 continue;
             places[j] = place;
-            Printable other = makePrintable(m, printer, places);
+            Printable other;
+            try {
+                other = makePrintable(m, printer, places);
+            } catch (const std::invalid_argument&) {
+                continue;  // no room there (a hinge's half too short for its round parts)
+            }
             const Check checked = check(m, other, g, samples);
             if (checked.clearance > c.clearance) {
                 made = std::move(other);

@@ -279,7 +279,7 @@ int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 }
 
 void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
-              std::vector<TopoDS_Shape>& shapes, Printable& out)
+              std::vector<TopoDS_Shape>& shapes, Printable& out, int place)
 {
     const Joint& joint = m.joints[j];
     const gp_Ax1 axis = hingeAxis(m, joint);
@@ -319,6 +319,17 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             beside = {k, near};
         }
     }
+    // Its place (issue 15, item 1): along the whole length, or its middle, first or second half.
+    const double half = (hi - lo) / 2;
+    if (place > 0 && half < 4 * (r.outer + g))
+        throw std::invalid_argument("joint '" + joint.name +
+                                    "': its edge is too short for its round parts in half " + "its length");
+    if (place == 1)
+        lo += half / 2, hi -= half / 2;
+    else if (place == 2)
+        hi = lo + half;
+    else if (place == 3)
+        lo = hi - half;
     const double yoke = (hi - lo) / 4;
     const gp_Pnt at = axis.Location();
     TopoDS_Shape& part = shapes[joint.part];

@@ -139,12 +139,13 @@ void addJoints(const Model& m, const std::vector<Coordinates>& at, double g, con
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
         const Work on(joint.name);
+        const int place = j < places.size() ? places[j] : 0;
         if (joint.turns())
-            addHinge(m, static_cast<int>(j), at, g, shapes, out);
+            addHinge(m, static_cast<int>(j), at, g, shapes, out, place);
         else if (joint.type == Joint::Type::DoublePivot)
             addDoublePivot(m, static_cast<int>(j), g, shapes, out);
         else if (joint.slides() && !inCavity(m, joint.part))
-            addRails(m, static_cast<int>(j), at, g, shapes, j < places.size() ? places[j] : 0);
+            addRails(m, static_cast<int>(j), at, g, shapes, place);
     }
 }
 
@@ -204,7 +205,9 @@ Model solvedToPrint(const Model& model, double scale)
 int placesOf(const Model& m, int j)
 {
     const Joint& joint = m.joints[j];
-    if (joint.turns() || joint.type == Joint::Type::DoublePivot)
+    if (joint.turns())
+        return 4;
+    if (joint.type == Joint::Type::DoublePivot)
         return 1;
     return joint.slides() && !inCavity(m, joint.part) ? std::max(1, static_cast<int>(railPlaces(m, j).size()))
                                                       : 0;

@@ -43,8 +43,9 @@ function::Model solvedToPrint(const function::Model& model, double scale);
 /// Which of its candidate places each joint's geometry takes, by joint (0, the first, where not given).
 using Places = std::vector<int>;
 
-/// How many places joint j's geometry can take: a hinge's or a double pivot's one, a slide's rails one per
-/// railPlaces; 0 without geometry of its own (a slide a cavity guides, a fixed joint).
+/// How many places joint j's geometry can take: a hinge's round parts along its whole edge, its middle, first
+/// or second half; a slide's rails one per railPlaces; a double pivot's one; 0 without geometry of its own (a
+/// slide a cavity guides, a fixed joint).
 int placesOf(const function::Model& m, int j);
 
 /// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too

@@ -152,6 +152,24 @@ TEST(Joints, AHingeGetsAPinAKnuckleAndTwoYokesThatClearEachOther)
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
 }
 
+TEST(Joints, AHingesOtherPlacesAreTheMiddleAndEitherHalfOfItsEdge)
+{
+    const function::Model m = hinged();
+    ASSERT_EQ(placesOf(m, 0), 4);
+    // The lid's pin runs along the edge's span (x 0 .. 40): the whole of it, else its middle half.
+    const auto pinAt = [&](int place, double x) {
+        return BRepClass3d_SolidClassifier(makePrintable(m, {0.4}, {place}).bodies[1].shape,
+                                           gp_Pnt(x, 40, 10), 1e-7)
+                   .State() == TopAbs_IN;
+    };
+    EXPECT_TRUE(pinAt(0, 5));
+    EXPECT_FALSE(pinAt(1, 5));
+    EXPECT_TRUE(pinAt(1, 20));
+    EXPECT_TRUE(pinAt(2, 5));
+    EXPECT_FALSE(pinAt(2, 35));
+    EXPECT_TRUE(pinAt(3, 35));
+}
+
 TEST(Joints, NeighbouringHingesTooCloseForTwoPinsTakeHalfTheEdgeEach)
 {
     // Two doors 8 mm thick on a cabinet front, hinged on the edges they share, 1 mm apart (too little for two
@@ -239,6 +257,25 @@ TEST(Checks, AJointsGeometryThatMeetsAPartMovesToAPlaceThatClears)
     const Checked placed = placedByCheck(m, lumpy, {0.4}, 8);
     EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
     EXPECT_TRUE(inside(placed.printable.bodies[0].shape, gp_Pnt(105, 57, 25.5)));
+}
+
+TEST(Checks, AYokeThatMeetsAPostBehindTheBoxMovesAlongTheEdge)
+{
+    // A post standing just behind the hinged box's far left corner, below the lid's path: the yoke at the
+    // edge's end meets it; the hinge's next place (the edge's middle half) clears.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 40, 10]}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 10], "max": [40, 40, 14]}]},
+                  {"name": "post", "cuboids": [{"name": "post", "min": [0, 40.5, 0], "max": [8, 45, 9.5]}]}],
+        "joints": [{"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]}],
+        "configurations": [{"name": "open", "poses": {"lid hinge": -90}}]})"));
+    const Printable first = makePrintable(m, {0.4});
+    const Check c = check(m, first, 0.4, 8);
+    ASSERT_EQ(c.clearance, 0);
+    EXPECT_EQ(jointInTheWay(m, first, c), 0);
+    const Checked placed = placedByCheck(m, first, {0.4}, 8);
+    EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
 }
 
 TEST(Checks, WhenNoPlaceClearsTheCheckNamesTheJointInTheWay)
