@@ -187,7 +187,7 @@ double toBox(const gp_Pnt& p, const Coordinates& x)
 {
     double d2 = 0;
     for (int a = 0; a < 3; ++a) {
-        const double out = std::max({0.0, x[2 * a] - p.Coord(a + 1), p.Coord(a + 1) - x[2 * a + 1]});
+        const double out = std::max({0.0, x[2 * a] - coord(p, a), coord(p, a) - x[2 * a + 1]});
         d2 += out * out;
     }
     return std::sqrt(d2);
@@ -212,8 +212,8 @@ double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(i
                           : std::abs(axis.Direction().Y()) > 0.5 ? 1
                                                                  : 2;
         gp_Pnt a = axis.Location(), b = axis.Location();
-        a.SetCoord(along + 1, edge[2 * along]);
-        b.SetCoord(along + 1, edge[2 * along + 1]);
+        setCoord(a, along, edge[2 * along]);
+        setCoord(b, along, edge[2 * along + 1]);
         return toSegment(frameOf(joint.part), a, b) - std::max(thin, 4.0);
     }
     if (joint.type == Joint::Type::DoublePivot) {

@@ -23,13 +23,13 @@ int modelledSide(const Model& m, int part, int c, int k, int side)
     const double at = function::evaluate(m, function::posed(m, {c, static_cast<Side>(side)}, k));
     for (int s = 0; s < 6; ++s) {
         gp_Pnt centre((x[0] + x[1]) / 2, (x[2] + x[3]) / 2, (x[4] + x[5]) / 2);
-        centre.SetCoord(s / 2 + 1, x[s]);
+        setCoord(centre, s / 2, x[s]);
         centre.Transform(motion);
-        if (std::abs(centre.Coord(side / 2 + 1) - at) < 1e-6) {
+        if (std::abs(coord(centre, side / 2) - at) < 1e-6) {
             gp_Vec normal(0, 0, 0);
-            normal.SetCoord(s / 2 + 1, s % 2 ? 1 : -1);
+            setCoord(normal, s / 2, s % 2 ? 1 : -1);
             normal.Transform(motion);
-            if (std::abs(normal.Coord(side / 2 + 1) - (side % 2 ? 1 : -1)) < 1e-9)
+            if (std::abs(coord(normal, side / 2) - (side % 2 ? 1 : -1)) < 1e-9)
                 return s;
         }
     }
@@ -66,7 +66,7 @@ std::pair<std::array<gp_Pnt, 8>, std::array<HalfSpace, 6>> placedBox(const Coord
     std::array<HalfSpace, 6> sides;
     for (int side = 0; side < 6; ++side) {
         gp_Vec normal(0, 0, 0);
-        normal.SetCoord(side / 2 + 1, side % 2 ? 1 : -1);
+        setCoord(normal, side / 2, side % 2 ? 1 : -1);
         const gp_Dir n = gp_Dir(normal).Transformed(t);
         sides[side] = {n, gp_Vec(n).Dot(gp_Vec(corners[kFaces[side][0]].XYZ()))};
     }

@@ -102,12 +102,12 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
             for (int a = 0; a < 3; ++a) {
                 const double low = m.cuboids[c].at(static_cast<Side>(2 * a)),
                              high = m.cuboids[c].at(static_cast<Side>(2 * a + 1));
-                if (std::abs(axis.Direction().Coord(a + 1)) > 0.5) {
+                if (std::abs(coord(axis.Direction(), a)) > 0.5) {
                     shared = std::min(high, own.at(static_cast<Side>(2 * a + 1))) -
                              std::max(low, own.at(static_cast<Side>(2 * a)));
                     continue;
                 }
-                const double x = axis.Location().Coord(a + 1);
+                const double x = coord(axis.Location(), a);
                 const double out = std::max({0.0, low - x, x - high});
                 d2 += out * out;
             }
@@ -130,7 +130,7 @@ std::optional<Coordinates> bridge(const Cuboid& base, const gp_Ax1& axis, int al
     bool apart = false;
     for (int a = 0; a < 3; ++a) {
         const double low = base.at(static_cast<Side>(2 * a)), high = base.at(static_cast<Side>(2 * a + 1));
-        const double x = axis.Location().Coord(a + 1);
+        const double x = coord(axis.Location(), a);
         if (a == along) {
             c[2 * a] = from, c[2 * a + 1] = to;
         } else if (x > high + 1e-3 || x < low - 1e-3) {
@@ -168,7 +168,7 @@ TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double 
     };
     Coordinates span{};
     for (int a = 0; a < 3; ++a) {
-        const double centre = at.Coord(a + 1);
+        const double centre = coord(at, a);
         span[2 * a] = a == along ? from : a == joint.axis ? centre + low : centre - r;
         span[2 * a + 1] = a == along ? to : a == joint.axis ? centre + high : centre + r;
     }
@@ -187,7 +187,7 @@ TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double fa
     const gp_Vec along(pivot, base);
     const gp_Dir normal(n == 0, n == 1, n == 2), x(along), y = normal.Crossed(x);
     gp_Pnt corner = pivot.Translated(gp_Vec(y) * -r.outer);
-    corner.SetCoord(n + 1, std::min(face + inward * depth, face + inward * (depth + thick)));
+    setCoord(corner, n, std::min(face + inward * depth, face + inward * (depth + thick)));
     TopoDS_Shape bar =
         BRepPrimAPI_MakeBox(gp_Ax2(corner, normal, x), along.Magnitude(), 2 * r.outer, thick).Shape();
     bar = fuse(bar,
@@ -237,7 +237,7 @@ std::pair<double, int> nearestHinge(const Model& m, int j, const gp_Ax1& axis, i
         if (!beside.IsParallel(axis, 1e-9) || overlap <= 0)
             continue;
         gp_Vec apart(axis.Location(), beside.Location());
-        apart.SetCoord(along + 1, 0);
+        setCoord(apart, along, 0);
         if (apart.Magnitude() < nearest.first)
             nearest = {apart.Magnitude(), static_cast<int>(k)};
     }
@@ -360,7 +360,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             gp_Trsf turnBack;
             turnBack.SetRotation(axis, -pose->angle * kPi / 180);
             gp_Vec back(0, 0, 0);
-            back.SetCoord(joint.axis + 1, -pose->offset);
+            setCoord(back, joint.axis, -pose->offset);
             const double angle = -pose->angle * kPi / 180;
             if (joint.slides())
                 around.push_back(turnedThenShifted(yokes, axis, angle, back.Transformed(turnBack)));
@@ -508,14 +508,14 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             const double t = ((p2 - p1) ^ d2) / (d1 ^ d2);
             const gp_XY uv = p1 + d1 * t;
             gp_Pnt p;
-            p.SetCoord(a + 1, start);
-            p.SetCoord(across + 1, uv.X());
-            p.SetCoord(normal + 1, uv.Y());
+            setCoord(p, a, start);
+            setCoord(p, across, uv.X());
+            setCoord(p, normal, uv.Y());
             return p;
         };
         BRepBuilderAPI_MakePolygon outline(point(0), point(1), point(2), point(3), true);
         gp_Vec along(0, 0, 0);
-        along.SetCoord(a + 1, length);
+        setCoord(along, a, length);
         return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), along).Shape();
     };
     const auto [low, high] = travel(m, j);

@@ -1,6 +1,7 @@
 #include "Printable/Motion.h"
 
 #include "Function/DoublePivot.h"
+#include "Printable/Solids.h"
 
 #include <gp_Ax1.hxx>
 #include <gp_Dir.hxx>
@@ -85,9 +86,9 @@ std::pair<gp_Pnt, gp_Pnt> pivotPoints(const Model& model, const Joint& joint)
     const double n = model.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     auto point = [&](const std::array<double, 2>& uw) {
         gp_Pnt p;
-        p.SetCoord(plane.normal + 1, n);
-        p.SetCoord(plane.u + 1, uw[0]);
-        p.SetCoord(plane.w + 1, uw[1]);
+        setCoord(p, plane.normal, n);
+        setCoord(p, plane.u, uw[0]);
+        setCoord(p, plane.w, uw[1]);
         return p;
     };
     return {point(plane.pivot), point(plane.basePivot)};

@@ -175,7 +175,7 @@ TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t)
 TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r)
 {
     gp_Pnt start = at;
-    start.SetCoord(axis + 1, from);
+    setCoord(start, axis, from);
     return BRepPrimAPI_MakeCylinder(gp_Ax2(start, gp_Dir(axis == 0, axis == 1, axis == 2)), r, to - from)
         .Shape();
 }

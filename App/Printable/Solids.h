@@ -43,6 +43,27 @@ private:
     const Work* enclosing_;
 };
 
+/// Coordinate `axis` (0: x, 1: y, 2: z) of a point, vector or direction. OpenCASCADE's Coord(index) and
+/// SetCoord(index) reach y and z through a pointer to x, which clang's optimiser may take at its word (a y
+/// written so was lost).
+template <class Point>
+double coord(const Point& p, int axis)
+{
+    return axis == 0 ? p.X() : axis == 1 ? p.Y() : p.Z();
+}
+
+/// Sets coordinate `axis` of a point or vector.
+template <class Point>
+void setCoord(Point& p, int axis, double value)
+{
+    if (axis == 0)
+        p.SetX(value);
+    else if (axis == 1)
+        p.SetY(value);
+    else
+        p.SetZ(value);
+}
+
 /// The box with these corners.
 TopoDS_Shape box(const Coordinates& c);
 

@@ -48,9 +48,9 @@ std::vector<Coordinates> splitAtAxis(const std::vector<Coordinates>& boxes, cons
 {
     std::vector<Coordinates> pieces = boxes;
     for (int a = 0; a < 3; ++a) {
-        if (std::abs(axis.Direction().Coord(a + 1)) > 0.5)
+        if (std::abs(coord(axis.Direction(), a)) > 0.5)
             continue;
-        const double x = axis.Location().Coord(a + 1);
+        const double x = coord(axis.Location(), a);
         std::vector<Coordinates> split;
         for (const Coordinates& b : pieces)
             if (b[2 * a] + 1e-6 < x && x < b[2 * a + 1] - 1e-6) {
@@ -138,7 +138,7 @@ std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const f
 {
     gp_Vec by(0, 0, 0);
     if (joint.slides())
-        by.SetCoord(joint.axis + 1, pose.offset);
+        setCoord(by, joint.axis, pose.offset);
     return turnedThenShifted(boxes, hingeAxis(m, joint), pose.angle * kPi / 180, by);
 }
 
