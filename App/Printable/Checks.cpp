@@ -305,8 +305,8 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
         }
         places[j] = best;
         if (fails(c) && jointInTheWay(m, made, c) == j)
-            c.where += "; joint '" + m.joints[j].name + "' is in the way, and none of its " +
-                       std::to_string(placesOf(m, j)) + " places clears";
+            c.where += "; joint '" + m.joints[j].name + "' is in the way" +
+                       (placesOf(m, j) > 1 ? ", and no other place of it clears" : "");
     }
     return {std::move(made), c};
 }
