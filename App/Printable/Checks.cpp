@@ -117,28 +117,34 @@ fcl::Transform3d toFcl(const gp_Trsf& t)
     return x;
 }
 
+/// A body at a pose: how it is moved there, and its bounds there.
+struct Posed {
+    gp_Trsf motion;
+    Bnd_Box bounds;
+};
+
 /// Whether the one body lies wholly within the other (their surfaces apart): a point of it is inside.
-bool holds(const Measured& outer, const gp_Trsf& to, const Measured& inner, const gp_Trsf& ti)
+bool holds(const Measured& outer, const Posed& to, const Measured& inner, const Posed& ti)
 {
-    Bnd_Box big = moved(outer.bounds, to), small = moved(inner.bounds, ti);
     double x0, y0, z0, x1, y1, z1;
-    small.Get(x0, y0, z0, x1, y1, z1);
-    if (big.IsOut(gp_Pnt(x0, y0, z0)) || big.IsOut(gp_Pnt(x1, y1, z1)))
+    ti.bounds.Get(x0, y0, z0, x1, y1, z1);
+    if (to.bounds.IsOut(gp_Pnt(x0, y0, z0)) || to.bounds.IsOut(gp_Pnt(x1, y1, z1)))
         return false;
     TopExp_Explorer vertex(inner.shape, TopAbs_VERTEX);
     if (!vertex.More())
         return false;
-    const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())).Transformed(ti);
-    return BRepClass3d_SolidClassifier(placed(outer.shape, to), p, 1e-7).State() == TopAbs_IN;
+    const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())).Transformed(ti.motion);
+    return BRepClass3d_SolidClassifier(placed(outer.shape, to.motion), p, 1e-7).State() == TopAbs_IN;
 }
 
 /// The distance between two posed bodies if less than `bound` (else `bound` or more), 0 when they meet or one
 /// holds the other: on their meshes (within 3 kDeflection of theirs), on their shapes where a mesh is
 /// missing.
-double distance(const Measured& a, const gp_Trsf& ta, const Measured& b, const gp_Trsf& tb, double bound)
+double distance(const Measured& a, const Posed& pa, const Measured& b, const Posed& pb, double bound)
 {
-    if (holds(a, ta, b, tb) || holds(b, tb, a, ta))
+    if (holds(a, pa, b, pb) || holds(b, pb, a, pa))
         return 0;
+    const gp_Trsf &ta = pa.motion, &tb = pb.motion;
     if (!a.surface || !b.surface)
         return exactDistance(placed(a.shape, ta), placed(b.shape, tb)).first;
     fcl::DistanceRequestd request;
@@ -208,9 +214,7 @@ double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(i
         if (base >= 0)
             parts.push_back(function::partOf(m, base));
         const Coordinates& edge = m.cuboids[joint.edgeA.cuboid].coordinates;
-        const int along = std::abs(axis.Direction().X()) > 0.5   ? 0
-                          : std::abs(axis.Direction().Y()) > 0.5 ? 1
-                                                                 : 2;
+        const int along = hingeAlong(joint);
         gp_Pnt a = axis.Location(), b = axis.Location();
         setCoord(a, along, edge[2 * along]);
         setCoord(b, along, edge[2 * along + 1]);
@@ -282,11 +286,11 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
     const auto fails = [&](const Check& k) { return k.clearance < g - 0.01; };
     Places places(m.joints.size(), 0);
     std::vector<bool> moved(m.joints.size(), false);
-    for (int j = jointInTheWay(m, made, c); fails(c) && j >= 0 && !moved[j]; j = jointInTheWay(m, made, c)) {
+    for (int j = jointInTheWay(m, made, c); fails(c) && j >= 0 && !moved[j];) {
         moved[j] = true;
-        const int kept = places[j];
+        const int kept = places[j], count = placesOf(m, j);
         int best = kept;
-        for (int place = 0; place < placesOf(m, j) && fails(c); ++place) {
+        for (int place = 0; place < count && fails(c); ++place) {
             if (place == kept)
                 continue;
             places[j] = place;
@@ -304,9 +308,11 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
             }
         }
         places[j] = best;
-        if (fails(c) && jointInTheWay(m, made, c) == j)
+        const int next = fails(c) ? jointInTheWay(m, made, c) : -1;
+        if (next == j)
             c.where += "; joint '" + m.joints[j].name + "' is in the way" +
-                       (placesOf(m, j) > 1 ? ", and no other place of it clears" : "");
+                       (count > 1 ? ", and no other place of it clears" : "");
+        j = next;
     }
     return {std::move(made), c};
 }
@@ -332,23 +338,21 @@ Check check(const function::Model& m, const Printable& printable, double enough,
             poses.push_back(
                 {static_cast<int>(k), static_cast<double>(s) / samples,
                  "in '" + m.configurations[k].name + "' at " + std::to_string(100 * s / samples) + "%"});
-    auto motions = [&](const Pose& pose) {
-        std::vector<gp_Trsf> at;
-        for (const Body& b : printable.bodies)
-            at.push_back(motion(m, b, pose.k, pose.t));
-        return at;
-    };
     // Every pose on the meshes, on every core; then the nearest two exactly where they are nearest.
     std::vector<Nearest> nearest(poses.size());
     const auto measure = [&](int p) {
-        const std::vector<gp_Trsf> at = motions(poses[p]);
+        std::vector<Posed> at;
+        for (size_t b = 0; b < bodies.size(); ++b) {
+            const gp_Trsf t = motion(m, printable.bodies[b], poses[p].k, poses[p].t);
+            at.push_back({t, moved(bodies[b].bounds, t)});
+        }
         for (size_t a = 0; a < bodies.size(); ++a)
             for (size_t b = a + 1; b < bodies.size(); ++b) {
-                if (poses[p].k >= 0 && same(at[a], at[b]))
+                if (poses[p].k >= 0 && same(at[a].motion, at[b].motion))
                     continue;  // no nearer than as printed
-                Bnd_Box grown = moved(bodies[a].bounds, at[a]);
+                Bnd_Box grown = at[a].bounds;
                 grown.Enlarge(enough);
-                if (grown.IsOut(moved(bodies[b].bounds, at[b])))
+                if (grown.IsOut(at[b].bounds))
                     continue;
                 if (const double d = distance(bodies[a], at[a], bodies[b], at[b], nearest[p].d);
                     d < nearest[p].d)
@@ -363,16 +367,17 @@ Check check(const function::Model& m, const Printable& printable, double enough,
     if (nearest[worst].d >= 1e300)
         return out;
     const auto [a, b] = std::pair{nearest[worst].a, nearest[worst].b};
-    const std::vector<gp_Trsf> at = motions(poses[worst]);
-    const auto [d, point] = exactDistance(placed(bodies[a].shape, at[a]), placed(bodies[b].shape, at[b]));
+    const Pose& pose = poses[worst];
+    const auto [d, point] =
+        exactDistance(placed(bodies[a].shape, motion(m, printable.bodies[a], pose.k, pose.t)),
+                      placed(bodies[b].shape, motion(m, printable.bodies[b], pose.k, pose.t)));
     out.clearance = nearest[worst].d <= 0 ? 0 : d;
     out.first = static_cast<int>(a), out.second = static_cast<int>(b);
-    out.configuration = poses[worst].k, out.t = poses[worst].t;
+    out.configuration = pose.k, out.t = pose.t;
     out.point = {point.X(), point.Y(), point.Z()};
     char near[96];
     std::snprintf(near, sizeof near, " near (%.1f, %.1f, %.1f) mm", point.X(), point.Y(), point.Z());
-    out.where =
-        printable.bodies[a].name + " and " + printable.bodies[b].name + " " + poses[worst].when + near;
+    out.where = printable.bodies[a].name + " and " + printable.bodies[b].name + " " + pose.when + near;
     return out;
 }
 

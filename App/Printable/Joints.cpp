@@ -283,7 +283,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
 {
     const Joint& joint = m.joints[j];
     const gp_Ax1 axis = hingeAxis(m, joint);
-    const int along = std::abs(axis.Direction().X()) > 0.5 ? 0 : std::abs(axis.Direction().Y()) > 0.5 ? 1 : 2;
+    const int along = hingeAlong(joint);
     const int onEdge = cuboidAtEdge(m, joint, axis);
     if (onEdge < 0)  // printed without a hinge, the part would come out loose
         throw std::invalid_argument(

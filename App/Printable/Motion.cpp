@@ -94,11 +94,16 @@ std::pair<gp_Pnt, gp_Pnt> pivotPoints(const Model& model, const Joint& joint)
     return {point(plane.pivot), point(plane.basePivot)};
 }
 
+int hingeAlong(const Joint& joint)
+{
+    return 3 - function::axisOf(joint.edgeA.side) - function::axisOf(joint.edgeB.side);
+}
+
 gp_Ax1 hingeAxis(const Model& model, const Joint& joint)
 {
     const auto& c = model.cuboids[joint.edgeA.cuboid];
     const int a = function::axisOf(joint.edgeA.side), b = function::axisOf(joint.edgeB.side);
-    const int along = 3 - a - b;
+    const int along = hingeAlong(joint);
     double p[3];
     p[a] = c.at(joint.edgeA.side);
     p[b] = c.at(joint.edgeB.side);

@@ -42,6 +42,9 @@ gp_Trsf linkMotion(const function::Model& model, int j, int configuration, doubl
 /// A double pivot's pivots as modelled: on the part, on the base (on the coplanar faces).
 std::pair<gp_Pnt, gp_Pnt> pivotPoints(const function::Model& model, const function::Joint& joint);
 
+/// The coordinate axis (0: x, 1: y, 2: z) a hinge's (or sliding hinge's) edge runs along.
+int hingeAlong(const function::Joint& joint);
+
 /// A hinge's (or sliding hinge's) axis: its edge, directed along +x, +y or +z.
 gp_Ax1 hingeAxis(const function::Model& model, const function::Joint& joint);
 
