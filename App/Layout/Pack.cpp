@@ -1,9 +1,11 @@
 #include "Layout/Pack.h"
 
 #include "Core/Parallel.h"
+#include "Layout/Compaction.h"
 #include "Layout/HoleFill.h"
 #include "Layout/MaxRects.h"
 #include "Layout/Raster.h"
+#include "Layout/Shrink.h"
 #include "Layout/Skyline.h"
 
 #include <algorithm>
@@ -353,13 +355,26 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
     options.timeLimit = secondsUntil(deadline);
-    // A strip of irregular parts is filled bottom-left, holes included, when the search has time for
-    // kFillPasses passes; Docking's height-fields cannot reach under the parts' overhangs.
-    if (problem.strip && !rectangles && search.criterion == Criterion::Docking &&
-        fillPassSteps(raster) * kFillPasses <= kFillStepsPerSecond * search.timeLimit)
+    // A strip of irregular parts: the search gives a first strip in a share of the time, shrinking shortens
+    // it in the rest, and compaction on the outlines gives back what the grid lost. The search fills it
+    // bottom-left, holes included, when it has time for kFillPasses passes; Docking's height-fields cannot
+    // reach under the parts' overhangs.
+    const bool shrinks = problem.strip && !rectangles;
+    if (shrinks)
+        options.timeLimit *= kFirstStripShare;
+    if (shrinks && search.criterion == Criterion::Docking &&
+        fillPassSteps(raster) * kFillPasses <= kFillStepsPerSecond * options.timeLimit)
         options.criterion = Criterion::Fill;
     try {
-        Layout docked = inMillimetres(searchFromStarts(raster.parts, raster.stock, options), problem, raster);
+        GridLayout grid = searchFromStarts(raster.parts, raster.stock, options);
+        if (shrinks)
+            grid = shrinkStrip(raster.parts, raster.stock[0], grid,
+                               {static_cast<long>(kShrinkWorkPerSecond * search.timeLimit), search.seed,
+                                std::max(1, search.threads)},
+                               deadline);
+        Layout docked = inMillimetres(grid, problem, raster);
+        if (shrinks)
+            docked = compacted(docked, problem);
         if (lower && lower->stripHeight < docked.stripHeight)
             return *lower;
         return exact && better(*exact, docked) ? *exact : docked;

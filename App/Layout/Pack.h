@@ -97,9 +97,13 @@ constexpr long kMostUnits = 200000;
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;
 
-/// A strip of irregular parts is filled (Criterion::Fill) when the time limit allows this many passes, at
-/// this many column steps a second (measured on ESICUP instances: 1.2-1.6·10^8 on this kind of machine).
+/// A strip of irregular parts is filled (Criterion::Fill) when its first share of the time allows this many
+/// passes, at this many column steps a second (measured on ESICUP instances: 1.2-1.6·10^8 on this kind of
+/// machine).
 constexpr double kFillPasses = 50, kFillStepsPerSecond = 1e8;
+/// The share of the time limit in which a strip of irregular parts is laid out first; it is shrunk in the
+/// rest.
+constexpr double kFirstStripShare = 0.1;
 
 /// Throws std::invalid_argument naming a bad setting, a board beyond kLongest / kMostCells, more than
 /// kMostUnits parts, or no boards or parts; PackingError naming a part larger than every master board.
@@ -127,10 +131,11 @@ Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const R
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
                             OrderingSearchOptions options);
 
-/// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance,
-/// order search with Docking (or Bottom-Left; a strip of irregular parts filled), convert back to mm; a job
-/// of rectangles is laid out by MaxRects too, which is kept when it is better (and alone beyond kDockedUnits
-/// units). Throws std::invalid_argument for bad settings, PackingError for parts that do not fit.
+/// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance, order search
+/// with Docking (or Bottom-Left; a strip of irregular parts filled, then shrunk and compacted on the
+/// outlines), convert back to mm; a job of rectangles is laid out by MaxRects too, which is kept when it is
+/// better (and alone beyond kDockedUnits units). Throws std::invalid_argument for bad settings, PackingError
+/// for parts that do not fit.
 Layout pack(const PackProblem& problem, const OrderingSearchOptions& search);
 
 }  // namespace fabguide::material

@@ -1,5 +1,7 @@
 #include "Layout/Pack.h"
 
+#include "PackingTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <polyclipping/clipper.hpp>
@@ -198,9 +200,44 @@ TEST(Pack, AStripOfArchesTakesItsBlocksUnderTheArches)
         {{0, 0}, {10, 0}, {10, 40}, {50, 40}, {50, 0}, {60, 0}, {60, 60}, {0, 60}}, {}};
     problem.parts.push_back({"arch", arch, 2, {0}, {}, {}});
     problem.parts.push_back(rectangularPart("block", 30, 30, 2, {0}));
-    const Layout layout = pack(problem, quick());
+    OrderingSearchOptions options = quick();
+    options.timeLimit = 2;  // the shrinking tries to the end: no strip is shorter, but the area allows one
+    const Layout layout = pack(problem, options);
     EXPECT_NEAR(layout.stripHeight, 120, 1e-6);
     expectOutlinesApart(problem, layout, -1e-3);
+}
+
+TEST(Pack, AStripOfIrregularPartsIsShrunkKeepingTheClearance)
+{
+    using fabguide::geometry::Outline;
+    PackProblem problem;
+    problem.strip = true;
+    problem.boards.push_back({"roll", "", 300, 0, 0, 1});
+    problem.settings = {0.5, 2, 0, 0};
+    const Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
+    const Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
+    problem.parts.push_back({"ell", ell, 3, {0, 90, 180, 270}, {}, {}});
+    problem.parts.push_back({"tri", triangle, 4, {0, 90, 180, 270}, {}, {}});
+    OrderingSearchOptions options = quick();
+    options.timeLimit = 3;
+    const Layout layout = pack(problem, options);
+    ASSERT_EQ(layout.placements.size(), 7u);
+    // Measured on the outlines: no two overlap or come closer than the kerf, every part on the strip.
+    std::vector<Outline> placed;
+    for (const Placement& p : layout.placements) {
+        placed.push_back(fabguide::geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y));
+        EXPECT_TRUE(p.x >= -1e-9 && p.y >= -1e-9 && p.x + p.width <= 300 + 1e-9 &&
+                    p.y + p.height <= layout.stripHeight + 1e-6);
+    }
+    for (size_t i = 0; i < placed.size(); ++i)
+        for (size_t j = i + 1; j < placed.size(); ++j) {
+            EXPECT_EQ(sharedArea(placed[i], placed[j]), 0) << i << " and " << j;
+            EXPECT_GE(fabguide::material::testing::distance(placed[i].outer, placed[j].outer), 2 - 1e-6)
+                << i << " and " << j;
+        }
+    // 90,000 mm² of parts on a strip 300 mm wide: no strip is shorter than 300 mm; this one uses 71 % or
+    // more.
+    EXPECT_LT(layout.stripHeight, 1.4 * 300);
 }
 
 TEST(Pack, PartsAreCutOnlyFromBoardsOfTheirThickness)

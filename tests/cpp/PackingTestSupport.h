@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -106,6 +108,24 @@ inline void expectValid(const PackProblem& problem, const Layout& layout)
     }
     for (size_t p = 0; p < problem.parts.size(); ++p)
         EXPECT_EQ(placed[p], problem.parts[p].quantity) << problem.parts[p].id;
+}
+
+inline double distance(geometry::Point2 p, geometry::Point2 a, geometry::Point2 b)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
+/// The least distance between two polygons that do not overlap: from a vertex of one to an edge of the other.
+inline double distance(const geometry::Polygon& a, const geometry::Polygon& b)
+{
+    double least = HUGE_VAL;
+    for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}})
+        for (const geometry::Point2& p : *from)
+            for (size_t k = 0; k < to->size(); ++k)
+                least = std::min(least, distance(p, (*to)[k], (*to)[(k + 1) % to->size()]));
+    return least;
 }
 
 }  // namespace fabguide::material::testing

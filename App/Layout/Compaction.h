@@ -1,0 +1,15 @@
+// Compaction of a strip on the parts' real outlines (issue 16, item 3): the grid keeps each part up to a cell
+// off its neighbours; sliding every part toward the strip's start until its outline meets another's gives
+// back what the grid lost between them.
+#pragma once
+
+#include "Layout/Pack.h"
+
+namespace fabguide::material {
+
+/// `layout` (a strip of `problem`) with each part, the nearest the strip's start first, slid toward it as far
+/// as its outline stays kerf + spacing from every other part's and inside the trim; the strip's height then
+/// ends at the part that reaches farthest.
+Layout compacted(const Layout& layout, const PackProblem& problem);
+
+}  // namespace fabguide::material
