@@ -296,13 +296,20 @@ double fillPassSteps(const RasterProblem& raster)
     return steps;
 }
 
+/// A search's size for a time limit: `perSecond` for each of its seconds, at most 10^18 (a limit of years is
+/// none).
+long forTimeLimit(double perSecond, double seconds)
+{
+    return static_cast<long>(std::min(perSecond * seconds, 1e18));
+}
+
 /// The skyline search of a strip of rectangles on each thread, their seeds 2^32 apart, each within the nodes
 /// of the time limit; the lowest strip, the first thread's on a tie.
 std::optional<Layout> skylineOnThreads(const PackProblem& problem, const OrderingSearchOptions& search,
                                        std::chrono::steady_clock::time_point deadline)
 {
     const int threads = std::max(1, search.threads);
-    const long nodes = static_cast<long>(kSkylineNodesPerSecond * search.timeLimit);
+    const long nodes = forTimeLimit(kSkylineNodesPerSecond, search.timeLimit);
     std::vector<std::optional<Layout>> found(threads);
     runAll(
         threads, threads,
@@ -369,7 +376,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         GridLayout grid = searchFromStarts(raster.parts, raster.stock, options);
         if (shrinks)
             grid = shrinkStrip(raster.parts, raster.stock[0], grid,
-                               {static_cast<long>(kShrinkWorkPerSecond * search.timeLimit), search.seed,
+                               {forTimeLimit(kShrinkWorkPerSecond, search.timeLimit), search.seed,
                                 std::max(1, search.threads)},
                                deadline);
         Layout docked = inMillimetres(grid, problem, raster);
