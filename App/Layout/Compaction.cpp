@@ -15,6 +15,8 @@ using geometry::Polygon;
 constexpr double kFar = std::numeric_limits<double>::infinity();
 /// What a part keeps off the one it slides onto, mm: rounding never takes it into the other.
 constexpr double kMargin = 1e-7;
+/// What an outline is grown by beyond the clearance before it slides, mm: past Clipper's rounding.
+constexpr double kGrowth = 1e-3;
 
 template <class Visit>
 void forEachRing(const Outline& outline, Visit&& visit)
@@ -103,7 +105,7 @@ Layout compacted(const Layout& layout, const PackProblem& problem)
     const auto place = [&](size_t i) {
         const Placement& p = layout.placements[i];
         outline[i] = geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
-        grown[i] = clearance > 0 ? geometry::offset(outline[i], clearance + 1e-6) : outline[i];
+        grown[i] = clearance > 0 ? geometry::offset(outline[i], clearance + kGrowth) : outline[i];
         box[i] = geometry::bounds(outline[i].outer);
         grownBox[i] = geometry::bounds(grown[i].outer);
     };

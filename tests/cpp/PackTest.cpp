@@ -222,7 +222,8 @@ TEST(Pack, AStripOfIrregularPartsIsShrunkKeepingTheClearance)
     options.timeLimit = 3;
     const Layout layout = pack(problem, options);
     ASSERT_EQ(layout.placements.size(), 7u);
-    // Measured on the outlines: no two overlap or come closer than the kerf, every part on the strip.
+    // Measured on the outlines: no two overlap or come closer than the kerf (to a micrometre, as
+    // outline_check measures), every part on the strip.
     std::vector<Outline> placed;
     for (const Placement& p : layout.placements) {
         placed.push_back(fabguide::geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y));
@@ -232,7 +233,7 @@ TEST(Pack, AStripOfIrregularPartsIsShrunkKeepingTheClearance)
     for (size_t i = 0; i < placed.size(); ++i)
         for (size_t j = i + 1; j < placed.size(); ++j) {
             EXPECT_EQ(sharedArea(placed[i], placed[j]), 0) << i << " and " << j;
-            EXPECT_GE(fabguide::material::testing::distance(placed[i].outer, placed[j].outer), 2 - 1e-6)
+            EXPECT_GE(fabguide::material::testing::distance(placed[i].outer, placed[j].outer), 2 - 1e-3)
                 << i << " and " << j;
         }
     // 90,000 mm² of parts on a strip 300 mm wide: no strip is shorter than 300 mm; this one uses 71 % or
