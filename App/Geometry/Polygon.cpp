@@ -272,6 +272,32 @@ bool contains(const Polygon& polygon, Point2 p)
     return inside;
 }
 
+bool inMaterial(const Outline& outline, Point2 p)
+{
+    return contains(outline.outer, p) && std::none_of(outline.holes.begin(), outline.holes.end(),
+                                                      [&](const Polygon& hole) { return contains(hole, p); });
+}
+
+bool overlap(const Outline& a, const Outline& b)
+{
+    const auto rings = [](const Outline& o) {
+        std::vector<const Polygon*> all{&o.outer};
+        for (const Polygon& hole : o.holes)
+            all.push_back(&hole);
+        return all;
+    };
+    for (const Polygon* ringA : rings(a))
+        for (const Polygon* ringB : rings(b))
+            for (size_t i = 0; i < ringA->size(); ++i)
+                for (size_t j = 0; j < ringB->size(); ++j) {
+                    const Point2 &p = (*ringA)[i], &q = (*ringA)[(i + 1) % ringA->size()];
+                    const Point2 &r = (*ringB)[j], &s = (*ringB)[(j + 1) % ringB->size()];
+                    if (turn(p, q, r) * turn(p, q, s) < 0 && turn(r, s, p) * turn(r, s, q) < 0)
+                        return true;
+                }
+    return inMaterial(b, a.outer.front()) || inMaterial(a, b.outer.front());
+}
+
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline)
 {
     ClipperLib::Clipper clipper;

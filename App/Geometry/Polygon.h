@@ -73,6 +73,14 @@ Outline subtract(const Outline& outline, const std::vector<Polygon>& polygons);
 /// Whether p lies inside the polygon (on its edge counts as either).
 bool contains(const Polygon& polygon, Point2 p);
 
+/// Whether p lies in the outline's material: inside its outer contour, in none of its holes (on an edge
+/// counts as either).
+bool inMaterial(const Outline& outline, Point2 p);
+
+/// Whether two outlines' material overlaps: an edge of one crosses an edge of the other (touching is not
+/// crossing), or one lies in the other's material.
+bool overlap(const Outline& a, const Outline& b);
+
 /// The parts of `polygon` inside `outline`.
 std::vector<Polygon> intersect(const Polygon& polygon, const Outline& outline);
 

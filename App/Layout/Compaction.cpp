@@ -59,36 +59,6 @@ double gapBelow(const Outline& moving, const Outline& fixed)
     return gap;
 }
 
-double cross(Point2 o, Point2 a, Point2 b)
-{
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-bool inMaterial(const Outline& outline, Point2 p)
-{
-    return geometry::contains(outline.outer, p) &&
-           std::none_of(outline.holes.begin(), outline.holes.end(),
-                        [&](const Polygon& hole) { return geometry::contains(hole, p); });
-}
-
-/// Whether two outlines' material overlaps: an edge of one crosses an edge of the other, or one lies in the
-/// other's material.
-bool overlap(const Outline& a, const Outline& b)
-{
-    bool crossing = false;
-    forEachRing(a, [&](const Polygon& ringA) {
-        forEachRing(b, [&](const Polygon& ringB) {
-            for (size_t i = 0; i < ringA.size() && !crossing; ++i)
-                for (size_t j = 0; j < ringB.size() && !crossing; ++j) {
-                    const Point2 p = ringA[i], q = ringA[(i + 1) % ringA.size()];
-                    const Point2 r = ringB[j], s = ringB[(j + 1) % ringB.size()];
-                    crossing = cross(p, q, r) * cross(p, q, s) < 0 && cross(r, s, p) * cross(r, s, q) < 0;
-                }
-        });
-    });
-    return crossing || inMaterial(b, a.outer.front()) || inMaterial(a, b.outer.front());
-}
-
 }  // namespace
 
 Layout compacted(const Layout& layout, const PackProblem& problem)
@@ -122,7 +92,8 @@ Layout compacted(const Layout& layout, const PackProblem& problem)
         for (size_t j = 0; j < n && gap > 0; ++j)
             if (j != i && box[j].minY < grownBox[i].maxY && box[j].maxX >= grownBox[i].minX &&
                 box[j].minX <= grownBox[i].maxX)
-                gap = std::min(gap, overlap(grown[i], outline[j]) ? 0.0 : gapBelow(grown[i], outline[j]));
+                gap = std::min(
+                    gap, geometry::overlap(grown[i], outline[j]) ? 0.0 : gapBelow(grown[i], outline[j]));
         if (gap > kMargin) {
             for (Outline* o : {&outline[i], &grown[i]}) {
                 for (Point2& p : o->outer)

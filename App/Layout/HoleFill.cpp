@@ -45,12 +45,9 @@ bool firstFit(const Outline& room, const PartSpec& guest, int turn, Guest& out)
             Polygon moved = turned.outer;
             for (geometry::Point2& p : moved)
                 p.x += x, p.y += y;
-            const auto free = [&](geometry::Point2 p) {  // a quick test first: every corner in the room
-                return geometry::contains(room.outer, p) &&
-                       std::none_of(room.holes.begin(), room.holes.end(),
-                                    [&](const Polygon& taken) { return geometry::contains(taken, p); });
-            };
-            if (!std::all_of(moved.begin(), moved.end(), free))
+            // A quick test first: every corner in the room.
+            if (!std::all_of(moved.begin(), moved.end(),
+                             [&](geometry::Point2 p) { return geometry::inMaterial(room, p); }))
                 continue;
             double inside = 0;
             for (const Polygon& piece : geometry::intersect(moved, room))

@@ -397,26 +397,20 @@ int leastHeight(const std::vector<RasterPart>& parts, const BoardStock& strip)
     return std::max(least, static_cast<int>((area + strip.width - 1) / strip.width));
 }
 
-/// `start` with each unit in its pose, the strip `height` long.
+/// `start` with each unit in its pose, its bounds and skyline as the docking's sheet measures them.
 GridLayout posed(const GridLayout& start, const std::vector<RasterPart>& parts, const BoardStock& strip,
-                 const std::vector<Pose>& poses, int height)
+                 const std::vector<Pose>& poses)
 {
     GridLayout shrunk = start;
-    shrunk.usedWidth[0] = 0;
-    std::vector<int> top(strip.width, 0);
+    Sheet sheet(strip.width, strip.height);
     for (Placed& p : shrunk.placed) {
         const Pose& pose = poses[p.part];
-        const Footprint& f = parts[p.part].shapes[pose.shape];
         p.shape = pose.shape, p.x = pose.x, p.y = pose.y;
-        shrunk.usedWidth[0] = std::max(shrunk.usedWidth[0], p.x + f.width());
-        for (int c = 0; c < f.width(); ++c)
-            if (f.top()[c] > 0)
-                top[p.x + c] = std::max(top[p.x + c], p.y + f.top()[c]);
+        sheet.place(parts[p.part].shapes[pose.shape], {p.x, p.y});
     }
-    shrunk.usedHeight[0] = height;
-    shrunk.skylineArea[0] = 0;
-    for (int t : top)
-        shrunk.skylineArea[0] += t;
+    shrunk.usedWidth[0] = sheet.usedWidth();
+    shrunk.usedHeight[0] = sheet.usedHeight();
+    shrunk.skylineArea[0] = sheet.skylineArea();
     return shrunk;
 }
 
@@ -454,7 +448,7 @@ GridLayout shrinkStrip(const std::vector<RasterPart>& parts, const BoardStock& s
     }
     if (height >= start.usedHeight[0] || !feasible(parts, strip, poses, height))
         return start;
-    return posed(start, parts, strip, poses, height);
+    return posed(start, parts, strip, poses);
 }
 
 }  // namespace fabguide::material

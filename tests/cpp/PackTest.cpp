@@ -166,21 +166,27 @@ void expectOutlinesApart(const PackProblem& problem, const Layout& layout, doubl
             EXPECT_EQ(sharedArea(grown[i], grown[j]), 0) << i << " and " << j;
 }
 
+/// `ells` L-shapes (200 mm arms, 60 wide) and `triangles` right triangles (120 mm legs), every quarter turn
+/// allowed.
+void addEllsAndTriangles(PackProblem& problem, int ells, int triangles)
+{
+    const fabguide::geometry::Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
+    const fabguide::geometry::Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
+    problem.parts.push_back({"ell", ell, ells, {0, 90, 180, 270}, {}, {}});
+    problem.parts.push_back({"tri", triangle, triangles, {0, 90, 180, 270}, {}, {}});
+}
+
 }  // namespace
 
 TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
 {
-    using fabguide::geometry::Outline;
     PackProblem problem;
     problem.boards.push_back({"ply", "", 600, 400, 6, 1});
     problem.settings = {0.5, 0.2, 2, 5};
-    const Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
-    const Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
-    problem.parts.push_back({"ell", ell, 2, {0, 90, 180, 270}, {}, {}});
-    problem.parts.push_back({"tri", triangle, 3, {0, 90, 180, 270}, {}, {}});
+    addEllsAndTriangles(problem, 2, 3);
     const Layout layout = pack(problem, quick());
     ASSERT_EQ(layout.placements.size(), 5u);
-    EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(ell) + 3 * 7200, 1e-6);
+    EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(problem.parts[0].outline) + 3 * 7200, 1e-6);
 
     // Every outline grown by just under half the clearance stays clear of every other one.
     expectOutlinesApart(problem, layout, 1.1 - 1e-3);
@@ -214,10 +220,7 @@ TEST(Pack, AStripOfIrregularPartsIsShrunkKeepingTheClearance)
     problem.strip = true;
     problem.boards.push_back({"roll", "", 300, 0, 0, 1});
     problem.settings = {0.5, 2, 0, 0};
-    const Outline ell{{{0, 0}, {200, 0}, {200, 60}, {60, 60}, {60, 200}, {0, 200}}, {}};
-    const Outline triangle{{{0, 0}, {120, 0}, {0, 120}}, {}};
-    problem.parts.push_back({"ell", ell, 3, {0, 90, 180, 270}, {}, {}});
-    problem.parts.push_back({"tri", triangle, 4, {0, 90, 180, 270}, {}, {}});
+    addEllsAndTriangles(problem, 3, 4);
     OrderingSearchOptions options = quick();
     options.timeLimit = 3;
     const Layout layout = pack(problem, options);

@@ -158,3 +158,18 @@ TEST(Polygon, HoldingTabsLeaveGapsEvenlyAlongTheContour)
     // Too short for the tabs: the contour whole.
     EXPECT_EQ(withTabs(rectangle(4, 4).outer, 2, 5).size(), 1u);
 }
+
+TEST(Polygon, OutlinesOverlapWhereTheirMaterialDoesNotWhereTheyOnlyTouch)
+{
+    const Outline frame{{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{{20, 20}, {20, 80}, {80, 80}, {80, 20}}}};
+    const auto square = [](double x, double y, double side) {
+        return Outline{{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}, {}};
+    };
+    EXPECT_TRUE(inMaterial(frame, {10, 50}));
+    EXPECT_FALSE(inMaterial(frame, {50, 50}));           // in the hole
+    EXPECT_FALSE(overlap(frame, square(40, 40, 10)));    // in the hole, clear of its edge
+    EXPECT_FALSE(overlap(frame, square(100, 0, 10)));    // touching the side
+    EXPECT_TRUE(overlap(frame, square(75, 40, 10)));     // across the hole's edge
+    EXPECT_TRUE(overlap(frame, square(5, 40, 10)));      // wholly in the material
+    EXPECT_TRUE(overlap(square(-10, -10, 200), frame));  // holding the frame
+}
