@@ -303,19 +303,19 @@ long forTimeLimit(double perSecond, double seconds)
     return static_cast<long>(std::min(perSecond * seconds, 1e18));
 }
 
-/// The skyline search of a strip of rectangles on each thread, their seeds 2^32 apart, each within the nodes
+/// The skyline search of a strip of rectangles on each thread, their seeds 2^32 apart, each within the work
 /// of the time limit; the lowest strip, the first thread's on a tie.
 std::optional<Layout> skylineOnThreads(const PackProblem& problem, const OrderingSearchOptions& search,
                                        std::chrono::steady_clock::time_point deadline)
 {
     const int threads = std::max(1, search.threads);
-    const long nodes = forTimeLimit(kSkylineNodesPerSecond, search.timeLimit);
+    const long work = forTimeLimit(kSkylineWorkPerSecond, search.timeLimit);
     std::vector<std::optional<Layout>> found(threads);
     runAll(
         threads, threads,
         [&](int t) {
             found[t] =
-                skylineStrip(problem, {nodes, search.seed + (static_cast<std::uint64_t>(t) << 32)}, deadline);
+                skylineStrip(problem, {work, search.seed + (static_cast<std::uint64_t>(t) << 32)}, deadline);
         },
         [](int) {});
     std::optional<Layout> lowest;
@@ -346,7 +346,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (exact && units > kDockedUnits)
             return *exact;
     }
-    // A strip of rectangles: the skyline search on each thread within its nodes (by 85 % of the time), done
+    // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
     // when it reaches the least height; else MaxRects bisects the height (until 95 %), Docking's search takes
     // the rest; the lowest strip wins.
     std::optional<Layout> lower;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <tuple>
@@ -58,23 +59,27 @@ std::vector<Kind> kindsOf(const PackProblem& problem, double clearance)
     return kinds;
 }
 
-/// The tree search at one target height, `nodes` at most.
+/// The tree search at one target height from a skyline, within `nodes` nodes and `work` (counted as
+/// kSkylineWorkPerSecond tells).
 class Search {
 public:
-    Search(std::vector<Kind> kinds, double width, double height, double waste, bool whole, long nodes,
-           std::optional<std::uint64_t> shuffle, std::chrono::steady_clock::time_point deadline)
+    Search(std::vector<Kind> kinds, std::vector<Segment> skyline, double height, double waste, bool whole,
+           long nodes, long work, std::optional<std::uint64_t> shuffle,
+           std::chrono::steady_clock::time_point deadline)
         : kinds_(std::move(kinds)),
           height_(height),
           wasteLeft_(waste),
           whole_(whole),
           nodesLeft_(nodes),
+          mostWork_(work),
           random_(shuffle.value_or(0)),
           shuffled_(shuffle.has_value()),
-          deadline_(deadline)
+          deadline_(deadline),
+          skyline_(std::move(skyline))
     {
-        skyline_.push_back({0, width, 0});
-        if (shuffled_)
-            widthWeight_ = std::uniform_real_distribution<double>(1.0, 3.0)(random_);
+        const double width = skyline_.back().x + skyline_.back().w;
+        const double widthWeight =
+            shuffled_ ? std::uniform_real_distribution<double>(1.0, 3.0)(random_) : 2.0;
         const auto lowest = [&](size_t k) {
             double h = HUGE_VAL;
             for (const Pose& pose : kinds_[k].poses)
@@ -82,25 +87,25 @@ public:
             return h;
         };
         for (size_t k = 0; k < kinds_.size(); ++k) {
-            unitsLeft_ += kinds_[k].left;
             tallFirst_.push_back(k);
+            const std::vector<Pose>& poses = kinds_[k].poses;
+            scores_.emplace_back();
+            for (const Pose& pose : poses)
+                scores_.back().push_back(std::pow(pose.w, widthWeight) * pose.h);
+            wholeWidths_.emplace_back(std::lround(poses.front().w), std::lround(poses.back().w));
         }
+        if (whole_)
+            unitsOfWidth_.assign(static_cast<size_t>(std::lround(width)) + 1, 0);
+        for (size_t k = 0; k < kinds_.size(); ++k)
+            take(k, -std::exchange(kinds_[k].left, 0));
         std::stable_sort(tallFirst_.begin(), tallFirst_.end(),
                          [&](size_t a, size_t b) { return lowest(a) > lowest(b); });
     }
 
-    /// Whether every unit was put within the nodes; then puts() is the packing.
+    /// Whether every unit was put within the nodes and work; then puts() is the packing on the skyline.
     bool run() { return fill(); }
     const std::vector<Put>& puts() const { return puts_; }
-    double top() const
-    {
-        double top = 0;
-        for (const Put& put : puts_)
-            top = std::max(top, put.y + kinds_[put.kind].poses[put.pose].h);
-        return top;
-    }
-    const std::vector<Kind>& kinds() const { return kinds_; }
-    long nodesLeft() const { return nodesLeft_; }
+    long work() const { return work_; }
 
 private:
     struct Candidate {
@@ -108,11 +113,16 @@ private:
         int kind = 0, pose = 0;               // width, larger w^k·h (jittered when shuffled)
     };
 
-    bool outOfNodes()
+    /// Whether candidate `a` comes after `b`: candidates() is a heap, the best on top.
+    static bool later(const Candidate& a, const Candidate& b) { return a.rank > b.rank; }
+
+    /// Whether the nodes, the work or the time have run out, a node charged.
+    bool outOfWork()
     {
-        if (--nodesLeft_ < 0)
+        work_ += 64 + static_cast<long>(kinds_.size() + skyline_.size());
+        if (--nodesLeft_ < 0 || work_ > mostWork_)
             return true;
-        if (nodesLeft_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)
+        if (nodesLeft_ % 256 == 0 && std::chrono::steady_clock::now() > deadline_)
             nodesLeft_ = -1;
         return nodesLeft_ < 0;
     }
@@ -133,7 +143,7 @@ private:
         return right > left;
     }
 
-    /// The units that fit at the chosen end of segment `at`, best first.
+    /// The units that fit at the chosen end of segment `at`, as a heap with the best on top.
     std::vector<Candidate> candidates(size_t at)
     {
         const Segment& s = skyline_[at];
@@ -151,14 +161,30 @@ private:
                 const bool exact = pose.w > s.w - kHair;
                 const double top = s.y + pose.h;
                 const bool level = std::abs(top - near) < kHair || (exact && std::abs(top - far) < kHair);
-                const double score =
-                    std::pow(pose.w, widthWeight_) * pose.h * (shuffled_ ? jitter(random_) : 1.0);
+                const double score = scores_[k][p] * (shuffled_ ? jitter(random_) : 1.0);
                 found.push_back({{!level, !exact, -score}, static_cast<int>(k), static_cast<int>(p)});
             }
         }
-        std::sort(found.begin(), found.end(),
-                  [](const Candidate& a, const Candidate& b) { return a.rank < b.rank; });
+        work_ += 11 * static_cast<long>(found.size());
+        std::make_heap(found.begin(), found.end(), later);
         return found;
+    }
+
+    /// Takes `units` of kind `k` (gives them back when negative).
+    void take(size_t k, int units)
+    {
+        kinds_[k].left -= units;
+        unitsLeft_ -= units;
+        if (!whole_)
+            return;
+        const auto [along, across] = wholeWidths_[k];
+        const auto count = [&](size_t w) {
+            if (w < unitsOfWidth_.size())
+                unitsOfWidth_[w] -= units;
+        };
+        count(along);
+        if (across != along)
+            count(across);
     }
 
     /// Merges segment `at` with its neighbours of the same height.
@@ -181,8 +207,7 @@ private:
         const Segment s = skyline_[at];
         const Segment unit{right ? s.x + s.w - pose.w : s.x, pose.w, s.y + pose.h};
         puts_.push_back({c.kind, c.pose, unit.x, s.y});
-        --kinds_[c.kind].left;
-        --unitsLeft_;
+        take(c.kind, 1);
         if (pose.w > s.w - kHair) {
             skyline_[at] = {s.x, s.w, unit.y};
         } else if (right) {
@@ -225,58 +250,68 @@ private:
     /// the shortest unit left.
     double wasteInValleys()
     {
-        double shortest = HUGE_VAL, waste = 0;
-        widths_.clear();
+        double shortest = HUGE_VAL;
         for (const Kind& kind : kinds_)
-            if (kind.left > 0) {
+            if (kind.left > 0)
                 for (const Pose& pose : kind.poses)
                     shortest = std::min(shortest, pose.h);
-                if (whole_)
-                    widths_.push_back({static_cast<size_t>(std::lround(kind.poses.front().w)),
-                                       static_cast<size_t>(std::lround(kind.poses.back().w)), kind.left});
-            }
+        valleys_.clear();
+        double widest = 0;
         for (size_t at = 0; at < skyline_.size(); ++at) {
-            const Segment& s = skyline_[at];
             const auto [left, right] = neighbours(at);
-            const double rise = std::min({left - s.y, right - s.y, shortest});
-            if (rise > 0 && rise < HUGE_VAL)
-                waste += (s.w - widestFill(s.w)) * rise;
+            const double rise = std::min({left - skyline_[at].y, right - skyline_[at].y, shortest});
+            if (rise > 0 && rise < HUGE_VAL) {
+                valleys_.push_back({skyline_[at].w, rise});
+                widest = std::max(widest, skyline_[at].w);
+            }
+        }
+        if (valleys_.empty() || !whole_)
+            return 0;  // sizes not whole: any width is taken to fill
+        double waste = 0;
+        bool summed = false;  // subset sums only when some valley is as wide as no unit left
+        for (const auto& [width, rise] : valleys_) {
+            size_t filled = static_cast<size_t>(std::lround(width));
+            if (unitsOfWidth_[filled] > 0)
+                continue;
+            if (!summed)
+                fillableWidths(static_cast<size_t>(std::lround(widest)));
+            summed = true;
+            while (!(sums_[filled / 64] >> (filled % 64) & 1))
+                --filled;
+            waste += (width - static_cast<double>(filled)) * rise;
         }
         return waste;
     }
 
-    /// The widest the units left (widths_) can fill of a gap `gap` wide, side by side, each on either side: a
-    /// subset sum of whole widths; `gap` itself when sizes are not whole.
-    double widestFill(double gap)
+    /// Sets sums_ bit i (up to `most`) when the whole widths of some units left, side by side, each either
+    /// way it lies, add up to i: a bounded subset sum by word shifts, in place from the top word down.
+    void fillableWidths(size_t most)
     {
-        const size_t g = static_cast<size_t>(std::lround(gap));
-        if (!whole_ || std::any_of(widths_.begin(), widths_.end(),
-                                   [&](const UnitWidths& u) { return u.along == g || u.across == g; }))
-            return gap;
-        sums_.assign(g / 64 + 1, 0);
+        sums_.assign(most / 64 + 1, 0);
         sums_[0] = 1;
-        const auto shiftedIn = [&](size_t by) {
-            for (size_t i = sums_.size(); i-- > by / 64;) {
-                const size_t from = i - by / 64, bit = by % 64;
-                next_[i] |= sums_[from] << bit | (bit && from > 0 ? sums_[from - 1] >> (64 - bit) : 0);
-            }
-        };
-        const auto reached = [&](size_t i) { return sums_[i / 64] >> (i % 64) & 1; };
-        for (const UnitWidths& u : widths_)
-            for (int unit = 0; unit < u.units && !reached(g); ++unit) {
-                next_ = sums_;
-                for (const size_t w : {u.along, u.across})
-                    if (w <= g)
-                        shiftedIn(w);
-                if (next_ == sums_)
+        size_t words = 0;  // shifted in
+        for (size_t k = 0; k < kinds_.size(); ++k) {
+            const auto [along, across] = wholeWidths_[k];
+            const size_t useful = most / std::min(along, across);
+            for (int unit = 0; unit < kinds_[k].left && static_cast<size_t>(unit) < useful; ++unit) {
+                std::uint64_t grown = 0;
+                for (size_t i = sums_.size(); i-- > 0;) {
+                    std::uint64_t word = sums_[i];
+                    for (const size_t by : {along, across})
+                        if (i >= by / 64) {
+                            const size_t from = i - by / 64, bit = by % 64;
+                            word |=
+                                sums_[from] << bit | (bit && from > 0 ? sums_[from - 1] >> (64 - bit) : 0);
+                        }
+                    grown |= word ^ sums_[i];
+                    sums_[i] = word;
+                }
+                words += sums_.size();
+                if (!grown)
                     break;  // more of this kind add no sum
-                sums_.swap(next_);
             }
-        sums_.back() &= g % 64 == 63 ? ~0ULL : (1ULL << (g % 64 + 1)) - 1;
-        size_t widest = g;
-        while (!reached(widest))
-            --widest;
-        return static_cast<double>(widest);
+        }
+        work_ += static_cast<long>(words / 2);
     }
 
     /// Fills the lowest, leftmost gap of the skyline, then the rest; false when out of nodes or room.
@@ -284,22 +319,23 @@ private:
     {
         if (unitsLeft_ == 0)
             return true;
-        if (outOfNodes() || wasteInValleys() > wasteLeft_ + kHair || !roomForTallest())
+        if (outOfWork() || wasteInValleys() > wasteLeft_ + kHair || !roomForTallest())
             return false;
         const auto lowest =
             std::min_element(skyline_.begin(), skyline_.end(),
                              [](const Segment& a, const Segment& b) { return a.y < b.y - kHair; });
         const size_t at = static_cast<size_t>(lowest - skyline_.begin());
         const std::vector<Segment> before = skyline_;
-        for (const Candidate& c : candidates(at)) {
+        for (std::vector<Candidate> found = candidates(at); !found.empty(); found.pop_back()) {
+            std::pop_heap(found.begin(), found.end(), later);
+            const Candidate c = found.back();
             put(at, c);
             if (fill())
                 return true;
             puts_.pop_back();
-            ++kinds_[c.kind].left;
-            ++unitsLeft_;
+            take(c.kind, -1);
             skyline_ = before;
-            if (nodesLeft_ < 0)
+            if (nodesLeft_ < 0 || work_ > mostWork_)
                 return false;
         }
         // Left as waste: the gap raised to its lower neighbour.
@@ -320,33 +356,74 @@ private:
     std::vector<Kind> kinds_;
     double height_, wasteLeft_;
     bool whole_;  // every size a whole number: gaps are filled by subset sums of widths
-    long nodesLeft_, unitsLeft_ = 0;
+    long nodesLeft_, mostWork_, work_ = 0, unitsLeft_ = 0;  // work_: done so far
     std::mt19937_64 random_;
     bool shuffled_;
     std::chrono::steady_clock::time_point deadline_;
     std::vector<Segment> skyline_;
     std::vector<Put> puts_;
-    double widthWeight_ = 2;
-    std::vector<size_t> tallFirst_;  // the kinds, tallest lying lowest first
-    struct UnitWidths {
-        size_t along = 0, across = 0;  // whole widths of a kind's two poses (the same when it has one)
-        int units = 0;                 // of the kind left
-    };
-    std::vector<UnitWidths> widths_;
-    std::vector<std::uint64_t> sums_, next_;  // bit i: the widths of some units left add up to i
+    std::vector<std::vector<double>> scores_;  // of each kind's poses: larger w^k·h first, k random in [1, 3]
+    std::vector<size_t> tallFirst_;            // the kinds, tallest lying lowest first
+    std::vector<std::pair<size_t, size_t>> wholeWidths_;  // of each kind's two poses (alike when it has one)
+    std::vector<std::pair<double, double>> valleys_;      // width, rise
+    std::vector<std::uint64_t> sums_;                     // bit i: the widths of some units left add up to i
+    std::vector<int> unitsOfWidth_;                       // units left that lie as wide as the index
 };
 
-/// The packing `search` found as a layout of `problem`'s strip.
-Layout layoutOf(const PackProblem& problem, const Search& search)
+/// The top of unit `put` of `kinds`.
+double topOf(const Put& put, const std::vector<Kind>& kinds)
+{
+    return put.y + kinds[put.kind].poses[put.pose].h;
+}
+
+/// The top of the highest of `puts`.
+double topOf(const std::vector<Put>& puts, const std::vector<Kind>& kinds)
+{
+    double top = 0;
+    for (const Put& put : puts)
+        top = std::max(top, topOf(put, kinds));
+    return top;
+}
+
+/// The skyline of `puts` on a strip `width` wide: the top of the highest unit above each point.
+std::vector<Segment> skylineOf(const std::vector<Put>& puts, const std::vector<Kind>& kinds, double width)
+{
+    std::vector<Segment> skyline{{0, width, 0}};
+    for (const Put& put : puts) {
+        const double x0 = put.x, x1 = put.x + kinds[put.kind].poses[put.pose].w, top = topOf(put, kinds);
+        std::vector<Segment> raised;
+        for (const Segment& s : skyline) {
+            const double a = std::max(s.x, x0), b = std::min(s.x + s.w, x1);
+            if (b <= a + kHair || s.y >= top) {
+                raised.push_back(s);
+                continue;
+            }
+            if (a > s.x + kHair)
+                raised.push_back({s.x, a - s.x, s.y});
+            raised.push_back({a, b - a, top});
+            if (s.x + s.w > b + kHair)
+                raised.push_back({b, s.x + s.w - b, s.y});
+        }
+        skyline.clear();
+        for (const Segment& s : raised)
+            if (!skyline.empty() && std::abs(skyline.back().y - s.y) < kHair)
+                skyline.back().w += s.w;
+            else
+                skyline.push_back(s);
+    }
+    return skyline;
+}
+
+/// The packing `puts` of `kinds` as a layout of `problem`'s strip.
+Layout layoutOf(const PackProblem& problem, std::vector<Kind> kinds, const std::vector<Put>& puts)
 {
     const PackSettings& s = problem.settings;
     const double clearance = s.kerf + s.spacing;
-    std::vector<Kind> kinds = search.kinds();  // each unit takes the last part of its kind
-    for (Kind& kind : kinds)
+    for (Kind& kind : kinds)  // each unit takes the last part of its kind
         kind.left = static_cast<int>(kind.parts.size());
     Layout layout;
     double top = 0;
-    for (const Put& put : search.puts()) {
+    for (const Put& put : puts) {
         Kind& kind = kinds[put.kind];
         const Pose& pose = kind.poses[put.pose];
         const int part = kind.parts[static_cast<size_t>(--kind.left)];
@@ -366,21 +443,6 @@ Layout layoutOf(const PackProblem& problem, const Search& search)
     layout.sheets = {sheet};
     layout.sheetArea = layout.boundingArea = sheet.width * sheet.height;
     return layout;
-}
-
-/// The Luby sequence 1 1 2 1 1 2 4 1 1 2 ... at `i` (from 1): restart lengths for searches whose length
-/// to success is unknown (Luby, Sinclair, Zuckerman 1993).
-long luby(long i)
-{
-    long size = 1;
-    while (size < i + 1)
-        size = 2 * size + 1;  // 2^k - 1, the first at least i
-    while (size != i) {
-        size /= 2;
-        if (i > size)
-            i -= size;
-    }
-    return (size + 1) / 2;
 }
 
 /// Whether the strip's width and every size are whole numbers (of millimetres).
@@ -441,37 +503,64 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
     if (strip.kinds.empty())
         return std::nullopt;
     const double step = strip.step, least = strip.least;
-    const long base = std::max(200L, static_cast<long>(2 * strip.units));
-    long nodes = budget.nodes;
-    std::uint64_t seed = budget.seed;
-    std::optional<Layout> best;
+    const auto nodesFor = [](double units) { return std::max(200L, static_cast<long>(2 * units)); };
+    long work = budget.work;
+    std::mt19937_64 random(budget.seed);
+    std::vector<Put> best;
     double ceiling = HUGE_VAL;  // the lowest strip found, with clearance: lower ones are sought
-    const auto tried = [&](double height, long size, std::optional<std::uint64_t> shuffle) {
-        Search search(strip.kinds, strip.width, height, height * strip.width - strip.area, strip.whole, size,
-                      shuffle, deadline);
+    // A search at `height` for the units after the first `kept` of the lowest strip found, on their skyline
+    // and with the waste they leave; within `size` nodes and the work left.
+    const auto tried = [&](double height, size_t kept, long size, std::optional<std::uint64_t> shuffle) {
+        std::vector<Put> puts(best.begin(), best.begin() + static_cast<long>(kept));
+        std::vector<Kind> kinds = strip.kinds;
+        double keptArea = 0;
+        for (const Put& put : puts) {
+            --kinds[put.kind].left;
+            keptArea += kinds[put.kind].area;
+        }
+        std::vector<Segment> skyline = skylineOf(puts, kinds, strip.width);
+        double under = 0;  // the area under the skyline
+        for (const Segment& s : skyline)
+            under += s.w * s.y;
+        Search search(std::move(kinds), std::move(skyline), height,
+                      height * strip.width - strip.area - (under - keptArea), strip.whole, size,
+                      height == HUGE_VAL ? std::numeric_limits<long>::max() : work, shuffle, deadline);
         const bool found = search.run();
-        nodes -= size - std::max(0L, search.nodesLeft());
-        if (found && search.top() < ceiling) {
-            best = layoutOf(problem, search);
-            ceiling = search.top();
+        work -= search.work();
+        puts.insert(puts.end(), search.puts().begin(), search.puts().end());
+        if (found && topOf(puts, strip.kinds) < ceiling) {
+            best = std::move(puts);
+            ceiling = topOf(best, strip.kinds);
         }
         return found;
     };
-    const auto left = [&] { return nodes > 0 && std::chrono::steady_clock::now() < deadline; };
+    const auto left = [&] { return work > 0 && std::chrono::steady_clock::now() < deadline; };
     // Greedily (no height, waste as it comes: one node a unit or a gap, past the budget if need be); then a
-    // short search at heights bisected between the lower bound and the lowest strip found; then restarts,
-    // shuffled and longer by the Luby sequence, at the lower bound and just below the lowest strip found, in
-    // turn.
-    tried(HUGE_VAL, static_cast<long>(2 * strip.units) + 1, std::nullopt);
+    // short search at heights bisected between the lower bound and the lowest strip found.
+    tried(HUGE_VAL, 0, static_cast<long>(2 * strip.units) + 1, std::nullopt);
     for (double low = least; ceiling - low > step + kHair && left();) {
         const double height = std::floor((low + ceiling) / 2 / step) * step;
-        if (!tried(height, std::min(base, nodes), std::nullopt))
+        if (!tried(height, 0, nodesFor(strip.units), std::nullopt))
             low = height;
     }
-    for (long round = 1; least < ceiling - kHair && left(); ++round)
-        tried(round % 6 == 0 ? least : std::max(least, ceiling - step), std::min(base * luby(round), nodes),
-              seed++);
-    return best;
+    // Then rounds just below the lowest strip found. Five in six keep a random number of its first units,
+    // up to all that lie below the target, and search the rest again: from its top to the whole strip. The
+    // sixth starts afresh, every fourth of those at the lower bound.
+    for (long round = 1; least < ceiling - kHair && left(); ++round) {
+        const double target = std::max(least, ceiling - step);
+        if (round % 6 == 0) {
+            tried(round % 24 == 0 ? least : target, 0, nodesFor(strip.units), random());
+            continue;
+        }
+        size_t below = 0;
+        while (below < best.size() && topOf(best[below], strip.kinds) <= target + kHair)
+            ++below;
+        const size_t kept = std::uniform_int_distribution<size_t>(0, below)(random);
+        tried(target, kept, nodesFor(static_cast<double>(best.size() - kept)), random());
+    }
+    if (best.empty())
+        return std::nullopt;
+    return layoutOf(problem, strip.kinds, best);
 }
 
 }  // namespace fabguide::material

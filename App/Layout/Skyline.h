@@ -2,7 +2,8 @@
 // leftmost gap of the skyline is filled by a part put at its left end, or left as waste while the waste
 // the target height allows lasts. In a packing without waste that gap is always some part's lower-left
 // corner, so the search is complete at the area's lower bound; limited by nodes, it is restarted with the
-// candidates shuffled, and the target height raised when it fails.
+// candidates shuffled. Most restarts keep the bottom of the lowest strip found and search its top again
+// (a large neighbourhood search), each just below that strip.
 #pragma once
 
 #include "Layout/Pack.h"
@@ -13,12 +14,14 @@
 
 namespace fabguide::material {
 
-/// Nodes `pack` gives the skyline search of a strip per second of its time limit: fewer than a core searches
-/// in that time, so the same seed gives the same strip unless the machine is loaded.
-constexpr long kSkylineNodesPerSecond = 400000;
+/// Work `pack` gives the skyline search of a strip per second of its time limit. Work counts what a node
+/// costs (64 a node, one per kind and skyline segment scanned, 11 per candidate ranked, one per two words of
+/// subset sums), so a second's work takes about as long on every instance: 0.6-0.7 of the second on each of
+/// this machine's cores, and the same seed gives the same strip unless the machine is loaded.
+constexpr long kSkylineWorkPerSecond = 110000000;
 
 struct SkylineBudget {
-    long nodes = 0;  ///< parts placed or gaps wasted in all, over every target height: the search's size
+    long work = 0;  ///< over every target height: the search's size
     std::uint64_t seed = 1;
 };
 

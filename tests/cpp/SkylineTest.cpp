@@ -79,7 +79,7 @@ void expectValidStrip(const PackProblem& problem, const Layout& layout)
 TEST(Skyline, APinwheelNoGuillotineCutMakesIsFoundAtItsArea)
 {
     const PackProblem problem = pinwheel();
-    const auto layout = skylineStrip(problem, {100000, 1}, kNoDeadline);
+    const auto layout = skylineStrip(problem, {kSkylineWorkPerSecond / 10, 1}, kNoDeadline);
     ASSERT_TRUE(layout);
     EXPECT_DOUBLE_EQ(leastStripHeight(problem), 30);
     EXPECT_DOUBLE_EQ(layout->stripHeight, 30);
@@ -89,10 +89,10 @@ TEST(Skyline, APinwheelNoGuillotineCutMakesIsFoundAtItsArea)
 TEST(Skyline, AGuillotinePerfectPackingOfTwentyFivePiecesComesWithinAStepOfItsArea)
 {
     const PackProblem problem = stripOf(60, guillotineCut(60, 40, 25, 11));
-    const auto layout = skylineStrip(problem, {2000000, 1}, kNoDeadline);
+    const auto layout = skylineStrip(problem, {kSkylineWorkPerSecond, 1}, kNoDeadline);
     ASSERT_TRUE(layout);
     EXPECT_DOUBLE_EQ(leastStripHeight(problem), 40);
-    EXPECT_LE(layout->stripHeight, 41);  // its perfect packing is not found within the nodes (issue 16)
+    EXPECT_LE(layout->stripHeight, 41);  // its perfect packing is not found within the work (issue 16)
     expectValidStrip(problem, *layout);
 }
 
@@ -103,7 +103,7 @@ TEST(Skyline, KerfSpacingTrimAndGrainAreKept)
     problem.boards[0].grain = Grain::AlongWidth;
     for (size_t p = 0; p < problem.parts.size(); p += 3)
         problem.parts[p].followsGrain = true;
-    const auto layout = skylineStrip(problem, {200000, 1}, kNoDeadline);
+    const auto layout = skylineStrip(problem, {kSkylineWorkPerSecond / 10, 1}, kNoDeadline);
     ASSERT_TRUE(layout);
     EXPECT_GE(layout->stripHeight, leastStripHeight(problem));
     expectValidStrip(problem, *layout);
@@ -113,11 +113,11 @@ TEST(Skyline, KerfSpacingTrimAndGrainAreKept)
         }
 }
 
-TEST(Skyline, TheSameSeedGivesTheSameStripAndTheNodesBoundTheSearch)
+TEST(Skyline, TheSameSeedGivesTheSameStripAndTheWorkBoundsTheSearch)
 {
     const PackProblem problem = stripOf(200, guillotineCut(200, 150, 60, 3));
-    const auto a = skylineStrip(problem, {50000, 7}, kNoDeadline),
-               b = skylineStrip(problem, {50000, 7}, kNoDeadline);
+    const auto a = skylineStrip(problem, {kSkylineWorkPerSecond / 20, 7}, kNoDeadline),
+               b = skylineStrip(problem, {kSkylineWorkPerSecond / 20, 7}, kNoDeadline);
     ASSERT_TRUE(a && b);
     ASSERT_EQ(a->placements.size(), b->placements.size());
     for (size_t i = 0; i < a->placements.size(); ++i) {
@@ -125,7 +125,7 @@ TEST(Skyline, TheSameSeedGivesTheSameStripAndTheNodesBoundTheSearch)
         EXPECT_DOUBLE_EQ(a->placements[i].x, b->placements[i].x);
         EXPECT_DOUBLE_EQ(a->placements[i].y, b->placements[i].y);
     }
-    // No nodes beyond the greedy strip: still a strip, every part in it.
+    // No work beyond the greedy strip: still a strip, every part in it.
     const auto greedy = skylineStrip(problem, {1, 7}, kNoDeadline);
     ASSERT_TRUE(greedy);
     expectValidStrip(problem, *greedy);
@@ -143,4 +143,18 @@ TEST(Skyline, PackStopsAtTheLeastHeightAndKeepsItsLayout)
     expectValidStrip(problem, layout);
     EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(9))
         << "the lower bound ends it";
+}
+
+TEST(Skyline, SearchingTheTopOfTheLowestStripAgainBringsHundredPieceCutsWithinTwoAndAHalfPercent)
+{
+    double heights = 0;
+    for (int seed = 1; seed <= 8; ++seed) {
+        const PackProblem problem = stripOf(1220, guillotineCut(1220, 1000, 120, seed));
+        const auto layout = skylineStrip(problem, {kSkylineWorkPerSecond / 2, 1}, kNoDeadline);
+        ASSERT_TRUE(layout);
+        expectValidStrip(problem, *layout);
+        heights += layout->stripHeight;
+    }
+    // Measured 1024.5 on average; restarts from scratch alone, with the same work, came to 1029.9.
+    EXPECT_LE(heights / 8, 1026);
 }
