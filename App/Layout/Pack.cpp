@@ -348,7 +348,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     }
     // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
     // when it reaches the least height; else MaxRects bisects the height (until 95 %), Docking's search takes
-    // the rest; the lowest strip wins.
+    // the rest up to kDockedUnits units; the lowest strip wins.
     std::optional<Layout> lower;
     if (problem.strip && rectangles) {
         lower = skylineOnThreads(problem, search, started + seconds(0.85 * search.timeLimit));
@@ -357,6 +357,8 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         std::optional<Layout> bisected = maxRectsStrip(problem, started + seconds(0.95 * search.timeLimit));
         if (bisected && (!lower || bisected->stripHeight < lower->stripHeight))
             lower = std::move(bisected);
+        if (lower && units > kDockedUnits)
+            return *lower;  // Docking's first layout alone would outlast the time limit at this scale
     }
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;

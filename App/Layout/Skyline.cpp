@@ -15,6 +15,10 @@ namespace fabguide::material {
 namespace {
 
 constexpr double kHair = 1e-6;  // mm: what counts as the same height or width
+// Candidates a node keeps for its backtracking: about one node in 4,000 tries more on the benchmark's largest
+// strips, and a strip of thousands of units would otherwise hold thousands at each of its thousands of levels
+// (3,000 rectangles: 259 MB, now 40 MB).
+constexpr size_t kCandidates = 32;
 
 /// Units that lie alike: the same poses (sizes with the clearance added); the part of each unit.
 struct Kind {
@@ -143,14 +147,15 @@ private:
         return right > left;
     }
 
-    /// The units that fit at the chosen end of segment `at`, as a heap with the best on top.
+    /// The best kCandidates units that fit at the chosen end of segment `at`, as a heap with the best on top.
     std::vector<Candidate> candidates(size_t at)
     {
         const Segment& s = skyline_[at];
         const auto [left, right] = neighbours(at);
         const double near = atRight(at) ? right : left, far = atRight(at) ? left : right;
         std::uniform_real_distribution<double> jitter(0.8, 1.2);
-        std::vector<Candidate> found;
+        std::vector<Candidate>& found = ranked_;
+        found.clear();
         for (size_t k = 0; k < kinds_.size(); ++k) {
             if (kinds_[k].left == 0)
                 continue;
@@ -166,8 +171,12 @@ private:
             }
         }
         work_ += 11 * static_cast<long>(found.size());
-        std::make_heap(found.begin(), found.end(), later);
-        return found;
+        const auto kept = found.begin() + static_cast<long>(std::min(found.size(), kCandidates));
+        std::nth_element(found.begin(), kept, found.end(),
+                         [](const Candidate& a, const Candidate& b) { return later(b, a); });
+        std::vector<Candidate> best(found.begin(), kept);
+        std::make_heap(best.begin(), best.end(), later);
+        return best;
     }
 
     /// Takes `units` of kind `k` (gives them back when negative).
@@ -362,6 +371,7 @@ private:
     std::chrono::steady_clock::time_point deadline_;
     std::vector<Segment> skyline_;
     std::vector<Put> puts_;
+    std::vector<Candidate> ranked_;  // candidates() ranks every unit that fits here, then keeps the best
     std::vector<std::vector<double>> scores_;  // of each kind's poses: larger w^k·h first, k random in [1, 3]
     std::vector<size_t> tallFirst_;            // the kinds, tallest lying lowest first
     std::vector<std::pair<size_t, size_t>> wholeWidths_;  // of each kind's two poses (alike when it has one)
@@ -511,6 +521,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
     // A search at `height` for the units after the first `kept` of the lowest strip found, on their skyline
     // and with the waste they leave; within `size` nodes and the work left.
     const auto tried = [&](double height, size_t kept, long size, std::optional<std::uint64_t> shuffle) {
+        const bool greedy = height == HUGE_VAL;  // a first strip, whatever the work and time
         std::vector<Put> puts(best.begin(), best.begin() + static_cast<long>(kept));
         std::vector<Kind> kinds = strip.kinds;
         double keptArea = 0;
@@ -524,7 +535,8 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
             under += s.w * s.y;
         Search search(std::move(kinds), std::move(skyline), height,
                       height * strip.width - strip.area - (under - keptArea), strip.whole, size,
-                      height == HUGE_VAL ? std::numeric_limits<long>::max() : work, shuffle, deadline);
+                      greedy ? std::numeric_limits<long>::max() : work, shuffle,
+                      greedy ? std::chrono::steady_clock::time_point::max() : deadline);
         const bool found = search.run();
         work -= search.work();
         puts.insert(puts.end(), search.puts().begin(), search.puts().end());
@@ -535,7 +547,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
         return found;
     };
     const auto left = [&] { return work > 0 && std::chrono::steady_clock::now() < deadline; };
-    // Greedily (no height, waste as it comes: one node a unit or a gap, past the budget if need be); then a
+    // Greedily (no height, waste as it comes: one node a unit or a gap, past the budget and deadline); then a
     // short search at heights bisected between the lower bound and the lowest strip found.
     tried(HUGE_VAL, 0, static_cast<long>(2 * strip.units) + 1, std::nullopt);
     for (double low = least; ceiling - low > step + kHair && left();) {
