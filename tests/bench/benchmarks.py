@@ -60,8 +60,7 @@ def main():
                     datetime.date.today().isoformat(), cpu_model(), os.cpu_count(), platform.system(),
                     platform.machine()),
                 "", strip_benchmark.table(strip, 1.0), "",
-                shop_scale_benchmark.table([shop_scale_benchmark.run(BUILD, n, limit)
-                                            for n, limit in shop_scale_benchmark.JOBS]), "",
+                shop_scale_benchmark.section(BUILD), "",
                 esicup_benchmark.table([esicup_benchmark.run(BUILD, name, 60)
                                         for name in sorted(esicup_benchmark.RECORDS)], 60), "",
                 core_timings(), "", docking_study(), "",

@@ -1,7 +1,9 @@
 """Shop-scale layout (issue 16, item 2): jobs of 1000 and 5000 rectangular parts on 2440 × 1220 mm sheets,
 generated from a seed, laid out by `fabguide pack` with its time limit; each layout judged by the independent
 layout checker, its sheets set beside the least any layout could use (the parts' area over a sheet's, rounded
-up). Usage: shop_scale_benchmark.py [BUILD] (prints the Markdown section)."""
+up). The same parts also go on a strip 2440 mm wide (`pack --strip`, no kerf: the OR-Datasets format has none),
+its height set beside the parts' area over the width. Usage: shop_scale_benchmark.py [BUILD] (prints the
+Markdown section)."""
 import json
 import math
 import os
@@ -32,6 +34,32 @@ def job(parts, seed):
             "parts": made}
 
 
+def strip_instance(problem):
+    """The job's parts as an OR-Datasets strip instance as wide as a sheet."""
+    return {"Name": "shop", "Objects": [{"Length": SHEET[0], "Height": SHEET[1], "Stock": None, "Cost": 1}],
+            "Items": [{"Length": p["width"], "Height": p["height"], "Demand": p["quantity"], "DemandMax": None,
+                       "Value": 1} for p in problem["parts"]]}
+
+
+def run_strip(build, parts, limit, seed=1):
+    instance = strip_instance(job(parts, seed))
+    with tempfile.TemporaryDirectory() as folder:
+        src, out = os.path.join(folder, "job.json"), os.path.join(folder, "layout.json")
+        with open(src, "w") as f:
+            json.dump(instance, f)
+        start = time.monotonic()
+        subprocess.run([os.path.join(build, "fabguide"), "pack", "--strip", src, "-o", out, "--time-limit",
+                        str(limit)], check=True, capture_output=True)
+        seconds = time.monotonic() - start
+        with open(out) as f:
+            layout = json.load(f)
+    found = layout_check.problems(layout, layout_check.demand_of_strip_instance(instance),
+                                  lambda b: (SHEET[0], layout["strip_height"], 0))
+    area = sum(i["Length"] * i["Height"] for i in instance["Items"])
+    return {"parts": parts, "limit": limit, "seconds": seconds, "height": layout["strip_height"],
+            "least": area / SHEET[0], "problems": found}
+
+
 def run(build, parts, limit, seed=1):
     problem = job(parts, seed)
     with tempfile.TemporaryDirectory() as folder:
@@ -53,7 +81,7 @@ def run(build, parts, limit, seed=1):
             "utilisation": area / (sheets * SHEET[0] * SHEET[1]), "problems": found}
 
 
-def table(rows):
+def table(rows, strip_rows):
     lines = ["## Shop-scale layout (issue 16)", "",
              "`python3 tests/bench/shop_scale_benchmark.py build`: seeded jobs of rectangular cabinet parts "
              "(sides, shelves, rails, blocks) on 2440 × 1220 mm sheets, kerf 3 mm, trim 10 mm, turns allowed, "
@@ -68,12 +96,26 @@ def table(rows):
         lines.append("| {} | {:g} | {:.2f} | {} | {} | {:.1%} | {} |".format(
             r["parts"], r["limit"], r["seconds"], r["sheets"], r["least"], r["utilisation"],
             "ok" if not r["problems"] else "; ".join(r["problems"][:3])))
+    lines += ["", "The same parts on a strip 2440 mm wide (`fabguide pack --strip`): the skyline search, then "
+              "MaxRects bisecting the height; no Docking beyond 400 parts. *Least* = the parts' area over the width.",
+              "", "| parts | time limit s | seconds | strip height mm | least mm | gap | checker |",
+              "|---|---|---|---|---|---|---|"]
+    for r in strip_rows:
+        lines.append("| {} | {:g} | {:.2f} | {:g} | {:.0f} | {:.2%} | {} |".format(
+            r["parts"], r["limit"], r["seconds"], r["height"], r["least"], r["height"] / r["least"] - 1,
+            "ok" if not r["problems"] else "; ".join(r["problems"][:3])))
     return "\n".join(lines)
+
+
+def section(build):
+    """The Markdown section: every job on sheets, then on a strip."""
+    return table([run(build, parts, limit) for parts, limit in JOBS],
+                 [run_strip(build, parts, limit) for parts, limit in JOBS])
 
 
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.dirname(HERE)), "build")
-    print(table([run(build, parts, limit) for parts, limit in JOBS]))
+    print(section(build))
 
 
 if __name__ == "__main__":
