@@ -124,12 +124,13 @@ private:
     bool outOfWork()
     {
         work_ += 64 + static_cast<long>(kinds_.size() + skyline_.size());
-        if (--nodesLeft_ < 0 || work_ > mostWork_)
-            return true;
-        if (nodesLeft_ % 256 == 0 && std::chrono::steady_clock::now() > deadline_)
+        if (--nodesLeft_ >= 0 && nodesLeft_ % 256 == 0 && std::chrono::steady_clock::now() > deadline_)
             nodesLeft_ = -1;
-        return nodesLeft_ < 0;
+        return spent();
     }
+
+    /// Whether the nodes or the work have run out (the time too, once a node saw it).
+    bool spent() const { return nodesLeft_ < 0 || work_ > mostWork_; }
 
     /// The heights of segment `at`'s left and right neighbours; a wall is infinitely high.
     std::pair<double, double> neighbours(size_t at) const
@@ -344,7 +345,7 @@ private:
             puts_.pop_back();
             take(c.kind, -1);
             skyline_ = before;
-            if (nodesLeft_ < 0 || work_ > mostWork_)
+            if (spent())
                 return false;
         }
         // Left as waste: the gap raised to its lower neighbour.
@@ -432,7 +433,6 @@ Layout layoutOf(const PackProblem& problem, std::vector<Kind> kinds, const std::
     for (Kind& kind : kinds)  // each unit takes the last part of its kind
         kind.left = static_cast<int>(kind.parts.size());
     Layout layout;
-    double top = 0;
     for (const Put& put : puts) {
         Kind& kind = kinds[put.kind];
         const Pose& pose = kind.poses[put.pose];
@@ -444,9 +444,8 @@ Layout layoutOf(const PackProblem& problem, std::vector<Kind> kinds, const std::
         layout.placements.push_back(
             {part, 0, s.trim + put.x, s.trim + put.y, rotation, pose.w - clearance, pose.h - clearance});
         layout.partArea += geometry::area(problem.parts[part].outline);
-        top = std::max(top, put.y + pose.h);
     }
-    layout.stripHeight = top - clearance + 2 * s.trim;
+    layout.stripHeight = topOf(puts, kinds) - clearance + 2 * s.trim;
     MasterBoard sheet = problem.boards[0];
     sheet.count = 1;
     sheet.height = layout.stripHeight;

@@ -41,18 +41,28 @@ def strip_instance(problem):
                        "Value": 1} for p in problem["parts"]]}
 
 
-def run_strip(build, parts, limit, seed=1):
-    instance = strip_instance(job(parts, seed))
+def packed(build, data, limit, *options):
+    """The layout `fabguide pack` writes for `data` (written to a file) and the seconds it took."""
     with tempfile.TemporaryDirectory() as folder:
         src, out = os.path.join(folder, "job.json"), os.path.join(folder, "layout.json")
         with open(src, "w") as f:
-            json.dump(instance, f)
+            json.dump(data, f)
         start = time.monotonic()
-        subprocess.run([os.path.join(build, "fabguide"), "pack", "--strip", src, "-o", out, "--time-limit",
+        subprocess.run([os.path.join(build, "fabguide"), "pack", *options, src, "-o", out, "--time-limit",
                         str(limit)], check=True, capture_output=True)
         seconds = time.monotonic() - start
         with open(out) as f:
-            layout = json.load(f)
+            return json.load(f), seconds
+
+
+def verdict(problems):
+    """The checker's column: ok, or its first three findings."""
+    return "ok" if not problems else "; ".join(problems[:3])
+
+
+def run_strip(build, parts, limit, seed=1):
+    instance = strip_instance(job(parts, seed))
+    layout, seconds = packed(build, instance, limit, "--strip")
     found = layout_check.problems(layout, layout_check.demand_of_strip_instance(instance),
                                   lambda b: (SHEET[0], layout["strip_height"], 0))
     area = sum(i["Length"] * i["Height"] for i in instance["Items"])
@@ -62,16 +72,7 @@ def run_strip(build, parts, limit, seed=1):
 
 def run(build, parts, limit, seed=1):
     problem = job(parts, seed)
-    with tempfile.TemporaryDirectory() as folder:
-        src, out = os.path.join(folder, "job.pack.json"), os.path.join(folder, "layout.json")
-        with open(src, "w") as f:
-            json.dump(problem, f)
-        start = time.monotonic()
-        subprocess.run([os.path.join(build, "fabguide"), "pack", src, "-o", out, "--time-limit", str(limit)],
-                       check=True, capture_output=True)
-        seconds = time.monotonic() - start
-        with open(out) as f:
-            layout = json.load(f)
+    layout, seconds = packed(build, problem, limit)
     sheets = len(layout["boards"])
     found = layout_check.problems(layout, layout_check.demand_of_pack_problem(problem),
                                   lambda b: (SHEET[0], SHEET[1], TRIM), clearance=KERF)
@@ -94,8 +95,7 @@ def table(rows, strip_rows):
              "| parts | time limit s | seconds | sheets | least | sheet utilisation | checker |", "|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| {} | {:g} | {:.2f} | {} | {} | {:.1%} | {} |".format(
-            r["parts"], r["limit"], r["seconds"], r["sheets"], r["least"], r["utilisation"],
-            "ok" if not r["problems"] else "; ".join(r["problems"][:3])))
+            r["parts"], r["limit"], r["seconds"], r["sheets"], r["least"], r["utilisation"], verdict(r["problems"])))
     lines += ["", "The same parts on a strip 2440 mm wide (`fabguide pack --strip`): the skyline search, then "
               "MaxRects bisecting the height; no Docking beyond 400 parts. *Least* = the parts' area over the width.",
               "", "| parts | time limit s | seconds | strip height mm | least mm | gap | checker |",
@@ -103,7 +103,7 @@ def table(rows, strip_rows):
     for r in strip_rows:
         lines.append("| {} | {:g} | {:.2f} | {:g} | {:.0f} | {:.2%} | {} |".format(
             r["parts"], r["limit"], r["seconds"], r["height"], r["least"], r["height"] / r["least"] - 1,
-            "ok" if not r["problems"] else "; ".join(r["problems"][:3])))
+            verdict(r["problems"])))
     return "\n".join(lines)
 
 
