@@ -29,11 +29,8 @@ void printPoses(const function::Model& model)
         for (size_t c = 0; c < model.cuboids.size(); ++c) {
             if (model.cuboids[c].cavity())
                 continue;
-            double at[6];
-            for (int s = 0; s < 6; ++s)
-                at[s] = function::evaluate(
-                    model, function::posed(model, {static_cast<int>(c), static_cast<function::Side>(s)},
-                                           static_cast<int>(k)));
+            const std::array<double, 6> at =
+                function::posedBounds(model, static_cast<int>(c), static_cast<int>(k));
             std::printf("  %-20s x %.6g .. %.6g  y %.6g .. %.6g  z %.6g .. %.6g\n",
                         model.cuboids[c].name.c_str(), at[0], at[1], at[2], at[3], at[4], at[5]);
         }

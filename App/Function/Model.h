@@ -98,6 +98,7 @@ struct JointPose {
 struct Configuration {
     std::string name;
     std::vector<JointPose> poses;
+    int along = -1;  ///< the solve's own: a pose on the way to configuration `along` (motionSampled)
 };
 
 /// Flush (thesis 4.2.4): two faces lie in one plane, in a configuration (-1: as modelled).
@@ -189,8 +190,10 @@ std::string faceName(const Model& model, const Face& face);
 std::string millimetres(double mm);
 
 /// Whether side `side` of a cavity is an opening (4.1.1), which stays on its solid's face: it lies there as
-/// modelled, within half the minimum wall (a rough drawing's mouth a hair short of the face), or a cover
-/// names it as a covered face (a door covers it). Other sides keep the minimum wall.
+/// modelled, within half the minimum wall (a rough drawing's mouth a hair short of the face), a cover names
+/// it as a covered face (a door covers it), or a part that fits inside the cavity goes out through it (posed,
+/// where its fit is not measured, half beyond it: a shelf pulled out of an oven). Other sides keep the
+/// minimum wall.
 bool isOpening(const Model& model, int cavity, int side);
 
 }  // namespace fabguide::function

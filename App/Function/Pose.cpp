@@ -169,14 +169,28 @@ int partOf(const Model& model, int cuboid)
     return -1;
 }
 
-Expression posed(const Model& model, const Face& face, int configuration)
+std::array<Expression, 6> posedBox(const Model& model, int cuboid, int configuration)
 {
     Box box;
     for (int k = 0; k < 6; ++k)
-        box[k] = {{{1.0, Face{face.cuboid, static_cast<Side>(k)}}}, 0};
-    for (const Move& m : chain(model, face.cuboid, configuration))
+        box[k] = {{{1.0, Face{cuboid, static_cast<Side>(k)}}}, 0};
+    for (const Move& m : chain(model, cuboid, configuration))
         box = moved(m, box);
-    return box[static_cast<int>(face.side)];
+    return box;
+}
+
+Expression posed(const Model& model, const Face& face, int configuration)
+{
+    return posedBox(model, face.cuboid, configuration)[static_cast<int>(face.side)];
+}
+
+std::array<double, 6> posedBounds(const Model& model, int cuboid, int configuration)
+{
+    const Box box = posedBox(model, cuboid, configuration);
+    std::array<double, 6> bounds{};
+    for (int k = 0; k < 6; ++k)
+        bounds[k] = evaluate(model, box[k]);
+    return bounds;
 }
 
 Expression projected(const Model& model, int cuboid, int configuration, Direction d, bool high)

@@ -14,6 +14,12 @@ namespace fabguide::function {
 /// After a turn by other than a multiple of 90°, a further turn bounds the first turn's box: conservative.
 Expression posed(const Model& model, const Face& face, int configuration);
 
+/// All six sides of that box (posed for each side, at once).
+std::array<Expression, 6> posedBox(const Model& model, int cuboid, int configuration);
+
+/// Their values for the model's current coordinates, indexed by Side.
+std::array<double, 6> posedBounds(const Model& model, int cuboid, int configuration);
+
 /// A direction in space (x, y, z).
 using Direction = std::array<double, 3>;
 

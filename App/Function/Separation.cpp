@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace fabguide::function {
 
@@ -17,20 +19,24 @@ using Box = std::array<double, 6>;  ///< by Side
 
 Box boxOf(const Model& model, int cuboid, int configuration)
 {
-    Box box{};
-    for (int k = 0; k < 6; ++k)
-        box[k] = evaluate(model, posed(model, Face{cuboid, static_cast<Side>(k)}, configuration));
-    return box;
+    return posedBounds(model, cuboid, configuration);
 }
 
-/// The fit insides' (inner part, enclosing part) pairs, with the configurations they are measured in.
-std::map<std::pair<int, int>, std::set<int>> fitting(const Model& model)
+/// The poses in which print-in-place makes room for a fit inside (thesis 4.5.1, issue 30): by (inner part,
+/// enclosing part, pose), the configurations of the fits whose room the pose is in: the modelled pose, each
+/// fit's configuration and the poses on the way to it.
+std::map<std::tuple<int, int, int>, std::set<int>> rooms(const Model& model)
 {
-    std::map<std::pair<int, int>, std::set<int>> pairs;
+    std::map<std::tuple<int, int, int>, std::set<int>> room;
     for (const FitInside& f : model.fitInside)
-        for (int p : f.inner)
-            pairs[{p, f.enclosing}].insert(f.configuration);
-    return pairs;
+        for (int p : f.inner) {
+            room[{p, f.enclosing, -1}].insert(f.configuration);
+            for (int k = 0; k < static_cast<int>(model.configurations.size()); ++k)
+                if (f.configuration >= 0 &&
+                    (k == f.configuration || model.configurations[k].along == f.configuration))
+                    room[{p, f.enclosing, k}].insert(f.configuration);
+        }
+    return room;
 }
 
 /// Whether box a lies at least half inside box b.
@@ -149,15 +155,18 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
             boxes[c] = boxOf(model, c, configuration);
         }
     std::sort(solids.begin(), solids.end(), [&](int a, int b) { return boxes[a][0] < boxes[b][0]; });
-    const auto fits = fitting(model);
-    // A fit inside's inner and enclosing parts may overlap: print-in-place cuts the room the inner parts
-    // sweep (thesis 4.5.1). Where the fit is measured, only an inner cuboid carved out of an enclosing one (a
-    // tray in a solid box) may: one between a frame's posts stays clear of them.
+    const auto room = rooms(model);
+    // A fit inside's inner and enclosing parts may overlap where print-in-place cuts the room the inner parts
+    // sweep (thesis 4.5.1), but only an inner cuboid carved out of an enclosing one (mostly inside it where
+    // the fit holds): one between a frame's posts stays clear of them. Elsewhere they are kept apart as any
+    // two parts.
     const auto exempt = [&](int a, int b, int pa, int pb) {
         for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
-            const auto found = fits.find(inner == a ? std::pair{pa, pb} : std::pair{pb, pa});
-            if (found != fits.end())
-                return !found->second.count(configuration) || mostlyInside(boxes[inner], boxes[enclosing]);
+            const auto found = room.find({partOf(model, inner), partOf(model, enclosing), configuration});
+            if (found != room.end())
+                for (int k : found->second)
+                    if (mostlyInside(boxOf(model, inner, k), boxOf(model, enclosing, k)))
+                        return true;
         }
         return carrierOf(model, pa) == carrierOf(model, pb);  // one part, or held together by fixed joints
     };
@@ -177,11 +186,28 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
     return pairs;
 }
 
-Separation inferSeparation(const Model& arranged, int a, int b, int configuration)
+namespace {
+
+/// A way of keeping a pair apart in one pose, and what it changes there (how far they overlap, or how far the
+/// held cuboid reaches past the walls).
+struct Option {
+    Separation separation;
+    double cost = 0;
+    bool near = true;  ///< the change is less than half the cuboids' size across it: they are mostly there
+};
+
+/// How far a cuboid reaches along a direction in a configuration.
+double extent(const Model& arranged, int cuboid, int configuration, const Direction& d)
+{
+    return evaluate(arranged, projected(arranged, cuboid, configuration, d, true)) -
+           evaluate(arranged, projected(arranged, cuboid, configuration, d, false));
+}
+
+/// The separating-axis test (4.2.2's packing, made exact for turned parts): the order that overlaps least.
+Option keptOut(const Model& arranged, int a, int b, int configuration)
 {
     const bool exact = exactlyPosed(arranged, partOf(arranged, a), configuration) &&
                        exactlyPosed(arranged, partOf(arranged, b), configuration);
-    // The separating-axis test (4.2.2's packing, made exact for turned parts): the order that overlaps least.
     std::vector<Direction> directions{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     if (!exact) {
         const auto axesA = posedAxes(arranged, a, configuration),
@@ -193,41 +219,106 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
                 if (const Direction n = normalised(cross(u, v)); n != Direction{0, 0, 0})
                     directions.push_back(n);
     }
-    Separation best;
-    double least = std::numeric_limits<double>::infinity();
+    Option best{{}, std::numeric_limits<double>::infinity()};
     for (const Direction& d : directions)
         for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}}) {
             const double overlap = evaluate(arranged, projected(arranged, low, configuration, d, true)) -
                                    evaluate(arranged, projected(arranged, high, configuration, d, false));
-            if (overlap < least - 1e-9) {
-                least = overlap;
-                best = {low, high, configuration, d, {}};
-            }
+            if (overlap < best.cost - 1e-9)
+                best = {{low, high, configuration, d, {}}, overlap};
         }
-    if (!exact)
-        return best;
-    // Or inside a cavity of the other's cuboid, if that changes less (a drawer in its compartment).
-    double cost = std::max(0.0, least);
+    best.cost = std::max(0.0, best.cost);
+    return best;
+}
+
+/// `held` inside cavity c of the other part's cuboid (a drawer in its compartment; a door turning into its
+/// bay: its box, turned by other than quarter turns, bounds it).
+Option heldIn(const Model& arranged, int held, int holder, int c, int configuration)
+{
+    const Box box = boxOf(arranged, held, configuration);
+    std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
+    const double cost = outside(arranged, box, walls, configuration);
+    const double size = std::min({box[1] - box[0], box[3] - box[2], box[5] - box[4]});
+    return {{held, holder, configuration, {}, std::move(walls)}, cost, cost <= size / 2};
+}
+
+/// The cavities that could hold one of a and b in the configuration: (held, holder, cavity), those of the
+/// other's cuboid that its box overlaps.
+std::vector<std::array<int, 3>> holders(const Model& arranged, int a, int b, int configuration)
+{
+    std::vector<std::array<int, 3>> found;
     for (const auto& [held, holder] : {std::pair{a, b}, std::pair{b, a}}) {
         const Box box = boxOf(arranged, held, configuration);
         for (int c = 0; c < static_cast<int>(arranged.cuboids.size()); ++c)
-            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration))) {
-                std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
-                if (const double change = outside(arranged, box, walls, configuration); change < cost) {
-                    cost = change;
-                    best = {held, holder, configuration, {}, std::move(walls)};
-                }
-            }
+            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration)))
+                found.push_back({held, holder, c});
     }
-    return best;
+    return found;
+}
+
+}  // namespace
+
+Separation inferSeparation(const Model& arranged, int a, int b, int configuration)
+{
+    Option best = keptOut(arranged, a, b, configuration);
+    for (const auto& [held, holder, c] : holders(arranged, a, b, configuration))
+        if (Option in = heldIn(arranged, held, holder, c, configuration); in.cost < best.cost)
+            best = std::move(in);
+    return best.separation;
+}
+
+std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
+                                 const std::vector<int>& judged)
+{
+    std::vector<Choice> choices;
+    const auto consider = [&](const std::function<Option(int)>& option) {
+        Choice c;
+        for (int k : judged) {
+            Option o = option(k);
+            c.cost += o.cost;
+            c.near = c.near && o.near;
+            if (std::find(poses.begin(), poses.end(), k) != poses.end())
+                c.separations.push_back(std::move(o.separation));
+        }
+        const auto same = [&](const Choice& other) {
+            for (size_t i = 0; i < c.separations.size(); ++i) {
+                const Separation &x = c.separations[i], &y = other.separations[i];
+                if (x.a != y.a || x.b != y.b || x.direction != y.direction || x.walls != y.walls)
+                    return false;
+            }
+            return true;
+        };
+        if (std::none_of(choices.begin(), choices.end(), same))
+            choices.push_back(std::move(c));
+    };
+    consider([&](int k) { return keptOut(arranged, a, b, k); });
+    std::set<std::array<int, 3>> tried;
+    for (int k : judged)
+        for (const std::array<int, 3>& h : holders(arranged, a, b, k))
+            if (tried.insert(h).second)
+                consider([&](int pose) { return heldIn(arranged, h[0], h[1], h[2], pose); });
+    for (const Direction& d : {Direction{1, 0, 0}, Direction{0, 1, 0}, Direction{0, 0, 1}})
+        for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}})
+            consider([&](int k) {
+                const double overlap = evaluate(arranged, projected(arranged, low, k, d, true)) -
+                                       evaluate(arranged, projected(arranged, high, k, d, false));
+                const double size = std::min(extent(arranged, low, k, d), extent(arranged, high, k, d));
+                return Option{{low, high, k, d, {}}, std::max(0.0, overlap), overlap <= size / 2};
+            });
+    std::stable_sort(choices.begin(), choices.end(),
+                     [](const Choice& x, const Choice& y) { return x.cost < y.cost - 1e-9; });
+    return choices;
 }
 
 std::string separationName(const Model& model, const Separation& separation)
 {
     const int a = partOf(model, separation.a), b = partOf(model, separation.b);
-    const std::string where = separation.configuration < 0
-                                  ? ""
-                                  : " in '" + model.configurations[separation.configuration].name + "'";
+    std::string where;
+    if (separation.configuration >= 0) {
+        const Configuration& k = model.configurations[separation.configuration];
+        where = k.along < 0 ? " in '" + k.name + "'"
+                            : " on the way to '" + model.configurations[k.along].name + "'";
+    }
     return "no overlap: " + model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name +
            where;
 }

@@ -29,16 +29,32 @@ bool exactlyPosed(const Model& model, int part, int configuration);
 
 /// Pairs of solid cuboids (a < b) of different parts whose boxes in the configuration overlap, or come within
 /// `margin` (negative: overlap by more than -margin), found by a sweep over the boxes along x. Left out:
-/// parts a fixed joint holds together; the inner and enclosing parts of a fit inside, whose room
-/// print-in-place sweeps out (thesis 4.5.1), but where the fit is measured an inner cuboid not carved out of
-/// an enclosing one (mostly inside it) is kept.
+/// parts a fixed joint holds together; an inner cuboid of a fit inside the enclosing part's box that lies
+/// mostly inside an enclosing one, in the poses whose room print-in-place sweeps out (thesis 4.5.1): as
+/// modelled, in the fit's configuration and on the way there.
 std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration, double margin);
 
 /// The least change that keeps a and b clear, judged on `arranged` (the model as its relationships arrange
 /// it): of the separating axes of the two posed cuboids (x, y, z; for turned parts also their own axes and
 /// the cross products), the one and the order that overlap least; or a cavity of one part that holds the
-/// other with less to change (poses of quarter turns only).
+/// other with less to change (its bounding box, for parts turned by other than quarter turns).
 Separation inferSeparation(const Model& arranged, int a, int b, int configuration);
+
+/// One way of keeping a pair apart along a motion: a separation in each of its poses, and what it changes.
+struct Choice {
+    std::vector<Separation> separations;
+    double cost = 0;
+    bool near = true;  ///< in every pose, each is less than half its size from where this way keeps it
+};
+
+/// The ways of keeping a and b apart in each of `poses` (poses of one motion: a configuration and poses on
+/// the way to it, or the modelled pose alone), each chosen for all of them together, ranked by the change
+/// they make in all the poses `judged` (those and the rest of the motion): kept out pose by pose as
+/// inferSeparation keeps them out, held by one cavity all the way, or kept apart along one axis all the way.
+/// A pocket door turning into its bay stays within the bay's opening all the way, not out of the carcass at
+/// the ends and in the bay between, nor in the neighbouring bay its hinge was drawn a hair into (issue 30).
+std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
+                                 const std::vector<int>& judged);
 
 /// "no overlap: carcass, door in 'open'": the name its constraints take, one per pair of parts and
 /// configuration (none for the parts as modelled).

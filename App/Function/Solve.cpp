@@ -10,6 +10,8 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -64,35 +66,36 @@ void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, 
     }
 }
 
-/// A part stays in one piece: each two of its solid cuboids that touch or overlap as modelled keep touching
-/// along the axis they meet least on, and overlapping along the other two by as much as modelled, or the
-/// minimum size ("one piece: drawer"). A drawer's tray held in its bay stays glued to its front when the
-/// bay's mouth moves.
+/// The gaps between two boxes along each axis where they overlap (negative: apart by that much).
+std::array<double, 3> meeting(const Cuboid& a, const Cuboid& b)
+{
+    std::array<double, 3> meet{};
+    for (int axis = 0; axis < 3; ++axis)
+        meet[axis] = std::min(a.coordinates[2 * axis + 1], b.coordinates[2 * axis + 1]) -
+                     std::max(a.coordinates[2 * axis], b.coordinates[2 * axis]);
+    return meet;
+}
+
+/// A part stays in one piece: each two of its glued cuboids keep touching along the axis they meet least on,
+/// and overlapping along the other two by as much as modelled, or the minimum size ("one piece: drawer"). A
+/// drawer's tray held in its bay stays glued to its front when the bay's mouth moves.
 void onePiece(std::vector<LinearConstraint>& rows, const Model& model, const Part& part)
 {
-    for (int a : part.cuboids)
-        for (int b : part.cuboids) {
-            if (a >= b || model.cuboids[a].cavity() || model.cuboids[b].cavity())
-                continue;
-            std::array<double, 3> meet{};
-            for (int axis = 0; axis < 3; ++axis)
-                meet[axis] =
-                    std::min(model.cuboids[a].coordinates[2 * axis + 1],
-                             model.cuboids[b].coordinates[2 * axis + 1]) -
-                    std::max(model.cuboids[a].coordinates[2 * axis], model.cuboids[b].coordinates[2 * axis]);
-            if (*std::min_element(meet.begin(), meet.end()) < -1e-9)
-                continue;  // apart as modelled
-            const long touching = std::min_element(meet.begin(), meet.end()) - meet.begin();
-            for (int axis = 0; axis < 3; ++axis) {
-                const double least = axis == touching ? 0.0 : std::min(meet[axis], model.minimumSize);
-                for (const auto& [high, low] :
-                     {std::pair{a, b}, std::pair{b, a}})  // high's top past low's bottom
-                    rows.push_back({{{6 * high + 2 * axis + 1, 1.0}, {6 * low + 2 * axis, -1.0}},
-                                    least,
-                                    kInfinity,
-                                    "one piece: " + part.name});
-            }
+    for (const Pieces::Glued& g : piecesOf(model, part).glued) {
+        const std::array<double, 3> meet = meeting(model.cuboids[g.a], model.cuboids[g.b]);
+        const long touching = std::min_element(meet.begin(), meet.end()) - meet.begin();
+        for (int axis = 0; axis < 3; ++axis) {
+            const double least = axis == touching ? 0.0
+                                 : meet[axis] > 0 ? std::min(meet[axis], model.minimumSize)
+                                                  : model.minimumSize;
+            for (const auto& [high, low] :
+                 {std::pair{g.a, g.b}, std::pair{g.b, g.a}})  // high's top past low's bottom
+                rows.push_back({{{6 * high + 2 * axis + 1, 1.0}, {6 * low + 2 * axis, -1.0}},
+                                least,
+                                kInfinity,
+                                "one piece: " + part.name});
         }
+    }
 }
 
 /// The constraints that keep a pair clear (Separation.h), in its configuration.
@@ -183,15 +186,108 @@ std::string millimetres(double mm)
     return text;
 }
 
+namespace {
+
+/// Whether a part that fits inside the cavity goes out through side `side` (issue 30): in a configuration
+/// where no fit of it in the cavity is measured, a cuboid of it that must fit lies at least half beyond that
+/// side, across the cavity (a shelf pulled out of the oven). A part drawn out of its cavity is not (the room
+/// print-in-place cuts on its way in makes its passage).
+bool passedThrough(const Model& model, int cavity, int side)
+{
+    const auto& c = model.cuboids[cavity].coordinates;
+    const int axis = side / 2;
+    const auto measured = [&](int part, int k) {
+        return std::any_of(model.fitInside.begin(), model.fitInside.end(), [&](const FitInside& f) {
+            return f.cavity == cavity && f.configuration == k &&
+                   std::find(f.inner.begin(), f.inner.end(), part) != f.inner.end();
+        });
+    };
+    for (const FitInside& f : model.fitInside) {
+        if (f.cavity != cavity)
+            continue;
+        for (int part : f.inner)
+            for (int cuboid : model.parts[part].cuboids)
+                for (int k = 0; k < static_cast<int>(model.configurations.size()) && fits(model, f, cuboid);
+                     ++k) {
+                    if (model.configurations[k].along >= 0 || measured(part, k))
+                        continue;  // the user's configurations
+                    const std::array<double, 6> box = posedBounds(model, cuboid, k);
+                    const double beyond = side % 2 ? box[side] - c[side] : c[side] - box[side];
+                    bool across = beyond >= (box[2 * axis + 1] - box[2 * axis]) / 2;
+                    for (int o = 0; o < 3 && across; ++o)
+                        across = o == axis ||
+                                 std::min(box[2 * o + 1], c[2 * o + 1]) > std::max(box[2 * o], c[2 * o]);
+                    if (across)
+                        return true;
+                }
+    }
+    return false;
+}
+
+}  // namespace
+
 bool isOpening(const Model& model, int cavity, int side)
 {
     if (depthInside(model, cavity, side) <= std::max(1e-6, model.minimumWall / 2))
         return true;
     const Face face{cavity, static_cast<Side>(side)};
-    return std::any_of(model.cover.begin(), model.cover.end(), [&](const Cover& c) {
-        return std::any_of(c.pairs.begin(), c.pairs.end(),
-                           [&](const auto& pair) { return pair.second == face; });
-    });
+    return std::any_of(model.cover.begin(), model.cover.end(),
+                       [&](const Cover& c) {
+                           return std::any_of(c.pairs.begin(), c.pairs.end(),
+                                              [&](const auto& pair) { return pair.second == face; });
+                       }) ||
+           passedThrough(model, cavity, side);
+}
+
+Pieces piecesOf(const Model& model, const Part& part)
+{
+    Pieces out;
+    std::vector<int> solids;
+    for (int c : part.cuboids)
+        if (!model.cuboids[c].cavity())
+            solids.push_back(c);
+    std::vector<int> piece(solids.size());  // union-find over the solids
+    std::iota(piece.begin(), piece.end(), 0);
+    const auto root = [&](size_t i) {
+        while (piece[i] != static_cast<int>(i))
+            i = piece[i] = piece[piece[i]];
+        return i;
+    };
+    const auto apart = [&](size_t i, size_t k) {  // how far apart along the axis they are farthest apart
+        const std::array<double, 3> meet = meeting(model.cuboids[solids[i]], model.cuboids[solids[k]]);
+        return -*std::min_element(meet.begin(), meet.end());
+    };
+    for (size_t i = 0; i < solids.size(); ++i)
+        for (size_t k = i + 1; k < solids.size(); ++k)
+            if (apart(i, k) <= 1e-9) {
+                out.glued.push_back({solids[i], solids[k], 0});
+                piece[root(k)] = static_cast<int>(root(i));
+            }
+    // Pieces drawn apart: the nearest two cuboids of two pieces, joined if near enough, until one is left.
+    for (;;) {
+        double nearest = std::numeric_limits<double>::infinity();
+        size_t a = 0, b = 0;
+        for (size_t i = 0; i < solids.size(); ++i)
+            for (size_t k = i + 1; k < solids.size(); ++k)
+                if (root(i) != root(k) && apart(i, k) < nearest)
+                    std::tie(nearest, a, b) = std::tuple{apart(i, k), i, k};
+        if (!std::isfinite(nearest))
+            break;
+        const std::string pair = "'" + model.cuboids[solids[a]].name + "' and '" +
+                                 model.cuboids[solids[b]].name + "' drawn " + millimetres(nearest) +
+                                 " mm apart";
+        if (nearest > kJoinDistance) {
+            out.error =
+                part.name + ": " + pair + ", farther than the " + millimetres(kJoinDistance) +
+                " mm within which a part's cuboids are joined: a part prints as one piece (join them, "
+                "or make each its own part)";
+            break;
+        }
+        out.glued.push_back({solids[a], solids[b], nearest});
+        out.notes.push_back(part.name + ": " + pair + "; joined");
+        piece[root(b)] = static_cast<int>(root(a));
+    }
+    return out;
 }
 
 std::vector<LinearConstraint> constraints(const Model& model)
@@ -309,24 +405,87 @@ Model withCoordinates(Model model, const Eigen::VectorXd& x)
     return model;
 }
 
-/// Pairs of cuboids in configurations, as keys of the separations already made.
-using PairKey = std::tuple<int, int, int>;
+/// The pairs kept apart: by (cuboid a, cuboid b, the configuration whose motion), the poses where they came
+/// near (the configuration's, those on the way to it; -1 for the modelled pose alone), the ways of keeping
+/// them apart there (choicesAlong) and the one chosen.
+struct Apart {
+    using Key = std::tuple<int, int, int>;
+    std::map<Key, std::vector<int>> poses;
+    std::map<Key, std::vector<Choice>> choices;
+    std::map<Key, size_t> chosen;
+    std::vector<Separation> all() const
+    {
+        std::vector<Separation> out;
+        for (const auto& [key, ways] : choices) {
+            const std::vector<Separation>& some = ways[chosen.at(key)].separations;
+            out.insert(out.end(), some.begin(), some.end());
+        }
+        return out;
+    }
+    /// The pairs whose separations a conflict names.
+    std::vector<Key> named(const Model& model, const std::vector<std::string>& conflict) const
+    {
+        std::vector<Key> keys;
+        for (const auto& [key, ways] : choices)
+            for (const Separation& s : ways[chosen.at(key)].separations)
+                if (std::find(conflict.begin(), conflict.end(), separationName(model, s)) != conflict.end()) {
+                    keys.push_back(key);
+                    break;
+                }
+        return keys;
+    }
+};
 
-/// The separations of the pairs that come near in `model` and have none yet (`margin` as nearPairs),
-/// inferred on `arranged` (the model as its relationships arrange it). Returns how many it added.
-size_t separateNear(const Model& arranged, const Model& model, double margin, std::set<PairKey>& seen,
-                    std::vector<Separation>& separations)
+/// Whether parts p and q each turn by a joint of their own in configuration k (not one that carries both).
+bool turnEach(const Model& model, int p, int q, int k)
 {
-    const size_t before = separations.size();
-    for (int k = -1; k < static_cast<int>(model.configurations.size()); ++k)
+    const auto turning = [&](int part) {
+        const int j = jointMovingIn(model, part, k);
+        const JointPose* pose = j >= 0 ? poseOf(model, j, k) : nullptr;
+        return pose && (model.joints[j].turns() || model.joints[j].type == Joint::Type::DoublePivot) &&
+                       pose->angle != 0
+                   ? j
+                   : -1;
+    };
+    const int jp = turning(p), jq = turning(q);
+    return jp >= 0 && jq >= 0 && jp != jq;
+}
+
+/// Adds the pairs that come near in `model` (`margin` as nearPairs), in the modelled pose and configurations
+/// [0, `configurations`), to those kept apart, each pair's ways along a motion found anew on `arranged` (the
+/// model as its relationships arrange it) when it gains a pose. Returns how many poses it added.
+size_t separateNear(const Model& arranged, const Model& model, double margin, int configurations,
+                    Apart& apart)
+{
+    std::set<Apart::Key> grown;
+    size_t added = 0;
+    for (int k = -1; k < configurations; ++k)
         for (const auto& [a, b] : nearPairs(model, k, margin)) {
             if (k >= 0 && jointMovingIn(model, partOf(model, a), k) < 0 &&
                 jointMovingIn(model, partOf(model, b), k) < 0)
                 continue;  // neither moves there: kept apart as modelled
-            if (seen.insert({a, b, k}).second)
-                separations.push_back(inferSeparation(arranged, a, b, k));
+            const int along =
+                k >= 0 && model.configurations[k].along >= 0 ? model.configurations[k].along : k;
+            if (along != k && turnEach(model, partOf(model, a), partOf(model, b), k))
+                continue;  // two doors meeting as they swing: print-in-place bevels each by the other's path
+            std::vector<int>& poses = apart.poses[{a, b, along}];
+            if (std::find(poses.begin(), poses.end(), k) == poses.end()) {
+                poses.push_back(k);
+                grown.insert({a, b, along});
+                ++added;
+            }
         }
-    return separations.size() - before;
+    for (const auto& key : grown) {
+        const auto& [a, b, along] = key;
+        std::vector<int> judged = apart.poses[key];  // and the rest of the motion
+        for (int k = 0; along >= 0 && k < static_cast<int>(model.configurations.size()); ++k)
+            if ((k == along || model.configurations[k].along == along) &&
+                std::find(judged.begin(), judged.end(), k) == judged.end())
+                judged.push_back(k);
+        apart.choices[key] = choicesAlong(arranged, a, b, apart.poses[key], judged);
+        apart.chosen[key] = 0;
+    }
+    return added;
 }
 
 /// The parts that the overlaps and walls in a conflict concern, each named once.
@@ -397,8 +556,113 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<L
 
 }  // namespace
 
+namespace {
+
+/// The least change that keeps the pairs apart as chosen, from `start` (kept when it does already). Where
+/// that conflicts, a pair the conflict names is kept apart its other ways that the drawing is near
+/// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
+/// out of the conflict (a door and a drawer front side by side in one plane, not one in front of the other:
+/// the least overlap as drawn chose wrong).
+LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& relationships,
+                            const Model& moving, Apart& apart, const Eigen::VectorXd& start, int& tries)
+{
+    const auto solveApart = [&] {
+        std::vector<LinearConstraint> rows = relationships;
+        for (const Separation& s : apart.all())
+            separate(rows, moving, s);
+        if (violation(start, rows) <= 1e-6)
+            return LeastChangeResult{true, start, violation(start, rows), {}};
+        return leastChange(target, rows, &start);
+    };
+    LeastChangeResult r = solveApart();
+    for (bool revised = true; !r.solved && revised;) {
+        revised = false;
+        for (const Apart::Key& key : apart.named(moving, r.conflict)) {
+            const size_t was = apart.chosen[key];
+            for (size_t way = was + 1; way < apart.choices[key].size() && tries > 0 && !revised; ++way) {
+                if (!apart.choices[key][way].near)
+                    continue;  // another way only where the drawing is near it
+                --tries;
+                apart.chosen[key] = way;
+                LeastChangeResult t = solveApart();
+                const std::vector<Apart::Key> still = apart.named(moving, t.conflict);
+                if (t.solved || std::find(still.begin(), still.end(), key) == still.end()) {
+                    r = std::move(t);
+                    revised = true;
+                }
+            }
+            if (revised)
+                break;
+            apart.chosen[key] = was;
+        }
+    }
+    return r;
+}
+
+/// How many poses along each motion the solve keeps parts apart at (the checker's: tests/python).
+constexpr int kMotionSamples = 64;
+/// How many rounds of constraint generation the solve may take, and how many other ways of keeping a pair
+/// apart it may try where the first ones conflict.
+constexpr int kRounds = 100, kRevisions = 32;
+
+/// The model with each configuration's motion sampled (issue 30): the poses a fraction i / kMotionSamples of
+/// the way there, turns in the first half and slides in the second (as print-in-place moves the parts),
+/// appended after the model's configurations, each `along` its own. Only fractions where something moves: no
+/// turning half without a turn, no sliding half without a slide; the turning half of a configuration that
+/// poses a double pivot is stage 2's (its path depends on where the pivots go).
+Model motionSampled(Model model)
+{
+    const int count = static_cast<int>(model.configurations.size());
+    for (int k = 0; k < count; ++k) {
+        bool turns = false, slides = false, pivots = false;
+        for (const JointPose& pose : model.configurations[k].poses) {
+            const Joint& joint = model.joints[pose.joint];
+            turns = turns || ((joint.turns() || joint.type == Joint::Type::DoublePivot) && pose.angle != 0);
+            slides = slides || (joint.slides() && pose.offset != 0);
+            pivots = pivots || joint.type == Joint::Type::DoublePivot;
+        }
+        for (int i = 1; i < kMotionSamples; ++i) {
+            const double t = static_cast<double>(i) / kMotionSamples;
+            if (t < 0.5 ? !turns || pivots : !slides)
+                continue;
+            Configuration on{model.configurations[k].name, model.configurations[k].poses, k};
+            for (JointPose& pose : on.poses) {
+                pose.angle *= std::min(1.0, 2 * t);
+                pose.offset *= std::max(0.0, 2 * t - 1);
+            }
+            model.configurations.push_back(on);
+        }
+    }
+    return model;
+}
+
+/// A double pivot's pivots keep their places on their faces as the solve resizes the cuboids under them: each
+/// offset scaled with its face's size.
+void keepPivotsOnFaces(const Model& before, Model& after)
+{
+    for (Joint& j : after.joints)
+        if (j.type == Joint::Type::DoublePivot)
+            for (auto [face, offsets] :
+                 {std::pair{j.pivotFace, &j.pivot}, std::pair{j.basePivotFace, &j.basePivot}})
+                for (int k = 0; k < 2; ++k) {
+                    const int a = (axisOf(face.side) + 1 + k) % 3;
+                    const auto &was = before.cuboids[face.cuboid].coordinates,
+                               &now = after.cuboids[face.cuboid].coordinates;
+                    (*offsets)[k] *= (now[2 * a + 1] - now[2 * a]) / (was[2 * a + 1] - was[2 * a]);
+                }
+}
+
+}  // namespace
+
 SolveResult solve(const Model& model)
 {
+    std::vector<std::string> pieceNotes;
+    for (const Part& part : model.parts) {
+        Pieces pieces = piecesOf(model, part);
+        if (!pieces.error.empty())
+            return {false, model, {"one piece: " + part.name}, 0, {pieces.error}, {part.name}};
+        pieceNotes.insert(pieceNotes.end(), pieces.notes.begin(), pieces.notes.end());
+    }
     Eigen::VectorXd target(6 * model.cuboids.size());
     for (size_t c = 0; c < model.cuboids.size(); ++c)
         for (int k = 0; k < 6; ++k)
@@ -408,21 +672,27 @@ SolveResult solve(const Model& model)
     // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
     // in that solution, the arrangement the relationships give; pairs the solve then brings together are
     // added round by round (constraint generation: the pairs stay few).
-    const Model arranged = r.solved ? withCoordinates(model, r.x) : model;
-    std::set<PairKey> seen;
-    std::vector<Separation> separations;
-    separateNear(arranged, arranged, model.minimumSize, seen, separations);
-    for (int round = 0; r.solved && round < 8; ++round) {
-        std::vector<LinearConstraint> rows = relationships;
-        for (const Separation& s : separations)
-            separate(rows, model, s);
-        if (violation(r.x, rows) > 1e-6)
-            r = leastChange(target, rows, &r.x);
-        if (!r.solved || separateNear(arranged, withCoordinates(model, r.x), -1e-6, seen, separations) == 0)
+    // They are kept apart along every motion too, at the poses on the way (motionSampled) where they meet.
+    const Model moving = motionSampled(model);
+    const int configurations = static_cast<int>(moving.configurations.size());
+    const Model arranged = r.solved ? withCoordinates(moving, r.x) : moving;
+    Apart apart;
+    separateNear(arranged, arranged, model.minimumSize, static_cast<int>(model.configurations.size()), apart);
+    int tries = kRevisions;
+    for (int round = 0; r.solved; ++round) {
+        r = keptApart(target, relationships, moving, apart, r.x, tries);
+        if (!r.solved ||
+            separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;
+        if (round ==
+            kRounds) {  // every round adds poses where parts still meet: a bound, never reached so far
+            r = {false, target, r.violation, {"no overlap"}};
+            break;
+        }
     }
-    SolveResult result{r.solved, r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation,
-                       {},       blamedParts(model, separations, r.conflict)};
+    const std::vector<Separation> separations = apart.all();
+    SolveResult result{r.solved,   r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation,
+                       pieceNotes, blamedParts(moving, separations, r.conflict)};
     for (const Cover& c : model.cover)
         addNotes(result.notes, c.name, c.notes);
     for (const Support& s : model.support)
@@ -430,6 +700,7 @@ SolveResult solve(const Model& model)
     if (!r.solved)
         return result;
     // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
+    keepPivotsOnFaces(model, result.model);
     const std::vector<Unplaced> unplaced = placePivots(result.model);
     if (unplaced.empty())
         return result;

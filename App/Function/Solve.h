@@ -16,6 +16,24 @@ inline int variable(const Face& face)
     return 6 * face.cuboid + static_cast<int>(face.side);
 }
 
+/// How far apart a part's cuboids may be drawn and still be joined (issue 30): the distance within which
+/// inference links faces (Cover::distance's default).
+constexpr double kJoinDistance = 5;
+
+/// How a part's solid cuboids hold together: each pair that touches or overlaps as modelled, and where the
+/// part is drawn in pieces, the nearest two cuboids of two pieces, joined when at most kJoinDistance apart (a
+/// tray drawn a hair off its front: a note says so); farther apart, an error naming the part.
+struct Pieces {
+    struct Glued {
+        int a = 0, b = 0;
+        double apart = 0;  ///< how far apart they were drawn (0: touching or overlapping)
+    };
+    std::vector<Glued> glued;
+    std::vector<std::string> notes;
+    std::string error;
+};
+Pieces piecesOf(const Model& model, const Part& part);
+
 /// Every constraint of the model, each named after its relationship ("lock: lid.top" for locks; minimum
 /// sizes unnamed). Throws std::invalid_argument naming a Flush whose faces are not parallel.
 std::vector<LinearConstraint> constraints(const Model& model);

@@ -194,9 +194,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
     for (int k = -1; k < static_cast<int>(m.configurations.size()); ++k) {
         std::vector<Coordinates> posed(m.cuboids.size());
         for (size_t c = 0; c < m.cuboids.size(); ++c)
-            for (int s = 0; s < 6; ++s)
-                posed[c][s] =
-                    function::evaluate(m, function::posed(m, {static_cast<int>(c), static_cast<Side>(s)}, k));
+            posed[c] = function::posedBounds(m, static_cast<int>(c), k);
         for (size_t a = 0; a < m.cuboids.size(); ++a)
             for (size_t b = 0; b < m.cuboids.size(); ++b) {
                 if (!aSteps(static_cast<int>(a), static_cast<int>(b)))
