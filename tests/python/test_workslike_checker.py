@@ -66,15 +66,19 @@ def test_drawer_in_a_cavity_passes():
     assert W.check(cabinet_with_drawer()) == []
 
 
-def test_drawer_wider_than_its_cavity_fails_both_ways():
-    problems = W.check(cabinet_with_drawer(drawer_hi_x=92))
-    assert any("interpenetration" in p and "drawer tray" in p for p in problems)
-    assert any("fit inside 'drawer in its bay'" in p and "sticks out" in p for p in problems)
+def test_drawer_wider_than_its_cavity_fails():
+    """The print would cut the tray's room out of the wall (it fits there, as modelled), but the fit says it
+    stays inside its bay; without the fit, the tray is in the wall."""
+    m = cabinet_with_drawer(drawer_hi_x=92)
+    assert any("fit inside 'drawer in its bay'" in p and "sticks out" in p for p in W.check(m))
+    m["relationships"] = []
+    assert any("interpenetration" in p and "drawer tray" in p for p in W.check(m))
 
 
 def test_part_with_two_solids_keeps_a_cavity_to_its_own_solid():
     # the cleat is a second solid of the carcass inside the bay's box: it is material, the bay is cut from "carcass"
     m = cabinet_with_drawer()
+    m["relationships"] = []  # no fit inside: no room cut for the tray
     m["parts"][0]["cuboids"].append(box("cleat", [10, 80, 10], [20, 90, 20]))
     problems = W.check(m)
     assert any("'drawer tray' and 'cleat'" in p or "'cleat' and 'drawer tray'" in p for p in problems), problems
@@ -323,17 +327,33 @@ def test_missing_relationship_in_the_solved_file_is_reported():
 # ---- motion
 
 
-def test_two_parts_moving_together_collide_only_as_a_warning():
+def test_a_door_swings_open_before_a_tray_slides_out():
+    """Motions turn in the first half of the way, slide in the second (docs/formats.md): the tray comes out of
+    the bay after the door has swung clear."""
     m = door_model(-90)
     m["parts"].append(part("tray", box("tray", [100, 20, 100], [300, 280, 120])))
     m["joints"].append({"name": "tray slide", "type": "slide", "part": "tray", "axis": "y"})
-    m["configurations"][0]["poses"]["tray slide"] = -250  # pulled out while the door swings
+    m["configurations"][0]["poses"]["tray slide"] = -250
     m["relationships"] = [{"type": "fit_inside", "name": "tray inside", "inner": ["tray"], "enclosing": "carcass",
                            "cavity": "inside"}]
     warnings = []
-    problems = W.check(m, warnings=warnings)
-    assert problems == []
-    assert any("'door' and 'tray'" in w for w in warnings), warnings
+    assert W.check(m, warnings=warnings) == [] and warnings == []
+    m["configurations"][0]["poses"]["door hinge"] = -30  # ajar: the tray hits it
+    assert any(p.startswith("motion collision") and "'door' and 'tray'" in p for p in W.check(m))
+
+
+def test_two_parts_turning_at_once_collide_only_as_a_warning():
+    """Two doors that meet, both swinging open: print-in-place bevels each by the other's path."""
+    carcass = part("carcass", box("carcass", [0, 0, 0], [400, 300, 600]),
+                   box("inside", [18, 0, 18], [382, 282, 582], cavity=True))
+    left = part("left", box("left", [18, -18, 18], [200, 0, 582]))
+    right = part("right", box("right", [200, -18, 18], [382, 0, 582]))
+    hinges = [{"name": "left hinge", "type": "hinge", "part": "left", "edge": ["left.left", "left.far"]},
+              {"name": "right hinge", "type": "hinge", "part": "right", "edge": ["right.right", "right.far"]}]
+    m = model([carcass, left, right], hinges, [{"name": "in", "poses": {"left hinge": 90, "right hinge": -90}}])
+    warnings = []
+    assert W.check(m, warnings=warnings) == []
+    assert any("'left' and 'right'" in w for w in warnings), warnings
 
 
 def test_a_slide_through_a_wall_is_a_problem_on_the_way():
@@ -346,12 +366,38 @@ def test_a_slide_through_a_wall_is_a_problem_on_the_way():
     assert any(p.startswith("motion collision") and "drawer slide" in p for p in problems), problems
 
 
-def test_a_fit_inside_tray_may_slide_out_through_a_wall_print_in_place_cuts():
+def test_print_in_place_cuts_the_room_a_fit_inside_sweeps_and_no_more():
+    """A fit inside the enclosing part's box (no cavity): the print cuts what the inner parts sweep on the way
+    to the fit's configuration (issue 30). Measured in 'away', the tray's way out through the wall is cut;
+    measured as modelled, only the tray's place is, and its way out through the wall is a collision."""
     m = cabinet_with_drawer()
     m["joints"] = [{"name": "drawer slide", "type": "slide", "part": "drawer", "axis": "x"}]
-    m["configurations"] = [{"name": "away", "poses": {"drawer slide": 200}}]
-    m["relationships"] = [{"type": "fit_inside", "name": "drawer in", "inner": ["drawer"], "enclosing": "carcass"}]
-    assert not [p for p in W.check(m) if "interpenetration" in p or "motion collision" in p]
+    m["configurations"] = [{"name": "away", "poses": {"drawer slide": 200}}, {"name": "back", "poses": {"drawer slide": -200}}]
+    fit = {"type": "fit_inside", "name": "drawer in", "inner": ["drawer"], "enclosing": "carcass", "configuration": "away"}
+    m["relationships"] = [fit]
+    problems = W.check(m)
+    assert not [p for p in problems if "'away'" in p and ("interpenetration" in p or "motion" in p)], problems
+    assert any("motion collision" in p and "'back'" in p for p in problems), problems  # the other way: no room
+    del fit["configuration"]
+    assert any("motion collision" in p and "'away'" in p for p in W.check(m))
+
+
+def test_the_room_of_a_part_carried_by_the_enclosing_part_is_cut_in_its_frame():
+    """A rack in a pull-out that slides out: the rack's room is where it goes in the pull-out, not its path."""
+    carcass = part("carcass", box("carcass", [0, 0, 0], [100, 100, 100]),
+                   box("bay", [10, 0, 10], [90, 90, 90], cavity=True))
+    pull = part("pull-out", box("pull-out", [12, 0, 12], [88, 88, 60]))  # solid: the print cuts the rack's room
+    rack = part("rack", box("rack", [20, 10, 50], [80, 80, 79]))  # drawn lifted
+    joints = [{"name": "out", "type": "slide", "part": "pull-out", "axis": "y"},
+              {"name": "lift", "type": "slide", "part": "rack", "axis": "z", "base": "pull-out"}]
+    fit = {"type": "fit_inside", "name": "rack in", "inner": ["rack"], "enclosing": "pull-out", "configuration": "down"}
+    configurations = [{"name": "down", "poses": {"lift": -20}}, {"name": "out", "poses": {"out": -95}}]
+    m = model([carcass, pull, rack], joints, configurations, [fit])
+    assert W.check(m) == []
+    room = W.rooms(W.Model(m), 1e-4)[("rack", "pull-out")]
+    assert [(lo, hi) for lo, hi, _ in room] == [([20, 10, 30], [80, 80, 79])]  # lowered in it, not carried out
+
+
 
 
 @pytest.mark.parametrize("angle", [30, 45, 60, 135])
@@ -378,3 +424,22 @@ def test_cover_intent_read_from_the_drawing():
     assert W.check(solved) == []  # as written, it holds
     problems = W.check(solved, original)
     assert len(problems) == 1 and "well b.top" in problems[0] and "left bare" in problems[0], problems
+
+
+# ---- every part one piece
+
+
+def test_a_part_drawn_in_pieces_fails_and_joined_passes():
+    m = cabinet_with_drawer()
+    tray = m["parts"][1]["cuboids"][1]
+    tray["min"][1] = 0.5  # a hair behind its front
+    assert any("'drawer' is in 2 pieces" in p and "0.5 mm apart" in p for p in W.check(m))
+    tray["min"][1] = 0
+    assert W.check(m) == []
+
+
+def test_a_cavity_cutting_its_cuboid_in_two_fails():
+    m = model([part("shelf", box("shelf", [0, 0, 0], [100, 50, 20]), box("slot", [40, 0, 0], [60, 50, 10], cavity=True))])
+    assert W.check(m) == []  # a notch from below: still one piece
+    m["parts"][0]["cuboids"][1]["max"][2] = 20
+    assert any("cavity 'slot' cuts 'shelf' in two" in p for p in W.check(m))

@@ -5,16 +5,22 @@ It trusts nothing the solver says about itself (the file's "report" is ignored) 
 FabGuide: it reads the JSON, poses every part with its own rigid transforms and judges the result as a
 product designer would:
 
-- no two parts' material interpenetrates, as modelled, in every configuration and (as warnings, or problems
-  where the part clearly needs the clearance) at 16 poses along the motion to each configuration;
+- no two parts' material interpenetrates, as modelled, in every configuration and at 64 poses along the
+  motion to each configuration; where a fit inside holds, the enclosing part has the room print-in-place cuts
+  for it taken out (what its inner parts sweep on the way to the fit's configuration, in the enclosing part's
+  frame; for a fit as modelled, where they are) and nothing more. A collision on the way is a problem, except
+  between two parts that each turn by a joint of their own (print-in-place bevels each by the other's path: a
+  warning, for the print's check to judge);
+- every part is one piece: its solid cuboids joined face to face, none cut in two by its own cavity;
 - every relationship holds as written in the solved file (cover, fit inside, support, flush, geometric),
   every part a relationship names takes part in it, every lock keeps its value;
-- every opening of the original model (a cavity side on its solid's side, within 0.5 mm as drawn) still lies on
-  the solid's side, and, as modelled, no other part's material closes it: material that crosses the opening's
-  plane within the opening and lies mostly in front of it (a skin of a door sunk behind the face). Parts that
-  belong in the cavity pass through: those mostly behind the plane (a drawer's box) and the inner parts of a fit
-  inside in that cavity. A part in front that only touches (a door, named by a cover or not) does not close it;
-  a cover naming the opening does not excuse a sunk skin of its door;
+- every opening of the original model (a cavity side on its solid's side, within 0.5 mm as drawn, or one a
+  part that fits inside the cavity goes out through in a configuration) still lies on the solid's side, and, as
+  modelled, no other part's material closes it: material that crosses the opening's plane within the opening
+  and lies mostly in front of it (a skin of a door sunk behind the face). Parts that belong in the cavity pass
+  through: those mostly behind the plane (a drawer's box), the inner parts of a fit inside in that cavity,
+  parts that go into it in a configuration, and what is fixed to them or to a part covering it. A part in front
+  that only touches (a door, named by a cover or not) does not close it;
 - every cavity keeps a wall of at least 1 mm on its sides that are not openings;
 - a cover drawn without pairs also holds as the checker reads it from the drawing itself (facing faces within
   twice the cover distance, overlapping by half): a face the solver's inference left out must still be covered;
@@ -25,10 +31,9 @@ the edge where its two named faces meet, right-handed about +x/+y/+z by the angl
 axis; a sliding hinge turns, then shifts; a double pivot's configuration turns the part by the angle about the
 pivot faces' normal through the pole. A part's own joint applies first, then its base's, out to the ground.
 In a configuration, a relationship's faces are the sides of the bounding box of the moved cuboid. Along a
-motion, angles and offsets scale linearly from the modelled pose; a double pivot follows its four-bar (the part
-turns about its pivot, the link the shorter way round the base pivot). A collision on the way is a problem when
-one hinge, slide or double pivot moves the part alone against a part standing still (it needs the clearance),
-else a warning (parts moved together, or a sliding hinge's turn-and-slide, are only sketched by the sampling).
+motion, every joint turns in the first half of the way and slides in the second (angles and offsets scale
+linearly within their half); a double pivot follows its four-bar in the first half (the part turns about its
+pivot, the link the shorter way round the base pivot).
 
 Use: check(solved, original=None, tolerance=1e-4) -> list of problems (empty: passes);
 check_all(...) -> (problems, warnings). From a shell: python3 workslike_checker.py SOLVED [ORIGINAL].
@@ -45,7 +50,8 @@ SIZES = {"width": 0, "depth": 1, "height": 2}
 MINIMUM_WALL = 1.0  # mm, every cavity keeps this much material on a side that is not an opening
 OPENING_HAIR = 0.5  # mm, a cavity side this close to its solid's side as drawn is an opening (a rough mouth)
 LOCK_TOLERANCE = 1e-9  # a lock keeps the user's value exactly: a residue of 3e-7 shows in FreeCAD
-MOTION_SAMPLES = 16
+MOTION_SAMPLES = 64  # poses along each motion, besides its ends
+ROOM_SAMPLES = 64  # poses of a fit inside's inner parts on the way, for the room the print cuts
 
 # --------------------------------------------------------------------------------------------------------
 # small vector algebra
@@ -378,10 +384,13 @@ class Model:
 
     # ---- posing
     def joint_transform(self, name, pose, fraction=1.0):
+        """A joint's move `fraction` of the way to its pose: turns in the first half of the way, slides in the
+        second (docs/formats.md)."""
         j = self.joints[name]
         kind = j["type"]
+        turning, sliding = min(1.0, 2 * fraction), max(0.0, 2 * fraction - 1)
         if kind == "double_pivot":
-            return self.pivot_transform(j, pose, fraction)
+            return self.pivot_transform(j, pose, turning)
         transform = IDENTITY
         angle = offset = 0.0
         if kind == "sliding_hinge":
@@ -396,9 +405,9 @@ class Model:
             through = [0.0, 0.0, 0.0]
             through[sa // 2] = ca.side(sa)
             through[sb // 2] = cb.side(sb)
-            transform = rotation(axis, angle * fraction, through)
+            transform = rotation(axis, angle * turning, through)
         if kind in ("slide", "sliding_hinge"):
-            transform = compose(translation(AXES.index(j["axis"]), offset * fraction), transform)
+            transform = compose(translation(AXES.index(j["axis"]), offset * sliding), transform)
         return transform
 
     def pivot_geometry(self, j, pose):
@@ -480,7 +489,27 @@ class Model:
 
 
 def is_opening(model, cavity, side, hair):
-    return cavity.solid is not None and abs(cavity.side(side) - cavity.solid.side(side)) <= hair
+    """A cavity side on its solid's side (within hair as drawn), or one a part that fits inside the cavity goes
+    out through: posed in a configuration where no fit of it there is measured, half of a cuboid of it that
+    must fit lies beyond that side, across the cavity (a shelf pulled out of an oven)."""
+    if cavity.solid is not None and abs(cavity.side(side) - cavity.solid.side(side)) <= hair:
+        return True
+    n = side // 2
+    fits = [r for r in model.relationships if r.get("type") == "fit_inside" and r.get("cavity") == cavity.name]
+    for r in fits:
+        for part in r.get("inner", []):
+            measured = {configuration_of(f) for f in fits if part in f.get("inner", [])}
+            cuboids = [model.cuboids[c] for c in r["portion"]] if r.get("portion") else model.solids(part)
+            for k in model.configuration_order:
+                if k in measured:
+                    continue
+                for c in cuboids:
+                    lo, hi = model.posed(c, k).bbox
+                    beyond = hi[n] - cavity.hi[n] if side % 2 else cavity.lo[n] - lo[n]
+                    across = all(min(hi[i], cavity.hi[i]) > max(lo[i], cavity.lo[i]) for i in range(3) if i != n)
+                    if across and beyond >= (hi[n] - lo[n]) / 2:
+                        return True
+    return False
 
 
 def where(configuration, fraction=1.0):
@@ -527,46 +556,131 @@ def material_overlap(mp, mq, tol):
     return worst
 
 
-def check_overlaps(model, configuration, tol, problems, fraction=1.0, warnings=None):
+def inverse(transform):
+    r, t = transform
+    rt = [[r[j][i] for j in range(3)] for i in range(3)]
+    return rt, scale(mat_vec(rt, t), -1)
+
+
+def rooms(model, tol):
+    """The room print-in-place cuts for each fit inside (thesis 4.5.1): what its inner parts sweep on the way
+    to the fit's configuration, in the frame of the enclosing part, which may move too (a toolbox's tray drawn
+    through the box's side gets a slot there); for a fit as modelled, the inner parts where they are.
+    {(inner, enclosing): [(lo, hi, transform in the enclosing part's frame)]}. Boxes that slide along one axis
+    are joined into the box they sweep."""
+    out = {}
+    for r in model.relationships:
+        if r.get("type") != "fit_inside":
+            continue
+        k, enclosing = configuration_of(r), r["enclosing"]
+        steps = [0.0] if k is None else [i / ROOM_SAMPLES for i in range(ROOM_SAMPLES + 1)]
+        for inner in r.get("inner", []):
+            boxes = out.setdefault((inner, enclosing), [])
+            for c in model.solids(inner):
+                poses = [compose(inverse(model.part_transform(enclosing, k, f)), model.part_transform(inner, k, f))
+                         for f in steps]
+                boxes.extend(joined_slides(c, poses, tol))
+    return out
+
+
+def joined_slides(c, poses, tol):
+    """Cuboid c at each pose, as (lo, hi, transform); runs of axis-aligned poses that only shift it along one
+    axis, each overlapping the last, as the one box they sweep."""
+    out, run = [], []
+
+    def flush():
+        if run:
+            boxes = [Oriented(c.lo, c.hi, t).bbox for t in run]
+            out.append(([min(b[0][i] for b in boxes) for i in range(3)], [max(b[1][i] for b in boxes) for i in range(3)],
+                        IDENTITY))
+            run.clear()
+
+    for t in poses:
+        if not axis_aligned(t):
+            flush()
+            out.append((c.lo, c.hi, t))
+            continue
+        if run:
+            a, b = Oriented(c.lo, c.hi, run[-1]).bbox, Oriented(c.lo, c.hi, t).bbox
+            first = Oriented(c.lo, c.hi, run[0]).bbox
+            moved = [i for i in range(3) if abs(b[0][i] - first[0][i]) > 1e-9 or abs(b[1][i] - first[1][i]) > 1e-9]
+            if len(moved) > 1 or any(b[0][i] > a[1][i] + tol or a[0][i] > b[1][i] + tol for i in range(3)):
+                flush()
+        run.append(t)
+    flush()
+    return out
+
+
+def fixed_together(model, p, q):
+    """Parts a fixed joint holds together (directly or through other fixed joints): one body."""
+    def root(part):
+        seen = set()
+        while part not in seen:
+            seen.add(part)
+            j = model.part_joint(part)
+            if j is None or model.joints[j]["type"] != "fixed":
+                return part
+            part = model.joints[j].get("base")
+        return part
+    return root(p) == root(q)
+
+
+def turns_in(model, joints, configuration):
+    """Whether any of the joints turns the part in the configuration."""
+    poses = model.configurations[configuration]
+    for j in joints:
+        kind, pose = model.joints[j]["type"], poses[j]
+        angle = float(pose) if kind == "hinge" else float(pose["angle"]) if isinstance(pose, dict) else 0.0
+        if kind in ("hinge", "sliding_hinge", "double_pivot") and abs(angle) > 1e-9:
+            return True
+    return False
+
+
+def check_overlaps(model, configuration, tol, problems, fraction=1.0, warnings=None, room=None):
     """Material of two parts overlapping: every pair as modelled; in a configuration or on the way there,
-    the pairs of which at least one part moves (the others were judged as modelled)."""
+    the pairs that move relative to each other (the others were judged as modelled). A fit inside's
+    enclosing part has the room its inner parts sweep cut out (rooms())."""
     transforms = {p: model.part_transform(p, configuration, fraction) for p in model.parts}
     material = {p: posed_material(model, p, transforms[p]) for p in model.parts}
-    # A fit inside's inner parts and its enclosing part: print-in-place cuts the room the inner parts sweep
-    # along their motion out of the enclosing part (thesis 4.5.1), so they meet its material only where the
-    # fit inside holds them (judged here too: in its cavity, if it names one).
-    judged = {}
-    for r in model.relationships:
-        if r.get("type") == "fit_inside":
-            for inner in r.get("inner", []):
-                judged.setdefault(frozenset((inner, r["enclosing"])), set()).add(configuration_of(r))
+    bounds = {p: ([min(o.bbox[0][i] for _, o, _ in material[p]) for i in range(3)],
+                  [max(o.bbox[1][i] for _, o, _ in material[p]) for i in range(3)]) if material[p] else None
+              for p in model.parts}
+    key = {p: tuple(round(v, 9) for row in transforms[p][0] for v in row) + tuple(round(v, 9) for v in transforms[p][1])
+           for p in model.parts}
+    room = rooms(model, tol) if room is None else room
     for p, q in itertools.combinations(model.parts, 2):
-        pair = frozenset((p, q))
-        if pair in judged and (fraction != 1.0 or configuration not in judged[pair]):
+        if bounds[p] is None or bounds[q] is None or \
+                any(min(bounds[p][1][i], bounds[q][1][i]) - max(bounds[p][0][i], bounds[q][0][i]) <= tol for i in range(3)):
             continue
-        still_p, still_q = is_identity(transforms[p]), is_identity(transforms[q])
-        if configuration is not None and still_p and still_q:
+        if configuration is not None and key[p] == key[q]:
+            continue  # they move together: judged as modelled
+        if fixed_together(model, p, q):
             continue
-        found = material_overlap(material[p], material[q], tol)
+        mp, mq = material[p], material[q]
+        for inner, enclosing in ((p, q), (q, p)):
+            cut = room.get((inner, enclosing))
+            if cut:
+                t = transforms[enclosing]
+                extra = [Oriented(lo, hi, compose(t, rel)) for lo, hi, rel in cut]
+                held = [(s, o, cavities + extra) for s, o, cavities in material[enclosing]]
+                mp, mq = (mp, held) if enclosing == q else (held, mq)
+        found = material_overlap(mp, mq, tol)
         if not found:
             continue
         text = "interpenetration %s: parts '%s' and '%s': %s" % (where(configuration, fraction), p, q, found[1])
         if fraction == 1.0:
             problems.append(text)
             continue
-        # along a motion: a problem where the product clearly needs the clearance (one turn or one shift,
-        # or a four-bar, against a part standing still), else a warning (simultaneous moves are a sketch)
-        needs = None
-        if still_p != still_q:
-            mover = q if still_p else p
-            joints = model.posed_joints(mover, configuration)
-            if len(joints) == 1 and model.joints[joints[0]]["type"] in ("hinge", "slide", "double_pivot"):
-                needs = joints[0]
-        if needs:
-            problems.append("motion collision: %s (joint '%s' moving alone against a part standing still)"
-                            % (text, needs))
-        elif warnings is not None:
-            warnings.append("motion: " + text)
+        # along a motion: the parts' own joints (those they do not share) move one against the other; where
+        # both turn, print-in-place bevels each by the other's path (a warning: the print's check judges it)
+        joints_p, joints_q = model.posed_joints(p, configuration), model.posed_joints(q, configuration)
+        own_p = [j for j in joints_p if j not in joints_q]
+        own_q = [j for j in joints_q if j not in joints_p]
+        if own_p and own_q and turns_in(model, own_p, configuration) and turns_in(model, own_q, configuration):
+            if warnings is not None:
+                warnings.append("motion: " + text)
+            continue
+        problems.append("motion collision: %s (joints %s)" % (text, ", ".join("'%s'" % j for j in own_p + own_q)))
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -862,14 +976,32 @@ def check_geometric(model, r, tol, problems):
 
 
 def exempt_from_closing(model, cavity):
-    """Parts meant to be in the cavity: the inner parts of a fit inside in it (or in its part's box)."""
+    """Parts meant to be in the cavity: the inner parts of a fit inside in it (or in its part's box), and parts
+    that go into it in a configuration (mostly inside it there: a pocket door turned into its bay)."""
     out = set()
     for r in model.relationships:
         if r.get("type") != "fit_inside" or r.get("enclosing") != cavity.part:
             continue
         if r.get("cavity") in (None, cavity.name):
             out.update(r.get("inner", []))
+    covering = {p for r in model.relationships if r.get("type") == "cover" and cavity.part in r.get("covered", [])
+                for p in r.get("covering", [])}
+    out.update(q for q in model.parts for p in covering if q != p and fixed_together(model, q, p))  # its knob
+    room = (cavity.lo, cavity.hi)
+    for part in model.parts:
+        for k in model.configuration_order:
+            transform = model.part_transform(part, k)
+            boxes = [Oriented(c.lo, c.hi, transform).bbox for c in model.solids(part)]
+            volume = sum(math.prod(b[1][i] - b[0][i] for i in range(3)) for b in boxes)
+            within = sum(math.prod(max(0.0, box_thickness_along(box_intersection(b, room), i)) for i in range(3))
+                         for b in boxes)
+            if volume > 0 and 2 * within > volume:
+                out.add(part)
     return out
+
+
+def box_thickness_along(b, i):
+    return b[1][i] - b[0][i]
 
 
 def check_openings_and_walls(model, original, tol, problems):
@@ -910,7 +1042,7 @@ def check_closed(model, cavity, s, tol, problems):
     inward = -1 if s % 2 else 1  # from the plane into the cavity
     exempt = exempt_from_closing(model, cavity)
     for q in model.parts:
-        if q == cavity.part or q in exempt:
+        if q == cavity.part or any(fixed_together(model, q, e) for e in exempt | {cavity.part}):
             continue
         inside = outside = 0.0
         where_inside = None
@@ -921,9 +1053,11 @@ def check_closed(model, cavity, s, tol, problems):
             pieces = [p for p in pieces if box_thickness(p) > tol]  # within the opening
             for own in model.cavities_of(c):  # q's material: its solid minus its own cavities
                 pieces = [r for piece in pieces for r in box_subtract(piece, (own.lo, own.hi), tol)]
-            for lo, hi in pieces:
+            for lo, hi in pieces:  # a piece that crosses the plane: behind it and in front of it
                 behind = max((lo[n] - plane) * inward, (hi[n] - plane) * inward)
                 front = max(-(lo[n] - plane) * inward, -(hi[n] - plane) * inward)
+                if behind <= tol or front <= tol:
+                    continue
                 depth = min(behind, cavity.hi[n] - cavity.lo[n])
                 if depth > inside:
                     inside, where_inside = depth, c
@@ -964,6 +1098,38 @@ def check_structure(model, original, problems):
     for j in original.joints:
         if j not in model.joints:
             problems.append("joint '%s' is missing from the solved model" % j)
+
+
+def check_one_piece(model, tol, problems):
+    """Every part one piece: its solid cuboids joined face to face (or overlapping), none cut through by a
+    cavity of its own."""
+    for part in model.parts:
+        solids = model.solids(part)
+        group = list(range(len(solids)))
+
+        def root(i):
+            while group[i] != i:
+                i = group[i]
+            return i
+
+        for i, j in itertools.combinations(range(len(solids)), 2):
+            a, b = solids[i], solids[j]
+            meet = [min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3)]
+            if min(meet) >= -tol and sorted(meet)[1] > tol:
+                group[root(j)] = root(i)
+        pieces = len({root(i) for i in range(len(solids))})
+        if pieces > 1:
+            apart = min((max(max(a.lo[x] - b.hi[x], b.lo[x] - a.hi[x]) for x in range(3)), a.name, b.name)
+                        for a, b in itertools.combinations(solids, 2) if root(solids.index(a)) != root(solids.index(b)))
+            problems.append("part '%s' is in %d pieces ('%s' and '%s' %s mm apart)"
+                            % (part, pieces, apart[1], apart[2], fmt(apart[0])))
+        for s in solids:
+            for c in model.cavities_of(s):
+                through = [x for x in range(3) if c.lo[x] <= s.lo[x] + tol and c.hi[x] >= s.hi[x] - tol]
+                if len(through) == 2:
+                    x = 3 - sum(through)
+                    if c.lo[x] > s.lo[x] + tol and c.hi[x] < s.hi[x] - tol:
+                        problems.append("part '%s': cavity '%s' cuts '%s' in two" % (part, c.name, s.name))
 
 
 def check_double_pivots(model, tol, problems):
@@ -1012,9 +1178,10 @@ def check_all(solved, original=None, tolerance=1e-4):
     if original is not None:
         check_structure(model, drawn, problems)
         check_locks(model, drawn, problems)
-    check_overlaps(model, None, tolerance, problems)
+    room = rooms(model, tolerance)
+    check_overlaps(model, None, tolerance, problems, room=room)
     for k in model.configuration_order:
-        check_overlaps(model, k, tolerance, problems)
+        check_overlaps(model, k, tolerance, problems, room=room)
     for r in model.relationships:
         kind = r.get("type")
         if kind not in CHECKS:
@@ -1032,9 +1199,10 @@ def check_all(solved, original=None, tolerance=1e-4):
                 pass  # a relationship the solved model lacks: check_structure says so
     check_openings_and_walls(model, drawn, tolerance, problems)
     check_double_pivots(model, tolerance, problems)
+    check_one_piece(model, tolerance, problems)
     for k in model.configuration_order:
         for i in range(1, MOTION_SAMPLES):
-            check_overlaps(model, k, tolerance, problems, fraction=i / MOTION_SAMPLES, warnings=warnings)
+            check_overlaps(model, k, tolerance, problems, fraction=i / MOTION_SAMPLES, warnings=warnings, room=room)
     return dedupe(problems), dedupe(warnings)
 
 
