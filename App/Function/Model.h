@@ -9,6 +9,11 @@
 
 namespace fabguide::function {
 
+/// How far apart (mm) a rough drawing's faces may be and still be read as meant to meet (thesis 4.3): a
+/// cover's faces correspond within it by default, a part's cuboids drawn this far apart are joined, parts
+/// drawn this far into each other may be kept apart another way than the least overlap says.
+constexpr double kInferenceDistance = 5;
+
 /// The six coordinates of a cuboid (thesis 4.1.1): x left→right, y near→far, z bottom→top (FreeCAD's z up).
 enum class Side { Left, Right, Near, Far, Bottom, Top };
 
@@ -159,7 +164,8 @@ struct Cover {
     bool just = false;
     int configuration = -1;
     InferenceNotes notes;
-    double distance = 5;  ///< mm: faces this far apart correspond, seams this far apart are one
+    double distance =
+        kInferenceDistance;  ///< mm: faces this far apart correspond, seams this far apart are one
 };
 
 /// A coordinate the user fixed (an edit): it keeps its value while the rest adapts.

@@ -193,7 +193,8 @@ namespace {
 struct Option {
     Separation separation;
     double cost = 0;
-    bool near = true;  ///< the change is less than half the cuboids' size across it: they are mostly there
+    bool near = true;  ///< the change is at most half the cuboids' size across it (they are mostly there) or
+                       ///< the inference distance (drawn that near)
 };
 
 /// How far a cuboid reaches along a direction in a configuration.
@@ -239,7 +240,9 @@ Option heldIn(const Model& arranged, int held, int holder, int c, int configurat
     std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
     const double cost = outside(arranged, box, walls, configuration);
     const double size = std::min({box[1] - box[0], box[3] - box[2], box[5] - box[4]});
-    return {{held, holder, configuration, {}, std::move(walls)}, cost, cost <= size / 2};
+    return {{held, holder, configuration, {}, std::move(walls)},
+            cost,
+            cost <= std::max(size / 2, kInferenceDistance)};
 }
 
 /// The cavities that could hold one of a and b in the configuration: (held, holder, cavity), those of the
@@ -303,7 +306,9 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
                 const double overlap = evaluate(arranged, projected(arranged, low, k, d, true)) -
                                        evaluate(arranged, projected(arranged, high, k, d, false));
                 const double size = std::min(extent(arranged, low, k, d), extent(arranged, high, k, d));
-                return Option{{low, high, k, d, {}}, std::max(0.0, overlap), overlap <= size / 2};
+                return Option{{low, high, k, d, {}},
+                              std::max(0.0, overlap),
+                              overlap <= std::max(size / 2, kInferenceDistance)};
             });
     std::stable_sort(choices.begin(), choices.end(),
                      [](const Choice& x, const Choice& y) { return x.cost < y.cost - 1e-9; });

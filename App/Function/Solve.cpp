@@ -76,26 +76,45 @@ std::array<double, 3> meeting(const Cuboid& a, const Cuboid& b)
     return meet;
 }
 
-/// A part stays in one piece: each two of its glued cuboids keep touching along the axis they meet least on,
-/// and overlapping along the other two by as much as modelled, or the minimum size ("one piece: drawer"). A
-/// drawer's tray held in its bay stays glued to its front when the bay's mouth moves.
+/// Cuboids a and b keep touching along the axis they meet least on (or overlapping), and overlapping along
+/// the other two by as much as modelled, or the minimum size.
+void glue(std::vector<LinearConstraint>& rows, const Model& model, int a, int b, const std::string& name)
+{
+    const std::array<double, 3> meet = meeting(model.cuboids[a], model.cuboids[b]);
+    const long touching = std::min_element(meet.begin(), meet.end()) - meet.begin();
+    for (int axis = 0; axis < 3; ++axis) {
+        const double least = axis == touching ? 0.0
+                             : meet[axis] > 0 ? std::min(meet[axis], model.minimumSize)
+                                              : model.minimumSize;
+        for (const auto& [high, low] : {std::pair{a, b}, std::pair{b, a}})  // high's top past low's bottom
+            rows.push_back(
+                {{{6 * high + 2 * axis + 1, 1.0}, {6 * low + 2 * axis, -1.0}}, least, kInfinity, name});
+    }
+}
+
+/// A part stays in one piece: each two of its glued cuboids stay glued ("one piece: drawer"). A drawer's tray
+/// held in its bay stays glued to its front when the bay's mouth moves.
 void onePiece(std::vector<LinearConstraint>& rows, const Model& model, const Part& part)
 {
-    for (const Pieces::Glued& g : piecesOf(model, part).glued) {
-        const std::array<double, 3> meet = meeting(model.cuboids[g.a], model.cuboids[g.b]);
-        const long touching = std::min_element(meet.begin(), meet.end()) - meet.begin();
-        for (int axis = 0; axis < 3; ++axis) {
-            const double least = axis == touching ? 0.0
-                                 : meet[axis] > 0 ? std::min(meet[axis], model.minimumSize)
-                                                  : model.minimumSize;
-            for (const auto& [high, low] :
-                 {std::pair{g.a, g.b}, std::pair{g.b, g.a}})  // high's top past low's bottom
-                rows.push_back({{{6 * high + 2 * axis + 1, 1.0}, {6 * low + 2 * axis, -1.0}},
-                                least,
-                                kInfinity,
-                                "one piece: " + part.name});
-        }
-    }
+    for (const Pieces::Glued& g : piecesOf(model, part).glued)
+        glue(rows, model, g.a, g.b, "one piece: " + part.name);
+}
+
+/// A part a fixed joint holds prints as one body with its base: its nearest cuboid and the base's stay glued
+/// (a knob drawn a hair off its door ends on it; one drawn into it stays in it).
+void heldFixed(std::vector<LinearConstraint>& rows, const Model& model, const Joint& joint)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    int a = -1, b = -1;
+    for (int c : model.parts[joint.part].cuboids)
+        for (int d : model.parts[joint.base].cuboids)
+            if (!model.cuboids[c].cavity() && !model.cuboids[d].cavity()) {
+                const std::array<double, 3> meet = meeting(model.cuboids[c], model.cuboids[d]);
+                if (const double apart = -*std::min_element(meet.begin(), meet.end()); apart < nearest)
+                    std::tie(nearest, a, b) = std::tuple{apart, c, d};
+            }
+    if (a >= 0)
+        glue(rows, model, a, b, joint.name);
 }
 
 /// The constraints that keep a pair clear (Separation.h), in its configuration.
@@ -276,9 +295,9 @@ Pieces piecesOf(const Model& model, const Part& part)
         const std::string pair = "'" + model.cuboids[solids[a]].name + "' and '" +
                                  model.cuboids[solids[b]].name + "' drawn " + millimetres(nearest) +
                                  " mm apart";
-        if (nearest > kJoinDistance) {
+        if (nearest > kInferenceDistance) {
             out.error =
-                part.name + ": " + pair + ", farther than the " + millimetres(kJoinDistance) +
+                part.name + ": " + pair + ", farther than the " + millimetres(kInferenceDistance) +
                 " mm within which a part's cuboids are joined: a part prints as one piece (join them, "
                 "or make each its own part)";
             break;
@@ -365,9 +384,11 @@ std::vector<LinearConstraint> constraints(const Model& model)
     }
     for (const Cover& c : model.cover)
         coverConstraints(rows, model, c);
-    for (const Joint& j : model.joints)  // a double pivot's faces stay in one plane (thesis 4.1.2)
-        if (j.type == Joint::Type::DoublePivot)
+    for (const Joint& j : model.joints)
+        if (j.type == Joint::Type::DoublePivot)  // a double pivot's faces stay in one plane (thesis 4.1.2)
             order(rows, model, j.name, -1, j.pivotFace, j.basePivotFace, true);
+        else if (j.type == Joint::Type::Fixed)
+            heldFixed(rows, model, j);
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);
         rows.push_back({{{variable(lock.face), 1.0}}, value, value, "lock: " + faceName(model, lock.face)});
@@ -477,9 +498,10 @@ size_t separateNear(const Model& arranged, const Model& model, double margin, in
         }
     for (const auto& key : grown) {
         const auto& [a, b, along] = key;
-        std::vector<int> judged = apart.poses[key];  // and the rest of the motion
+        std::vector<int> judged = apart.poses[key];  // and the rest of the motion where they are kept apart
         for (int k = 0; along >= 0 && k < static_cast<int>(model.configurations.size()); ++k)
-            if ((k == along || model.configurations[k].along == along) &&
+            if ((k == along || (model.configurations[k].along == along &&
+                                !turnEach(model, partOf(model, a), partOf(model, b), k))) &&
                 std::find(judged.begin(), judged.end(), k) == judged.end())
                 judged.push_back(k);
         apart.choices[key] = choicesAlong(arranged, a, b, apart.poses[key], judged);

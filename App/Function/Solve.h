@@ -16,13 +16,9 @@ inline int variable(const Face& face)
     return 6 * face.cuboid + static_cast<int>(face.side);
 }
 
-/// How far apart a part's cuboids may be drawn and still be joined (issue 30): the distance within which
-/// inference links faces (Cover::distance's default).
-constexpr double kJoinDistance = 5;
-
 /// How a part's solid cuboids hold together: each pair that touches or overlaps as modelled, and where the
-/// part is drawn in pieces, the nearest two cuboids of two pieces, joined when at most kJoinDistance apart (a
-/// tray drawn a hair off its front: a note says so); farther apart, an error naming the part.
+/// part is drawn in pieces, the nearest two cuboids of two pieces, joined when at most kInferenceDistance
+/// apart (a tray drawn a hair off its front: a note says so); farther apart, an error naming the part.
 struct Pieces {
     struct Glued {
         int a = 0, b = 0;
