@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -76,16 +77,33 @@ std::vector<TopoDS_Shape> partSolids(const Model& m, const std::vector<Coordinat
     return shapes;
 }
 
-/// Cavities (4.5.1): what each inner part sweeps, with its clearance, leaves the enclosing part.
+/// Whether part p moves on its way to configuration k.
+bool movesIn(const Model& m, int p, int k)
+{
+    return function::jointMovingIn(m, p, k) >= 0;
+}
+
+/// Cavities (4.5.1): what each inner part sweeps, with its clearance, on the way to its fit's configuration
+/// leaves the enclosing part, swept in the enclosing part's frame when that moves too (a rack lifted in a
+/// pull-out that slides out makes room in the pull-out, not a window along its path); a fit in the enclosing
+/// part's box as modelled leaves the inner part's place (a battery drawn in a phone's solid body).
 void cutCavities(const Model& m, const std::vector<Coordinates>& at, double g,
                  std::vector<TopoDS_Shape>& shapes, Printable& out)
 {
     for (const function::FitInside& f : m.fitInside) {
-        if (f.configuration < 0)
-            continue;
+        if (f.configuration < 0 && f.cavity >= 0)
+            continue;  // its cavity is its room
         for (int p : f.inner) {
             const Work on(m.parts[f.enclosing].name);
-            const std::vector<TopoDS_Shape> swept = sweep(m, p, f.configuration, boxesOf(m, p, at, g));
+            const std::vector<Coordinates> boxes = boxesOf(m, p, at, g);
+            std::vector<TopoDS_Shape> swept;
+            if (f.configuration < 0)
+                std::transform(boxes.begin(), boxes.end(), std::back_inserter(swept),
+                               [](const Coordinates& b) { return box(b); });
+            else if (movesIn(m, f.enclosing, f.configuration))
+                swept = pathRelative(m, f.configuration, p, f.enclosing, boxes);
+            else
+                swept = sweep(m, p, f.configuration, boxes);
             out.sweeps.push_back(compound(swept));
             shapes[f.enclosing] = cut(shapes[f.enclosing], swept);
         }

@@ -150,11 +150,15 @@ std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
             return turnedThenShifted(boxes, hingeAxis(m, m.joints[j]),
                                      sign * poseOf(m, j, k)->angle * kPi / 180, gp_Vec(0, 0, 0));
     const TopoDS_Shape shape = solid(boxes);
+    const auto relative = [&](double t) {
+        return partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t);
+    };
     std::vector<TopoDS_Shape> path;
-    for (int step = 1; step <= 40; ++step) {
-        const double t = step <= 32 ? step / 64.0 : 0.5 + (step - 32) / 16.0;
-        path.push_back(moved(shape, partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t)));
-    }
+    for (int step = 1; step <= 32; ++step)
+        path.push_back(moved(shape, relative(step / 64.0)));
+    // The second half only slides, so relative to b, a shifts in a straight line: the prism it sweeps.
+    const gp_Vec by((relative(1) * relative(0.5).Inverted()).TranslationPart());
+    path.push_back(turnedThenShifted(moved(shape, relative(0.5)), gp_Ax1(), 0, by));
     return path;
 }
 
