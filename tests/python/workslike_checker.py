@@ -11,7 +11,8 @@ product designer would:
   frame; for a fit as modelled, where they are) and nothing more. A collision on the way is a problem, except
   between two parts that each turn by a joint of their own (print-in-place bevels each by the other's path: a
   warning, for the print's check to judge);
-- every part is one piece: its solid cuboids joined face to face, none cut in two by its own cavity;
+- every part is one piece: its solid cuboids joined face to face, none cut in two by its own cavity, and a part
+  a fixed joint holds joined to its base;
 - every relationship holds as written in the solved file (cover, fit inside, support, flush, geometric),
   every part a relationship names takes part in it, every lock keeps its value;
 - every opening of the original model (a cavity side on its solid's side, within 0.5 mm as drawn, or one a
@@ -424,6 +425,8 @@ class Model:
         end_dir = math.atan2(end[w] - b[w], end[u] - b[u])
         link = math.degrees(end_dir - start_dir)
         link = (link + 180.0) % 360.0 - 180.0  # the link turns the shorter way round
+        if abs(link) > 180.0 - 1e-3:  # half a turn either way (to a thousandth of a degree): as the part turns
+            link = math.copysign(180.0, angle)
         return normal, a, b, pole, angle, end, link
 
     def pivot_transform(self, j, pose, fraction):
@@ -1123,6 +1126,14 @@ def check_one_piece(model, tol, problems):
                         for a, b in itertools.combinations(solids, 2) if root(solids.index(a)) != root(solids.index(b)))
             problems.append("part '%s' is in %d pieces ('%s' and '%s' %s mm apart)"
                             % (part, pieces, apart[1], apart[2], fmt(apart[0])))
+        j = model.part_joint(part)
+        if j and model.joints[j]["type"] == "fixed":  # one body with its base: joined face to face
+            base = model.solids(model.joints[j]["base"])
+            if not any(min(min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3)) >= -tol and
+                       sorted(min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3))[1] > tol
+                       for a in solids for b in base):
+                problems.append("part '%s' does not touch '%s', which fixed joint '%s' holds it to"
+                                % (part, model.joints[j]["base"], j))
         for s in solids:
             for c in model.cavities_of(s):
                 through = [x for x in range(3) if c.lo[x] <= s.lo[x] + tol and c.hi[x] >= s.hi[x] - tol]
