@@ -187,7 +187,13 @@ struct Model {
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces
     double minimumWall = 1;  ///< mm, the least wall around a cavity on a side that is not an opening
+    /// Derived for speed by indexed(): the part of each cuboid and the first joint of each part (-1: none).
+    /// Left empty (a model built by hand), partOf and jointMoving search instead.
+    std::vector<int> partOfCuboid, jointOfPart;
 };
+
+/// The model with partOfCuboid and jointOfPart filled in (the reader returns it so).
+Model indexed(Model model);
 
 /// "lid.top": how a face is named in files and messages.
 std::string faceName(const Model& model, const Face& face);

@@ -119,6 +119,8 @@ std::pair<double, double> cosSin(double degrees)
 
 int jointMoving(const Model& model, int part)
 {
+    if (model.jointOfPart.size() == model.parts.size())
+        return model.jointOfPart[part];
     for (size_t j = 0; j < model.joints.size(); ++j)
         if (model.joints[j].part == part)
             return static_cast<int>(j);
@@ -162,6 +164,8 @@ int carrierOf(const Model& model, int part)
 
 int partOf(const Model& model, int cuboid)
 {
+    if (model.partOfCuboid.size() == model.cuboids.size())
+        return model.partOfCuboid[cuboid];
     for (size_t p = 0; p < model.parts.size(); ++p)
         for (int c : model.parts[p].cuboids)
             if (c == cuboid)
@@ -177,6 +181,28 @@ std::array<Expression, 6> posedBox(const Model& model, int cuboid, int configura
     for (const Move& m : chain(model, cuboid, configuration))
         box = moved(m, box);
     return box;
+}
+
+std::vector<int> owners(const Model& model)
+{
+    if (model.partOfCuboid.size() == model.cuboids.size())
+        return model.partOfCuboid;
+    std::vector<int> owner(model.cuboids.size(), -1);
+    for (size_t p = 0; p < model.parts.size(); ++p)
+        for (int c : model.parts[p].cuboids)
+            owner[c] = static_cast<int>(p);
+    return owner;
+}
+
+Model indexed(Model model)
+{
+    model.partOfCuboid.clear();
+    model.jointOfPart.clear();
+    model.partOfCuboid = owners(model);
+    model.jointOfPart.assign(model.parts.size(), -1);
+    for (size_t j = model.joints.size(); j-- > 0;)  // the first joint of each part
+        model.jointOfPart[model.joints[j].part] = static_cast<int>(j);
+    return model;
 }
 
 Expression posed(const Model& model, const Face& face, int configuration)

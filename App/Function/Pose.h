@@ -6,6 +6,7 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace fabguide::function {
 
@@ -34,6 +35,9 @@ std::array<Direction, 3> posedAxes(const Model& model, int cuboid, int configura
 
 /// The part a cuboid belongs to.
 int partOf(const Model& model, int cuboid);
+
+/// The part of each cuboid, by cuboid (partOf for all at once).
+std::vector<int> owners(const Model& model);
 
 /// The first joint that moves part p (its own, not its base's), or -1.
 int jointMoving(const Model& model, int part);

@@ -156,13 +156,14 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
         }
     std::sort(solids.begin(), solids.end(), [&](int a, int b) { return boxes[a][0] < boxes[b][0]; });
     const auto room = rooms(model);
+    const std::vector<int> owner = owners(model);
     // A fit inside's inner and enclosing parts may overlap where print-in-place cuts the room the inner parts
     // sweep (thesis 4.5.1), but only an inner cuboid carved out of an enclosing one (mostly inside it where
     // the fit holds): one between a frame's posts stays clear of them. Elsewhere they are kept apart as any
     // two parts.
     const auto exempt = [&](int a, int b, int pa, int pb) {
         for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
-            const auto found = room.find({partOf(model, inner), partOf(model, enclosing), configuration});
+            const auto found = room.find({owner[inner], owner[enclosing], configuration});
             if (found != room.end())
                 for (int k : found->second)
                     if (mostlyInside(boxOf(model, inner, k), boxOf(model, enclosing, k)))
@@ -174,7 +175,7 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
     for (size_t i = 0; i < solids.size(); ++i)
         for (size_t k = i + 1; k < solids.size() && boxes[solids[k]][0] < boxes[solids[i]][1] + margin; ++k) {
             const int a = solids[i], b = solids[k];
-            const int pa = partOf(model, a), pb = partOf(model, b);
+            const int pa = owner[a], pb = owner[b];
             bool near = !exempt(a, b, pa, pb);
             for (int axis = 1; axis < 3 && near; ++axis)
                 near = std::min(boxes[a][2 * axis + 1], boxes[b][2 * axis + 1]) -
@@ -197,37 +198,35 @@ struct Option {
                        ///< the inference distance (drawn that near)
 };
 
-/// How far a cuboid reaches along a direction in a configuration.
-double extent(const Model& arranged, int cuboid, int configuration, const Direction& d)
-{
-    return evaluate(arranged, projected(arranged, cuboid, configuration, d, true)) -
-           evaluate(arranged, projected(arranged, cuboid, configuration, d, false));
-}
-
 /// The separating-axis test (4.2.2's packing, made exact for turned parts): the order that overlaps least.
-Option keptOut(const Model& arranged, int a, int b, int configuration)
+Option keptOut(const Model& arranged, int a, int b, int configuration, const Box& boxA, const Box& boxB)
 {
-    const bool exact = exactlyPosed(arranged, partOf(arranged, a), configuration) &&
-                       exactlyPosed(arranged, partOf(arranged, b), configuration);
-    std::vector<Direction> directions{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    if (!exact) {
+    Option best{{}, std::numeric_limits<double>::infinity()};
+    const auto consider = [&](int low, int high, const Direction& d, double overlap) {
+        if (overlap < best.cost - 1e-9)
+            best = {{low, high, configuration, d, {}}, overlap};
+    };
+    for (int axis = 0; axis < 3; ++axis) {  // along x, y, z the posed boxes' sides are the projections
+        const Direction d{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0};
+        consider(a, b, d, boxA[2 * axis + 1] - boxB[2 * axis]);
+        consider(b, a, d, boxB[2 * axis + 1] - boxA[2 * axis]);
+    }
+    if (!exactlyPosed(arranged, partOf(arranged, a), configuration) ||
+        !exactlyPosed(arranged, partOf(arranged, b), configuration)) {
         const auto axesA = posedAxes(arranged, a, configuration),
                    axesB = posedAxes(arranged, b, configuration);
-        directions.insert(directions.end(), axesA.begin(), axesA.end());
+        std::vector<Direction> directions(axesA.begin(), axesA.end());
         directions.insert(directions.end(), axesB.begin(), axesB.end());
         for (const Direction& u : axesA)
             for (const Direction& v : axesB)
                 if (const Direction n = normalised(cross(u, v)); n != Direction{0, 0, 0})
                     directions.push_back(n);
+        for (const Direction& d : directions)
+            for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}})
+                consider(low, high, d,
+                         evaluate(arranged, projected(arranged, low, configuration, d, true)) -
+                             evaluate(arranged, projected(arranged, high, configuration, d, false)));
     }
-    Option best{{}, std::numeric_limits<double>::infinity()};
-    for (const Direction& d : directions)
-        for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}}) {
-            const double overlap = evaluate(arranged, projected(arranged, low, configuration, d, true)) -
-                                   evaluate(arranged, projected(arranged, high, configuration, d, false));
-            if (overlap < best.cost - 1e-9)
-                best = {{low, high, configuration, d, {}}, overlap};
-        }
     best.cost = std::max(0.0, best.cost);
     return best;
 }
@@ -263,7 +262,8 @@ std::vector<std::array<int, 3>> holders(const Model& arranged, int a, int b, int
 
 Separation inferSeparation(const Model& arranged, int a, int b, int configuration)
 {
-    Option best = keptOut(arranged, a, b, configuration);
+    Option best = keptOut(arranged, a, b, configuration, boxOf(arranged, a, configuration),
+                          boxOf(arranged, b, configuration));
     for (const auto& [held, holder, c] : holders(arranged, a, b, configuration))
         if (Option in = heldIn(arranged, held, holder, c, configuration); in.cost < best.cost)
             best = std::move(in);
@@ -294,19 +294,24 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
         if (std::none_of(choices.begin(), choices.end(), same))
             choices.push_back(std::move(c));
     };
-    consider([&](int k) { return keptOut(arranged, a, b, k); });
+    std::map<int, std::pair<Box, Box>> at;  // the posed boxes of a and b in each pose
+    for (int k : judged)
+        at[k] = {boxOf(arranged, a, k), boxOf(arranged, b, k)};
+    consider([&](int k) { return keptOut(arranged, a, b, k, at[k].first, at[k].second); });
     std::set<std::array<int, 3>> tried;
     for (int k : judged)
         for (const std::array<int, 3>& h : holders(arranged, a, b, k))
             if (tried.insert(h).second)
                 consider([&](int pose) { return heldIn(arranged, h[0], h[1], h[2], pose); });
-    for (const Direction& d : {Direction{1, 0, 0}, Direction{0, 1, 0}, Direction{0, 0, 1}})
-        for (const auto& [low, high] : {std::pair{a, b}, std::pair{b, a}})
+    for (int axis = 0; axis < 3; ++axis)
+        for (bool aLow : {true, false})
             consider([&](int k) {
-                const double overlap = evaluate(arranged, projected(arranged, low, k, d, true)) -
-                                       evaluate(arranged, projected(arranged, high, k, d, false));
-                const double size = std::min(extent(arranged, low, k, d), extent(arranged, high, k, d));
-                return Option{{low, high, k, d, {}},
+                const Box &low = aLow ? at[k].first : at[k].second, &high = aLow ? at[k].second : at[k].first;
+                const double overlap = low[2 * axis + 1] - high[2 * axis];
+                const double size =
+                    std::min(low[2 * axis + 1] - low[2 * axis], high[2 * axis + 1] - high[2 * axis]);
+                const Direction d{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0};
+                return Option{{aLow ? a : b, aLow ? b : a, k, d, {}},
                               std::max(0.0, overlap),
                               overlap <= std::max(size / 2, kInferenceDistance)};
             });

@@ -480,14 +480,14 @@ size_t separateNear(const Model& arranged, const Model& model, double margin, in
 {
     std::set<Apart::Key> grown;
     size_t added = 0;
+    const std::vector<int> partOf = owners(model);
     for (int k = -1; k < configurations; ++k)
         for (const auto& [a, b] : nearPairs(model, k, margin)) {
-            if (k >= 0 && jointMovingIn(model, partOf(model, a), k) < 0 &&
-                jointMovingIn(model, partOf(model, b), k) < 0)
+            if (k >= 0 && jointMovingIn(model, partOf[a], k) < 0 && jointMovingIn(model, partOf[b], k) < 0)
                 continue;  // neither moves there: kept apart as modelled
             const int along =
                 k >= 0 && model.configurations[k].along >= 0 ? model.configurations[k].along : k;
-            if (along != k && turnEach(model, partOf(model, a), partOf(model, b), k))
+            if (along != k && turnEach(model, partOf[a], partOf[b], k))
                 continue;  // two doors meeting as they swing: print-in-place bevels each by the other's path
             std::vector<int>& poses = apart.poses[{a, b, along}];
             if (std::find(poses.begin(), poses.end(), k) == poses.end()) {
@@ -500,8 +500,8 @@ size_t separateNear(const Model& arranged, const Model& model, double margin, in
         const auto& [a, b, along] = key;
         std::vector<int> judged = apart.poses[key];  // and the rest of the motion where they are kept apart
         for (int k = 0; along >= 0 && k < static_cast<int>(model.configurations.size()); ++k)
-            if ((k == along || (model.configurations[k].along == along &&
-                                !turnEach(model, partOf(model, a), partOf(model, b), k))) &&
+            if ((k == along ||
+                 (model.configurations[k].along == along && !turnEach(model, partOf[a], partOf[b], k))) &&
                 std::find(judged.begin(), judged.end(), k) == judged.end())
                 judged.push_back(k);
         apart.choices[key] = choicesAlong(arranged, a, b, apart.poses[key], judged);

@@ -617,7 +617,7 @@ function::Model readWorkslike(const nlohmann::json& document)
     const nlohmann::json& locks = root.array("locks", true);
     for (size_t l = 0; l < locks.size(); ++l)
         model.locks.push_back({face(model, locks[l], at("locks", l))});
-    return model;
+    return function::indexed(std::move(model));
 }
 
 nlohmann::json workslikeToJson(const function::Model& model, const function::SolveResult* result)
