@@ -10,18 +10,22 @@
 #   make test-clang      the C++ tests built with clang, warnings as errors, into build-clang/
 #   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
 #   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
+#   make fuzz-products   PRODUCTS generated products (tests/gen) solved and checked, PRINTS of them printed too
 SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
 MOD_DIR ?=
 FUZZ_SECONDS ?= 60
+PRODUCTS ?= 300
+PRINTS ?= 0
+FIRST ?= 0
 # The clang builds check the code, not its speed: -O1 compiles in half the time of -O3 and keeps the sanitizers fast.
 CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFABGUIDE_WERROR=ON
 SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) -DFABGUIDE_SANITIZE=ON >/dev/null
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
 .PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
-	clang-deps
+	clang-deps fuzz-products
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -63,6 +67,10 @@ fuzz: clang-deps
 	$(SANITIZE_CONFIGURE)
 	cmake --build build-sanitize -j$(JOBS) --target fuzz_pack fuzz_workslike fuzz_flatpack
 	tests/fuzz/run $(FUZZ_SECONDS) build-sanitize
+
+fuzz-products: all
+	/usr/bin/python3 tests/gen/fuzz_products.py --products $(PRODUCTS) --prints $(PRINTS) --first $(FIRST) \
+	  --cli $(BUILD)/fabguide --keep $(BUILD)/fuzz-products
 
 bench: all
 	python3 tests/bench/benchmarks.py
