@@ -189,13 +189,19 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
 
 namespace {
 
+/// Whether a change is one a rough drawing explains: at most half the size across it (the cuboid is mostly
+/// there already), or less than twice the inference distance (two faces each drawn that far off).
+bool nearEnough(double change, double size)
+{
+    return change <= size / 2 || change < 2 * kInferenceDistance;
+}
+
 /// A way of keeping a pair apart in one pose, and what it changes there (how far they overlap, or how far the
 /// held cuboid reaches past the walls).
 struct Option {
     Separation separation;
     double cost = 0;
-    bool near = true;  ///< the change is at most half the cuboids' size across it (they are mostly there) or
-                       ///< the inference distance (drawn that near)
+    bool near = true;  ///< nearEnough: a change the drawing's roughness explains
 };
 
 /// The separating-axis test (4.2.2's packing, made exact for turned parts): the order that overlaps least.
@@ -239,9 +245,7 @@ Option heldIn(const Model& arranged, int held, int holder, int c, int configurat
     std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
     const double cost = outside(arranged, box, walls, configuration);
     const double size = std::min({box[1] - box[0], box[3] - box[2], box[5] - box[4]});
-    return {{held, holder, configuration, {}, std::move(walls)},
-            cost,
-            cost <= std::max(size / 2, kInferenceDistance)};
+    return {{held, holder, configuration, {}, std::move(walls)}, cost, nearEnough(cost, size)};
 }
 
 /// The cavities that could hold one of a and b in the configuration: (held, holder, cavity), those of the
@@ -313,7 +317,7 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
                 const Direction d{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0};
                 return Option{{aLow ? a : b, aLow ? b : a, k, d, {}},
                               std::max(0.0, overlap),
-                              overlap <= std::max(size / 2, kInferenceDistance)};
+                              nearEnough(overlap, size)};
             });
     std::stable_sort(choices.begin(), choices.end(),
                      [](const Choice& x, const Choice& y) { return x.cost < y.cost - 1e-9; });

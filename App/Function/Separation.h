@@ -44,8 +44,8 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
 struct Choice {
     std::vector<Separation> separations;
     double cost = 0;
-    bool near = true;  ///< in every pose, each is at most half its size (or kInferenceDistance) from where
-                       ///< this way keeps it
+    bool near = true;  ///< in every pose, each is at most half its size, or less than twice
+                       ///< kInferenceDistance, from where this way keeps it
 };
 
 /// The ways of keeping a and b apart in each of `poses` (poses of one motion: a configuration and poses on

@@ -1,7 +1,7 @@
 """Regenerates docs/benchmarks.md from the build tree (`make bench`): strip packing against the known
 optima, shop-scale jobs of rectangles, core timings (Google Benchmark: docking pass, works-like solve) and Docking vs Bottom-Left
 (thesis Fig. 5.20a), zero-waste design exploration (Table 5.1, Fig. 5.20c-d), the sloppy works-like suite,
-print-in-place on the Table 4.1 examples."""
+generated products (solved, checked, printed), print-in-place on the Table 4.1 examples."""
 import datetime
 import json
 import os
@@ -14,6 +14,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 BUILD = os.path.join(ROOT, "build")
 sys.path.insert(0, HERE)
 import esicup_benchmark  # noqa: E402
+import generated_products_benchmark  # noqa: E402
 import optimise_benchmark  # noqa: E402
 import printable_benchmark  # noqa: E402
 import shop_scale_benchmark  # noqa: E402
@@ -66,6 +67,7 @@ def main():
                 core_timings(), "", docking_study(), "",
                 optimise_benchmark.table(optimise_benchmark.run(BUILD), optimise_benchmark.suite(BUILD)), "",
                 workslike_suite_benchmark.table(workslike_suite_benchmark.run(BUILD)), "",
+                generated_products_benchmark.section(BUILD), "",
                 printable_benchmark.table(printable_benchmark.run(BUILD)), "",
                 printable_benchmark.suite_table(printable_benchmark.suite(BUILD)), "",
                 printable_benchmark.walls(BUILD), ""]

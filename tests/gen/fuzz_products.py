@@ -139,6 +139,17 @@ def print_and_check(cli, path, folder):
     return None
 
 
+def run_all(seeds, cli=CLI, prints=0, jobs=None, keep=None):
+    """Every seed judged (`prints` of them, evenly spread, printed too), on `jobs` processes: (results, the
+    seeds printed, seconds)."""
+    every = max(1, len(seeds) // prints) if prints else 0
+    work = [(s, cli, bool(every) and k % every == 0, keep) for k, s in enumerate(seeds)]
+    started = time.time()
+    with multiprocessing.Pool(jobs or os.cpu_count() or 1) as pool:
+        results = pool.starmap(judge, work, chunksize=1)
+    return results, {s for s, _, p, _ in work if p}, time.time() - started
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--products", type=int, default=300)
@@ -151,12 +162,8 @@ def main(argv):
     parser.add_argument("--json", default="", help="write the results there")
     args = parser.parse_args(argv)
     seeds = [int(s) for s in args.seeds.split(",")] if args.seeds else list(range(args.first, args.first + args.products))
-    every = max(1, len(seeds) // args.prints) if args.prints else 0
-    jobs = [(s, args.cli, bool(every) and k % every == 0, args.keep or None) for k, s in enumerate(seeds)]
-    started = time.time()
-    with multiprocessing.Pool(args.jobs) as pool:
-        results = pool.starmap(judge, jobs, chunksize=1)
-    report(results, jobs, time.time() - started)
+    results, printed, seconds = run_all(seeds, args.cli, args.prints, args.jobs, args.keep or None)
+    print("\n".join(summary(results, printed, seconds)))
     if args.json:
         with open(args.json, "w") as f:
             json.dump([{"seed": s, "class": k, "detail": d, "seconds": t, "features": fe, "contradictory": co}
@@ -164,33 +171,34 @@ def main(argv):
     return 1 if any(k for _, k, *_ in results) else 0
 
 
-def report(results, jobs, seconds):
-    printed = {s for s, _, p, _ in jobs if p}
+def rate(passed, total):
+    return "%d of %d (%.1f %%)" % (passed, total, 100.0 * passed / max(1, total))
+
+
+def summary(results, printed, seconds):
+    """The pass rates and a table of failures by class, each with the seeds that reproduce it."""
     contradictory = [r for r in results if r[5]]
     solvable = [r for r in results if not r[5]]
     failed = collections.defaultdict(list)
     for seed, kind, detail, *_ in results:
         if kind:
             failed[kind].append((seed, detail))
+
     def passed(rs):
         return sum(1 for r in rs if not r[1] or r[1].startswith("print"))
+
     prints = [r for r in results if r[0] in printed]
-    print("%d products (%d solvable, %d contradictory), %d printed, %.0f s" % (len(results), len(solvable),
-                                                                             len(contradictory), len(prints), seconds))
-    print("solvable solved and checked: %d of %d (%.1f %%)" % (passed(solvable), len(solvable),
-                                                               100.0 * passed(solvable) / max(1, len(solvable))))
-    print("contradictory refused naming the conflict: %d of %d (%.1f %%)" % (
-        passed(contradictory), len(contradictory), 100.0 * passed(contradictory) / max(1, len(contradictory))))
-    good_prints = sum(1 for r in prints if not r[1])
-    print("printed with every check passing: %d of %d (%.1f %%)" % (good_prints, len(prints),
-                                                                   100.0 * good_prints / max(1, len(prints))))
-    print()
-    print("| class | count | seeds |")
-    print("|---|---|---|")
+    lines = ["%d products (%d solvable, %d contradictory), %d printed, %.0f s" % (
+        len(results), len(solvable), len(contradictory), len(prints), seconds),
+        "solvable solved and checked: " + rate(passed(solvable), len(solvable)),
+        "contradictory refused naming the conflict: " + rate(passed(contradictory), len(contradictory)),
+        "printed with every check passing: " + rate(sum(1 for r in prints if not r[1]), len(prints)),
+        "", "| class | count | seeds |", "|---|---|---|"]
+    lines += ["| %s | %d | %s |" % (kind, len(cases), " ".join(str(s) for s, _ in cases[:12]))
+              for kind, cases in sorted(failed.items(), key=lambda kv: -len(kv[1]))]
     for kind, cases in sorted(failed.items(), key=lambda kv: -len(kv[1])):
-        print("| %s | %d | %s |" % (kind, len(cases), " ".join(str(s) for s, _ in cases[:12])))
-    for kind, cases in sorted(failed.items(), key=lambda kv: -len(kv[1])):
-        print("\n%s, e.g. seed %d:\n  %s" % (kind, cases[0][0], cases[0][1][:600].replace("\n", "\n  ")))
+        lines += ["", "%s, e.g. seed %d:" % (kind, cases[0][0]), "  " + cases[0][1][:600].replace("\n", "\n  ")]
+    return lines
 
 
 if __name__ == "__main__":
