@@ -670,7 +670,8 @@ void keepPivotsOnFaces(const Model& before, Model& after)
                     const int a = (axisOf(face.side) + 1 + k) % 3;
                     const auto &was = before.cuboids[face.cuboid].coordinates,
                                &now = after.cuboids[face.cuboid].coordinates;
-                    (*offsets)[k] *= (now[2 * a + 1] - now[2 * a]) / (was[2 * a + 1] - was[2 * a]);
+                    if (const double size = was[2 * a + 1] - was[2 * a]; size > 0)
+                        (*offsets)[k] *= (now[2 * a + 1] - now[2 * a]) / size;
                 }
 }
 
