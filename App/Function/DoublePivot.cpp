@@ -521,7 +521,7 @@ std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point&
     double link = std::remainder(
         (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
     if (std::abs(link) >
-        180 - 1e-3)  // half a turn either way (to a thousandth of a degree): as the part turns
+        180 - 1e-3)  // half a turn either way, to a thousandth of a degree: as the part turns
         link = std::copysign(180.0, degrees);
     return {link, degrees - link};
 }

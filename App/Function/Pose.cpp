@@ -196,8 +196,7 @@ std::vector<int> owners(const Model& model)
 
 Model indexed(Model model)
 {
-    model.partOfCuboid.clear();
-    model.jointOfPart.clear();
+    model.partOfCuboid.clear();  // so that owners finds them anew
     model.partOfCuboid = owners(model);
     model.jointOfPart.assign(model.parts.size(), -1);
     for (size_t j = model.joints.size(); j-- > 0;)  // the first joint of each part

@@ -237,26 +237,25 @@ Option keptOut(const Model& arranged, int a, int b, int configuration, const Box
     return best;
 }
 
-/// `held` inside cavity c of the other part's cuboid (a drawer in its compartment; a door turning into its
-/// bay: its box, turned by other than quarter turns, bounds it).
-Option heldIn(const Model& arranged, int held, int holder, int c, int configuration)
+/// `held` (posed in `box`) inside cavity c of the other part's cuboid (a drawer in its compartment; a door
+/// turning into its bay: its box, turned by other than quarter turns, bounds it).
+Option heldIn(const Model& arranged, int held, int holder, int c, int configuration, const Box& box)
 {
-    const Box box = boxOf(arranged, held, configuration);
     std::vector<Face> walls = voidWalls(arranged, box, c, configuration);
     const double cost = outside(arranged, box, walls, configuration);
     const double size = std::min({box[1] - box[0], box[3] - box[2], box[5] - box[4]});
     return {{held, holder, configuration, {}, std::move(walls)}, cost, nearEnough(cost, size)};
 }
 
-/// The cavities that could hold one of a and b in the configuration: (held, holder, cavity), those of the
-/// other's cuboid that its box overlaps.
-std::vector<std::array<int, 3>> holders(const Model& arranged, int a, int b, int configuration)
+/// The cavities that could hold one of a and b (posed in boxA and boxB) in the configuration: (held, holder,
+/// cavity), those of the other's cuboid that its box overlaps.
+std::vector<std::array<int, 3>> holders(const Model& arranged, int a, int b, int configuration,
+                                        const Box& boxA, const Box& boxB)
 {
     std::vector<std::array<int, 3>> found;
-    for (const auto& [held, holder] : {std::pair{a, b}, std::pair{b, a}}) {
-        const Box box = boxOf(arranged, held, configuration);
+    for (const auto& [held, holder, box] : {std::tuple{a, b, &boxA}, std::tuple{b, a, &boxB}}) {
         for (int c = 0; c < static_cast<int>(arranged.cuboids.size()); ++c)
-            if (arranged.cuboids[c].within == holder && overlaps(box, boxOf(arranged, c, configuration)))
+            if (arranged.cuboids[c].within == holder && overlaps(*box, boxOf(arranged, c, configuration)))
                 found.push_back({held, holder, c});
     }
     return found;
@@ -266,10 +265,11 @@ std::vector<std::array<int, 3>> holders(const Model& arranged, int a, int b, int
 
 Separation inferSeparation(const Model& arranged, int a, int b, int configuration)
 {
-    Option best = keptOut(arranged, a, b, configuration, boxOf(arranged, a, configuration),
-                          boxOf(arranged, b, configuration));
-    for (const auto& [held, holder, c] : holders(arranged, a, b, configuration))
-        if (Option in = heldIn(arranged, held, holder, c, configuration); in.cost < best.cost)
+    const Box boxA = boxOf(arranged, a, configuration), boxB = boxOf(arranged, b, configuration);
+    Option best = keptOut(arranged, a, b, configuration, boxA, boxB);
+    for (const auto& [held, holder, c] : holders(arranged, a, b, configuration, boxA, boxB))
+        if (Option in = heldIn(arranged, held, holder, c, configuration, held == a ? boxA : boxB);
+            in.cost < best.cost)
             best = std::move(in);
     return best.separation;
 }
@@ -304,9 +304,12 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
     consider([&](int k) { return keptOut(arranged, a, b, k, at[k].first, at[k].second); });
     std::set<std::array<int, 3>> tried;
     for (int k : judged)
-        for (const std::array<int, 3>& h : holders(arranged, a, b, k))
+        for (const std::array<int, 3>& h : holders(arranged, a, b, k, at[k].first, at[k].second))
             if (tried.insert(h).second)
-                consider([&](int pose) { return heldIn(arranged, h[0], h[1], h[2], pose); });
+                consider([&](int pose) {
+                    return heldIn(arranged, h[0], h[1], h[2], pose,
+                                  h[0] == a ? at[pose].first : at[pose].second);
+                });
     for (int axis = 0; axis < 3; ++axis)
         for (bool aLow : {true, false})
             consider([&](int k) {

@@ -76,6 +76,13 @@ std::array<double, 3> meeting(const Cuboid& a, const Cuboid& b)
     return meet;
 }
 
+/// How far apart two boxes are along the axis they are farthest apart on (negative: they overlap).
+double apart(const Cuboid& a, const Cuboid& b)
+{
+    const std::array<double, 3> meet = meeting(a, b);
+    return -*std::min_element(meet.begin(), meet.end());
+}
+
 /// Cuboids a and b keep touching along the axis they meet least on (or overlapping), and overlapping along
 /// the other two by as much as modelled, or the minimum size.
 void glue(std::vector<LinearConstraint>& rows, const Model& model, int a, int b, const std::string& name)
@@ -108,11 +115,9 @@ void heldFixed(std::vector<LinearConstraint>& rows, const Model& model, const Jo
     int a = -1, b = -1;
     for (int c : model.parts[joint.part].cuboids)
         for (int d : model.parts[joint.base].cuboids)
-            if (!model.cuboids[c].cavity() && !model.cuboids[d].cavity()) {
-                const std::array<double, 3> meet = meeting(model.cuboids[c], model.cuboids[d]);
-                if (const double apart = -*std::min_element(meet.begin(), meet.end()); apart < nearest)
-                    std::tie(nearest, a, b) = std::tuple{apart, c, d};
-            }
+            if (!model.cuboids[c].cavity() && !model.cuboids[d].cavity())
+                if (const double by = apart(model.cuboids[c], model.cuboids[d]); by < nearest)
+                    std::tie(nearest, a, b) = std::tuple{by, c, d};
     if (a >= 0)
         glue(rows, model, a, b, joint.name);
 }
@@ -272,13 +277,12 @@ Pieces piecesOf(const Model& model, const Part& part)
             i = piece[i] = piece[piece[i]];
         return i;
     };
-    const auto apart = [&](size_t i, size_t k) {  // how far apart along the axis they are farthest apart
-        const std::array<double, 3> meet = meeting(model.cuboids[solids[i]], model.cuboids[solids[k]]);
-        return -*std::min_element(meet.begin(), meet.end());
+    const auto distance = [&](size_t i, size_t k) {
+        return apart(model.cuboids[solids[i]], model.cuboids[solids[k]]);
     };
     for (size_t i = 0; i < solids.size(); ++i)
         for (size_t k = i + 1; k < solids.size(); ++k)
-            if (apart(i, k) <= 1e-9) {
+            if (distance(i, k) <= 1e-9) {
                 out.glued.push_back({solids[i], solids[k], 0});
                 piece[root(k)] = static_cast<int>(root(i));
             }
@@ -288,8 +292,8 @@ Pieces piecesOf(const Model& model, const Part& part)
         size_t a = 0, b = 0;
         for (size_t i = 0; i < solids.size(); ++i)
             for (size_t k = i + 1; k < solids.size(); ++k)
-                if (root(i) != root(k) && apart(i, k) < nearest)
-                    std::tie(nearest, a, b) = std::tuple{apart(i, k), i, k};
+                if (root(i) != root(k) && distance(i, k) < nearest)
+                    std::tie(nearest, a, b) = std::tuple{distance(i, k), i, k};
         if (!std::isfinite(nearest))
             break;
         const std::string pair = "'" + model.cuboids[solids[a]].name + "' and '" +
@@ -576,10 +580,6 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<L
     return least;
 }
 
-}  // namespace
-
-namespace {
-
 /// The least change that keeps the pairs apart as chosen, from `start` (kept when it does already). Where
 /// that conflicts, a pair the conflict names is kept apart its other ways that the drawing is near
 /// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
@@ -707,8 +707,8 @@ SolveResult solve(const Model& model)
         if (!r.solved ||
             separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;
-        if (round ==
-            kRounds) {  // every round adds poses where parts still meet: a bound, never reached so far
+        // Every round adds poses where parts still meet: a bound, never reached so far.
+        if (round == kRounds) {
             r = {false, target, r.violation, {"no overlap"}};
             break;
         }

@@ -322,7 +322,6 @@ def add_slider(p, cab, bay, n):
 
 def add_knob(p, front, cuboid, n, along_x):
     """A knob fixed on a front, near its free edge."""
-    rng = p.rng
     c = p.cuboid(cuboid)
     lo, hi = c["min"], c["max"]
     k = round_to(max(2, min(25, (hi[2] - lo[2]) / 6, (hi[0] - lo[0]) / 6)))
@@ -454,7 +453,6 @@ def cabinet(p):
     if rng.random() < 0.25:
         p.locks.extend("carcass." + s for s in ("left", "right", "near", "far", "bottom", "top"))
         p.features.add("locked carcass")
-    p.cabinet = cab
     return p
 
 
@@ -470,7 +468,6 @@ def crate(p):
     t = round_to(max(2.4 / min(1.0, 200 / (D + 60), 200 / W), rng.uniform(10, 30)))  # printable: as Cabinet's
     well = round_to(min(Hb / 2, rng.uniform(0.3, 0.6) * Hb))
     p.part("base", box("base", [0, 0, 0], [W, D, Hb]), box("base well", [t, t, Hb - well], [W - t, D - t, Hb], cavity=True))
-    p.crate = (W, D, Hb, t)
     boards = []
     for end in (["head", "foot"] if rng.random() < 0.6 else [rng.choice(["head", "foot"])]):
         # the board stands at the end of the base; folded, it lies on the base's top

@@ -134,12 +134,6 @@ def axis_aligned(transform):
     return all(abs(v) < 1e-12 or abs(abs(v) - 1) < 1e-12 for row in transform[0] for v in row)
 
 
-def is_identity(transform):
-    return transform is IDENTITY or (
-        all(abs(transform[0][i][j] - (1.0 if i == j else 0.0)) < 1e-15 for i in range(3) for j in range(3))
-        and all(abs(v) < 1e-15 for v in transform[1]))
-
-
 def fmt(v):
     return "%.4g" % v
 
@@ -177,6 +171,11 @@ def box_subtract(a, c, tol):
             pieces.append((plo, phi))
             hi[i] = inter[1][i]
     return [p for p in pieces if box_thickness(p) > tol]
+
+
+def box_volume(b):
+    """0 for an empty box (an intersection of boxes apart)."""
+    return math.prod(max(0.0, b[1][i] - b[0][i]) for i in range(3))
 
 
 def box_text(b):
@@ -995,16 +994,12 @@ def exempt_from_closing(model, cavity):
         for k in model.configuration_order:
             transform = model.part_transform(part, k)
             boxes = [Oriented(c.lo, c.hi, transform).bbox for c in model.solids(part)]
-            volume = sum(math.prod(b[1][i] - b[0][i] for i in range(3)) for b in boxes)
-            within = sum(math.prod(max(0.0, box_thickness_along(box_intersection(b, room), i)) for i in range(3))
-                         for b in boxes)
+            volume = sum(box_volume(b) for b in boxes)
+            within = sum(box_volume(box_intersection(b, room)) for b in boxes)
             if volume > 0 and 2 * within > volume:
                 out.add(part)
     return out
 
-
-def box_thickness_along(b, i):
-    return b[1][i] - b[0][i]
 
 
 def check_openings_and_walls(model, original, tol, problems):
@@ -1103,6 +1098,13 @@ def check_structure(model, original, problems):
             problems.append("joint '%s' is missing from the solved model" % j)
 
 
+def joined(a, b, tol):
+    """Whether two cuboids are joined face to face (or overlap): touching along one axis, overlapping along the
+    other two."""
+    meet = [min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3)]
+    return min(meet) >= -tol and sorted(meet)[1] > tol
+
+
 def check_one_piece(model, tol, problems):
     """Every part one piece: its solid cuboids joined face to face (or overlapping), none cut through by a
     cavity of its own."""
@@ -1116,9 +1118,7 @@ def check_one_piece(model, tol, problems):
             return i
 
         for i, j in itertools.combinations(range(len(solids)), 2):
-            a, b = solids[i], solids[j]
-            meet = [min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3)]
-            if min(meet) >= -tol and sorted(meet)[1] > tol:
+            if joined(solids[i], solids[j], tol):
                 group[root(j)] = root(i)
         pieces = len({root(i) for i in range(len(solids))})
         if pieces > 1:
@@ -1129,9 +1129,7 @@ def check_one_piece(model, tol, problems):
         j = model.part_joint(part)
         if j and model.joints[j]["type"] == "fixed":  # one body with its base: joined face to face
             base = model.solids(model.joints[j]["base"])
-            if not any(min(min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3)) >= -tol and
-                       sorted(min(a.hi[x], b.hi[x]) - max(a.lo[x], b.lo[x]) for x in range(3))[1] > tol
-                       for a in solids for b in base):
+            if not any(joined(a, b, tol) for a in solids for b in base):
                 problems.append("part '%s' does not touch '%s', which fixed joint '%s' holds it to"
                                 % (part, model.joints[j]["base"], j))
         for s in solids:
