@@ -57,7 +57,7 @@ clang-deps:
 
 test-clang: clang-deps
 	cmake -S . -B build-clang -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) >/dev/null
-	$(call CPP_CHECK,build-clang,fabguide)
+	$(call CPP_CHECK,build-clang,fabguide fabguide-print)
 
 test-sanitize: clang-deps
 	$(SANITIZE_CONFIGURE)

@@ -8,7 +8,15 @@ namespace fabguide::cli {
 void addVersionCommand(CLI::App& app);
 void addPackCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
+/// What `fabguide printable` does, in both programs' help.
+inline constexpr const char* kPrintableSummary =
+    "Turn a works-like model into print-in-place bodies: cavities, joints, gaps; check them; write STL, 3MF "
+    "and STEP";
+
 void addPrintableCommand(CLI::App& app);
+/// `fabguide printable` hands its command line to fabguide-print, the program beside fabguide that loads
+/// OpenCASCADE: loading it took 50 ms of every other command's start-up (issue 30, item 5).
+void addPrintableForward(CLI::App& app);
 void addOptimiseCommand(CLI::App& app);
 
 }  // namespace fabguide::cli

@@ -9,6 +9,7 @@
 
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace fabguide::cli {
 
@@ -128,10 +130,7 @@ int run(const PrintableArguments& args)
 void addPrintableCommand(CLI::App& app)
 {
     auto args = std::make_shared<PrintableArguments>();
-    auto* cmd =
-        app.add_subcommand("printable",
-                           "Turn a works-like model into print-in-place bodies: cavities, joints, gaps; "
-                           "check them; write STL, 3MF and STEP");
+    auto* cmd = app.add_subcommand("printable", kPrintableSummary);
     cmd->add_option("input", args->input, "*.workslike.json (solved or not: it is solved first)")
         ->required()
         ->check(CLI::ExistingFile);
@@ -163,7 +162,14 @@ void addPrintableCommand(CLI::App& app)
             "WxDxH"))
         ->excludes(scale);
     cmd->callback([args] {
-        if (const int code = run(*args))
+        int code = 0;
+        try {
+            code = run(*args);
+        } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+            throw std::runtime_error(std::string("geometry error: ") + e.GetMessageString() + " (" +
+                                     e.DynamicType()->Name() + ")");
+        }
+        if (code)
             throw CLI::RuntimeError(code);
     });
 }

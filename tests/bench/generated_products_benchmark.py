@@ -59,7 +59,7 @@ def section(build, products=2000, prints=200):
              "tests/gen/print_checker.py. Targets: >= 99.5 %% of the solvable, every contradictory one, >= 98 %% of "
              "the prints." % (products, prints, products - 1, max(1, products // max(1, prints))), ""]
     lines += fuzz_products.summary(results, printed, seconds)
-    lines += ["", "Solve from the command line, start-up (about 50 ms) included, first 200 seeds' solvable "
+    lines += ["", "Solve from the command line, start-up included, first 200 seeds' solvable "
               "products of at most 30 parts: median %.0f ms, 90th percentile %.0f ms, most %.0f ms (target 50 ms); "
               "the wall of 170 cabinets (510 cuboids, `make_wall.py --rows 10 --columns 17`): %.0f ms (target "
               "300 ms)." % (1e3 * statistics.median(small), 1e3 * small[int(0.9 * len(small))], 1e3 * small[-1],

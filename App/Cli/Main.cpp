@@ -1,0 +1,31 @@
+#include "Cli/Main.h"
+
+#include "Core/Version.h"
+#include "IO/Output.h"
+
+#include <exception>
+#include <iostream>
+
+namespace fabguide::cli {
+
+int runCommandLine(CLI::App& app, int argc, char** argv)
+{
+    io::removeTemporariesOnInterrupt();  // SIGINT / SIGTERM: exit 130 / 143, no half-written file
+    try {
+        app.set_version_flag("--version", version());
+        app.require_subcommand(1);
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "fabguide: error: " << e.what() << "\n";
+        return 1;
+    } catch (...) {
+        std::cerr
+            << "fabguide: internal error (an unknown exception); please report it with the input file\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace fabguide::cli

@@ -1,0 +1,12 @@
+// What every fabguide program does around its subcommands: temporaries removed on interrupt, the command line
+// parsed, and every error one line on stderr with exit status 1.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace fabguide::cli {
+
+/// Runs the subcommand named on the command line; its exit status.
+int runCommandLine(CLI::App& app, int argc, char** argv);
+
+}  // namespace fabguide::cli
