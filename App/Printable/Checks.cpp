@@ -243,10 +243,10 @@ double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(i
 
 }  // namespace
 
-int jointInTheWay(const function::Model& m, const Printable& printable, const Check& c)
+std::vector<int> jointsInTheWay(const function::Model& m, const Printable& printable, const Check& c)
 {
     if (c.first < 0)
-        return -1;
+        return {};
     const std::vector<std::vector<int>> rigid = rigidBodies(m);
     auto holdsPart = [&](int body, int part) {
         const Body& b = printable.bodies[body];
@@ -258,8 +258,7 @@ int jointInTheWay(const function::Model& m, const Printable& printable, const Ch
         return c.configuration < 0 ? at
                                    : at.Transformed(partMotion(m, part, c.configuration, c.t).Inverted());
     };
-    int nearest = -1;
-    double least = 0;
+    std::vector<std::pair<double, int>> near;  // (how far beyond its reach, joint)
     for (size_t j = 0; j < m.joints.size(); ++j) {
         if (placesOf(m, static_cast<int>(j)) == 0)
             continue;  // no geometry of its own (a slide a cavity guides, a fixed joint)
@@ -271,12 +270,14 @@ int jointInTheWay(const function::Model& m, const Printable& printable, const Ch
             for (int p : parts)
                 involved = involved || (p >= 0 && holdsPart(body, p));
         }
-        if (involved && beyond <= 0 && (nearest < 0 || beyond < least)) {
-            nearest = static_cast<int>(j);
-            least = beyond;
-        }
+        if (involved && beyond <= 0)
+            near.push_back({beyond, static_cast<int>(j)});
     }
-    return nearest;
+    std::sort(near.begin(), near.end());
+    std::vector<int> joints;
+    for (const auto& [beyond, j] : near)
+        joints.push_back(j);
+    return joints;
 }
 
 Checked placedByCheck(const function::Model& m, Printable made, const Printer& printer, int samples)
@@ -284,11 +285,21 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
     const double g = printer.gap;
     Check c = check(m, made, g, samples);
     const auto fails = [&](const Check& k) { return k.clearance < g - 0.01; };
-    Places places(m.joints.size(), 0);
+    // The nearest joint in the way not yet moved, or -1.
     std::vector<bool> moved(m.joints.size(), false);
-    for (int j = jointInTheWay(m, made, c); fails(c) && j >= 0 && !moved[j];) {
+    const auto next = [&] {
+        for (int j : jointsInTheWay(m, made, c))
+            if (!moved[j])
+                return j;
+        return -1;
+    };
+    Places places(m.joints.size(), 0);
+    std::vector<std::string> tried;  // the joints moved in vain
+    bool placed = false;             // one of them had other places
+    for (int j = fails(c) ? next() : -1; j >= 0; j = fails(c) ? next() : -1) {
         moved[j] = true;
         const int kept = places[j], count = placesOf(m, j);
+        placed = placed || count > 1;
         int best = kept;
         for (int place = 0; place < count && fails(c); ++place) {
             if (place == kept)
@@ -308,11 +319,17 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
             }
         }
         places[j] = best;
-        const int next = fails(c) ? jointInTheWay(m, made, c) : -1;
-        if (next == j)
-            c.where += "; joint '" + m.joints[j].name + "' is in the way" +
-                       (count > 1 ? ", and no other place of it clears" : "");
-        j = next;
+        if (fails(c))
+            tried.push_back("'" + m.joints[j].name + "'");
+    }
+    if (fails(c) && !tried.empty()) {
+        std::string names;
+        for (const std::string& name : tried)
+            names += (names.empty() ? "" : ", ") + name;
+        const bool one = tried.size() == 1;
+        c.where +=
+            (one ? "; joint " : "; joints ") + names + (one ? " is" : " are") + " in the way" +
+            (placed ? std::string(", and no other place of ") + (one ? "it" : "them") + " clears" : "");
     }
     return {std::move(made), c};
 }

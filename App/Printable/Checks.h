@@ -27,16 +27,17 @@ struct Check {
 Check check(const function::Model& model, const Printable& printable, double enough, int samples = 32);
 
 /// A print that passes the check, where joint geometry can make it pass (issue 15, item 1): while the nearest
-/// two bodies come within the gap near a joint's geometry (jointInTheWay), the joint's other places are made
-/// and checked, the nearest kept; when none clears, the check's `where` names the joint and what it meets.
+/// two bodies come within the gap near joints' geometry (jointsInTheWay), the nearest joint not yet moved has
+/// its other places made and checked, the nearest kept; when none clears, the check's `where` names the
+/// joints tried and what they meet.
 struct Checked {
     Printable printable;
     Check check;
 };
 Checked placedByCheck(const function::Model& model, Printable made, const Printer& printer, int samples = 32);
 
-/// The joint whose geometry lies nearest where the check found two bodies too near, within its reach: a
-/// hinge's round parts round its axis, a slide's rails, a double pivot's link; -1 for none.
-int jointInTheWay(const function::Model& model, const Printable& printable, const Check& check);
+/// The joints whose geometry lies where the check found two bodies too near, within its reach, nearest
+/// first: a hinge's round parts round its axis, a slide's rails, a double pivot's link.
+std::vector<int> jointsInTheWay(const function::Model& model, const Printable& printable, const Check& check);
 
 }  // namespace fabguide::printable

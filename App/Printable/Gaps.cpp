@@ -235,13 +235,22 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
             x[s] += s % 2 ? -steps[c][s] : steps[c][s];
         out.push_back(x);
     }
-    // Cuboids of one part stay joined: where one face stepped back, the cuboid glued to it follows.
+    // Cuboids of one body stay joined: where one face stepped back, the cuboid glued to it follows (a drawer
+    // front stepping back from a door that swings past it, and its knob).
+    const auto glued = [&](size_t a, size_t b, int side) {
+        const Coordinates &x = m.cuboids[a].coordinates, &y = m.cuboids[b].coordinates;
+        if (a == b || bodyOf[partOf[a]] != bodyOf[partOf[b]] || m.cuboids[a].cavity() ||
+            m.cuboids[b].cavity() || std::abs(x[side] - y[side ^ 1]) >= hair)
+            return false;
+        for (int o = 0; o < 3; ++o)
+            if (o != side / 2 && std::min(x[2 * o + 1], y[2 * o + 1]) - std::max(x[2 * o], y[2 * o]) <= hair)
+                return false;
+        return true;
+    };
     for (size_t a = 0; a < m.cuboids.size(); ++a)
         for (size_t b = 0; b < m.cuboids.size(); ++b)
-            for (int side = 0; side < 6 && a != b && partOf[a] == partOf[b] && !m.cuboids[a].cavity() &&
-                               !m.cuboids[b].cavity();
-                 ++side)
-                if (std::abs(m.cuboids[a].coordinates[side] - m.cuboids[b].coordinates[side ^ 1]) < hair)
+            for (int side = 0; side < 6; ++side)
+                if (glued(a, b, side))
                     out[b][side ^ 1] = out[a][side];
     return out;
 }

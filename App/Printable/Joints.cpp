@@ -176,6 +176,18 @@ TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double 
                 box(span));
 }
 
+/// How far the point on the face lies from the face's edges.
+double roomOnFace(const Model& m, const function::Face& face, const gp_Pnt& p)
+{
+    const Cuboid& c = m.cuboids[face.cuboid];
+    double room = 1e300;
+    for (int a = 0; a < 3; ++a)
+        if (a != axisOf(face.side))
+            room = std::min({room, coord(p, a) - c.at(static_cast<Side>(2 * a)),
+                             c.at(static_cast<Side>(2 * a + 1)) - coord(p, a)});
+    return room;
+}
+
 /// The link between two pivots at `depth` .. `depth` + `thick` from `face` along normal n (`inward` = -1 or 1
 /// the way in): a bar with round ends, a hole the gap round each pin.
 TopoDS_Shape pivotLink(const gp_Pnt& pivot, const gp_Pnt& base, int n, double face, double inward,
@@ -294,6 +306,22 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does
     double lo = edge[2 * along], hi = edge[2 * along + 1];
     Radii r = radii(m, joint, {joint.edgeA.cuboid, onEdge}, g, out);
+    // Places 4-7 are 0-3 with round parts three quarters as thick (not below the least): a neighbour that
+    // closes within the gap of the round parts (the drawer front above a flap's hinge) is cleared that way.
+    const bool slim = place >= 4;
+    place %= 4;
+    if (slim) {
+        const double least = kLeastPin + g + kLeastWall;
+        if (r.outer <= least)
+            throw std::invalid_argument("joint '" + joint.name +
+                                        "': its round parts are as thin as they print");
+        r = sized(2 * std::max(least, 0.75 * r.outer), g);
+        std::ostringstream note;
+        note.precision(2);
+        note << std::fixed << joint.name << ": its round parts made " << 2 * r.outer
+             << " mm across to clear a neighbour";
+        out.notes.push_back(note.str());
+    }
     // Round parts share the room with a neighbouring hinge's (a door hinged 4 mm from the next door's
     // hinge): each takes half of it, less half the gap. Where that leaves too little for a pin, the two
     // hinges take the two halves of the length they share instead (the first joint the lower half), and each
@@ -532,7 +560,14 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     if (joint.pivotFace.side != joint.basePivotFace.side)
         return addRecessedPivot(m, j, g, shapes, out);
     const function::PivotPlane plane = function::pivotPlane(m, joint);
-    const Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
+    const auto [pivot, base] = pivotPoints(m, joint);
+    Radii r = radii(m, joint, {joint.pivotFace.cuboid, joint.basePivotFace.cuboid}, g, out);
+    // Round parts no wider than the faces they stand on round the pivots: a pivot 6 mm under a crate base's
+    // top had a pin 18 mm across standing above the top, in the way of the board folding over it.
+    if (const double room =
+            std::min(roomOnFace(m, joint.pivotFace, pivot), roomOnFace(m, joint.basePivotFace, base));
+        room < r.outer)
+        r = sized(2 * std::max(room, kLeastPin + g + kLeastWall), g);
     const int n = plane.normal;
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
@@ -549,7 +584,6 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     const auto span = [&](const gp_Pnt& p, double from, double to, double radius) {
         return rodFrom(p, n, face, outward, from, to, radius);
     };
-    const auto [pivot, base] = pivotPoints(m, joint);
     const double top = depth + link + g;  // where the head starts
     for (const auto& [p, part] : {std::pair{pivot, joint.part}, std::pair{base, joint.base}})
         shapes[part] =

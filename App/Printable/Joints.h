@@ -21,7 +21,8 @@ int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
 /// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
 /// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
 /// each cleared of the other by the gap; at `place` 1, 2 or 3 along the edge's middle, first or second half
-/// only. An error names the joint when no part is near enough to hold the yokes, or a half is too short.
+/// only; places 4-7 as 0-3 with round parts three quarters as thick. An error names the joint when no part is
+/// near enough to hold the yokes, or a half is too short.
 void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, double g,
               std::vector<TopoDS_Shape>& shapes, Printable& out, int place = 0);
 

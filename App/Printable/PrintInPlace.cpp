@@ -224,7 +224,7 @@ int placesOf(const Model& m, int j)
 {
     const Joint& joint = m.joints[j];
     if (joint.turns())
-        return 4;
+        return 8;
     if (joint.type == Joint::Type::DoublePivot)
         return 1;
     return joint.slides() && !inCavity(m, joint.part) ? std::max(1, static_cast<int>(railPlaces(m, j).size()))

@@ -44,8 +44,8 @@ function::Model solvedToPrint(const function::Model& model, double scale);
 using Places = std::vector<int>;
 
 /// How many places joint j's geometry can take: a hinge's round parts along its whole edge, its middle, first
-/// or second half; a slide's rails one per railPlaces; a double pivot's one; 0 without geometry of its own (a
-/// slide a cavity guides, a fixed joint).
+/// or second half, then the same three quarters as thick; a slide's rails one per railPlaces; a double
+/// pivot's one; 0 without geometry of its own (a slide a cavity guides, a fixed joint).
 int placesOf(const function::Model& m, int j);
 
 /// The printable bodies of a solved model. Throws std::invalid_argument naming a joint whose parts are too

@@ -94,6 +94,25 @@ TEST(Gaps, APartTurningPastAnotherStepsBackWhereItWouldGrazeIt)
     EXPECT_GT(at[1][1], 39.5);  // the flap's far end stepped back less than half a millimetre
 }
 
+TEST(Gaps, AFixedPartFollowsTheFaceOfItsBaseThatStepsBack)
+{
+    // The sliding lid overhangs its box by 10 mm, a tab fixed under the overhang: the lid's bottom steps up
+    // by the gap from the box, and the tab's top with it (before, it was left the gap under the lid and
+    // printed loose).
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 40, 10]}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 10], "max": [50, 40, 14]}]},
+                  {"name": "tab", "cuboids": [{"name": "tab", "min": [44, 10, 5], "max": [48, 20, 10]}]}],
+        "joints": [{"name": "lid slide", "type": "slide", "part": "lid", "axis": "x"},
+                   {"name": "tab on lid", "type": "fixed", "part": "tab", "base": "lid"}],
+        "configurations": [{"name": "open", "poses": {"lid slide": 30}}]})"));
+    const std::vector<Coordinates> at = gapped(m, 0.4);
+    EXPECT_NEAR(at[1][4], 10.4, 1e-9);
+    EXPECT_EQ(at[2][5], at[1][4]);
+    EXPECT_EQ(at[2][4], 5);
+}
+
 TEST(Sweeps, AShiftSweepsAPrismAndATurnAQuarterCylinder)
 {
     const TopoDS_Shape shifted = turnedThenShifted(box({0, 10, 0, 10, 0, 10}), gp_Ax1(), 0, gp_Vec(5, 0, 0));
@@ -155,7 +174,7 @@ TEST(Joints, AHingeGetsAPinAKnuckleAndTwoYokesThatClearEachOther)
 TEST(Joints, AHingesOtherPlacesAreTheMiddleAndEitherHalfOfItsEdge)
 {
     const function::Model m = hinged();
-    ASSERT_EQ(placesOf(m, 0), 4);
+    ASSERT_EQ(placesOf(m, 0), 8);
     // The lid's pin runs along the edge's span (x 0 .. 40): the whole of it, else its middle half.
     const auto pinAt = [&](int place, double x) {
         return BRepClass3d_SolidClassifier(makePrintable(m, {0.4}, {place}).bodies[1].shape,
@@ -168,6 +187,16 @@ TEST(Joints, AHingesOtherPlacesAreTheMiddleAndEitherHalfOfItsEdge)
     EXPECT_TRUE(pinAt(2, 5));
     EXPECT_FALSE(pinAt(2, 35));
     EXPECT_TRUE(pinAt(3, 35));
+    // Places 4-7 are the same with round parts three quarters as thick (not below the least, 1.6 mm): the
+    // knuckle, 2 mm round the axis (y 40, z 10) behind the lid, is 1.6 mm there.
+    const auto knuckleAt = [&](int place, double y) {
+        return BRepClass3d_SolidClassifier(makePrintable(m, {0.4}, {place}).bodies[1].shape,
+                                           gp_Pnt(20, y, 10), 1e-7)
+                   .State() == TopAbs_IN;
+    };
+    EXPECT_TRUE(knuckleAt(0, 41.8));
+    EXPECT_FALSE(knuckleAt(4, 41.8));
+    EXPECT_TRUE(knuckleAt(4, 41.4));
 }
 
 TEST(Joints, NeighbouringHingesTooCloseForTwoPinsTakeHalfTheEdgeEach)
@@ -253,7 +282,7 @@ TEST(Checks, AJointsGeometryThatMeetsAPartMovesToAPlaceThatClears)
     const function::Model m = pencilCase();
     Printable lumpy = makePrintable(m, {0.4});
     lumpy.bodies[1].shape = fuse(lumpy.bodies[1].shape, box({100, 110, 0.5, 3.5, 25.2, 27}));
-    ASSERT_EQ(jointInTheWay(m, lumpy, check(m, lumpy, 0.4, 8)), 0);
+    ASSERT_EQ(jointsInTheWay(m, lumpy, check(m, lumpy, 0.4, 8)).at(0), 0);
     const Checked placed = placedByCheck(m, lumpy, {0.4}, 8);
     EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
     EXPECT_TRUE(inside(placed.printable.bodies[0].shape, gp_Pnt(105, 57, 25.5)));
@@ -273,7 +302,7 @@ TEST(Checks, AYokeThatMeetsAPostBehindTheBoxMovesAlongTheEdge)
     const Printable first = makePrintable(m, {0.4});
     const Check c = check(m, first, 0.4, 8);
     ASSERT_EQ(c.clearance, 0);
-    EXPECT_EQ(jointInTheWay(m, first, c), 0);
+    EXPECT_EQ(jointsInTheWay(m, first, c).at(0), 0);
     const Checked placed = placedByCheck(m, first, {0.4}, 8);
     EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
 }
@@ -388,6 +417,25 @@ TEST(Joints, AFourBarsLinksPrintOneLayerOverTheOtherAndMoveAsTheLinkage)
     const Check c = check(m, p, 0.4, 16);
     EXPECT_TRUE(c.invalid.empty() && c.loose.empty());
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
+TEST(Joints, ALinksRoundPartsStayWithinTheFacesTheyStandOn)
+{
+    // A crate's 10 mm board on a link to the base's side, the base pivot 3 mm under the base's top: the
+    // round parts (5 mm round for a 10 mm board) are made 3 mm round, so nothing of the base stands above
+    // its top where the board folds over it.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "base", "cuboids": [{"name": "base", "min": [0, 0, 0], "max": [100, 60, 20]}]},
+                  {"name": "board", "cuboids": [{"name": "board", "min": [0, -10, 0], "max": [100, 0, 50]}]}],
+        "joints": [{"name": "link", "type": "double_pivot", "part": "board", "base": "base",
+                    "pivot": ["board.left", [0, -5, 30]], "base_pivot": ["base.left", [0, 10, 17]]}],
+        "configurations": [{"name": "folded", "poses": {"link": {"angle": -90, "pole": [0, 0, 20]}}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    Bnd_Box base;
+    BRepBndLib::Add(p.bodies[0].shape, base);
+    EXPECT_LE(base.CornerMax().Z(), 20 + 1e-3);
 }
 
 TEST(Checks, TheClearanceIsTheLeastDistanceAlongTheMotionAndZeroWhenBodiesMeet)
