@@ -14,6 +14,8 @@ namespace fabguide::function {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+/// A link turning more than this either way turns half a turn the way its part turns (the checker's rule).
+constexpr double kHalfTurn = 180 - 1e-3;
 
 using Point = std::array<double, 2>;
 
@@ -179,6 +181,23 @@ bool hits(const std::vector<std::array<double, 6>>& moving, const std::vector<st
     return false;
 }
 
+/// The link's turn the shorter way round, for a turn of its part by `degrees` about `pole`.
+double shorterTurn(const Point& a, const Point& b, const Point& pole, double degrees)
+{
+    const Point to = turn(a, pole, degrees);
+    return std::remainder(
+        (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
+}
+
+/// Whether the link's way round hangs on the last digits of its pivots (as written to the file, or on the
+/// doubled link): a turn against its part's within 1e-4° of kHalfTurn, either side, where the half-turn rule
+/// sends it the other way (a stage-2 search's least change lies just there).
+bool undecided(const Point& a, const Point& b, const Point& pole, double degrees)
+{
+    const double link = shorterTurn(a, b, pole, degrees);
+    return std::abs(std::abs(link) - kHalfTurn) < 1e-4 && std::signbit(link) != std::signbit(degrees);
+}
+
 bool collides(const Placement& p, double a, double b)
 {
     const Point pivot = p.pivotA(a), base = p.pivotB(b);
@@ -186,6 +205,8 @@ bool collides(const Placement& p, double a, double b)
     for (size_t i = 0; i < p.poses.size(); ++i) {
         const JointPose& pose = p.poses[i];
         const auto fixed = standingStill(p.model, p.joint.part, p.plane, p.configurations[i]);
+        if (undecided(pivot, base, p.pole(pose), pose.angle))
+            return true;
         const auto [link, part] = fourBarAngles(pivot, base, p.pole(pose), pose.angle);
         for (int step = 1; step <= 32; ++step) {
             const double t = step / 32.0;
@@ -517,11 +538,8 @@ const Joint* fourBarPartner(const Model& model, const Joint& joint)
 
 std::array<double, 2> fourBarAngles(const Point& a, const Point& b, const Point& pole, double degrees)
 {
-    const Point to = turn(a, pole, degrees);  // the link turns the shorter way round
-    double link = std::remainder(
-        (std::atan2(to[1] - b[1], to[0] - b[0]) - std::atan2(a[1] - b[1], a[0] - b[0])) * 180 / kPi, 360.0);
-    if (std::abs(link) >
-        180 - 1e-3)  // half a turn either way, to a thousandth of a degree: as the part turns
+    double link = shorterTurn(a, b, pole, degrees);
+    if (std::abs(link) > kHalfTurn)  // half a turn either way, to a thousandth of a degree: as the part turns
         link = std::copysign(180.0, degrees);
     return {link, degrees - link};
 }

@@ -81,6 +81,28 @@ TEST(DoublePivot, TheHeadboardClearsTheBedAllTheWay)
     EXPECT_GE(nearest, -1e-6) << "a headboard corner entered the bed";
 }
 
+TEST(DoublePivot, APlacedLinksWayRoundDoesNotHangOnTheLastDigitOfItsPivots)
+{
+    // A generated crate (tests/gen seed 1755) whose least-change placement lay where the link turns a
+    // thousandth of a degree short of half a turn against its board: as written to the file, its pivots sent
+    // it the other way round, through the base. Placed now, both links turn half a turn with the board, and
+    // stay so with their pivots a nanometre (the file's last digit) off.
+    json model = io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) +
+                                  "/tests/gen/regressions/link-half-turn-seed-1755.workslike.json");
+    model.erase("generated");
+    const function::SolveResult r = function::solve(io::readWorkslike(model));
+    ASSERT_TRUE(r.solved) << testing::PrintToString(r.conflict);
+    for (size_t j = 0; j < r.model.joints.size(); ++j) {
+        const function::JointPose& pose = poseOf(r.model, static_cast<int>(j));
+        function::Joint joint = r.model.joints[j];
+        EXPECT_EQ(function::linkAngles(r.model, joint, pose)[0], 180) << joint.name;
+        for (double off : {-1e-6, 1e-6}) {
+            joint.basePivot[1] = r.model.joints[j].basePivot[1] + off;
+            EXPECT_GT(function::linkAngles(r.model, joint, pose)[0], 0) << joint.name;
+        }
+    }
+}
+
 TEST(DoublePivot, APoseTheLinkCannotReachNamesTheJoints)
 {
     // Base pivots on the line through the pole: the link must turn with the board, which sweeps the bed.
