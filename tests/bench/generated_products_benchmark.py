@@ -55,9 +55,10 @@ def section(build, products=2000, prints=200):
              "`python3 tests/bench/generated_products_benchmark.py` (or `make fuzz-products PRODUCTS=%d PRINTS=%d`): "
              "seeds 0-%d of tests/gen, drawn roughly, one in three contradictory; solvable ones solved by `fabguide "
              "solve` and judged by the independent checker, contradictory ones must exit 1 naming their known "
-             "conflict; every %dth printed (`fabguide printable --fit 250x210x210`) and judged by "
-             "tests/gen/print_checker.py. Targets: >= 99.5 %% of the solvable, every contradictory one, >= 98 %% of "
-             "the prints." % (products, prints, products - 1, max(1, products // max(1, prints))), ""]
+             "conflict; %d of the solvable ones, evenly spread, printed (`fabguide printable --fit 250x210x210`) "
+             "and judged by tests/gen/print_checker.py (bodies, meshes, pieces, bodies meeting as printed and along "
+             "every motion, material missing where no part goes). Targets: >= 99.5 %% of the solvable, every "
+             "contradictory one, >= 98 %% of the prints." % (products, prints, products - 1, prints), ""]
     lines += fuzz_products.summary(results, printed, seconds)
     lines += ["", "Solve from the command line, start-up included, first 200 seeds' solvable "
               "products of at most 30 parts: median %.0f ms, 90th percentile %.0f ms, most %.0f ms (target 50 ms); "

@@ -92,7 +92,7 @@ def judge_model(model, known, cli=CLI, print_it=False):
             json.dump(model, f)
         verdict = solve_and_check(cli, {"model": model, "known": known}, path, out)
         if verdict is None and print_it and known is None:
-            verdict = print_and_check(cli, path, os.path.join(tmp, "print"))
+            verdict = print_and_check(cli, path, out, os.path.join(tmp, "print"))
     return verdict
 
 
@@ -121,7 +121,7 @@ def solve_and_check(cli, c, path, out):
     return None
 
 
-def print_and_check(cli, path, folder):
+def print_and_check(cli, path, solved, folder):
     r = run(cli, ["printable", path, "-o", folder, "--fit", FIT, "--part-seconds", "30"], timeout=600)
     if r is None:
         return "print: timeout", ""
@@ -133,21 +133,22 @@ def print_and_check(cli, path, folder):
             [line for line in lines if line.startswith("minimum clearance")]
         said = said[0] if said else (r.stderr.strip() or r.stdout.strip()).split("\n")[-1]
         return "print refused: " + shape(said), said[-400:]
-    problems = print_checker.check(path, folder)
+    problems = print_checker.check(path, folder, solved)
     if problems:
         return "print: " + shape(problems[0]), problems[0]
     return None
 
 
 def run_all(seeds, cli=CLI, prints=0, jobs=None, keep=None):
-    """Every seed judged (`prints` of them, evenly spread, printed too), on `jobs` processes: (results, the
-    seeds printed, seconds)."""
-    every = max(1, len(seeds) // prints) if prints else 0
-    work = [(s, cli, bool(every) and k % every == 0, keep) for k, s in enumerate(seeds)]
+    """Every seed judged, then `prints` of the solvable ones (evenly spread) printed too, on `jobs` processes:
+    (results, the seeds printed, seconds)."""
     started = time.time()
     with multiprocessing.Pool(jobs or os.cpu_count() or 1) as pool:
-        results = pool.starmap(judge, work, chunksize=1)
-    return results, {s for s, _, p, _ in work if p}, time.time() - started
+        results = pool.starmap(judge, [(s, cli, False, keep) for s in seeds], chunksize=1)
+        solvable = [r[0] for r in results if not r[5]]
+        chosen = solvable[::max(1, len(solvable) // prints)][:prints] if prints else []
+        printed = {r[0]: r for r in pool.starmap(judge, [(s, cli, True, keep) for s in chosen], chunksize=1)}
+    return [printed.get(r[0], r) for r in results], set(chosen), time.time() - started
 
 
 def main(argv):
@@ -155,7 +156,7 @@ def main(argv):
     parser.add_argument("--products", type=int, default=300)
     parser.add_argument("--first", type=int, default=0)
     parser.add_argument("--seeds", default="")
-    parser.add_argument("--prints", type=int, default=0, help="how many of the products to print too")
+    parser.add_argument("--prints", type=int, default=0, help="how many of the solvable products to print too")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--cli", default=CLI)
     parser.add_argument("--keep", default="")
