@@ -41,12 +41,18 @@ double thinnestOf(const Model& m, std::initializer_list<int> cuboids)
 
 constexpr double kLeastPin = 0.4, kLeastWall = 0.8;
 
+/// The outer radius of the least round parts that hold a pin with gap g.
+double leastOuter(double g)
+{
+    return kLeastPin + g + kLeastWall;
+}
+
 /// The sizes of a joint's round parts (4.5.2) on parts `side` thin: outer radius half of it, the pin inside
 /// it with the gap and a wall around it (0.8 mm, or 30 % of the radius), or, where that leaves less than the
 /// least pin (0.4 mm radius), as scaled-down parts do, the least that holds one.
 Radii sized(double side, double g)
 {
-    const double outer = std::max(side / 2, kLeastPin + g + kLeastWall);
+    const double outer = std::max(side / 2, leastOuter(g));
     return {outer, outer - g - std::max(kLeastWall, 0.3 * outer)};
 }
 
@@ -59,7 +65,7 @@ Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboi
     for (int c : cuboids)
         if (thinnest(m.cuboids[c]) == side)
             thinCuboid = c;
-    const double least = kLeastPin + g + kLeastWall;
+    const double least = leastOuter(g);
     if (side < least)
         throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (cuboid '" +
                                     m.cuboids[thinCuboid].name + "' is " + function::millimetres(side) +
@@ -311,7 +317,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const bool slim = place >= 4;
     place %= 4;
     if (slim) {
-        const double least = kLeastPin + g + kLeastWall;
+        const double least = leastOuter(g);
         if (r.outer <= least)
             throw std::invalid_argument("joint '" + joint.name +
                                         "': its round parts are as thin as they print");
@@ -329,7 +335,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     // half: turning about its own axis, it stays clear of them.
     std::pair<int, double> beside{-1, 0};  // the hinge sharing the edge's length, and how far off its axis is
     if (const auto [near, k] = nearestHinge(m, j, axis, along, 2 * r.outer + g); k >= 0) {
-        if ((near - g) / 2 >= kLeastPin + g + kLeastWall) {
+        if ((near - g) / 2 >= leastOuter(g)) {
             r = sized(near - g, g);
         } else {
             const Coordinates& its = gapped[m.joints[k].edgeA.cuboid];
@@ -567,7 +573,7 @@ void addDoublePivot(const Model& m, int j, double g, std::vector<TopoDS_Shape>& 
     if (const double room =
             std::min(roomOnFace(m, joint.pivotFace, pivot), roomOnFace(m, joint.basePivotFace, base));
         room < r.outer)
-        r = sized(2 * std::max(room, kLeastPin + g + kLeastWall), g);
+        r = sized(2 * std::max(room, leastOuter(g)), g);
     const int n = plane.normal;
     const double face = m.cuboids[joint.pivotFace.cuboid].at(joint.pivotFace.side);
     const double outward = static_cast<int>(joint.pivotFace.side) % 2 ? 1 : -1;
