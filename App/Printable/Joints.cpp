@@ -5,6 +5,7 @@
 #include "Printable/Motion.h"
 #include "Printable/Sweeps.h"
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -13,6 +14,7 @@
 #include <Bnd_Box.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Quaternion.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -279,6 +281,56 @@ void giveWay(const Model& m, int k, int along, double lo, double hi, double radi
     part = cut(part, around);
 }
 
+/// A part that slides past hinge j's round parts (along `span`, out to `radius` round the axis, the gap
+/// included), and stands within the gap of them as printed (not only on its edge), gives way round them
+/// (their box where it moves) along its motion, in its own frame: a drawer front just above a flap's hinge
+/// gets a groove under it, where a thinner pin could not clear (too little room for the least pin and its
+/// gap). Noted.
+void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, double> span, double radius,
+                           std::vector<TopoDS_Shape>& shapes, Printable& out)
+{
+    const Joint& joint = m.joints[j];
+    const gp_Ax1 axis = hingeAxis(m, joint);
+    const int along = hingeAlong(joint);
+    Coordinates room{};
+    for (int a = 0; a < 3; ++a) {
+        room[2 * a] = a == along ? span.first : coord(axis.Location(), a) - radius;
+        room[2 * a + 1] = a == along ? span.second : coord(axis.Location(), a) + radius;
+    }
+    const TopoDS_Shape roomSolid = rod(axis.Location(), along, span.first, span.second, radius);
+    Bnd_Box reach;
+    BRepBndLib::Add(roomSolid, reach);
+    for (int q = 0; q < static_cast<int>(shapes.size()); ++q) {
+        if (q == joint.part || q == base || function::carrierOf(m, q) == joint.part ||
+            (standsStill(m, q) && standsStill(m, base)))
+            continue;
+        Bnd_Box its;
+        BRepBndLib::Add(shapes[q], its);
+        if (reach.IsOut(its) || volumeOf(BRepAlgoAPI_Common(roomSolid, shapes[q]).Shape()) < 1e-3)
+            continue;
+        std::vector<TopoDS_Shape> around;
+        for (int k = 0; k < static_cast<int>(m.configurations.size()); ++k) {
+            const auto apart = [&](double t) {
+                return partMotion(m, base, k, t).Inverted() * partMotion(m, q, k, t);
+            };
+            if (axis.Transformed(apart(1)).IsCoaxial(axis, 1e-9, 1e-6))
+                continue;  // q stays with base in k or turns round the same axis: the round parts stay put
+            bool slides = true;
+            for (int step = 1; step <= 8; ++step)
+                slides = slides && std::abs(apart(step / 8.0).GetRotation().GetRotationAngle()) < 1e-12;
+            if (!slides)
+                continue;  // a groove along a turn costs more cuts than a part has time for
+            for (const TopoDS_Shape& swept : pathRelative(m, k, base, q, {room}))
+                around.push_back(swept);
+        }
+        if (around.empty())
+            continue;  // it never moves past them: the gaps as printed are the other joints' business
+        around.push_back(roomSolid);
+        shapes[q] = cut(shapes[q], around);
+        out.notes.push_back(m.parts[q].name + ": grooved to clear the round parts of '" + joint.name + "'");
+    }
+}
+
 }  // namespace
 
 std::string linkName(const Joint& joint)
@@ -424,6 +476,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         other = fuse(other, cut(box(b), hole));
     part = fuse(part,
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
+    makeWayPastRoundParts(m, j, base, {lo - g, hi + g}, r.outer + g, shapes, out);
 }
 
 std::vector<RailPlace> railPlaces(const Model& m, int j)

@@ -10,6 +10,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax1.hxx>
+#include <gp_Quaternion.hxx>
 
 #include <cmath>
 #include <tuple>
@@ -153,9 +154,16 @@ std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
     const auto relative = [&](double t) {
         return partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t);
     };
+    // The first half turns: a pose on every 64th of the way, none repeated while nothing turns (the last is
+    // the prism's start).
+    const auto same = [](const gp_Trsf& x, const gp_Trsf& y) {
+        const gp_Trsf d = x.Inverted() * y;
+        return d.TranslationPart().Modulus() < 1e-9 && std::abs(d.GetRotation().GetRotationAngle()) < 1e-12;
+    };
     std::vector<TopoDS_Shape> path;
-    for (int step = 1; step <= 32; ++step)
-        path.push_back(moved(shape, relative(step / 64.0)));
+    for (int step = 1; step < 32; ++step)
+        if (!same(relative(step / 64.0), relative((step + 1) / 64.0)))
+            path.push_back(moved(shape, relative(step / 64.0)));
     // The second half only slides, so relative to b, a shifts in a straight line: the prism it sweeps.
     const gp_Vec by((relative(1) * relative(0.5).Inverted()).TranslationPart());
     path.push_back(turnedThenShifted(moved(shape, relative(0.5)), gp_Ax1(), 0, by));

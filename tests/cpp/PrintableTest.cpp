@@ -419,6 +419,27 @@ TEST(Joints, AFourBarsLinksPrintOneLayerOverTheOtherAndMoveAsTheLinkage)
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
 }
 
+TEST(Joints, APartMovingPastAHingesRoundPartsGivesWayRoundThem)
+{
+    // A flap on a case's front, hinged at its top edge 1 mm under a tray that slides out over it: no pin fits
+    // in 1 mm, so the tray gets a groove along its travel over the round parts, and the print clears.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "case", "cuboids": [{"name": "case", "min": [0, 0, 0], "max": [40, 40, 21]}]},
+                  {"name": "flap", "cuboids": [{"name": "flap", "min": [0, -6, 0], "max": [40, 0, 20]}]},
+                  {"name": "tray", "cuboids": [{"name": "tray", "min": [0, -6, 21], "max": [40, 40, 26]}]}],
+        "joints": [{"name": "flap hinge", "type": "hinge", "part": "flap", "edge": ["flap.top", "flap.near"]},
+                   {"name": "tray slide", "type": "slide", "part": "tray", "axis": "y"}],
+        "configurations": [{"name": "open", "poses": {"flap hinge": -90, "tray slide": -30}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    EXPECT_FALSE(inside(p.bodies[2].shape, gp_Pnt(20, 10, 21.5)));  // the groove the round parts pass along
+    EXPECT_TRUE(inside(p.bodies[2].shape, gp_Pnt(20, 10, 25.5)));
+    const Checked placed = placedByCheck(m, p, {0.4}, 8);
+    EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
+    EXPECT_TRUE(placed.check.loose.empty());
+}
+
 TEST(Joints, ALinksRoundPartsStayWithinTheFacesTheyStandOn)
 {
     // A crate's 10 mm board on a link to the base's side, the base pivot 3 mm under the base's top: the
