@@ -25,10 +25,17 @@ class LayoutPanel:
             binding.setAutoApply(True)
             self.bindings.append(binding)
             box.valueChanged.connect(lambda *_, name=name, box=box: self.set(name, box.property("rawValue")))
+        for name, combo in (("Cuts", self.form.cuts), ("FirstCut", self.form.firstCut)):
+            combo.addItems(layout.getEnumerationsOfProperty(name))
+            combo.setCurrentText(getattr(layout, name))
+            combo.currentTextChanged.connect(lambda text, name=name: self.set(name, text))
+        self.form.stages.setValue(layout.Stages)
+        self.form.stages.valueChanged.connect(lambda value: self.set("Stages", value))
         self.show()
 
     def set(self, name, value):
-        if abs(getattr(self.layout, name).Value - value) > 1e-12:
+        current = properties.number(getattr(self.layout, name))
+        if (abs(current - value) > 1e-12 if isinstance(value, float) else current != value):
             setattr(self.layout, name, value)
             self.layout.Document.recompute()
         self.show()
@@ -45,6 +52,11 @@ class LayoutPanel:
         form.utilisation.setText("{:.1%}".format(layout.SheetUtilisation))
         form.waste.setText("{:.3f} m²".format(layout.WasteArea.Value / 1e6))
         form.sheets.setText(str(layout.SheetCount))
+        guillotine = layout.Cuts.startswith("Guillotine")
+        form.sawCuts.setText("{}, {:.1f} m".format(layout.SawCuts, layout.SawCutLength.Value / 1000)
+                             if guillotine else "-")
+        form.stages.setEnabled(guillotine)
+        form.firstCut.setEnabled(guillotine)
 
     def accept(self):
         self.layout.Document.commitTransaction()

@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
+#include <optional>
 
 namespace fabguide::cli {
 
@@ -21,7 +23,10 @@ struct PackArguments {
     std::string svgFolder, dxfFolder, csvFile;
     bool strip = false;
     bool bottomLeft = false;
-    int rotationStep = -1;  // -1: as the file's settings say
+    int rotationStep = -1;               // -1: as the file's settings say
+    std::optional<material::Cuts> cuts;  // unset: as the file's settings say
+    std::optional<int> stages;
+    std::optional<material::FirstCut> firstCut;
     material::OrderingSearchOptions search;
 };
 
@@ -39,6 +44,9 @@ void run(const PackArguments& args)
         args.strip ? io::readStripInstance(document) : io::readPackProblem(document);
     if (args.rotationStep >= 0)
         problem.settings.rotationStep = args.rotationStep;
+    problem.settings.cuts = args.cuts.value_or(problem.settings.cuts);
+    problem.settings.stages = args.stages.value_or(problem.settings.stages);
+    problem.settings.firstCut = args.firstCut.value_or(problem.settings.firstCut);
     material::OrderingSearchOptions search = args.search;
     search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
     const material::Layout layout = material::pack(problem, search);
@@ -52,6 +60,14 @@ void run(const PackArguments& args)
     std::printf("usage         %.4f  (part area / layout bounding rectangle)\n", layout.usage());
     std::printf("utilisation   %.4f  (part area / boards used)\n", layout.sheetUtilisation());
     std::printf("waste area    %.6g mm^2\n", layout.wasteArea());
+    if (!layout.sawCuts.empty()) {
+        size_t count = 0;
+        double length = 0;
+        for (const std::vector<material::SawCut>& sheet : layout.sawCuts)
+            for (const material::SawCut& c : sheet)
+                ++count, length += c.length();
+        std::printf("saw cuts      %zu, %.1f m\n", count, length / 1000);
+    }
     std::printf("layout        %s\n", args.output.c_str());
     for (const std::string& path :
          io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder, args.csvFile))
@@ -83,6 +99,23 @@ void addPackCommand(CLI::App& app)
            "of this many degrees (a divisor of 90, e.g. 15); 0: quarter turns (default: the file's "
            "settings.rotation_step)")
         ->check(CLI::Range(0, 90));
+    cmd->add_option(
+           "--cuts", args->cuts,
+           "free: any outline (CNC, laser); guillotine: straight cuts from edge to edge (panel saw), "
+           "with the cut sequence in the layout (default: the file's settings.cuts)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, material::Cuts>{
+            {"free", material::Cuts::Free}, {"guillotine", material::Cuts::Guillotine}}));
+    cmd->add_option("--stages", args->stages,
+                    "guillotine cuts: at most this many changes of direction (2, 3, ...; 0: unlimited; "
+                    "default: the file's settings.stages)")
+        ->check(CLI::Range(0, 100));
+    cmd->add_option("--first-cut", args->firstCut,
+                    "guillotine cuts: the first cuts along the sheet's length, across it, or any "
+                    "(default: the file's settings.first_cut)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, material::FirstCut>{{"any", material::FirstCut::Any},
+                                                      {"along", material::FirstCut::Along},
+                                                      {"across", material::FirstCut::Across}}));
     cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
     cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
         ->check(CLI::Range(0.0, 86400.0))

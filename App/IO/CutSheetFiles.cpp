@@ -152,7 +152,22 @@ std::string svg(const material::CutSheet& sheet, double stroke)
             << ">" << escapeXml(label.text) << "</text>\n";
     for (const geometry::Polygon& mark : sheet.engraved)
         out << "    " << svgPath(mark, h) << "\n";
-    out << "  </g>\n</svg>\n";
+    out << "  </g>\n";
+    if (!sheet.sawCuts.empty()) {  // dashed orange lines numbered in their order, for the person at the saw
+        const double size = std::max(8.0, std::min(w, h) / 80);
+        out << "  <g id=\"saw\" fill=\"#ff8000\" stroke=\"#ff8000\" stroke-width=\""
+            << std::max(stroke, size / 10) << "\" stroke-dasharray=\"" << 2 * size << " " << size
+            << "\" font-family=\"sans-serif\" "
+            << "font-size=\"" << size << "\" text-anchor=\"middle\">\n";
+        for (const material::SawCut& c : sheet.sawCuts)
+            out << "    <line x1=\"" << c.from.x << "\" y1=\"" << h - c.from.y << "\" x2=\"" << c.to.x
+                << "\" y2=\"" << h - c.to.y << "\" data-number=\"" << c.number << "\" data-stage=\""
+                << c.stage << "\"/>\n"
+                << "    <text x=\"" << (c.from.x + c.to.x) / 2 << "\" y=\"" << h - (c.from.y + c.to.y) / 2
+                << "\" stroke=\"none\">" << c.number << "</text>\n";
+        out << "  </g>\n";
+    }
+    out << "</svg>\n";
     return out.str();
 }
 
@@ -181,7 +196,8 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
     dw->tableEnd();
-    std::vector<std::pair<std::string, int>> layers = {{"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}};
+    std::vector<std::pair<std::string, int>> layers = {
+        {"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}, {"SAW", 30}};
     for (const material::Drill& drill : sheet.drills)  // a layer per depth, which CAM maps to a drilling pass
         if (std::none_of(layers.begin(), layers.end(),
                          [&](const auto& l) { return l.first == drillLayer(drill); }))
@@ -236,6 +252,13 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
                       DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,
                                   1, 2, label.text, "Standard", label.angle * kPi / 180),  // radians
                       DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
+    for (const material::SawCut& c : sheet.sawCuts) {  // the saw's lines, each with its number beside it
+        dxf.writeLine(*dw, DL_LineData(c.from.x, c.from.y, 0, c.to.x, c.to.y, 0),
+                      DL_Attributes("SAW", 256, -1, "BYLAYER", 1.0));
+        const double x = (c.from.x + c.to.x) / 2, y = (c.from.y + c.to.y) / 2;
+        dxf.writeText(*dw, DL_TextData(x, y, 0, x, y, 0, 8, 1.0, 0, 1, 0, c.number, "Standard", 0),
+                      DL_Attributes("SAW", 256, -1, "BYLAYER", 1.0));
+    }
     dw->sectionEnd();
     writeObjects(*dw);
     dw->dxfEOF();

@@ -11,12 +11,15 @@ namespace fabguide::io {
 
 /// SVG sized in millimetres; groups "cut" (red #ff0000 hairlines), "drill" (green #00a000 circles with
 /// data-depth), "engrave" (blue #0000ff text and marks) and "sheet" (grey board outline, not to be cut).
+/// With guillotine cuts, a group "saw": the saw's cuts as dashed orange (#ff8000) lines with data-number and
+/// data-stage, each numbered in text at its middle.
 /// y points up in FabGuide and down in SVG: flipped here.
 /// `stroke` is the line width in sheet millimetres: 0.1 (a hairline) for machines, wider for print.
 std::string svg(const material::CutSheet& sheet, double stroke = 0.1);
 void writeSvg(const material::CutSheet& sheet, const std::string& path);
 
 /// DXF R2000 (AC1015) in millimetres with layers CUT (red LWPOLYLINEs), ENGRAVE (blue TEXT and marks),
+/// SAW (orange LINEs and their numbers, guillotine cuts only),
 /// DRILL (green CIRCLEs) and SHEET.
 void writeDxf(const material::CutSheet& sheet, const std::string& path);
 

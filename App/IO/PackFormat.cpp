@@ -30,6 +30,14 @@ std::vector<int> readOrientations(const Fields& part)
     return orientations;
 }
 
+/// A point [x, y].
+geometry::Point2 readPoint(const nlohmann::json& point, const std::string& path)
+{
+    if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number())
+        throw FormatError(path + ": must be a point [x, y], got " + point.dump());
+    return {point[0].get<double>(), point[1].get<double>()};
+}
+
 /// A polygon as [[x, y], ...]: at least 3 points, not flat; returned counter-clockwise if `outer`.
 geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& path, bool outer)
 {
@@ -37,10 +45,7 @@ geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& pat
         throw FormatError(path + ": must be a list of at least 3 [x, y] points");
     geometry::Polygon polygon;
     for (size_t k = 0; k < json.size(); ++k) {
-        const nlohmann::json& point = json[k];
-        if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number())
-            throw FormatError(at(path, k) + ": must be a point [x, y], got " + point.dump());
-        const geometry::Point2 q{point[0].get<double>(), point[1].get<double>()};
+        const geometry::Point2 q = readPoint(json[k], at(path, k));
         if (polygon.empty() || q.x != polygon.back().x || q.y != polygon.back().y)  // a repeated point: once
             polygon.push_back(q);
     }
@@ -151,6 +156,21 @@ material::PackSettings readSettings(const nlohmann::json& document)
     if (result.rotationStep < 0 || (result.rotationStep > 0 && 90 % result.rotationStep != 0))
         throw FormatError("settings.rotation_step: must divide 90 (e.g. 15, 30, 45) or be 0, got " +
                           std::to_string(result.rotationStep));
+    const std::string cuts = settings.text("cuts", "free");
+    if (cuts != "free" && cuts != "guillotine")
+        throw FormatError("settings.cuts: must be \"free\" or \"guillotine\", got \"" + cuts + "\"");
+    result.cuts = cuts == "guillotine" ? material::Cuts::Guillotine : material::Cuts::Free;
+    result.stages = settings.integer("stages", 0);
+    if (result.stages < 0)
+        throw FormatError("settings.stages: must be 0 (unlimited) or a number of stages, got " +
+                          std::to_string(result.stages));
+    const std::string first = settings.text("first_cut", "any");
+    if (first != "any" && first != "along" && first != "across")
+        throw FormatError("settings.first_cut: must be \"any\", \"along\" or \"across\", got \"" + first +
+                          "\"");
+    result.firstCut = first == "along"    ? material::FirstCut::Along
+                      : first == "across" ? material::FirstCut::Across
+                                          : material::FirstCut::Any;
     return result;
 }
 
@@ -331,6 +351,22 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
         layout.placements.push_back(placement);
         layout.partArea += geometry::area(problem.parts[placement.part].outline);
     }
+    const nlohmann::json& sawn = root.array("saw_cuts", true);
+    for (size_t i = 0; i < sawn.size(); ++i) {
+        if (!sawn[i].is_array())
+            throw FormatError(at("saw_cuts", i) + ": must be the list of one board's saw cuts");
+        layout.sawCuts.emplace_back();
+        for (size_t k = 0; k < sawn[i].size(); ++k) {
+            const Fields c(sawn[i][k], at(at("saw_cuts", i), k));
+            layout.sawCuts.back().push_back(
+                {c.text("number"), c.integer("stage"), c.flag("trim", false),
+                 readPoint(sawn[i][k].value("from", nlohmann::json()), c.pathOf("from")),
+                 readPoint(sawn[i][k].value("to", nlohmann::json()), c.pathOf("to"))});
+        }
+    }
+    if (!sawn.empty() && sawn.size() != layout.sheets.size())
+        throw FormatError("saw_cuts: one list per board, " + std::to_string(layout.sheets.size()) + ", got " +
+                          std::to_string(sawn.size()));
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
     return layout;
@@ -451,9 +487,31 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
               {"dogbone", s.dogbone},
               {"tab_width", s.tabWidth},
               {"tab_below", s.tabBelow},
-              {"rotation_step", s.rotationStep}}},
+              {"rotation_step", s.rotationStep},
+              {"cuts", s.cuts == material::Cuts::Guillotine ? "guillotine" : "free"},
+              {"stages", s.stages},
+              {"first_cut", s.firstCut == material::FirstCut::Along    ? "along"
+                            : s.firstCut == material::FirstCut::Across ? "across"
+                                                                       : "any"}}},
             {"boards", boards},
             {"parts", parts}};
+}
+
+nlohmann::json sawCutsToJson(const std::vector<std::vector<material::SawCut>>& sheets)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const std::vector<material::SawCut>& cuts : sheets) {
+        nlohmann::json sheet = nlohmann::json::array();
+        for (const material::SawCut& c : cuts)
+            sheet.push_back({{"number", c.number},
+                             {"stage", c.stage},
+                             {"trim", c.trim},
+                             {"from", {c.from.x, c.from.y}},
+                             {"to", {c.to.x, c.to.y}},
+                             {"length", c.length()}});
+        out.push_back(sheet);
+    }
+    return out;
 }
 
 nlohmann::json layoutToJson(const material::Layout& layout, const material::PackProblem& problem,
@@ -483,6 +541,8 @@ nlohmann::json layoutToJson(const material::Layout& layout, const material::Pack
                           {"waste_area", layout.wasteArea()}};
     if (problem.strip)
         out["strip_height"] = layout.stripHeight;
+    if (!layout.sawCuts.empty())
+        out["saw_cuts"] = sawCutsToJson(layout.sawCuts);
     return out;
 }
 

@@ -52,8 +52,14 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
                 depth[k] += k != j && holds(layout.placements[j].sheet, hole, k);
     const int deepest = n ? *std::max_element(depth.begin(), depth.end()) : 0;
     std::vector<CutSheet> sheets;
-    for (const MasterBoard& board : layout.sheets)
-        sheets.push_back({board, {}, {}, {}, {}, {}});
+    for (size_t k = 0; k < layout.sheets.size(); ++k)
+        sheets.push_back({layout.sheets[k],
+                          {},
+                          {},
+                          {},
+                          {},
+                          {},
+                          k < layout.sawCuts.size() ? layout.sawCuts[k] : std::vector<SawCut>{}});
     // Inner cuts first: a part never drops out before its holes are cut, and a part in another's hole is cut
     // before that hole (deepest first). With holding tabs, a hole that holds a part is tabbed too, so the
     // ring round the part stays in the sheet until the part is cut.

@@ -27,6 +27,7 @@ struct CutSheet {
     std::vector<Label> labels;
     std::vector<Drill> drills;                ///< holes drilled into the face, not through
     std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)
+    std::vector<SawCut> sawCuts;  ///< guillotine cuts: the saw's, in their order (Layout::sawCuts)
 };
 
 /// Placement k's outline at its nominal size, turned and moved as placed on its sheet.

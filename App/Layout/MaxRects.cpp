@@ -106,37 +106,11 @@ void occupy(Bin& bin, const Rect& placed)
     bin.usedHeight = std::max(bin.usedHeight, placed.y + placed.h);
 }
 
-/// The free rectangle of a fresh sheet: the board less its trim, with one clearance added back at the far
-/// edges (every pose carries its clearance on those sides).
+/// The free rectangle of a fresh sheet (usableSize).
 Rect usable(const MasterBoard& board, const PackSettings& s)
 {
-    const double clearance = s.kerf + s.spacing;
-    return {0, 0, board.width - 2 * s.trim + clearance, board.height - 2 * s.trim + clearance};
-}
-
-/// The kind of sheet to open for `part`: the first listed of the least cost left that it fits on; -1: none.
-int kindFor(const PackProblem& problem, const PartSpec& part, const std::vector<int>& left)
-{
-    const PackSettings& s = problem.settings;
-    int kind = -1;
-    for (size_t k = 0; k < problem.boards.size(); ++k) {
-        const MasterBoard& board = problem.boards[k];
-        const Rect sheet = usable(board, s);
-        const std::vector<Pose> poses = posesOn(part, board, s.kerf + s.spacing);
-        const bool fits = std::any_of(poses.begin(), poses.end(), [&](const Pose& p) {
-            return p.w <= sheet.w + kHair && p.h <= sheet.h + kHair;
-        });
-        if (left[k] != 0 && fits && (kind < 0 || board.cost < problem.boards[kind].cost))
-            kind = static_cast<int>(k);
-    }
-    return kind;
-}
-
-PackingError ranOut(const PartSpec& part, size_t more)
-{
-    return PackingError("not enough master boards: part '" + part.id + "'" +
-                        (more ? " and " + std::to_string(more) + " more do not fit on the boards available"
-                              : " does not fit on the boards available"));
+    const auto [w, h] = usableSize(board, s);
+    return {0, 0, w, h};
 }
 
 /// A new sheet of `kind` in `layout` and `bins`.
@@ -199,7 +173,7 @@ Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule r
             bestIn(rule, bins[b], static_cast<int>(b), posesOn(part, problem.boards[bins[b].kind], clearance),
                    best);
         if (best.bin < 0) {
-            const int kind = kindFor(problem, part, left);
+            const int kind = sheetKindFor(problem, part, left);
             if (kind < 0)
                 throw ranOut(part, units.size() - u - 1);
             open(problem, kind, left, bins, layout);
@@ -230,7 +204,7 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
     while (done < units.size()) {
         const auto largest =
             std::find_if(order.begin(), order.end(), [&](int p) { return remaining[p] > 0; });
-        const int kind = kindFor(problem, problem.parts[*largest], left);
+        const int kind = sheetKindFor(problem, problem.parts[*largest], left);
         if (kind < 0)
             throw ranOut(problem.parts[*largest], units.size() - done - 1);
         open(problem, kind, left, bins, layout);
@@ -260,26 +234,6 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
 }
 
 using Deadline = std::chrono::steady_clock::time_point;
-
-/// The orders MaxRects takes the units in, largest first by: longest side, area, perimeter, shortest side.
-enum class Order { LongestSide, Area, Perimeter, ShortestSide };
-
-/// What a part is sorted by in `order` (ties by the second).
-std::pair<double, double> orderKey(Order order, const PartSpec& p)
-{
-    const double w = p.width(), h = p.height();
-    switch (order) {
-        case Order::Area:
-            return {w * h, std::max(w, h)};
-        case Order::Perimeter:
-            return {w + h, w * h};
-        case Order::ShortestSide:
-            return {std::min(w, h), std::max(w, h)};
-        case Order::LongestSide:
-            break;
-    }
-    return {std::max(w, h), w * h};
-}
 
 /// Every MaxRects run on `problem` while the time lasts, each layout handed to `keep` (which returns false to
 /// stop); the first PackingError (boards ran out) of the runs that raised one, if any. The first run places
@@ -337,6 +291,35 @@ double usedHeight(const Layout& layout, const PackSettings& s)
 
 }  // namespace
 
+std::pair<double, double> usableSize(const MasterBoard& board, const PackSettings& s)
+{
+    const double clearance = s.kerf + s.spacing;
+    return {board.width - 2 * s.trim + clearance, board.height - 2 * s.trim + clearance};
+}
+
+int sheetKindFor(const PackProblem& problem, const PartSpec& part, const std::vector<int>& left)
+{
+    const PackSettings& s = problem.settings;
+    int kind = -1;
+    for (size_t k = 0; k < problem.boards.size(); ++k) {
+        const MasterBoard& board = problem.boards[k];
+        const auto [w, h] = usableSize(board, s);
+        const std::vector<Pose> poses = posesOn(part, board, s.kerf + s.spacing);
+        const bool fits = std::any_of(poses.begin(), poses.end(),
+                                      [&](const Pose& p) { return p.w <= w + kHair && p.h <= h + kHair; });
+        if (left[k] != 0 && fits && (kind < 0 || board.cost < problem.boards[kind].cost))
+            kind = static_cast<int>(k);
+    }
+    return kind;
+}
+
+PackingError ranOut(const PartSpec& part, size_t more)
+{
+    return PackingError("not enough master boards: part '" + part.id + "'" +
+                        (more ? " and " + std::to_string(more) + " more do not fit on the boards available"
+                              : " does not fit on the boards available"));
+}
+
 std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double clearance)
 {
     std::vector<Pose> poses;
@@ -352,6 +335,22 @@ std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double
         poses.push_back({rotation, width + clearance, height + clearance});
     }
     return poses;
+}
+
+std::pair<double, double> orderKey(Order order, const PartSpec& p)
+{
+    const double w = p.width(), h = p.height();
+    switch (order) {
+        case Order::Area:
+            return {w * h, std::max(w, h)};
+        case Order::Perimeter:
+            return {w + h, w * h};
+        case Order::ShortestSide:
+            return {std::min(w, h), std::max(w, h)};
+        case Order::LongestSide:
+            break;
+    }
+    return {std::max(w, h), w * h};
 }
 
 bool allRectangles(const PackProblem& problem)

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace fabguide::material {
@@ -19,6 +20,23 @@ struct Pose {
 
 /// The part's poses allowed on `board`: one per distinct footprint, grain and thickness kept.
 std::vector<Pose> posesOn(const PartSpec& part, const MasterBoard& board, double clearance);
+
+/// The width and height of `board` that parts may take, with their clearance: the board less its trim, with
+/// one clearance added back at the far edges (every pose carries its clearance on those sides).
+std::pair<double, double> usableSize(const MasterBoard& board, const PackSettings& settings);
+
+/// The kind of sheet to open for `part`: the first listed of the least cost of those `left` (boards of each
+/// kind in stock, -1: unlimited) that it fits on; -1: none.
+int sheetKindFor(const PackProblem& problem, const PartSpec& part, const std::vector<int>& left);
+
+/// PackingError: the boards ran out before `part` and `more` others.
+PackingError ranOut(const PartSpec& part, size_t more);
+
+/// The orders parts are taken in, largest first by: longest side, area, perimeter, shortest side.
+enum class Order { LongestSide, Area, Perimeter, ShortestSide };
+
+/// What a part is sorted by in `order` (ties by the second), largest first.
+std::pair<double, double> orderKey(Order order, const PartSpec& p);
 
 /// Whether every part is a plain rectangle without holes, which MaxRects lays out exactly.
 bool allRectangles(const PackProblem& problem);

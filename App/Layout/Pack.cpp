@@ -2,6 +2,7 @@
 
 #include "Core/Parallel.h"
 #include "Layout/Compaction.h"
+#include "Layout/Guillotine.h"
 #include "Layout/HoleFill.h"
 #include "Layout/MaxRects.h"
 #include "Layout/Raster.h"
@@ -95,6 +96,11 @@ void checkSettings(const PackProblem& problem)
     if (s.rotationStep < 0 || (s.rotationStep > 0 && 90 % s.rotationStep != 0))
         throw std::invalid_argument("settings.rotation_step must divide 90 (e.g. 15, 30, 45), got " +
                                     std::to_string(s.rotationStep));
+    if (s.stages < 0)
+        throw std::invalid_argument("settings.stages must be 0 (unlimited) or a number of stages, got " +
+                                    std::to_string(s.stages));
+    if (s.cuts == Cuts::Guillotine && problem.strip)
+        throw std::invalid_argument("settings.cuts: guillotine cuts are laid out on sheets, not on a strip");
     // Sizes are checked before anything is rasterised: the grid is what takes time and memory.
     for (size_t k = 0; k < problem.boards.size(); ++k) {
         const MasterBoard& b = problem.boards[k];
@@ -401,6 +407,9 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
     const auto started = std::chrono::steady_clock::now();
     const PackProblem problem = freelyTurned(given);
     checkSettings(problem);
+    if (problem.settings.cuts == Cuts::Guillotine)
+        return guillotine(problem, search.iterations < 0 ? kGuillotineRuns : search.iterations, search.seed,
+                          started + seconds(search.timeLimit));
     std::vector<int> left;
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);

@@ -5,6 +5,7 @@
 #include "Layout/Drill.h"
 #include "Layout/OrderingSearch.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,15 @@ struct PartSpec {
 PartSpec rectangularPart(std::string id, double width, double height, int quantity = 1,
                          std::vector<int> orientations = {0, 90, 180, 270});
 
+/// How the sheets are cut (issue 31): `Free`, any outline anywhere (a CNC or laser follows it); `Guillotine`,
+/// straight cuts from edge to edge only (a panel, track or table saw), in at most `stages` changes of
+/// direction.
+enum class Cuts { Free, Guillotine };
+
+/// The direction of a guillotine layout's first cuts: along the sheet's length (its x axis: strips as long as
+/// the sheet), across it, or whichever wastes less.
+enum class FirstCut { Any, Along, Across };
+
 struct PackSettings {
     double resolution = 0.5;  ///< grid cell size τ in mm (thesis 5.4.1)
     double kerf = 0;          ///< width of the cut in mm
@@ -54,6 +64,9 @@ struct PackSettings {
     double tabBelow = 300;    ///< parts whose longer side is under this (mm) get holding tabs
     int rotationStep = 0;     ///< free rotation: parts without grain that may take every quarter turn take
                               ///< every multiple of this many degrees (a divisor of 90); 0: quarter turns
+    Cuts cuts = Cuts::Free;
+    int stages = 0;  ///< guillotine cuts: at most this many changes of direction (2, 3, ...); 0: unlimited
+    FirstCut firstCut = FirstCut::Any;
 };
 
 struct PackProblem {
@@ -72,9 +85,23 @@ struct Placement {
     double width = 0, height = 0;  ///< size as placed
 };
 
+/// One straight saw cut through a piece of a sheet, from edge to edge (guillotine cuts). The pieces of a
+/// sheet are numbered as a tree: cut "2" parts the second first-stage piece from the rest of the sheet, cut
+/// "2.1" the first piece of that one from the rest of it, and so on.
+struct SawCut {
+    std::string number;
+    int stage = 1;              ///< 1: through the whole sheet; one more at each change of direction
+    bool trim = false;          ///< it parts one part from waste only, one stage past the limit (non-exact)
+    geometry::Point2 from, to;  ///< the middle of the kerf, in sheet coordinates
+    double length() const { return std::hypot(to.x - from.x, to.y - from.y); }
+};
+
 struct Layout {
     std::vector<MasterBoard> sheets;  ///< the boards used, in order
     std::vector<Placement> placements;
+    /// Guillotine cuts: per sheet, the saw cuts in the order to make them (every cut of a piece, then each of
+    /// its pieces in turn); empty when the cuts are free.
+    std::vector<std::vector<SawCut>> sawCuts;
     double stripHeight = 0;   ///< strip mode: height used
     double partArea = 0;      ///< mm²
     double boundingArea = 0;  ///< summed bounding rectangles of each sheet's layout, mm²

@@ -43,23 +43,10 @@ TEST(MaxRects, KerfSpacingAndTrimKeepEveryPartApartAndOffTheEdges)
 
 TEST(MaxRects, GrainAndThicknessChooseTheBoardsAndTurns)
 {
-    PackProblem problem;
-    problem.boards.push_back({"oak", "oak", 1000, 2000, 18, -1, Grain::AlongHeight});
-    problem.boards.push_back({"hardboard", "hdf", 1000, 1000, 6, -1});
-    PartSpec stile = rectangularPart("stile", 800, 60, 4);
-    stile.followsGrain = true;
-    stile.thickness = 18;
-    PartSpec back = rectangularPart("back", 900, 900, 1);
-    back.thickness = 6;
-    problem.parts = {stile, back};
+    const PackProblem problem = fabguide::material::testing::grainAndThicknessJob();
     const Layout layout = maxRects(problem, kNoDeadline);
     expectValid(problem, layout);
-    for (const Placement& p : layout.placements) {
-        EXPECT_EQ(layout.sheets[p.sheet].thickness, problem.parts[p.part].thickness);
-        if (p.part == 0) {
-            EXPECT_EQ(p.rotation % 180, 90) << "the stile's length runs along the board's grain (its height)";
-        }
-    }
+    fabguide::material::testing::expectGrainAndThicknessKept(problem, layout);
 }
 
 TEST(MaxRects, BoardsRunningOutNameThePartAndHowManyMore)

@@ -174,6 +174,30 @@ TEST(PackFormat, LayoutsReadBackAsWritten)
     EXPECT_THROW(io::readLayout(bad, problem, io::PartNames::Ids), io::FormatError);
 }
 
+TEST(PackFormat, SawCutsAndTheirSettingsReadBackAsWritten)
+{
+    json doc = goodProblem();
+    doc["settings"]["cuts"] = "guillotine";
+    doc["settings"]["stages"] = 2;
+    doc["settings"]["first_cut"] = "across";
+    const material::PackProblem problem = io::readPackProblem(doc);
+    EXPECT_EQ(problem.settings.cuts, material::Cuts::Guillotine);
+    EXPECT_EQ(problem.settings.firstCut, material::FirstCut::Across);
+    EXPECT_EQ(io::readPackProblem(io::problemToJson(problem)).settings.stages, 2);
+    material::OrderingSearchOptions options;
+    options.iterations = 10;
+    const json written = io::layoutToJson(material::pack(problem, options), problem, io::PartNames::Ids);
+    ASSERT_TRUE(written.contains("saw_cuts"));
+    EXPECT_EQ(
+        io::layoutToJson(io::readLayout(written, problem, io::PartNames::Ids), problem, io::PartNames::Ids),
+        written);
+    json bad = written;
+    bad["saw_cuts"][0][0].erase("to");
+    EXPECT_THROW(io::readLayout(bad, problem, io::PartNames::Ids), io::FormatError);
+    doc["settings"]["first_cut"] = "sideways";
+    EXPECT_EQ(errorOf(doc), "settings.first_cut: must be \"any\", \"along\" or \"across\", got \"sideways\"");
+}
+
 TEST(PackFormat, OutlinesThatCrossThemselvesHolesOutsideAndTwinIdsAreNamed)
 {
     json doc = goodProblem();

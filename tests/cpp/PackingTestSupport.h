@@ -128,4 +128,31 @@ inline double distance(const geometry::Polygon& a, const geometry::Polygon& b)
     return least;
 }
 
+/// Oak stiles that follow its grain (along the board's height) and a hardboard back: each part has one board
+/// kind of its thickness, and the stiles one turn on it.
+inline PackProblem grainAndThicknessJob()
+{
+    PackProblem problem;
+    problem.boards.push_back({"oak", "oak", 1000, 2000, 18, -1, Grain::AlongHeight});
+    problem.boards.push_back({"hardboard", "hdf", 1000, 1000, 6, -1});
+    PartSpec stile = rectangularPart("stile", 800, 60, 4);
+    stile.followsGrain = true;
+    stile.thickness = 18;
+    PartSpec back = rectangularPart("back", 900, 900, 1);
+    back.thickness = 6;
+    problem.parts = {stile, back};
+    return problem;
+}
+
+/// The stiles of grainAndThicknessJob turned along the grain, every part on a board of its thickness.
+inline void expectGrainAndThicknessKept(const PackProblem& problem, const Layout& layout)
+{
+    for (const Placement& p : layout.placements) {
+        EXPECT_EQ(layout.sheets[p.sheet].thickness, problem.parts[p.part].thickness);
+        if (p.part == 0) {
+            EXPECT_EQ(p.rotation % 180, 90) << "the stile's length runs along the board's grain (its height)";
+        }
+    }
+}
+
 }  // namespace fabguide::material::testing

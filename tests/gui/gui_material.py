@@ -79,6 +79,24 @@ def editing_the_kerf_in_the_panel_relays_out_live():
     assert layout.LayoutJson != before
     usage = [w for w in Gui.getMainWindow().findChildren(QtGui.QLabel) if w.objectName() == "usage"][0]
     assert usage.text() == "{:.1%}".format(layout.Usage)
+
+
+def guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts():
+    layout = state["layout"]
+    window = Gui.getMainWindow()
+    cuts = [w for w in window.findChildren(QtGui.QComboBox) if w.objectName() == "cuts"][0]
+    stages = [w for w in window.findChildren(QtGui.QSpinBox) if w.objectName() == "stages"][0]
+    assert not stages.isEnabled(), "stages mean nothing for free cuts"
+    cuts.setCurrentText("Guillotine (panel saw)")
+    stages.setValue(2)
+    assert layout.Cuts == "Guillotine (panel saw)" and layout.Stages == 2 and stages.isEnabled()
+    assert layout.SawCuts > 0 and layout.SawCutLength.Value > 0 and not layout.Error, layout.Error
+    shown = [w for w in window.findChildren(QtGui.QLabel) if w.objectName() == "sawCuts"][0].text()
+    assert shown.startswith("{}, ".format(layout.SawCuts)), shown
+    QtGui.QApplication.processEvents()
+    print("screenshot: " + guitest.screenshot("material_layout_guillotine"))
+    cuts.setCurrentText("Free (CNC router, laser)")
+    assert layout.Cuts.startswith("Free") and layout.SawCuts == 0
     Gui.Control.activeDialog() and Gui.ActiveDocument.resetEdit()
     Gui.Control.closeDialog()
     state["doc"].commitTransaction()
@@ -171,10 +189,11 @@ guitest.run([
     boards_from_solids_makes_one_board_per_solid,
     master_board_and_layout_open_the_usage_panel,
     editing_the_kerf_in_the_panel_relays_out_live,
+    guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts,
     mistakes_are_refused_or_said_in_one_sentence,
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,
     techdraw_page_opens_with_the_cut_sheet,
-        undo_removes_the_layout_in_one_step,
+    undo_removes_the_layout_in_one_step,
     make_board_from_a_selected_face,
 ])

@@ -13,6 +13,8 @@ from fabguide.material import board, master_board
 
 GAP = 100  # mm between the model and the sheets, and between sheets
 JOINTS = {"Auto (dowels for thick boards)": "Auto", "Finger joints": "Fingers", "None": "None"}
+CUTS = {"Free (CNC router, laser)": "free", "Guillotine (panel saw)": "guillotine"}
+FIRST_CUTS = {"Any": "any", "Along the sheet": "along", "Across the sheet": "across"}
 
 
 class LayoutError(ValueError):
@@ -23,7 +25,8 @@ class Layout(properties.Proxy):
     TYPE, NOUN = "FabGuide::Layout", "Layout"
     VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"),
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
-                               "0 or a divisor of 90 (e.g. 15, 30, 45)"))
+                               "0 or a divisor of 90 (e.g. 15, 30, 45)"),
+                 Stages=properties.at_least(0, " (0: unlimited)"))
 
     def define(self, obj):
         add = properties.add
@@ -42,7 +45,17 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
             "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
             "Auto", list(JOINTS))
+        add(obj, "App::PropertyEnumeration", "Cuts", "Cutting",
+            "Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only "
+            "(a panel, track or table saw), with the cut sequence on the cut sheets", list(CUTS))
+        add(obj, "App::PropertyInteger", "Stages", "Cutting",
+            "Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited", 0)
+        add(obj, "App::PropertyEnumeration", "FirstCut", "Cutting",
+            "Guillotine cuts: the first cuts along the sheet's length (x), across it, or whichever wastes less",
+            list(FIRST_CUTS))
         add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
+        add(obj, "App::PropertyInteger", "SawCuts", "Result", "Guillotine cuts: the saw cuts to make", mode=1)
+        add(obj, "App::PropertyLength", "SawCutLength", "Result", "Guillotine cuts: their total length", mode=1)
         add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
         add(obj, "App::PropertyInteger", "RotationStep", "Search",
             "Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, "
@@ -72,6 +85,9 @@ class Layout(properties.Proxy):
         obj.SheetUtilisation = result["sheet_utilisation"]
         obj.WasteArea = result["waste_area"]
         obj.SheetCount = len(result["boards"])
+        saw_cuts = [c for sheet in result.get("saw_cuts", []) for c in sheet]
+        obj.SawCuts = len(saw_cuts)
+        obj.SawCutLength = sum(c["length"] for c in saw_cuts)
         obj.Connectors = [connector_text(c) for c in joined["connectors"]]
         for note in joined["notes"]:
             FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, note))
@@ -116,7 +132,8 @@ def make_problem(obj):
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value, "tab_width": obj.TabWidth.Value,
-                     "tab_below": obj.TabBelow.Value, "rotation_step": obj.RotationStep},
+                     "tab_below": obj.TabBelow.Value, "rotation_step": obj.RotationStep,
+                     "cuts": CUTS[obj.Cuts], "stages": obj.Stages, "first_cut": FIRST_CUTS[obj.FirstCut]},
         "boards": [master_board.as_problem_board(m) for m in masters],
     }
     return problem, boards

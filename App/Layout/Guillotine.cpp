@@ -1,0 +1,327 @@
+#include "Layout/Guillotine.h"
+
+#include "Layout/MaxRects.h"
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <tuple>
+
+namespace fabguide::material {
+
+namespace {
+
+constexpr double kHair = 1e-9;  // mm: what counts as touching
+
+/// A piece of a sheet in the usable sheet's coordinates (trim removed), the clearance to the next piece
+/// included at its far edges; axis 0 is x, 1 is y.
+struct Piece {
+    double at[2] = {0, 0}, size[2] = {0, 0};
+};
+
+double along(const Pose& pose, int axis)
+{
+    return axis == 0 ? pose.w : pose.h;
+}
+
+/// How one sheet is filled: the first stage's direction, the stages, and how the first stage's slabs are
+/// led (their lead part lying tall, as thick as it may, or flat).
+struct Fill {
+    int firstAxis = 1;  ///< the first stage's slabs follow one another along this axis
+    int stages = 3;
+    bool tallLeads = true;
+};
+
+/// A run's rules: the parts in the order preferred, and the fills each sheet tries (the one that lays the
+/// most part area is kept).
+struct Rules {
+    std::vector<int> order;
+    std::vector<Fill> fills;
+};
+
+/// A unit taken to lead a slab: its part and its pose.
+struct Lead {
+    int part = -1;
+    Pose pose;
+};
+
+/// One sheet filled by slabs, stage by stage (Guillotine.h).
+class Filler {
+public:
+    Filler(const PackProblem& problem, const std::vector<int>& order, const Fill& rules,
+           const std::vector<std::vector<Pose>>& poses, const Piece& sheet, std::vector<int>& remaining,
+           Layout& layout)
+        : problem_(problem),
+          order_(order),
+          rules_(rules),
+          poses_(poses),
+          sheet_(sheet),
+          remaining_(remaining),
+          layout_(layout),
+          clearance_(problem.settings.kerf + problem.settings.spacing)
+    {
+    }
+
+    /// Fills `piece` with slabs following one another along axis `a`, the first led by `lead` when given
+    /// (already taken); its cuts, then those of its slabs, go to `cuts`.
+    void fill(const Piece& piece, int a, int stage, const std::string& number, std::optional<Lead> lead,
+              std::vector<SawCut>& cuts)
+    {
+        const int b = 1 - a;
+        const double end = piece.at[a] + piece.size[a];
+        std::vector<SawCut> inner;
+        double at = piece.at[a];
+        for (int n = 1;; ++n, lead.reset()) {
+            if (!lead) {
+                lead = pick(piece, a, stage, end - at);
+                if (!lead)
+                    break;
+                --remaining_[lead->part];
+            }
+            Piece slab = piece;
+            slab.at[a] = at;
+            slab.size[a] = along(lead->pose, a);
+            at += slab.size[a];
+            const std::string name = number.empty() ? std::to_string(n) : number + "." + std::to_string(n);
+            if (at < end - kHair)
+                cuts.push_back(cut(piece, a, at, stage, name, false));
+            if (stage < rules_.stages)
+                fill(slab, b, stage + 1, name, lead, inner);
+            else
+                place(*lead, slab, b, stage + 1, name, inner);
+        }
+        cuts.insert(cuts.end(), inner.begin(), inner.end());
+    }
+
+private:
+    /// The unit to lead the next slab in `piece` along `a`, `room` left along it. In the first stage the
+    /// first part of the order that fits, tall or flat by the rules; deeper, the one that fills the piece's
+    /// depth across best (the order breaking ties).
+    std::optional<Lead> pick(const Piece& piece, int a, int stage, double room) const
+    {
+        const int b = 1 - a;
+        std::optional<Lead> best;
+        std::tuple<double, int, double> bestKey{std::numeric_limits<double>::max(), 0, 0};
+        for (int rank = 0; rank < static_cast<int>(order_.size()); ++rank) {
+            const int p = order_[rank];
+            if (remaining_[p] == 0)
+                continue;
+            for (const Pose& pose : poses_[p]) {
+                if (!leaves(room, along(pose, a)) || !leaves(piece.size[b], along(pose, b)))
+                    continue;
+                const double thick = rules_.tallLeads ? -along(pose, a) : along(pose, a);
+                const auto key = stage == 1 ? std::tuple{0.0, rank, thick}
+                                            : std::tuple{-along(pose, b), rank, -along(pose, a)};
+                if (key < bestKey)
+                    bestKey = key, best = Lead{p, pose};
+            }
+            if (stage == 1 && best)
+                break;
+        }
+        return best;
+    }
+
+    /// Whether `size` fits in `room` leaving none of it or a strip a cut can take off: one wider than half
+    /// the clearance, so that the cut's middle stays on the board (no trim) or short of the piece's last cut.
+    bool leaves(double room, double size) const
+    {
+        return size <= room + kHair && (size >= room - kHair || size < room - clearance_ / 2 - kHair);
+    }
+
+    /// The last stage's slab holds its lead alone, at its start; a trim cut across parts it from the waste
+    /// beyond it along `b`.
+    void place(const Lead& lead, const Piece& slab, int b, int stage, const std::string& number,
+               std::vector<SawCut>& cuts)
+    {
+        const PartSpec& spec = problem_.parts[lead.part];
+        const double trim = problem_.settings.trim;
+        const bool turned = lead.pose.rotation % 180 != 0;
+        layout_.placements.push_back({lead.part, static_cast<int>(layout_.sheets.size()) - 1,
+                                      trim + slab.at[0], trim + slab.at[1], lead.pose.rotation,
+                                      turned ? spec.height() : spec.width(),
+                                      turned ? spec.width() : spec.height()});
+        layout_.partArea += geometry::area(spec.outline);
+        const double reach = slab.at[b] + along(lead.pose, b);
+        if (reach < slab.at[b] + slab.size[b] - kHair)
+            cuts.push_back(cut(slab, b, reach, stage, number + ".1", true));
+    }
+
+    /// Where a piece's edge at `at` along `axis` (usable coordinates) lies on the sheet: the middle of the
+    /// cut there, or the board's edge (its edge trim's middle) at either end.
+    double edge(double at, int axis) const
+    {
+        const PackSettings& s = problem_.settings;
+        const double margin = s.trim > 0 ? s.trim - s.kerf / 2 : 0;
+        if (at <= kHair)
+            return margin;
+        if (at >= sheet_.size[axis] - kHair)
+            return (axis == 0 ? layout_.sheets.back().width : layout_.sheets.back().height) - margin;
+        return s.trim + at - clearance_ / 2;
+    }
+
+    /// The cut across `piece` that ends a slab at `at` along `a`, from edge to edge of the piece, in sheet
+    /// coordinates.
+    SawCut cut(const Piece& piece, int a, double at, int stage, const std::string& number, bool trim) const
+    {
+        const int b = 1 - a;
+        const double middle = edge(at, a), from = edge(piece.at[b], b),
+                     to = edge(piece.at[b] + piece.size[b], b);
+        SawCut c{number, stage, trim, {}, {}};
+        c.from = a == 0 ? geometry::Point2{middle, from} : geometry::Point2{from, middle};
+        c.to = a == 0 ? geometry::Point2{middle, to} : geometry::Point2{to, middle};
+        return c;
+    }
+
+    const PackProblem& problem_;
+    const std::vector<int>& order_;
+    const Fill& rules_;
+    const std::vector<std::vector<Pose>>& poses_;
+    const Piece& sheet_;
+    std::vector<int>& remaining_;
+    Layout& layout_;
+    double clearance_;
+};
+
+/// The cuts that take `trim` off the board's edges before the first stage, numbered 0.1 to 0.4: the kerf
+/// inside the margin; the long edges' from end to end of the board, then the short edges'.
+std::vector<SawCut> edgeTrims(const MasterBoard& board, const PackSettings& s)
+{
+    if (s.trim <= 0)
+        return {};
+    const double in = s.trim - s.kerf / 2, w = board.width, h = board.height;
+    return {{"0.1", 0, false, {0, in}, {w, in}},
+            {"0.2", 0, false, {0, h - in}, {w, h - in}},
+            {"0.3", 0, false, {in, in}, {in, h - in}},
+            {"0.4", 0, false, {w - in, in}, {w - in, h - in}}};
+}
+
+/// One run: sheet after sheet, each filled from its whole by the rules. Nothing when `deadline` passes
+/// first.
+std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
+                          const std::vector<std::vector<std::vector<Pose>>>& poses,
+                          std::chrono::steady_clock::time_point deadline)
+{
+    std::vector<int> remaining, left;
+    long units = 0;
+    for (const PartSpec& part : problem.parts)
+        remaining.push_back(part.quantity), units += part.quantity;
+    for (const MasterBoard& board : problem.boards)
+        left.push_back(board.count);
+    Layout layout;
+    for (long placed = 0; placed < units; placed = static_cast<long>(layout.placements.size())) {
+        if (std::chrono::steady_clock::now() > deadline)
+            return std::nullopt;
+        const int first =
+            *std::find_if(rules.order.begin(), rules.order.end(), [&](int p) { return remaining[p] > 0; });
+        const int kind = sheetKindFor(problem, problem.parts[first], left);
+        if (kind < 0)
+            throw ranOut(problem.parts[first], units - placed - 1);
+        const MasterBoard& board = problem.boards[kind];
+        if (left[kind] > 0)
+            --left[kind];
+        layout.sheets.push_back(board);
+        layout.sheets.back().count = 1;
+        layout.sheetArea += board.width * board.height;
+        Piece sheet;
+        std::tie(sheet.size[0], sheet.size[1]) = usableSize(board, problem.settings);
+        const auto filled = [&](const Fill& fill, std::vector<SawCut>& cuts) {
+            Filler(problem, rules.order, fill, poses[kind], sheet, remaining, layout)
+                .fill(sheet, fill.firstAxis, 1, "", {}, cuts);
+        };
+        const Fill* best = &rules.fills.front();
+        double most = -1;
+        for (const Fill& fill : rules.fills) {  // each tried, then undone
+            const std::vector<int> before = remaining;
+            const double area = layout.partArea;
+            std::vector<SawCut> scratch;
+            filled(fill, scratch);
+            if (layout.partArea - area > most + kHair)
+                most = layout.partArea - area, best = &fill;
+            remaining = before, layout.partArea = area;
+            layout.placements.resize(placed);
+        }
+        std::vector<SawCut> cuts = edgeTrims(board, problem.settings);
+        filled(*best, cuts);
+        if (static_cast<long>(layout.placements.size()) == placed)
+            throw PackingError("part '" + problem.parts[first].id + "' cannot be sawn from '" + board.name +
+                               "': it would leave a strip narrower than half the kerf + spacing at the "
+                               "board's edge, which a "
+                               "saw cannot take off; set a trim, or a size that leaves none");
+        layout.sawCuts.push_back(std::move(cuts));
+        double right = 0, top = 0;
+        for (size_t k = placed; k < layout.placements.size(); ++k) {
+            const Placement& p = layout.placements[k];
+            right = std::max(right, p.x + p.width - problem.settings.trim);
+            top = std::max(top, p.y + p.height - problem.settings.trim);
+        }
+        layout.boundingArea += right * top;
+    }
+    return layout;
+}
+
+}  // namespace
+
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
+                  std::chrono::steady_clock::time_point deadline)
+{
+    const PackSettings& s = problem.settings;
+    std::vector<std::vector<std::vector<Pose>>> poses;  // per board kind, per part
+    for (const MasterBoard& board : problem.boards) {
+        poses.emplace_back();
+        for (const PartSpec& part : problem.parts)
+            poses.back().push_back(posesOn(part, board, s.kerf + s.spacing));
+    }
+    std::vector<int> axes{1, 0}, stages{s.stages};
+    if (s.firstCut != FirstCut::Any)
+        axes = {s.firstCut == FirstCut::Along ? 1 : 0};
+    if (s.stages == 0)
+        stages = {2, 3, 4, 6};
+    std::vector<Fill> fills;
+    for (int axis : axes)
+        for (int stage : stages)
+            for (bool tall : {true, false})
+                fills.push_back({axis, stage, tall});
+    std::vector<Rules> tried;
+    for (Order order : {Order::LongestSide, Order::Area, Order::Perimeter, Order::ShortestSide}) {
+        std::vector<std::pair<double, double>> key;
+        for (const PartSpec& part : problem.parts)
+            key.push_back(orderKey(order, part));
+        Rules rules{{}, fills};
+        for (int p = 0; p < static_cast<int>(problem.parts.size()); ++p)
+            rules.order.push_back(p);
+        std::stable_sort(rules.order.begin(), rules.order.end(),
+                         [&](int a, int b) { return key[a] > key[b]; });
+        tried.push_back(rules);
+    }
+    std::optional<Layout> best;
+    std::optional<PackingError> ranOutFirst;
+    Rules bestRules = tried.front();
+    std::mt19937_64 random(seed);
+    for (long r = 0; r < std::max(runs, 1L); ++r) {
+        Rules rules = r < static_cast<long>(tried.size()) ? tried[r] : bestRules;
+        if (r >= static_cast<long>(tried.size()) && rules.order.size() > 1) {  // a neighbour of the best
+            std::uniform_int_distribution<size_t> any(0, rules.order.size() - 1);
+            for (int swaps = 1 + static_cast<int>(random() % 3); swaps > 0; --swaps)
+                std::swap(rules.order[any(random)], rules.order[any(random)]);
+        }
+        std::optional<Layout> layout;
+        try {
+            layout =
+                run(problem, rules, poses, best ? deadline : std::chrono::steady_clock::time_point::max());
+        } catch (const PackingError& e) {  // this order ran out of boards; another may not
+            ranOutFirst = ranOutFirst.value_or(e);
+            continue;
+        }
+        if (!layout)
+            break;
+        if (!best || better(*layout, *best))
+            best = std::move(layout), bestRules = rules;
+    }
+    if (!best)
+        throw *ranOutFirst;
+    return *best;
+}
+
+}  // namespace fabguide::material

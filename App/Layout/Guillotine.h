@@ -1,0 +1,31 @@
+// Guillotine layouts for a saw (issue 31): every sheet comes apart by straight cuts from edge to edge, in at
+// most settings.stages changes of direction, and the cuts come in the order a person makes them.
+#pragma once
+
+#include "Layout/Pack.h"
+
+#include <chrono>
+#include <cstdint>
+
+namespace fabguide::material {
+
+/// The runs pack() makes for a saw when the search's iterations are not given (the time limit may stop it
+/// sooner).
+constexpr long kGuillotineRuns = 2000;
+
+/// The parts laid out for a saw, sheet by sheet (a sheet opened as MaxRects opens one). A piece is filled in
+/// slabs, one after the other along one direction, each as thick as the part that leads it; a slab is filled
+/// the same way across, one stage deeper; a slab of the last stage holds its one part, parted from the waste
+/// beside it by one trim cut more (non-exact stages: Lodi, Martello & Vigo, 2002). Kerf + spacing lies
+/// between every two pieces, the cut in its middle; trim along the board edges, taken off by cuts 0.1-0.4.
+/// Parts lie as their bounding rectangles, turned by square turns as their orientations, grain and thickness
+/// allow. Each sheet is filled every way settings allow (first direction when FirstCut::Any; 2, 3, 4 and 6
+/// stages when unlimited; lead parts tall or flat), the way that lays the most part area kept. Runs differ in
+/// the order of the parts (largest first by four measures, then swaps of the best order from `seed`); the
+/// best layout (`better`) of the runs made by `deadline`, at most `runs`, the first completing whatever the
+/// deadline. Fills Layout::sawCuts. Throws PackingError naming a part the boards run out before in every run,
+/// or one that would leave a strip too narrow to saw off at a board's edge.
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
+                  std::chrono::steady_clock::time_point deadline);
+
+}  // namespace fabguide::material
