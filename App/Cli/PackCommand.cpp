@@ -23,6 +23,8 @@ struct PackArguments {
     std::string svgFolder, dxfFolder, csvFile;
     bool strip = false;
     bool bottomLeft = false;
+    bool asDesigned = false;
+    bool textLabels = false;
     int rotationStep = -1;               // -1: as the file's settings say
     std::optional<material::Cuts> cuts;  // unset: as the file's settings say
     std::optional<int> stages;
@@ -69,8 +71,8 @@ void run(const PackArguments& args)
         std::printf("saw cuts      %zu, %.1f m\n", count, length / 1000);
     }
     std::printf("layout        %s\n", args.output.c_str());
-    for (const std::string& path :
-         io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder, args.csvFile))
+    for (const std::string& path : io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder,
+                                                      args.csvFile, "", {args.asDesigned, args.textLabels}))
         std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
     files.commit();
 }
@@ -86,10 +88,18 @@ void addPackCommand(CLI::App& app)
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "layout JSON to write")->required();
     cmd->add_option("--svg", args->svgFolder,
-                    "folder for one SVG cut sheet per board (red cut, blue engrave)");
+                    "folder for one SVG cut sheet per board (an Inkscape layer per operation)");
     cmd->add_option("--dxf", args->dxfFolder,
-                    "folder for one DXF R2000 cut sheet per board (layers CUT, ENGRAVE, SHEET)");
+                    "folder for one DXF R2000 cut sheet per board (a layer per operation)");
     cmd->add_option("--csv", args->csvFile, "CSV cut list to write");
+    cmd->add_flag(
+        "--text-labels", args->textLabels,
+        "labels as text in a font (default: as single strokes to engrave, which laser software, CAM "
+        "and FreeCAD's DXF import take as they are)");
+    cmd->add_flag("--as-designed", args->asDesigned,
+                  "cut sheets for CAM software that offsets by its tool itself: the parts' nominal outlines, "
+                  "closed, no dogbones, the holding tabs on a layer of their own (default: tool paths as the "
+                  "machine cuts them, offset by half the kerf)");
     cmd->add_flag("--strip", args->strip,
                   "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");

@@ -344,37 +344,75 @@ Outline dogboned(const Outline& outline, double diameter)
     return discs.empty() ? outline : subtract(outline, discs);
 }
 
+namespace {
+
+/// A closed contour measured along its length: its points (the first repeated at the end), the arc length
+/// at each, and the point at any arc length.
+struct Loop {
+    explicit Loop(const Polygon& contour) : points(contour), at{0}
+    {
+        points.push_back(contour.front());
+        for (size_t k = 1; k < points.size(); ++k)
+            at.push_back(at.back() +
+                         std::hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y));
+    }
+    double length() const { return at.back(); }
+    Point2 pointAt(double s) const
+    {
+        s = std::fmod(s, length());
+        const size_t k = static_cast<size_t>(std::upper_bound(at.begin(), at.end(), s) - at.begin());
+        const size_t i = std::clamp<size_t>(k, 1, points.size() - 1);
+        const double t = (s - at[i - 1]) / std::max(at[i] - at[i - 1], 1e-12);
+        return {points[i - 1].x + t * (points[i].x - points[i - 1].x),
+                points[i - 1].y + t * (points[i].y - points[i - 1].y)};
+    }
+    /// Where the gaps of withTabs lie along it: [from, to) in arc length, none when they do not fit.
+    std::vector<std::pair<double, double>> gaps(int tabs, double width) const
+    {
+        const double spacing = length() / std::max(tabs, 1);
+        std::vector<std::pair<double, double>> found;
+        for (int k = 0; tabs >= 1 && width > 0 && width < spacing / 2 && k < tabs; ++k)
+            found.emplace_back((k + 0.25) * spacing - width / 2, (k + 0.25) * spacing + width / 2);
+        return found;
+    }
+    Polygon points;
+    std::vector<double> at;
+};
+
+}  // namespace
+
 std::vector<Polygon> withTabs(const Polygon& contour, int tabs, double width)
 {
-    Polygon loop = contour;
-    loop.push_back(contour.front());
-    std::vector<double> at{0};  // arc length at each point of the loop
-    for (size_t k = 1; k < loop.size(); ++k)
-        at.push_back(at.back() + std::hypot(loop[k].x - loop[k - 1].x, loop[k].y - loop[k - 1].y));
-    const double length = at.back(), spacing = length / std::max(tabs, 1);
-    if (tabs < 1 || width <= 0 || width >= spacing / 2)
-        return {loop};
-    const auto pointAt = [&](double s) {  // the point at arc length s along the loop
-        const size_t k = static_cast<size_t>(std::upper_bound(at.begin(), at.end(), s) - at.begin());
-        const size_t i = std::clamp<size_t>(k, 1, loop.size() - 1);
-        const double t = (s - at[i - 1]) / std::max(at[i] - at[i - 1], 1e-12);
-        return Point2{loop[i - 1].x + t * (loop[i].x - loop[i - 1].x),
-                      loop[i - 1].y + t * (loop[i].y - loop[i - 1].y)};
-    };
+    const Loop loop(contour);
+    const std::vector<std::pair<double, double>> gaps = loop.gaps(tabs, width);
+    if (gaps.empty())
+        return {loop.points};
+    const double length = loop.length();
     std::vector<Polygon> pieces;
-    for (int k = 0; k < tabs; ++k) {
-        // From the end of tab k to the start of tab k + 1, around the loop.
-        const double from = (k + 0.25) * spacing + width / 2, to = (k + 1.25) * spacing - width / 2;
-        Polygon piece{pointAt(std::fmod(from, length))};
-        for (size_t j = 0; j < 2 * loop.size(); ++j) {  // the loop's points strictly between, wrapping once
-            const double s = at[j % loop.size()] + (j >= loop.size() ? length : 0);
-            if (s > from && s < to && j % loop.size() != loop.size() - 1)
-                piece.push_back(loop[j % loop.size()]);
+    for (size_t k = 0; k < gaps.size(); ++k) {
+        // From the end of gap k to the start of the next, around the loop.
+        const double from = gaps[k].second,
+                     to = gaps[(k + 1) % gaps.size()].first + (k + 1 == gaps.size() ? length : 0);
+        Polygon piece{loop.pointAt(from)};
+        const size_t n = loop.points.size();
+        for (size_t j = 0; j < 2 * n; ++j) {  // the loop's points strictly between, wrapping once
+            const double s = loop.at[j % n] + (j >= n ? length : 0);
+            if (s > from && s < to && j % n != n - 1)
+                piece.push_back(loop.points[j % n]);
         }
-        piece.push_back(pointAt(std::fmod(to, length)));
+        piece.push_back(loop.pointAt(to));
         pieces.push_back(std::move(piece));
     }
     return pieces;
+}
+
+std::vector<std::pair<Point2, Point2>> tabGaps(const Polygon& contour, int tabs, double width)
+{
+    const Loop loop(contour);
+    std::vector<std::pair<Point2, Point2>> ends;
+    for (const auto& [from, to] : loop.gaps(tabs, width))
+        ends.emplace_back(loop.pointAt(from + loop.length()), loop.pointAt(to));
+    return ends;
 }
 
 std::pair<Point2, double> deepestPoint(const Outline& outline)

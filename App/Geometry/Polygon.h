@@ -94,6 +94,10 @@ Outline dogboned(const Outline& outline, double diameter);
 /// (one piece, closed by repeating its first point) when it is too short for the gaps.
 std::vector<Polygon> withTabs(const Polygon& contour, int tabs, double width);
 
+/// The gaps withTabs leaves, each as the points where it starts and ends on the contour; none when the
+/// contour is too short for them.
+std::vector<std::pair<Point2, Point2>> tabGaps(const Polygon& contour, int tabs, double width);
+
 /// The point of the outline's material farthest from its edges and holes (its pole of inaccessibility, to
 /// 0.01 mm) and that distance, the radius of the largest circle inside it: found by eroding the outline
 /// (Clipper, round corners) by a bisected depth until nothing is left.

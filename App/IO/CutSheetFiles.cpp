@@ -125,24 +125,44 @@ std::string svg(const material::CutSheet& sheet, double stroke)
 {
     const double w = sheet.board.width, h = sheet.board.height;
     std::ostringstream out;
+    // An Inkscape layer per operation, in the order they are done; `style` holds its colour and such.
+    const auto layer = [&](const std::string& id, const std::string& label, const std::string& style) {
+        out << "  <g id=\"" << id << "\" inkscape:groupmode=\"layer\" inkscape:label=\"" << label << "\" "
+            << style << ">\n";
+    };
+    const auto lines = [&](const std::string& colour) {
+        return "fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"" + show(stroke) + "\"";
+    };
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "mm\" height=\"" << h
-        << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n"
-        << "  <title>" << escapeXml(sheet.board.name) << " " << w << " x " << h << " mm</title>\n"
-        << "  <g id=\"sheet\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" << stroke << "\">\n"
-        << "    <rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\"/>\n  </g>\n"
-        << "  <g id=\"cut\" fill=\"none\" stroke=\"#ff0000\" stroke-width=\"" << stroke << "\">\n";
-    for (const geometry::Polygon& cut : sheet.cuts)
-        out << "    " << svgPath(cut, h) << "\n";
-    for (const geometry::Polygon& cut : sheet.tabbed)
-        out << "    " << svgPath(cut, h, true) << "\n";
-    out << "  </g>\n  <g id=\"drill\" fill=\"none\" stroke=\"#00a000\" stroke-width=\"" << stroke << "\">\n";
+        << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+           "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+        << w << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n"
+        << "  <title>" << escapeXml(sheet.board.name) << " " << w << " x " << h << " mm</title>\n";
+    layer("sheet", "Sheet (not cut)", lines("#999999"));
+    out << "    <rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\"/>\n  </g>\n";
+    std::vector<double> depths;
     for (const material::Drill& drill : sheet.drills)
-        out << "    <circle cx=\"" << drill.at.x << "\" cy=\"" << h - drill.at.y << "\" r=\""
-            << drill.diameter / 2 << "\" data-depth=\"" << drill.depth << "\"/>\n";
-    out << "  </g>\n  <g id=\"engrave\" fill=\"#0000ff\" stroke=\"none\" font-family=\"sans-serif\" "
-           "text-anchor=\"middle\" dominant-baseline=\"central\">\n";
-    for (const material::Label& label : sheet.labels)
+        if (std::find(depths.begin(), depths.end(), drill.depth) == depths.end())
+            depths.push_back(drill.depth);
+    for (double depth : depths) {
+        layer("drill-" + show(depth) + "mm", "Drill " + show(depth) + " mm deep", lines("#00a000"));
+        for (const material::Drill& drill : sheet.drills)
+            if (drill.depth == depth)
+                out << "    <circle cx=\"" << drill.at.x << "\" cy=\"" << h - drill.at.y << "\" r=\""
+                    << drill.diameter / 2 << "\" data-depth=\"" << drill.depth << "\"/>\n";
+        out << "  </g>\n";
+    }
+    layer("engrave", "Engrave",
+          "fill=\"#0000ff\" stroke=\"none\" font-family=\"sans-serif\" text-anchor=\"middle\" "
+          "dominant-baseline=\"central\"");
+    for (size_t k = 0; k < sheet.lettering.size(); ++k) {  // labels as strokes, their text kept as data
+        out << "    <g data-label=\"" << escapeXml(sheet.labels[k].text) << "\" " << lines("#0000ff") << ">";
+        for (const geometry::Polygon& stroke : sheet.lettering[k])
+            out << svgPath(stroke, h, true);
+        out << "</g>\n";
+    }
+    for (size_t k = sheet.lettering.empty() ? 0 : sheet.labels.size(); k < sheet.labels.size(); ++k) {
+        const material::Label& label = sheet.labels[k];  // as text
         out << "    <text x=\"" << label.at.x << "\" y=\"" << h - label.at.y << "\" font-size=\""
             << label.height << "\""
             << (label.angle != 0
@@ -150,15 +170,31 @@ std::string svg(const material::CutSheet& sheet, double stroke)
                           std::to_string(label.at.x) + " " + std::to_string(h - label.at.y) + ")\""
                     : std::string())
             << ">" << escapeXml(label.text) << "</text>\n";
+    }
     for (const geometry::Polygon& mark : sheet.engraved)
         out << "    " << svgPath(mark, h) << "\n";
     out << "  </g>\n";
+    for (const bool inner : {true, false}) {
+        layer(inner ? "inner-cut" : "outer-cut", inner ? "Inner cut (first)" : "Outer cut",
+              lines(inner ? "#ff00ff" : "#ff0000"));
+        for (const material::ToolPath& cut : sheet.cuts)
+            if (cut.inner == inner)
+                out << "    " << svgPath(cut.points, h, cut.open) << "\n";
+        out << "  </g>\n";
+    }
+    if (!sheet.tabs.empty()) {  // as designed: where the holding tabs go, for the CAM to leave them
+        layer("tabs", "Holding tabs (not cut)", lines("#00c0c0"));
+        for (const auto& [from, to] : sheet.tabs)
+            out << "    <line x1=\"" << from.x << "\" y1=\"" << h - from.y << "\" x2=\"" << to.x << "\" y2=\""
+                << h - to.y << "\"/>\n";
+        out << "  </g>\n";
+    }
     if (!sheet.sawCuts.empty()) {  // dashed orange lines numbered in their order, for the person at the saw
         const double size = std::max(8.0, std::min(w, h) / 80);
-        out << "  <g id=\"saw\" fill=\"#ff8000\" stroke=\"#ff8000\" stroke-width=\""
-            << std::max(stroke, size / 10) << "\" stroke-dasharray=\"" << 2 * size << " " << size
-            << "\" font-family=\"sans-serif\" "
-            << "font-size=\"" << size << "\" text-anchor=\"middle\">\n";
+        layer("saw", "Saw cuts",
+              "fill=\"#ff8000\" stroke=\"#ff8000\" stroke-width=\"" + show(std::max(stroke, size / 10)) +
+                  "\" stroke-dasharray=\"" + show(2 * size) + " " + show(size) +
+                  "\" font-family=\"sans-serif\" font-size=\"" + show(size) + "\" text-anchor=\"middle\"");
         for (const material::SawCut& c : sheet.sawCuts)
             out << "    <line x1=\"" << c.from.x << "\" y1=\"" << h - c.from.y << "\" x2=\"" << c.to.x
                 << "\" y2=\"" << h - c.to.y << "\" data-number=\"" << c.number << "\" data-stage=\""
@@ -196,8 +232,10 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
     dw->tableEnd();
-    std::vector<std::pair<std::string, int>> layers = {
-        {"0", 7}, {"CUT", 1}, {"ENGRAVE", 5}, {"SHEET", 8}, {"SAW", 30}};
+    std::vector<std::pair<std::string, int>> layers = {{"0", 7},       {"INNER_CUT", 6}, {"OUTER_CUT", 1},
+                                                       {"ENGRAVE", 5}, {"SHEET", 8},     {"SAW", 30}};
+    if (!sheet.tabs.empty())
+        layers.emplace_back("TABS", 4);
     for (const material::Drill& drill : sheet.drills)  // a layer per depth, which CAM maps to a drilling pass
         if (std::none_of(layers.begin(), layers.end(),
                          [&](const auto& l) { return l.first == drillLayer(drill); }))
@@ -238,20 +276,27 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     polygon(
         {{0, 0}, {sheet.board.width, 0}, {sheet.board.width, sheet.board.height}, {0, sheet.board.height}},
         "SHEET");
-    for (const geometry::Polygon& cut : sheet.cuts)
-        polygon(cut, "CUT");
-    for (const geometry::Polygon& cut : sheet.tabbed)
-        polygon(cut, "CUT", true);
+    for (const material::ToolPath& cut : sheet.cuts)
+        polygon(cut.points, cut.inner ? "INNER_CUT" : "OUTER_CUT", cut.open);
+    for (const auto& [from, to] : sheet.tabs)
+        dxf.writeLine(*dw, DL_LineData(from.x, from.y, 0, to.x, to.y, 0),
+                      DL_Attributes("TABS", 256, -1, "BYLAYER", 1.0));
     for (const geometry::Polygon& mark : sheet.engraved)
         polygon(mark, "ENGRAVE");
     for (const material::Drill& drill : sheet.drills)
         dxf.writeCircle(*dw, DL_CircleData(drill.at.x, drill.at.y, 0.0, drill.diameter / 2),
                         DL_Attributes(drillLayer(drill), 256, -1, "BYLAYER", 1.0));
-    for (const material::Label& label : sheet.labels)  // centred horizontally (1) and vertically (2)
+    for (const std::vector<geometry::Polygon>& lettering : sheet.lettering)
+        for (const geometry::Polygon& stroke : lettering)
+            polygon(stroke, "ENGRAVE", true);
+    for (size_t k = sheet.lettering.empty() ? 0 : sheet.labels.size(); k < sheet.labels.size(); ++k) {
+        const material::Label& label =
+            sheet.labels[k];  // as text, centred horizontally (1) and vertically (2)
         dxf.writeText(*dw,
                       DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,
                                   1, 2, label.text, "Standard", label.angle * kPi / 180),  // radians
                       DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
+    }
     for (const material::SawCut& c : sheet.sawCuts) {  // the saw's lines, each with its number beside it
         dxf.writeLine(*dw, DL_LineData(c.from.x, c.from.y, 0, c.to.x, c.to.y, 0),
                       DL_Attributes("SAW", 256, -1, "BYLAYER", 1.0));
@@ -305,11 +350,12 @@ std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& shee
 
 std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile, const std::string& name)
+                                        const std::string& csvFile, const std::string& name,
+                                        material::CutSheetOptions options)
 {
     std::vector<std::string> written;
     if (!svgFolder.empty() || !dxfFolder.empty()) {
-        const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem);
+        const std::vector<material::CutSheet> sheets = material::cutSheets(layout, problem, options);
         for (const auto& [folder, extension] : {std::pair{svgFolder, "svg"}, std::pair{dxfFolder, "dxf"}})
             if (!folder.empty())
                 for (const std::string& path : writeSheets(sheets, folder, extension, name))

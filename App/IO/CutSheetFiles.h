@@ -9,18 +9,20 @@
 
 namespace fabguide::io {
 
-/// SVG sized in millimetres; groups "cut" (red #ff0000 hairlines), "drill" (green #00a000 circles with
-/// data-depth), "engrave" (blue #0000ff text and marks) and "sheet" (grey board outline, not to be cut).
-/// With guillotine cuts, a group "saw": the saw's cuts as dashed orange (#ff8000) lines with data-number and
-/// data-stage, each numbered in text at its middle.
+/// SVG sized in millimetres, one Inkscape layer (group) per operation in the order they are done: "sheet"
+/// (grey #999999 board outline, not to be cut), "drill-<depth>mm" (green #00a000 circles with data-depth),
+/// "engrave" (blue #0000ff text and marks), "inner-cut" (magenta #ff00ff: holes with no part in them),
+/// "outer-cut" (red #ff0000: outlines, holes holding parts), "tabs" (as designed: cyan #00c0c0 lines where
+/// holding tabs go) and, with guillotine cuts, "saw": the saw's cuts as dashed orange (#ff8000) lines with
+/// data-number and data-stage, each numbered in text at its middle.
 /// y points up in FabGuide and down in SVG: flipped here.
 /// `stroke` is the line width in sheet millimetres: 0.1 (a hairline) for machines, wider for print.
 std::string svg(const material::CutSheet& sheet, double stroke = 0.1);
 void writeSvg(const material::CutSheet& sheet, const std::string& path);
 
-/// DXF R2000 (AC1015) in millimetres with layers CUT (red LWPOLYLINEs), ENGRAVE (blue TEXT and marks),
-/// SAW (orange LINEs and their numbers, guillotine cuts only),
-/// DRILL (green CIRCLEs) and SHEET.
+/// DXF R2000 (AC1015) in millimetres with a layer per operation: INNER_CUT (magenta) and OUTER_CUT (red)
+/// LWPOLYLINEs as in the SVG, ENGRAVE (blue TEXT and marks), DRILL_<depth>MM (green CIRCLEs), TABS (cyan
+/// LINEs, as designed), SAW (orange LINEs and their numbers, guillotine cuts) and SHEET.
 void writeDxf(const material::CutSheet& sheet, const std::string& path);
 
 /// CSV cut list with header part,quantity,width,height,thickness,material,board (board numbered from 1).
@@ -31,7 +33,8 @@ void writeCutList(const std::vector<material::CutListRow>& rows, const std::stri
 /// paths written.
 std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile, const std::string& name = "");
+                                        const std::string& csvFile, const std::string& name = "",
+                                        material::CutSheetOptions options = {});
 
 /// Writes sheet-1.svg / sheet-1.dxf ... (NAME-sheet-1.svg ... when `name` is given: two layouts share a
 /// folder) into `folder` (created if missing), and removes the set's sheets numbered past these, left by an

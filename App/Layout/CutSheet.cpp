@@ -1,5 +1,7 @@
 #include "Layout/CutSheet.h"
 
+#include "Layout/Lettering.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -33,7 +35,7 @@ geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem
     return geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
 }
 
-std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem)
+std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem, CutSheetOptions options)
 {
     const PackSettings& s = problem.settings;
     const size_t n = layout.placements.size();
@@ -59,39 +61,49 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
                           {},
                           {},
                           {},
+                          {},
                           k < layout.sawCuts.size() ? layout.sawCuts[k] : std::vector<SawCut>{}});
+    std::vector<std::vector<ToolPath>> last(sheets.size());  // the tabbed paths, cut after the rest
     // Inner cuts first: a part never drops out before its holes are cut, and a part in another's hole is cut
     // before that hole (deepest first). With holding tabs, a hole that holds a part is tabbed too, so the
     // ring round the part stays in the sheet until the part is cut.
+    const auto add = [&](int sheet, const geometry::Polygon& contour, bool inner, bool tabbed,
+                         std::vector<ToolPath>& closed) {
+        if (!tabbed)
+            closed.push_back({contour, inner, false});
+        else if (options.asDesigned) {
+            closed.push_back({contour, inner, false});
+            const auto gaps = geometry::tabGaps(contour, 2, s.tabWidth);
+            sheets[sheet].tabs.insert(sheets[sheet].tabs.end(), gaps.begin(), gaps.end());
+        } else {
+            for (const geometry::Polygon& piece : geometry::withTabs(contour, 2, s.tabWidth))
+                last[sheet].push_back({piece, inner, true});
+        }
+    };
     for (int level = deepest; level >= 0; --level) {
-        std::vector<std::vector<geometry::Polygon>> outers(sheets.size());
+        std::vector<std::vector<ToolPath>> outers(sheets.size());
         for (size_t k = 0; k < n; ++k) {
             if (depth[k] != level)
                 continue;
             const Placement& p = layout.placements[k];
             const PartSpec& spec = problem.parts[p.part];
-            const geometry::Outline path = geometry::offset(
-                s.dogbone > 0 ? geometry::dogboned(placed[k], s.dogbone) : placed[k], s.kerf / 2);
+            const geometry::Outline path =
+                options.asDesigned
+                    ? placed[k]
+                    : geometry::offset(s.dogbone > 0 ? geometry::dogboned(placed[k], s.dogbone) : placed[k],
+                                       s.kerf / 2);
             CutSheet& sheet = sheets[p.sheet];
-            const bool tabs = s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow;
             for (const geometry::Polygon& hole : path.holes) {
-                bool tabbed = false;  // with tabs on, a hole holding a part (kerf + spacing inside the cut)
-                for (size_t other = 0; other < n && s.tabWidth > 0 && !tabbed; ++other)
-                    tabbed = other != k && holds(p.sheet, hole, other);
-                if (tabbed) {
-                    const std::vector<geometry::Polygon> pieces = geometry::withTabs(hole, 2, s.tabWidth);
-                    sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
-                } else {
-                    sheet.cuts.push_back(hole);
-                }
+                bool holding = false;  // a hole holding a part (kerf + spacing inside the cut)
+                for (size_t other = 0; other < n && !holding; ++other)
+                    holding = other != k && holds(p.sheet, hole, other);
+                add(p.sheet, hole, !holding, holding && s.tabWidth > 0, sheet.cuts);
             }
-            if (tabs) {
-                const std::vector<geometry::Polygon> pieces = geometry::withTabs(path.outer, 2, s.tabWidth);
-                sheet.tabbed.insert(sheet.tabbed.end(), pieces.begin(), pieces.end());
-            } else {
-                outers[p.sheet].push_back(path.outer);
-            }
+            add(p.sheet, path.outer, false, s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow,
+                outers[p.sheet]);
             sheet.labels.push_back(labelOf(spec, placed[k], p));
+            if (!options.textLabels)
+                sheet.lettering.push_back(strokes(sheet.labels.back()));
             const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
             for (const Drill& drill : spec.drills)
                 sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
@@ -104,6 +116,8 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
         for (size_t i = 0; i < sheets.size(); ++i)
             sheets[i].cuts.insert(sheets[i].cuts.end(), outers[i].begin(), outers[i].end());
     }
+    for (size_t i = 0; i < sheets.size(); ++i)
+        sheets[i].cuts.insert(sheets[i].cuts.end(), last[i].begin(), last[i].end());
     return sheets;
 }
 

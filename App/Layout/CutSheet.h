@@ -17,15 +17,36 @@ struct Label {
     double angle = 0;  ///< degrees counter-clockwise: 90 along a part that stands taller than wide
 };
 
+/// One tool path of a cut sheet.
+struct ToolPath {
+    geometry::Polygon points;
+    /// An inner cut: a hole with no part in it, cut before the outline round it. Outer cuts are the parts'
+    /// outlines and the holes that hold parts (cut after the parts inside them).
+    bool inner = false;
+    /// A stretch between two holding tabs (settings.tabWidth): open, so a small part stays in the sheet when
+    /// cut free. Such paths come last.
+    bool open = false;
+};
+
+/// How a cut sheet is drawn. For the machine as it cuts (a laser or a CNC's own path): tool paths offset by
+/// half the kerf, dogbones in inside corners, holding tabs as gaps. As designed (CAM software that offsets by
+/// its tool itself): the parts' nominal outlines, closed, no dogbones, the tabs listed as data.
+struct CutSheetOptions {
+    bool asDesigned = false;
+    /// Labels as text in a font rather than as engravable strokes (Lettering.h), which laser software,
+    /// CAM and FreeCAD's DXF import all take as they are.
+    bool textLabels = false;
+};
+
 /// One master board's cutting plan, in board coordinates (origin at its lower-left corner).
 struct CutSheet {
     MasterBoard board;
-    std::vector<geometry::Polygon> cuts;  ///< closed tool paths, holes before outer contours
-    /// Open tool paths, cut last: small parts' outer contours broken by holding tabs (settings.tabWidth),
-    /// so the part stays in the sheet when cut free.
-    std::vector<geometry::Polygon> tabbed;
+    std::vector<ToolPath> cuts;  ///< in the order to cut them: deepest parts first, holes before outlines
+    /// As designed: where holding tabs go, each the stretch of a closed contour it spans.
+    std::vector<std::pair<geometry::Point2, geometry::Point2>> tabs;
     std::vector<Label> labels;
-    std::vector<Drill> drills;                ///< holes drilled into the face, not through
+    std::vector<std::vector<geometry::Polygon>> lettering;  ///< per label, its strokes (none: text labels)
+    std::vector<Drill> drills;                              ///< holes drilled into the face, not through
     std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)
     std::vector<SawCut> sawCuts;  ///< guillotine cuts: the saw's, in their order (Layout::sawCuts)
 };
@@ -33,9 +54,10 @@ struct CutSheet {
 /// Placement k's outline at its nominal size, turned and moved as placed on its sheet.
 geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem, size_t k);
 
-/// The cutting plans of a layout: each part's outline turned and moved as placed, offset by half
-/// the kerf so that the cut leaves it at nominal size (outer contours outward, holes inward).
-std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem);
+/// The cutting plans of a layout: each part's outline turned and moved as placed; for the machine as it cuts,
+/// offset by half the kerf so that the cut leaves it at nominal size (outer contours outward, holes inward).
+std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem,
+                                CutSheetOptions options = {});
 
 /// One row of a cut list: how many of a part are cut from one board, and their size.
 struct CutListRow {

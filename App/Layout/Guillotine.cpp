@@ -64,18 +64,25 @@ public:
     {
     }
 
-    /// Fills `piece` with slabs following one another along axis `a`, the first led by `lead` when given
-    /// (already taken); its cuts, then those of its slabs, go to `cuts`.
-    void fill(const Piece& piece, int a, int stage, const std::string& number, std::optional<Lead> lead,
-              std::vector<SawCut>& cuts)
+    /// The last cut that made a piece: its stage and the axis it crosses (-1: none, the board itself).
+    struct Made {
+        int stage = 0, axis = -1;
+    };
+
+    /// Fills `piece` (made by `made`) with slabs following one another along axis `a`, the first led by
+    /// `lead` when given (already taken), `depth` the stages down to here; its cuts, then those of its slabs,
+    /// go to `cuts`. A piece left whole (one slab filling it) is not numbered again.
+    void fill(const Piece& piece, int a, int depth, Made made, const std::string& number,
+              std::optional<Lead> lead, std::vector<SawCut>& cuts)
     {
         const int b = 1 - a;
         const double end = piece.at[a] + piece.size[a];
+        const Made here{made.axis == a ? made.stage : made.stage + 1, a};  // the stage of the cuts made here
         std::vector<SawCut> inner;
         double at = piece.at[a];
         for (int n = 1;; ++n, lead.reset()) {
             if (!lead) {
-                lead = pick(piece, a, stage, end - at);
+                lead = pick(piece, a, depth, end - at);
                 if (!lead)
                     break;
                 --remaining_[lead->part];
@@ -84,13 +91,16 @@ public:
             slab.at[a] = at;
             slab.size[a] = along(lead->pose, a);
             at += slab.size[a];
-            const std::string name = number.empty() ? std::to_string(n) : number + "." + std::to_string(n);
+            const bool whole = n == 1 && at >= end - kHair;
+            const std::string name = whole            ? number
+                                     : number.empty() ? std::to_string(n)
+                                                      : number + "." + std::to_string(n);
             if (at < end - kHair)
-                cuts.push_back(cut(piece, a, at, stage, name, false));
-            if (stage < rules_.stages)
-                fill(slab, b, stage + 1, name, lead, inner);
+                cuts.push_back(cut(piece, a, at, here.stage, name));
+            if (depth < rules_.stages)
+                fill(slab, b, depth + 1, whole ? made : here, name, lead, inner);
             else
-                place(*lead, slab, b, stage + 1, name, inner);
+                place(*lead, slab, b, whole ? made : here, name, inner);
         }
         cuts.insert(cuts.end(), inner.begin(), inner.end());
     }
@@ -132,7 +142,7 @@ private:
 
     /// The last stage's slab holds its lead alone, at its start; a trim cut across parts it from the waste
     /// beyond it along `b`.
-    void place(const Lead& lead, const Piece& slab, int b, int stage, const std::string& number,
+    void place(const Lead& lead, const Piece& slab, int b, Made made, const std::string& number,
                std::vector<SawCut>& cuts)
     {
         const PartSpec& spec = problem_.parts[lead.part];
@@ -144,8 +154,9 @@ private:
                                       turned ? spec.width() : spec.height()});
         layout_.partArea += geometry::area(spec.outline);
         const double reach = slab.at[b] + along(lead.pose, b);
+        const int stage = made.axis == b ? made.stage : made.stage + 1;
         if (reach < slab.at[b] + slab.size[b] - kHair)
-            cuts.push_back(cut(slab, b, reach, stage, number + ".1", true));
+            cuts.push_back(cut(slab, b, reach, stage, number.empty() ? "1" : number + ".1"));
     }
 
     /// Where a piece's edge at `at` along `axis` (usable coordinates) lies on the sheet: the middle of the
@@ -163,8 +174,9 @@ private:
 
     /// The cut across `piece` that ends a slab at `at` along `a`, from edge to edge of the piece, in sheet
     /// coordinates.
-    SawCut cut(const Piece& piece, int a, double at, int stage, const std::string& number, bool trim) const
+    SawCut cut(const Piece& piece, int a, double at, int stage, const std::string& number) const
     {
+        const bool trim = stage > rules_.stages;
         const int b = 1 - a;
         const double middle = edge(at, a), from = edge(piece.at[b], b),
                      to = edge(piece.at[b] + piece.size[b], b);
@@ -228,7 +240,7 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
         std::tie(sheet.size[0], sheet.size[1]) = usableSize(board, problem.settings);
         const auto filled = [&](const Fill& fill, std::vector<SawCut>& cuts) {
             Filler(problem, rules.order, fill, poses[kind], sheet, remaining, layout)
-                .fill(sheet, fill.firstAxis, 1, "", {}, cuts);
+                .fill(sheet, fill.firstAxis, 1, {}, "", {}, cuts);
         };
         const Fill* best = &rules.fills.front();
         double most = -1;

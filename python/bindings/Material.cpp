@@ -44,10 +44,11 @@ std::pair<material::PackProblem, material::Layout> readLayout(const py::object& 
 
 std::vector<std::string> writeCutSheets(const py::object& problemDict, const py::object& layoutDict,
                                         const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile, const std::string& name)
+                                        const std::string& csvFile, const std::string& name, bool asDesigned,
+                                        bool textLabels)
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile, name);
+    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile, name, {asDesigned, textLabels});
 }
 
 py::list placedOutlines(const py::object& problemDict, const py::object& layoutDict)
@@ -93,7 +94,8 @@ std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::o
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
     std::vector<std::string> texts;
-    for (const material::CutSheet& sheet : material::cutSheets(layout, problem))
+    for (const material::CutSheet& sheet :
+         material::cutSheets(layout, problem, {false, true}))  // text to read
         texts.push_back(io::svg(sheet, stroke));
     return texts;
 }
@@ -144,11 +146,14 @@ void bindMaterial(py::module_& m)
     m.def(
         "cut_sheet_svgs", &cutSheetSvgs, py::arg("problem"), py::arg("layout"), py::arg("stroke") = 0.1,
         "The SVG text of each master board's cut sheet; stroke = line width in sheet mm (0.1: as written).");
-    m.def("write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
-          py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
-          py::arg("name") = "",
-          "Write SVG/DXF cut sheets per board (NAME-sheet-N.svg when a name is given; sheets of an earlier, "
-          "longer set removed) and a CSV cut list for a layout of the problem; returns the paths.");
+    m.def(
+        "write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
+        py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
+        py::arg("name") = "", py::arg("as_designed") = false, py::arg("text_labels") = false,
+        "Write SVG/DXF cut sheets per board (NAME-sheet-N.svg when a name is given; sheets of an earlier, "
+        "longer set removed) and a CSV cut list for a layout of the problem; returns the paths. as_designed: "
+        "the parts' nominal outlines, closed, no dogbones, the holding tabs on their own layer (for CAM "
+        "software that offsets by its tool itself). text_labels: labels as text in a font, not strokes.");
 }
 
 }  // namespace fabguide::bindings

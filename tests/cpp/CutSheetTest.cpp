@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 
 using namespace fabguide::material;
 
@@ -36,7 +38,7 @@ TEST(CutSheet, ToolPathsAreTheOutlinesGrownByHalfTheKerf)
     ASSERT_EQ(sheets[0].cuts.size(), 3u);
     for (size_t i = 0; i < layout.placements.size(); ++i) {
         const Placement& placement = layout.placements[i];
-        const auto& cut = sheets[0].cuts[i];
+        const auto& cut = sheets[0].cuts[i].points;
         const auto [minX, maxX] =
             std::minmax_element(cut.begin(), cut.end(), [](auto a, auto b) { return a.x < b.x; });
         const auto [minY, maxY] =
@@ -114,8 +116,38 @@ TEST(CutSheet, SmallPartsAreHeldByTabsAndCutLast)
         layout.placements.begin(), layout.placements.end(),
         [&](const Placement& at) { return at.sheet == 0 && std::max(at.width, at.height) < 180; });
     ASSERT_GT(small, 0);
-    EXPECT_EQ(sheet.tabbed.size(), static_cast<size_t>(2 * small));  // two open pieces each
-    EXPECT_EQ(sheet.cuts.size(), layout.placements.size() - small);  // the others closed as before
+    const auto open = [](const ToolPath& cut) { return cut.open; };
+    EXPECT_EQ(std::count_if(sheet.cuts.begin(), sheet.cuts.end(), open), 2 * small);  // two open pieces each
+    EXPECT_EQ(sheet.cuts.size(), layout.placements.size() + small);  // the others closed as before
+    EXPECT_TRUE(std::is_partitioned(sheet.cuts.begin(), sheet.cuts.end(), std::not_fn(open))) << "open last";
+    EXPECT_TRUE(sheet.tabs.empty());
+    // As designed: every contour closed at its nominal size, the tabs listed where the gaps were.
+    const CutSheet designed = cutSheets(layout, p, {true})[0];
+    EXPECT_EQ(designed.cuts.size(), layout.placements.size());
+    EXPECT_EQ(std::count_if(designed.cuts.begin(), designed.cuts.end(), open), 0);
+    EXPECT_EQ(designed.tabs.size(), static_cast<size_t>(2 * small));
+    for (const auto& [from, to] : designed.tabs)
+        EXPECT_NEAR(std::hypot(to.x - from.x, to.y - from.y), 4, 1e-6);  // along an edge, not at a corner
+}
+
+TEST(CutSheet, AsDesignedTheOutlinesAreNominalAndTheHolesInnerCuts)
+{
+    PackProblem p = problem();
+    p.settings.dogbone = 6;
+    p.parts[0].outline.holes.push_back({{50, 40}, {50, 60}, {150, 60}, {150, 40}});
+    const Layout layout = pack(p, quick());
+    const CutSheet sheet = cutSheets(layout, p, {true})[0];
+    for (const ToolPath& cut : sheet.cuts) {
+        EXPECT_FALSE(cut.open);
+        EXPECT_EQ(cut.points.size(), 4u) << "no dogbones, no offset corners: a rectangle stays four points";
+    }
+    const auto inner =
+        std::find_if(sheet.cuts.begin(), sheet.cuts.end(), [](const ToolPath& c) { return c.inner; });
+    ASSERT_NE(inner, sheet.cuts.end());
+    EXPECT_NEAR(std::abs(fabguide::geometry::signedArea(inner->points)), 100 * 20, 1e-6);
+    EXPECT_EQ(std::count_if(sheet.cuts.begin(), sheet.cuts.end(), [](const ToolPath& c) { return c.inner; }),
+              std::count_if(layout.placements.begin(), layout.placements.end(),
+                            [](const Placement& at) { return at.sheet == 0 && at.part == 0; }));
 }
 
 TEST(CutSheet, APartInAHoleIsCutBeforeTheHoleWhichKeepsTabsWithTheirs)
@@ -137,20 +169,26 @@ TEST(CutSheet, APartInAHoleIsCutBeforeTheHoleWhichKeepsTabsWithTheirs)
     // Without tabs: the tag, then the window round it, then the frame.
     CutSheet sheet = cutSheets(layout, p)[0];
     ASSERT_EQ(sheet.cuts.size(), 3u);
-    EXPECT_NEAR(left(sheet.cuts[0]), 100 - 0.1, 1e-6);  // the tag, grown by half the kerf
-    EXPECT_NEAR(left(sheet.cuts[1]), 60 + 0.1, 1e-6);   // the window, shrunk by it
-    EXPECT_NEAR(left(sheet.cuts[2]), 10 - 0.1, 1e-6);   // the frame
+    EXPECT_NEAR(left(sheet.cuts[0].points), 100 - 0.1, 1e-6);  // the tag, grown by half the kerf
+    EXPECT_NEAR(left(sheet.cuts[1].points), 60 + 0.1, 1e-6);   // the window, shrunk by it
+    EXPECT_NEAR(left(sheet.cuts[2].points), 10 - 0.1, 1e-6);   // the frame
+    EXPECT_FALSE(sheet.cuts[1].inner) << "the window holds the tag: an outer cut, after it";
     // With tabs for the tag, the window keeps tabs too, and both are cut after the frame's closed outline.
     p.settings.tabWidth = 4;
     p.settings.tabBelow = 100;
     sheet = cutSheets(layout, p)[0];
-    ASSERT_EQ(sheet.cuts.size(), 1u);
-    EXPECT_NEAR(left(sheet.cuts[0]), 10 - 0.1, 1e-6);
-    ASSERT_EQ(sheet.tabbed.size(), 4u);  // the tag's two pieces, then the window's
-    EXPECT_GE(left(sheet.tabbed[0]), 100 - 0.1 - 1e-6);
-    EXPECT_GE(left(sheet.tabbed[1]), 100 - 0.1 - 1e-6);
-    EXPECT_LE(std::min(left(sheet.tabbed[2]), left(sheet.tabbed[3])), 60 + 0.1 + 1e-6);
-    EXPECT_GE(std::min(left(sheet.tabbed[2]), left(sheet.tabbed[3])), 60 + 0.1 - 1e-6);
+    ASSERT_EQ(sheet.cuts.size(), 5u);
+    EXPECT_FALSE(sheet.cuts[0].open);
+    EXPECT_NEAR(left(sheet.cuts[0].points), 10 - 0.1, 1e-6);
+    std::vector<fabguide::geometry::Polygon> tabbed;  // the tag's two pieces, then the window's
+    for (size_t k = 1; k < 5; ++k) {
+        EXPECT_TRUE(sheet.cuts[k].open);
+        tabbed.push_back(sheet.cuts[k].points);
+    }
+    EXPECT_GE(left(tabbed[0]), 100 - 0.1 - 1e-6);
+    EXPECT_GE(left(tabbed[1]), 100 - 0.1 - 1e-6);
+    EXPECT_LE(std::min(left(tabbed[2]), left(tabbed[3])), 60 + 0.1 + 1e-6);
+    EXPECT_GE(std::min(left(tabbed[2]), left(tabbed[3])), 60 + 0.1 - 1e-6);
 }
 
 TEST(CutSheet, CutListCountsPartsPerBoard)

@@ -101,6 +101,6 @@ def least_sheets(problem):
     total = 0
     for board in problem["boards"]:
         area = sum(p["width"] * p["height"] * p.get("quantity", 1) for p in problem["parts"]
-                   if p.get("thickness", 0) in (0, board["thickness"]))
+                   if p.get("thickness", 0) in (0, board.get("thickness", 0)))
         total += math.ceil(area / (board["width"] * board["height"]) - 1e-9)
     return total

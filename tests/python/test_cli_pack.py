@@ -81,6 +81,7 @@ def test_help_lists_the_commands(fabguide_cli):
 def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_path):
     import csv
     import struct
+    import xml.etree.ElementTree as ET
 
     import ezdxf
 
@@ -99,7 +100,8 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     width, height = struct.unpack(">II", png.read_bytes()[16:24])
     assert (width, height) == (board["width"], board["height"])
     svg = (sheets / "sheet-1.svg").read_text()
-    assert 'width="{:g}mm"'.format(board["width"]) in svg and 'id="cut"' in svg and 'id="engrave"' in svg
+    assert 'width="{:g}mm"'.format(board["width"]) in svg and 'id="outer-cut"' in svg and 'id="engrave"' in svg
+    assert svg.count('inkscape:groupmode="layer"') >= 4  # sheet, engrave, inner cut, outer cut (drills: per depth)
 
     # ezdxf reads the DXF as R2000 with no audit errors, millimetre units and one cut per part.
     doc = ezdxf.readfile(str(sheets / "sheet-1.dxf"))
@@ -109,13 +111,54 @@ def test_cut_sheets_open_in_inkscape_and_ezdxf(fabguide_cli, source_dir, tmp_pat
     assert doc.header["$INSUNITS"] == 4
     entities = [(e.dxftype(), e.dxf.layer) for e in doc.modelspace()]
     parts_on_board = [p for p in layout["placements"] if p["board"] == 0]
-    assert entities.count(("LWPOLYLINE", "CUT")) == len(parts_on_board)
-    assert entities.count(("TEXT", "ENGRAVE")) == len(parts_on_board)
+    assert entities.count(("LWPOLYLINE", "OUTER_CUT")) == len(parts_on_board)
+    labels = [e for e in doc.modelspace().query('LWPOLYLINE[layer=="ENGRAVE"]') if not e.closed]
+    assert len(labels) >= 2 * len(parts_on_board) and entities.count(("TEXT", "ENGRAVE")) == 0  # strokes, no text
+    lettered = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@data-label]")
+    assert sorted(g.get("data-label") for g in lettered) == sorted(p["part"] for p in parts_on_board)
+    assert "<text" not in svg.split('id="saw"')[0], "laser software drops or substitutes fonts"
     assert entities.count(("LWPOLYLINE", "SHEET")) == 1
 
     rows = list(csv.DictReader((tmp_path / "cutlist.csv").open()))
     assert sum(int(r["quantity"]) for r in rows) == len(layout["placements"])
     assert {r["material"] for r in rows} == {"birch plywood"} and {r["thickness"] for r in rows} == {"18"}
+
+
+def test_as_designed_cut_sheets_are_nominal_closed_and_list_their_tabs(fabguide_cli, source_dir, tmp_path):
+    # For CAM that offsets by its own tool: every outer cut is the part's rectangle exactly (no kerf/2, which
+    # the CAM would add again), closed, no dogbones; the holding tabs are lines on a TABS layer, two per part.
+    import xml.etree.ElementTree as ET
+
+    import ezdxf
+
+    problem = json.load(open(os.path.join(source_dir, "examples", "bookshelf.pack.json")))
+    problem["settings"].update({"kerf": 6, "dogbone": 6, "tab_width": 8, "tab_below": 100000})
+    src = tmp_path / "job.pack.json"
+    src.write_text(json.dumps(problem))
+    for designed in (True, False):
+        out = tmp_path / ("designed" if designed else "machine")
+        run = pack(fabguide_cli, str(src), "-o", str(out / "layout.json"), "--iterations", "5", "--dxf", str(out),
+                   "--svg", str(out), *(["--as-designed"] if designed else []))
+        assert run.returncode == 0, run.stderr
+        layout = json.load((out / "layout.json").open())
+        on_board = [p for p in layout["placements"] if p["board"] == 0]
+        doc = ezdxf.readfile(str(out / "sheet-1.dxf"))
+        assert not doc.audit().has_errors
+        outers = doc.modelspace().query('LWPOLYLINE[layer=="OUTER_CUT"]')
+        tabs = doc.modelspace().query('LINE[layer=="TABS"]')
+        if designed:
+            boxes = sorted((round(min(x for x, *_ in e.get_points()), 6), round(min(y for _, y, *_ in e.get_points()), 6),
+                            round(max(x for x, *_ in e.get_points()), 6), round(max(y for _, y, *_ in e.get_points()), 6))
+                           for e in outers)
+            assert boxes == sorted((round(p["x"], 6), round(p["y"], 6), round(p["x"] + p["width"], 6),
+                                    round(p["y"] + p["height"], 6)) for p in on_board)
+            assert all(e.closed for e in outers) and len(tabs) == 2 * len(on_board)
+            layers = [g.get("{http://www.inkscape.org/namespaces/inkscape}label")
+                      for g in ET.parse(str(out / "sheet-1.svg")).getroot()
+                      if g.get("{http://www.inkscape.org/namespaces/inkscape}groupmode") == "layer"]
+            assert "Holding tabs (not cut)" in layers and "Outer cut" in layers, layers
+        else:
+            assert not any(e.closed for e in outers) and len(tabs) == 0, "tabs are gaps in the machine's paths"
 
 
 def test_an_esicup_irregular_instance_packs_valid_on_its_outlines(fabguide_cli, benchmarks, tmp_path):
@@ -159,7 +202,7 @@ def test_small_parts_are_cut_from_the_holes_of_big_ones(fabguide_cli, source_dir
     assert len(layout["boards"]) == 2  # the second for a shelf only
     for sheet in sorted((tmp_path / "dxf").glob("sheet-*.dxf")):
         cuts = [[tuple(p[:2]) for p in e.get_points()]
-                for e in ezdxf.readfile(str(sheet)).modelspace().query("LWPOLYLINE[layer=='CUT']")]
+                for e in ezdxf.readfile(str(sheet)).modelspace().query('LWPOLYLINE[layer ? ".*_CUT"]')]
         for i, inner in enumerate(cuts):  # a cut comes after every cut it encloses
             for j, outer in enumerate(cuts):
                 if i != j and all(outline_check.inside(outer, q) for q in inner[:3]):
@@ -174,11 +217,11 @@ def test_curved_parts_get_their_labels_in_their_material(fabguide_cli, source_di
 
     source = os.path.join(source_dir, "tests", "data", "curved-parts.pack.json")
     run = pack(fabguide_cli, source, "-o", str(tmp_path / "layout.json"), "--time-limit", "1", "--dxf",
-               str(tmp_path / "dxf"))
+               str(tmp_path / "dxf"), "--text-labels")
     assert run.returncode == 0, run.stderr
     doc = ezdxf.readfile(str(tmp_path / "dxf" / "sheet-1.dxf"))
     assert not doc.audit().has_errors
-    cuts = [[tuple(p[:2]) for p in e.get_points()] for e in doc.modelspace().query("LWPOLYLINE[layer=='CUT']")]
+    cuts = [[tuple(p[:2]) for p in e.get_points()] for e in doc.modelspace().query('LWPOLYLINE[layer ? ".*_CUT"]')]
     texts = list(doc.modelspace().query("TEXT"))
     assert texts
     for text in texts:

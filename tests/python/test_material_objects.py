@@ -196,8 +196,8 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     names = sorted(p.split("/")[-1] for p in written)
     assert names == ["Layout-cutlist.csv", "Layout-sheet-1.dxf", "Layout-sheet-1.svg"]
     svg = (tmp_path / "sheets" / "Layout-sheet-1.svg").read_text()
-    cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='cut']/{http://www.w3.org/2000/svg}path")
-    assert 'width="1220mm"' in svg and len(cuts) == 5 and ">sidel<" in svg
+    cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='outer-cut']/{http://www.w3.org/2000/svg}path")
+    assert 'width="1220mm"' in svg and len(cuts) == 5 and 'data-label="sidel"' in svg
     csv = (tmp_path / "sheets" / "Layout-cutlist.csv").read_text().splitlines()
     assert csv[0] == "part,quantity,width,height,thickness,material,board" and len(csv) == 6
 
@@ -260,7 +260,7 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_pat
 
     def cut_points(folder):
         layout.export_cut_sheets(lay, str(folder))
-        cuts = ezdxf.readfile(str(folder / "Layout-sheet-1.dxf")).modelspace().query("LWPOLYLINE[layer=='CUT']")
+        cuts = ezdxf.readfile(str(folder / "Layout-sheet-1.dxf")).modelspace().query('LWPOLYLINE[layer ? ".*_CUT"]')
         return sum(len(e) for e in cuts)
 
     square = cut_points(tmp_path / "square")

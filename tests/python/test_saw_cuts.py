@@ -5,6 +5,7 @@ shown to reject spoiled layouts. The search is bounded by work (--iterations), n
 import copy
 import json
 import os
+import random
 import subprocess
 import sys
 
@@ -43,6 +44,27 @@ def test_a_shop_cut_list_comes_apart_by_its_listed_saw_cuts(fabguide_cli, tmp_pa
     assert saw_checker.problems(layout, problem) == []
     assert len(layout["boards"]) >= saw_checker.least_sheets(problem)
     assert "saw cuts " in run.stdout
+
+
+def small_bins(seed):
+    """A two-dimensional bin-packing instance like Berkey & Wang's class I: 20-100 items of 1-10 x 1-10 in 10 x 10
+    bins, not turned, no kerf: parts that fill whole pieces (a strip the width of the bin, a slab the width of its
+    strip), which a saw makes no cut for."""
+    rng = random.Random(seed)
+    return {"format": "fabguide.pack", "version": 1,
+            "settings": {"resolution": 1, "cuts": "guillotine", "stages": [1, 2, 3, 0][seed % 4],
+                         "first_cut": ["any", "along", "across"][seed % 3]},
+            "boards": [{"name": "bin", "width": 10, "height": 10, "count": -1}],
+            "parts": [{"id": "item {}".format(k), "width": rng.randint(1, 10), "height": rng.randint(1, 10),
+                       "orientations": [0]} for k in range(rng.choice([20, 40, 60, 80, 100]))]}
+
+
+@pytest.mark.parametrize("seed", range(0, 60))
+def test_small_bins_of_whole_pieces_are_numbered_by_the_cuts_made(fabguide_cli, tmp_path, seed):
+    problem = small_bins(seed)
+    run, layout = laid_out(fabguide_cli, problem, tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert saw_checker.problems(layout, problem) == []
 
 
 def test_the_command_line_chooses_the_cuts_over_the_file(fabguide_cli, tmp_path):

@@ -42,6 +42,13 @@ class Layout(properties.Proxy):
             "Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none", 0)
         add(obj, "App::PropertyLength", "TabBelow", "Cutting", "Parts whose longer side is shorter get holding tabs",
             300)
+        add(obj, "App::PropertyBool", "AsDesigned", "Cut sheets",
+            "Export the parts' outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of "
+            "their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the "
+            "machine cuts them", False)
+        add(obj, "App::PropertyBool", "TextLabels", "Cut sheets",
+            "Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD's "
+            "DXF import take as they are", False)
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
             "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
             "Auto", list(JOINTS))
@@ -211,4 +218,4 @@ def export_cut_sheets(obj, folder):
     stem = file_stem(obj.Label)
     return fabguide_core.write_cut_sheets(json.loads(obj.ProblemJson), json.loads(obj.LayoutJson), svg_folder=folder,
                                           dxf_folder=folder, csv_file=os.path.join(folder, stem + "-cutlist.csv"),
-                                          name=stem)
+                                          name=stem, as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
