@@ -331,6 +331,20 @@ std::optional<Layout> skylineOnThreads(const PackProblem& problem, const Orderin
     return lowest;
 }
 
+/// About how long rasterising `problem` takes: its parts' bounding boxes with their clearance, two turns
+/// each, and its boards, at kRasterCellsPerSecond.
+double rasterSeconds(const PackProblem& problem)
+{
+    const PackSettings& s = problem.settings;
+    const double cell = s.resolution * s.resolution, clearance = s.kerf + s.spacing;
+    double cells = 0;
+    for (const PartSpec& part : problem.parts)
+        cells += 2 * (part.width() + clearance) * (part.height() + clearance) / cell;
+    for (const MasterBoard& board : problem.boards)
+        cells += board.width * board.height / cell;
+    return cells / kRasterCellsPerSecond;
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -349,8 +363,8 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             if (units > kDockedUnits)
                 throw;
         }
-        if (exact && units > kDockedUnits)
-            return *exact;
+        if (exact && (units > kDockedUnits || rasterSeconds(problem) > secondsUntil(deadline)))
+            return *exact;  // Docking's grid alone would outlast the time limit (issue 31: 0.2 s took 0.5)
     }
     // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
     // when it reaches the least height; else MaxRects bisects the height (until 95 %), Docking's search takes

@@ -120,6 +120,11 @@ bool better(const Layout& a, const Layout& b);
 constexpr double kLongest = 20000, kMostCells = 2e8;
 constexpr long kMostUnits = 200000;
 
+/// Grid cells rasterised a second (a shop cut list's 1.8·10^8 took 0.25 s on this kind of machine, issue 31):
+/// a job of rectangles is laid out by MaxRects alone when Docking's grid would take longer than the time
+/// left.
+constexpr double kRasterCellsPerSecond = 5e8;
+
 /// Jobs of rectangles with more units than this are laid out by MaxRects alone: Docking's search would spend
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;
