@@ -303,10 +303,11 @@ int sheetKindFor(const PackProblem& problem, const PartSpec& part, const std::ve
     int kind = -1;
     for (size_t k = 0; k < problem.boards.size(); ++k) {
         const MasterBoard& board = problem.boards[k];
-        const auto [w, h] = usableSize(board, s);
+        const Rect sheet = usable(board, s);
         const std::vector<Pose> poses = posesOn(part, board, s.kerf + s.spacing);
-        const bool fits = std::any_of(poses.begin(), poses.end(),
-                                      [&](const Pose& p) { return p.w <= w + kHair && p.h <= h + kHair; });
+        const bool fits = std::any_of(poses.begin(), poses.end(), [&](const Pose& p) {
+            return p.w <= sheet.w + kHair && p.h <= sheet.h + kHair;
+        });
         if (left[k] != 0 && fits && (kind < 0 || board.cost < problem.boards[kind].cost))
             kind = static_cast<int>(k);
     }
