@@ -307,8 +307,8 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
         std::stable_sort(rules.order.begin(), rules.order.end(),
                          [&](int a, int b) { return key[a] > key[b]; });
         tried.push_back(rules);
-        for (int stage : stages.size() > 1 ? stages : std::vector<int>{}) {  // each stage count alone too:
-            Rules alone = rules;  // unlimited stages never do worse than a limit would
+        for (int stage : stages.size() > 1 ? stages : std::vector<int>{}) {  // each stage count alone too,
+            Rules alone = rules;                                             // as a limit's own runs are
             alone.fills.clear();
             std::copy_if(fills.begin(), fills.end(), std::back_inserter(alone.fills),
                          [&](const Fill& f) { return f.stages == stage; });

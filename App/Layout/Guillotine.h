@@ -22,7 +22,7 @@ constexpr long kGuillotineRuns = 2000;
 /// allow. Each sheet is filled every way settings allow (first direction when FirstCut::Any; 2, 3, 4 and 6
 /// stages when unlimited; lead parts tall or flat), the way that lays the most part area kept. Runs differ in
 /// the order of the parts (largest first by four measures, then swaps of the best order from `seed`) and,
-/// when unlimited, in the stage counts tried (all, then each alone: no limit does better); the best layout
+/// when unlimited, in the stage counts tried (all, then each alone, as a limit's runs); the best layout
 /// (`better`) of the runs made by `deadline`, at most `runs`, the first completing whatever the deadline.
 /// Fills Layout::sawCuts. Throws PackingError naming a part the boards run out before in every run, or one
 /// that would leave a strip too narrow to saw off at a board's edge.
