@@ -372,6 +372,11 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};
+    if (result.settings.cuts == material::Cuts::Guillotine)
+        throw FormatError(
+            "settings.cuts: the zero-waste design search lays its parts out for free cuts (CNC, laser); "
+            "lay a chosen design out for a saw with `fabguide pack --cuts guillotine` or a FreeCAD "
+            "Layout");
     std::vector<double> thicknesses;
     for (size_t i = 0; i < result.boards.size(); ++i) {
         if (!(result.boards[i].thickness > 0))

@@ -132,3 +132,8 @@ def test_bad_designs_are_refused_with_the_field_named(fabguide_cli, source_dir, 
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out")
     assert "parts[0].size: its thinnest side 15 must be the thickness of a master board (12)" in run.stderr
+    design["parts"][0]["size"] = [700, 420, 12]
+    design.setdefault("settings", {})["cuts"] = "guillotine"  # the design search lays out free cuts only: said
+    path.write_text(json.dumps(design))
+    run = optimise(fabguide_cli, str(path), tmp_path / "out")
+    assert run.returncode == 1 and "settings.cuts: the zero-waste design search" in run.stderr, run.stderr
