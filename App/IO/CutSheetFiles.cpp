@@ -313,10 +313,11 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path)
 {
     writeText(path, [&](std::ostream& out) {
-        out << "part,quantity,width,height,thickness,material,board\n";
+        out << "part,quantity,width,height,thickness,material,board,grain\n";
         for (const material::CutListRow& row : rows)
             out << quoteCsv(row.part) << "," << row.quantity << "," << row.width << "," << row.height << ","
-                << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << "\n";
+                << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << ","
+                << (row.grain ? "width" : "") << "\n";
     });
 }
 

@@ -25,7 +25,8 @@ void writeSvg(const material::CutSheet& sheet, const std::string& path);
 /// LINEs, as designed), SAW (orange LINEs and their numbers, guillotine cuts) and SHEET.
 void writeDxf(const material::CutSheet& sheet, const std::string& path);
 
-/// CSV cut list with header part,quantity,width,height,thickness,material,board (board numbered from 1).
+/// CSV cut list with header part,quantity,width,height,thickness,material,board,grain (board numbered from 1;
+/// grain "width" when the part's width runs along the board's grain, empty when it may lie either way).
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path);
 
 /// The cut sheets of a layout: SVG files into `svgFolder`, DXF files into `dxfFolder`, the cut list into

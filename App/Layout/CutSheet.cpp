@@ -130,8 +130,8 @@ std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem
     for (const auto& [key, quantity] : count) {
         const PartSpec& spec = problem.parts[key.first];
         const MasterBoard& board = layout.sheets[key.second];
-        rows.push_back(
-            {spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material, key.second});
+        rows.push_back({spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material,
+                        key.second, spec.followsGrain && board.grain != Grain::None});
     }
     return rows;
 }

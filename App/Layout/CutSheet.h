@@ -65,7 +65,8 @@ struct CutListRow {
     int quantity = 0;
     double width = 0, height = 0, thickness = 0;
     std::string material;
-    int board = 0;  ///< index into Layout::sheets
+    int board = 0;       ///< index into Layout::sheets
+    bool grain = false;  ///< its length (width) runs along the board's grain
 };
 
 /// The cut list of a layout, one row per (part, board), in part order then board order.

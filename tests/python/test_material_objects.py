@@ -199,7 +199,7 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='outer-cut']/{http://www.w3.org/2000/svg}path")
     assert 'width="1220mm"' in svg and len(cuts) == 5 and 'data-label="sidel"' in svg
     csv = (tmp_path / "sheets" / "Layout-cutlist.csv").read_text().splitlines()
-    assert csv[0] == "part,quantity,width,height,thickness,material,board" and len(csv) == 6
+    assert csv[0] == "part,quantity,width,height,thickness,material,board,grain" and len(csv) == 6
 
 
 def test_two_layouts_share_a_folder_and_a_re_export_replaces_its_set_whole(doc, tmp_path):

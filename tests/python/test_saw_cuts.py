@@ -3,6 +3,7 @@ and wardrobes, two materials, grain on the fronts), with kerf, trim, spacing, st
 varied per seed; every layout judged by the independent saw checker (tests/gen/saw_checker.py), which is itself
 shown to reject spoiled layouts. The search is bounded by work (--iterations), not by time."""
 import copy
+import csv
 import json
 import os
 import random
@@ -127,3 +128,13 @@ def test_the_saw_checker_rejects_spoiled_layouts(fabguide_cli, tmp_path):
     spoiled_demand = copy.deepcopy(good)
     spoiled_demand["placements"].pop()
     assert any("placed" in p for p in saw_checker.problems(spoiled_demand, problem))
+
+
+def test_the_cut_list_says_which_parts_follow_the_grain(fabguide_cli, tmp_path):
+    problem = cutlists.problem(4)
+    run, layout = laid_out(fabguide_cli, problem, tmp_path, "--csv", str(tmp_path / "cutlist.csv"))
+    assert run.returncode == 0, run.stderr
+    rows = list(csv.DictReader((tmp_path / "cutlist.csv").open()))
+    follows = {p["id"]: p["follow_grain"] for p in problem["parts"]}
+    assert rows and all((r["grain"] == "width") == follows[r["part"]] for r in rows)
+    assert sum(int(r["quantity"]) for r in rows) == len(layout["placements"])
