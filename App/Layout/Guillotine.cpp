@@ -42,6 +42,13 @@ struct Rules {
     std::vector<Fill> fills;
 };
 
+/// How far in from a board's edge its edge trim's cut runs (the kerf inside the trimmed margin); 0, the edge
+/// itself, with no trim.
+double edgeTrimAt(const PackSettings& s)
+{
+    return s.trim > 0 ? s.trim - s.kerf / 2 : 0;
+}
+
 /// A unit taken to lead a slab: its part and its pose.
 struct Lead {
     int part = -1;
@@ -146,14 +153,8 @@ private:
     void place(const Lead& lead, const Piece& slab, int b, Made made, const std::string& number,
                std::vector<SawCut>& cuts)
     {
-        const PartSpec& spec = problem_.parts[lead.part];
-        const double trim = problem_.settings.trim;
-        const bool turned = lead.pose.rotation % 180 != 0;
-        layout_.placements.push_back({lead.part, static_cast<int>(layout_.sheets.size()) - 1,
-                                      trim + slab.at[0], trim + slab.at[1], lead.pose.rotation,
-                                      turned ? spec.height() : spec.width(),
-                                      turned ? spec.width() : spec.height()});
-        layout_.partArea += geometry::area(spec.outline);
+        addPlacement(problem_, lead.part, static_cast<int>(layout_.sheets.size()) - 1, slab.at[0], slab.at[1],
+                     lead.pose.rotation, layout_);
         const double reach = slab.at[b] + along(lead.pose, b);
         const int stage = made.axis == b ? made.stage : made.stage + 1;
         if (reach < slab.at[b] + slab.size[b] - kHair)
@@ -165,7 +166,7 @@ private:
     double edge(double at, int axis) const
     {
         const PackSettings& s = problem_.settings;
-        const double margin = s.trim > 0 ? s.trim - s.kerf / 2 : 0;
+        const double margin = edgeTrimAt(s);
         if (at <= kHair)
             return margin;
         if (at >= sheet_.size[axis] - kHair)
@@ -203,7 +204,7 @@ std::vector<SawCut> edgeTrims(const MasterBoard& board, const PackSettings& s)
 {
     if (s.trim <= 0)
         return {};
-    const double in = s.trim - s.kerf / 2, w = board.width, h = board.height;
+    const double in = edgeTrimAt(s), w = board.width, h = board.height;
     return {{"0.1", 0, false, {0, in}, {w, in}},
             {"0.2", 0, false, {0, h - in}, {w, h - in}},
             {"0.3", 0, false, {in, in}, {in, h - in}},
@@ -232,11 +233,7 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
         if (kind < 0)
             throw ranOut(problem.parts[first], units - placed - 1);
         const MasterBoard& board = problem.boards[kind];
-        if (left[kind] > 0)
-            --left[kind];
-        layout.sheets.push_back(board);
-        layout.sheets.back().count = 1;
-        layout.sheetArea += board.width * board.height;
+        openSheet(problem, kind, left, layout);
         Piece sheet;
         std::tie(sheet.size[0], sheet.size[1]) = usableSize(board, problem.settings);
         const auto filled = [&](const Fill& fill, std::vector<SawCut>& cuts) {
@@ -258,10 +255,10 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
         std::vector<SawCut> cuts = edgeTrims(board, problem.settings);
         filled(*best, cuts);
         if (static_cast<long>(layout.placements.size()) == placed)
-            throw PackingError("part '" + problem.parts[first].id + "' cannot be sawn from '" + board.name +
-                               "': it would leave a strip narrower than half the kerf + spacing at the "
-                               "board's edge, which a "
-                               "saw cannot take off; set a trim, or a size that leaves none");
+            throw PackingError(
+                "part '" + problem.parts[first].id + "' cannot be sawn from '" + board.name +
+                "': it would leave a strip narrower than half the kerf + spacing at the board's "
+                "edge, which a saw cannot take off; set a trim, or a size that leaves none");
         layout.sawCuts.push_back(std::move(cuts));
         double right = 0, top = 0;
         for (size_t k = placed; k < layout.placements.size(); ++k) {

@@ -117,27 +117,15 @@ Rect usable(const MasterBoard& board, const PackSettings& s)
 void open(const PackProblem& problem, int kind, std::vector<int>& left, std::vector<Bin>& bins,
           Layout& layout)
 {
-    const MasterBoard& board = problem.boards[kind];
-    if (left[kind] > 0)
-        --left[kind];
-    bins.push_back({kind, {usable(board, problem.settings)}});
-    MasterBoard sheet = board;
-    sheet.count = 1;
-    layout.sheets.push_back(sheet);
-    layout.sheetArea += board.width * board.height;
+    openSheet(problem, kind, left, layout);
+    bins.push_back({kind, {usable(problem.boards[kind], problem.settings)}});
 }
 
 /// Unit `part` at `choice` in `layout`.
 void put(const PackProblem& problem, int part, const Choice& choice, std::vector<Bin>& bins, Layout& layout)
 {
-    const PartSpec& spec = problem.parts[part];
-    const double trim = problem.settings.trim;
     occupy(bins[choice.bin], choice.at);
-    const bool turned = choice.rotation % 180 != 0;
-    layout.placements.push_back({part, choice.bin, trim + choice.at.x, trim + choice.at.y, choice.rotation,
-                                 turned ? spec.height() : spec.width(),
-                                 turned ? spec.width() : spec.height()});
-    layout.partArea += geometry::area(spec.outline);
+    addPlacement(problem, part, choice.bin, choice.at.x, choice.at.y, choice.rotation, layout);
 }
 
 void finish(const PackProblem& problem, const std::vector<Bin>& bins, Layout& layout)
@@ -312,6 +300,28 @@ int sheetKindFor(const PackProblem& problem, const PartSpec& part, const std::ve
             kind = static_cast<int>(k);
     }
     return kind;
+}
+
+void openSheet(const PackProblem& problem, int kind, std::vector<int>& left, Layout& layout)
+{
+    const MasterBoard& board = problem.boards[kind];
+    if (left[kind] > 0)
+        --left[kind];
+    layout.sheets.push_back(board);
+    layout.sheets.back().count = 1;
+    layout.sheetArea += board.width * board.height;
+}
+
+void addPlacement(const PackProblem& problem, int part, int sheet, double x, double y, int rotation,
+                  Layout& layout)
+{
+    const PartSpec& spec = problem.parts[part];
+    const double trim = problem.settings.trim;
+    const bool turned = rotation % 180 != 0;
+    layout.placements.push_back({part, sheet, trim + x, trim + y, rotation,
+                                 turned ? spec.height() : spec.width(),
+                                 turned ? spec.width() : spec.height()});
+    layout.partArea += geometry::area(spec.outline);
 }
 
 PackingError ranOut(const PartSpec& part, size_t more)

@@ -29,6 +29,13 @@ std::pair<double, double> usableSize(const MasterBoard& board, const PackSetting
 /// kind in stock, -1: unlimited) that it fits on; -1: none.
 int sheetKindFor(const PackProblem& problem, const PartSpec& part, const std::vector<int>& left);
 
+/// A sheet of `kind` opened in `layout` (one of `left` taken, unless unlimited).
+void openSheet(const PackProblem& problem, int kind, std::vector<int>& left, Layout& layout);
+
+/// A unit of `part` turned by `rotation` on `sheet` of `layout`, at (x, y) of the board less its trim.
+void addPlacement(const PackProblem& problem, int part, int sheet, double x, double y, int rotation,
+                  Layout& layout);
+
 /// PackingError: the boards ran out before `part` and `more` others.
 PackingError ranOut(const PartSpec& part, size_t more);
 
