@@ -113,8 +113,8 @@ void addPackCommand(CLI::App& app)
            "--cuts", args->cuts,
            "free: any outline (CNC, laser); guillotine: straight cuts from edge to edge (panel saw), "
            "with the cut sequence in the layout (default: the file's settings.cuts)")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, material::Cuts>{
-            {"free", material::Cuts::Free}, {"guillotine", material::Cuts::Guillotine}}));
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, material::Cuts>(io::cutsNames().begin(), io::cutsNames().end())));
     cmd->add_option("--stages", args->stages,
                     "guillotine cuts: at most this many changes of direction (2, 3, ...; 0: unlimited; "
                     "default: the file's settings.stages)")
@@ -122,10 +122,8 @@ void addPackCommand(CLI::App& app)
     cmd->add_option("--first-cut", args->firstCut,
                     "guillotine cuts: the first cuts along the sheet's length, across it, or any "
                     "(default: the file's settings.first_cut)")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, material::FirstCut>{{"any", material::FirstCut::Any},
-                                                      {"along", material::FirstCut::Along},
-                                                      {"across", material::FirstCut::Across}}));
+        ->transform(CLI::CheckedTransformer(std::map<std::string, material::FirstCut>(
+            io::firstCutNames().begin(), io::firstCutNames().end())));
     cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
     cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
         ->check(CLI::Range(0.0, 86400.0))

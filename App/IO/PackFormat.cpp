@@ -135,7 +135,48 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     return p;
 }
 
+/// The value `names` gives the text at `key` (the first of them when absent); FormatError listing them.
+template <typename Value>
+Value named(const Fields& fields, const std::string& key,
+            const std::vector<std::pair<std::string, Value>>& names)
+{
+    const std::string text = fields.text(key, names.front().first);
+    for (const auto& [name, value] : names)
+        if (name == text)
+            return value;
+    std::string listed;
+    for (size_t k = 0; k < names.size(); ++k)
+        listed += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + ("\"" + names[k].first + "\"");
+    throw FormatError(fields.pathOf(key) + ": must be " + listed + ", got \"" + text + "\"");
+}
+
+/// The name `names` gives `value`.
+template <typename Value>
+std::string nameOf(Value value, const std::vector<std::pair<std::string, Value>>& names)
+{
+    for (const auto& [name, named] : names)
+        if (named == value)
+            return name;
+    return names.front().first;
+}
+
 }  // namespace
+
+const std::vector<std::pair<std::string, material::Cuts>>& cutsNames()
+{
+    static const std::vector<std::pair<std::string, material::Cuts>> names{
+        {"free", material::Cuts::Free}, {"guillotine", material::Cuts::Guillotine}};
+    return names;
+}
+
+const std::vector<std::pair<std::string, material::FirstCut>>& firstCutNames()
+{
+    static const std::vector<std::pair<std::string, material::FirstCut>> names{
+        {"any", material::FirstCut::Any},
+        {"along", material::FirstCut::Along},
+        {"across", material::FirstCut::Across}};
+    return names;
+}
 
 material::PackSettings readSettings(const nlohmann::json& document)
 {
@@ -156,21 +197,12 @@ material::PackSettings readSettings(const nlohmann::json& document)
     if (result.rotationStep < 0 || (result.rotationStep > 0 && 90 % result.rotationStep != 0))
         throw FormatError("settings.rotation_step: must divide 90 (e.g. 15, 30, 45) or be 0, got " +
                           std::to_string(result.rotationStep));
-    const std::string cuts = settings.text("cuts", "free");
-    if (cuts != "free" && cuts != "guillotine")
-        throw FormatError("settings.cuts: must be \"free\" or \"guillotine\", got \"" + cuts + "\"");
-    result.cuts = cuts == "guillotine" ? material::Cuts::Guillotine : material::Cuts::Free;
+    result.cuts = named(settings, "cuts", cutsNames());
     result.stages = settings.integer("stages", 0);
     if (result.stages < 0)
         throw FormatError("settings.stages: must be 0 (unlimited) or a number of stages, got " +
                           std::to_string(result.stages));
-    const std::string first = settings.text("first_cut", "any");
-    if (first != "any" && first != "along" && first != "across")
-        throw FormatError("settings.first_cut: must be \"any\", \"along\" or \"across\", got \"" + first +
-                          "\"");
-    result.firstCut = first == "along"    ? material::FirstCut::Along
-                      : first == "across" ? material::FirstCut::Across
-                                          : material::FirstCut::Any;
+    result.firstCut = named(settings, "first_cut", firstCutNames());
     return result;
 }
 
@@ -488,11 +520,9 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
               {"tab_width", s.tabWidth},
               {"tab_below", s.tabBelow},
               {"rotation_step", s.rotationStep},
-              {"cuts", s.cuts == material::Cuts::Guillotine ? "guillotine" : "free"},
+              {"cuts", nameOf(s.cuts, cutsNames())},
               {"stages", s.stages},
-              {"first_cut", s.firstCut == material::FirstCut::Along    ? "along"
-                            : s.firstCut == material::FirstCut::Across ? "across"
-                                                                       : "any"}}},
+              {"first_cut", nameOf(s.firstCut, firstCutNames())}}},
             {"boards", boards},
             {"parts", parts}};
 }

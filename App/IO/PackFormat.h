@@ -7,9 +7,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace fabguide::io {
 
 constexpr int kPackFormatVersion = 1;
+
+/// settings.cuts and settings.first_cut as the formats and the command line spell them, in the order told.
+const std::vector<std::pair<std::string, material::Cuts>>& cutsNames();
+const std::vector<std::pair<std::string, material::FirstCut>>& firstCutNames();
 
 /// The "settings" of a `*.pack.json` or `*.flatpack.json` document (defaults when absent).
 material::PackSettings readSettings(const nlohmann::json& document);
