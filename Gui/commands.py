@@ -21,7 +21,7 @@ RELATIONSHIPS = names(F, "FabGuide_AddCover", "FabGuide_AddFitInside", "FabGuide
 WORKSLIKE_FILE = names(F, "FabGuide_ImportWorkslike", "FabGuide_ExportWorkslike")
 PRINT = names(F, "FabGuide_MakePrintable", "FabGuide_ExportPrintable")
 BOARDS = names(M, "FabGuide_BoardsFromSolids", "FabGuide_MakeBoard")
-CUT_SHEETS = names(M, "FabGuide_ExportCutSheets", "FabGuide_TechDrawPages")
+CUT_SHEETS = names(M, "FabGuide_ExportCutSheets", "FabGuide_TechDrawPages", "FabGuide_MakeCamJob")
 CONSTRAINTS = names(D, "FabGuide_EqualLengths", "FabGuide_SumOfLengths", "FabGuide_FixedLength", "FabGuide_LengthRange",
                     "FabGuide_EqualPosition", "FabGuide_Symmetric", "FabGuide_Ground", "FabGuide_Coplanar",
                     "FabGuide_Snap")
@@ -36,7 +36,7 @@ GROUPS = {
     "FabGuide_Print": Group("Print in place", "Make the mechanism printable in place, or export the print", PRINT),
     "FabGuide_WorkslikeFile": Group("Works-like file", "Import or export a *.workslike.json model", WORKSLIKE_FILE),
     "FabGuide_Boards": Group("Boards", "Make boards from thin solids, or from a sketch or face", BOARDS),
-    "FabGuide_CutSheets": Group("Cut sheets", "Export cut sheets or make TechDraw pages", CUT_SHEETS),
+    "FabGuide_CutSheets": Group("Cut sheets", "Export cut sheets, make TechDraw pages or CAM jobs", CUT_SHEETS),
     "FabGuide_DesignConstraints": Group("Design constraints", "Add a design constraint on the picked boards",
                                         CONSTRAINTS),
     "FabGuide_Volumes": Group("Volumes", "Add an inner (kept free) or the outer volume", VOLUMES),

@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from fabguide import properties
-from fabguide.material import board, layout, master_board, techdraw
+from fabguide.material import board, cam, layout, master_board, techdraw
 from fabguide_gui import editing, viewproviders
 from fabguide_gui.command_base import Command, all_in, selected, tell, the_one, transaction
 
@@ -132,6 +132,31 @@ class TechDrawPages(Command):
         pages[0].ViewObject.doubleClicked()
 
 
+class MakeCamJob(Command):
+    ICON, MENU = "FabGuide_CamJob.svg", "Make CAM Job"
+    TIP = ("Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, "
+           "engraved labels) with your tool and post-processor, and write its G-code")
+
+    def IsActive(self):
+        return ExportCutSheets.IsActive(self)
+
+    def run(self, doc):
+        chosen = the_one(doc, layout.is_layout, "layout to machine")
+        if chosen is None:
+            return
+        if FreeCADGui.Control.activeDialog():
+            return tell("Close the open task panel first (OK or Cancel), then make the CAM job.")
+        if not chosen.LayoutJson:
+            return tell("Layout '{}' has not been computed yet: recompute it first.".format(chosen.Label))
+        from fabguide_gui import cam_panel
+
+        try:
+            self.panel = cam_panel.CamJobPanel(chosen)  # kept for scripts
+        except cam.CamError as error:  # no CAM workbench in this FreeCAD
+            return tell(str(error))
+        FreeCADGui.Control.showDialog(self.panel)
+
+
 COMMANDS = {
     "FabGuide_NewMasterBoard": NewMasterBoard(),
     "FabGuide_BoardsFromSolids": BoardsFromSolids(),
@@ -139,4 +164,5 @@ COMMANDS = {
     "FabGuide_Layout": MakeLayout(),
     "FabGuide_ExportCutSheets": ExportCutSheets(),
     "FabGuide_TechDrawPages": TechDrawPages(),
+    "FabGuide_MakeCamJob": MakeCamJob(),
 }

@@ -67,17 +67,18 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     // Inner cuts first: a part never drops out before its holes are cut, and a part in another's hole is cut
     // before that hole (deepest first). With holding tabs, a hole that holds a part is tabbed too, so the
     // ring round the part stays in the sheet until the part is cut.
-    const auto add = [&](int sheet, const geometry::Polygon& contour, bool inner, bool tabbed,
+    const auto add = [&](size_t k, const geometry::Polygon& contour, bool hole, bool inner, bool tabbed,
                          std::vector<ToolPath>& closed) {
+        const int sheet = layout.placements[k].sheet;
         if (!tabbed)
-            closed.push_back({contour, inner, false});
+            closed.push_back({contour, inner, false, false, hole, k});
         else if (options.asDesigned) {
-            closed.push_back({contour, inner, false});
+            closed.push_back({contour, inner, false, true, hole, k});
             const auto gaps = geometry::tabGaps(contour, 2, s.tabWidth);
             sheets[sheet].tabs.insert(sheets[sheet].tabs.end(), gaps.begin(), gaps.end());
         } else {
             for (const geometry::Polygon& piece : geometry::withTabs(contour, 2, s.tabWidth))
-                last[sheet].push_back({piece, inner, true});
+                last[sheet].push_back({piece, inner, true, true, hole, k});
         }
     };
     for (int level = deepest; level >= 0; --level) {
@@ -97,9 +98,9 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
                 bool holding = false;  // a hole holding a part (kerf + spacing inside the cut)
                 for (size_t other = 0; other < n && !holding; ++other)
                     holding = other != k && holds(p.sheet, hole, other);
-                add(p.sheet, hole, !holding, holding && s.tabWidth > 0, sheet.cuts);
+                add(k, hole, true, !holding, holding && s.tabWidth > 0, sheet.cuts);
             }
-            add(p.sheet, path.outer, false, s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow,
+            add(k, path.outer, false, false, s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow,
                 outers[p.sheet]);
             sheet.labels.push_back(labelOf(spec, placed[k], p));
             if (!options.textLabels)
@@ -113,8 +114,14 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
                     sheet.engraved.back().push_back(move(q));
             }
         }
-        for (size_t i = 0; i < sheets.size(); ++i)
+        for (size_t i = 0; i < sheets.size(); ++i) {  // small parts first: they stay flat while the sheet
+            std::stable_sort(outers[i].begin(), outers[i].end(),  // around them is still whole
+                             [&](const ToolPath& a, const ToolPath& b) {
+                                 return geometry::area(placed[a.placement]) <
+                                        geometry::area(placed[b.placement]);
+                             });
             sheets[i].cuts.insert(sheets[i].cuts.end(), outers[i].begin(), outers[i].end());
+        }
     }
     for (size_t i = 0; i < sheets.size(); ++i)
         sheets[i].cuts.insert(sheets[i].cuts.end(), last[i].begin(), last[i].end());

@@ -26,6 +26,11 @@ struct ToolPath {
     /// A stretch between two holding tabs (settings.tabWidth): open, so a small part stays in the sheet when
     /// cut free. Such paths come last.
     bool open = false;
+    /// Holding tabs go on it: as the machine cuts, it is split into open stretches; as designed, it stays
+    /// closed and the tabs are listed in CutSheet::tabs.
+    bool tabbed = false;
+    bool hole = false;     ///< a hole of its part; else the part's outline
+    size_t placement = 0;  ///< the placement (Layout::placements) whose outline or hole it is
 };
 
 /// How a cut sheet is drawn. For the machine as it cuts (a laser or a CNC's own path): tool paths offset by
@@ -41,7 +46,8 @@ struct CutSheetOptions {
 /// One master board's cutting plan, in board coordinates (origin at its lower-left corner).
 struct CutSheet {
     MasterBoard board;
-    std::vector<ToolPath> cuts;  ///< in the order to cut them: deepest parts first, holes before outlines
+    /// In the order to cut them: deepest parts first, holes before outlines, small parts before large.
+    std::vector<ToolPath> cuts;
     /// As designed: where holding tabs go, each the stretch of a closed contour it spans.
     std::vector<std::pair<geometry::Point2, geometry::Point2>> tabs;
     std::vector<Label> labels;

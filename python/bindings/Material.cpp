@@ -51,15 +51,22 @@ std::vector<std::string> writeCutSheets(const py::object& problemDict, const py:
     return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile, name, {asDesigned, textLabels});
 }
 
+py::tuple point(const geometry::Point2& p)
+{
+    return py::make_tuple(p.x, p.y);
+}
+
+py::list points(const geometry::Polygon& polygon)
+{
+    py::list list;
+    for (const geometry::Point2& p : polygon)
+        list.append(point(p));
+    return list;
+}
+
 py::list placedOutlines(const py::object& problemDict, const py::object& layoutDict)
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    auto points = [](const geometry::Polygon& polygon) {
-        py::list list;
-        for (const geometry::Point2& p : polygon)
-            list.append(py::make_tuple(p.x, p.y));
-        return list;
-    };
     py::list out;
     for (size_t k = 0; k < layout.placements.size(); ++k) {
         const geometry::Outline outline = material::placedOutline(layout, problem, k);
@@ -98,6 +105,55 @@ std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::o
          material::cutSheets(layout, problem, {false, true}))  // text to read
         texts.push_back(io::svg(sheet, stroke));
     return texts;
+}
+
+py::dict cutSheetDict(const material::CutSheet& sheet, const material::Layout& layout,
+                      const material::PackProblem& problem)
+{
+    py::list cuts, tabs, drills, lettering, labels, engraved;
+    for (const material::ToolPath& cut : sheet.cuts) {
+        py::dict item;
+        item["points"] = points(cut.points);
+        item["inner"] = cut.inner;
+        item["open"] = cut.open;
+        item["tabbed"] = cut.tabbed;
+        item["hole"] = cut.hole;
+        item["placement"] = cut.placement;
+        item["part"] = problem.parts[layout.placements[cut.placement].part].id;
+        cuts.append(item);
+    }
+    for (const auto& [from, to] : sheet.tabs)
+        tabs.append(py::make_tuple(point(from), point(to)));
+    for (const material::Drill& drill : sheet.drills)
+        drills.append(py::dict(py::arg("at") = point(drill.at), py::arg("diameter") = drill.diameter,
+                               py::arg("depth") = drill.depth));
+    for (const std::vector<geometry::Polygon>& strokes : sheet.lettering) {
+        py::list label;
+        for (const geometry::Polygon& stroke : strokes)
+            label.append(points(stroke));
+        lettering.append(label);
+    }
+    for (const material::Label& label : sheet.labels)
+        labels.append(py::dict(py::arg("text") = label.text, py::arg("at") = point(label.at),
+                               py::arg("height") = label.height, py::arg("angle") = label.angle));
+    for (const geometry::Polygon& mark : sheet.engraved)
+        engraved.append(points(mark));
+    const material::MasterBoard& board = sheet.board;
+    return py::dict(py::arg("name") = board.name, py::arg("material") = board.material,
+                    py::arg("width") = board.width, py::arg("height") = board.height,
+                    py::arg("thickness") = board.thickness, py::arg("cuts") = cuts, py::arg("tabs") = tabs,
+                    py::arg("drills") = drills, py::arg("lettering") = lettering, py::arg("labels") = labels,
+                    py::arg("engraved") = engraved);
+}
+
+py::list cutSheetsOf(const py::object& problemDict, const py::object& layoutDict, bool asDesigned,
+                     bool textLabels)
+{
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
+    py::list out;
+    for (const material::CutSheet& sheet : material::cutSheets(layout, problem, {asDesigned, textLabels}))
+        out.append(cutSheetDict(sheet, layout, problem));
+    return out;
 }
 
 /// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names.
@@ -143,6 +199,15 @@ void bindMaterial(py::module_& m)
     m.def("placed_outlines", &placedOutlines, py::arg("problem"), py::arg("layout"),
           "Each placement's outline as placed on its board: [{'board', 'part', 'outline': [(x, y)...], "
           "'holes'}].");
+    m.def(
+        "cut_sheets", &cutSheetsOf, py::arg("problem"), py::arg("layout"), py::arg("as_designed") = true,
+        py::arg("text_labels") = false,
+        "Each master board's cutting plan: {'name', 'material', 'width', 'height', 'thickness', 'cuts': "
+        "[{'points', 'inner', 'open', 'tabbed', 'hole', 'placement', 'part'}] in the order to cut them, "
+        "'tabs': "
+        "[(from, to)], 'drills': [{'at', 'diameter', 'depth'}], 'lettering': per label its strokes, "
+        "'labels': "
+        "[{'text', 'at', 'height', 'angle'}], 'engraved'}; as designed (default): nominal outlines, closed.");
     m.def(
         "cut_sheet_svgs", &cutSheetSvgs, py::arg("problem"), py::arg("layout"), py::arg("stroke") = 0.1,
         "The SVG text of each master board's cut sheet; stroke = line width in sheet mm (0.1: as written).");

@@ -36,9 +36,13 @@ TEST(CutSheet, ToolPathsAreTheOutlinesGrownByHalfTheKerf)
     const std::vector<CutSheet> sheets = cutSheets(layout, p);
     ASSERT_EQ(sheets.size(), layout.sheets.size());
     ASSERT_EQ(sheets[0].cuts.size(), 3u);
-    for (size_t i = 0; i < layout.placements.size(); ++i) {
-        const Placement& placement = layout.placements[i];
-        const auto& cut = sheets[0].cuts[i].points;
+    double area = 0;
+    for (const ToolPath& path : sheets[0].cuts) {
+        const Placement& placement = layout.placements[path.placement];
+        EXPECT_FALSE(path.hole);
+        EXPECT_GE(placement.width * placement.height, area);  // small parts first
+        area = placement.width * placement.height;
+        const auto& cut = path.points;
         const auto [minX, maxX] =
             std::minmax_element(cut.begin(), cut.end(), [](auto a, auto b) { return a.x < b.x; });
         const auto [minY, maxY] =
@@ -145,6 +149,8 @@ TEST(CutSheet, AsDesignedTheOutlinesAreNominalAndTheHolesInnerCuts)
         std::find_if(sheet.cuts.begin(), sheet.cuts.end(), [](const ToolPath& c) { return c.inner; });
     ASSERT_NE(inner, sheet.cuts.end());
     EXPECT_NEAR(std::abs(fabguide::geometry::signedArea(inner->points)), 100 * 20, 1e-6);
+    EXPECT_TRUE(inner->hole);
+    EXPECT_EQ(layout.placements[inner->placement].part, 0);  // the part whose hole it is
     EXPECT_EQ(std::count_if(sheet.cuts.begin(), sheet.cuts.end(), [](const ToolPath& c) { return c.inner; }),
               std::count_if(layout.placements.begin(), layout.placements.end(),
                             [](const Placement& at) { return at.sheet == 0 && at.part == 0; }));
@@ -173,6 +179,8 @@ TEST(CutSheet, APartInAHoleIsCutBeforeTheHoleWhichKeepsTabsWithTheirs)
     EXPECT_NEAR(left(sheet.cuts[1].points), 60 + 0.1, 1e-6);   // the window, shrunk by it
     EXPECT_NEAR(left(sheet.cuts[2].points), 10 - 0.1, 1e-6);   // the frame
     EXPECT_FALSE(sheet.cuts[1].inner) << "the window holds the tag: an outer cut, after it";
+    EXPECT_TRUE(sheet.cuts[1].hole);
+    EXPECT_EQ(sheet.cuts[1].placement, 0u);
     // With tabs for the tag, the window keeps tabs too, and both are cut after the frame's closed outline.
     p.settings.tabWidth = 4;
     p.settings.tabBelow = 100;

@@ -4,7 +4,9 @@ are refused or said in one sentence.
 """
 # expects error: Master board 'MasterBoard': Count must be 0 (as many as needed) or more; kept 1
 # expects error: Layout 'Layout': part 'Back board' is 6 mm thick: no master board is (add one that thick)
+import json
 import os
+import sys
 import tempfile
 
 import FreeCAD
@@ -159,6 +161,65 @@ def techdraw_page_opens_with_the_cut_sheet():
     Gui.getMainWindow().centralWidget().activateNextSubWindow()
 
 
+def cam_job_from_the_layout_writes_checked_gcode():
+    """Make CAM Job: refused in its panel while the parts lie closer than the tool, then jobs and G-code that the
+    independent checker passes; one undo step takes the jobs away."""
+    sys.path.insert(0, os.path.join(os.environ["FABGUIDE_SOURCE_DIR"], "tests", "gen"))
+    import gcode_checker
+    import fabguide_core
+    from fabguide_gui import material_commands
+
+    doc, lay = state["doc"], state["layout"]
+    kerf, spacing = lay.Kerf.Value, lay.Spacing.Value
+    set_cutting(doc, lay, 0.5, 1.0)  # a laser's kerf
+    Gui.Selection.clearSelection()
+    Gui.runCommand("FabGuide_MakeCamJob")
+    QtGui.QApplication.processEvents()
+    panel = [w for w in QtGui.QApplication.allWidgets()
+             if w.objectName() == "CamJobPanel" and w.isVisible()]
+    assert panel, "the CAM job panel is open"
+    form = panel[0]
+    folder = tempfile.mkdtemp()
+    form.findChild(QtGui.QLineEdit, "folder").setText(folder)
+    cam_panel = material_commands.COMMANDS["FabGuide_MakeCamJob"].panel
+    assert cam_panel.accept() is False  # parts 1.5 mm apart: too close for a 5 mm end mill
+    assert "Kerf" in form.findChild(QtGui.QLabel, "message").text()
+    set_cutting(doc, lay, 5.0, 1.0)  # the router's
+    before = {o.Name for o in doc.Objects}
+    assert cam_panel.accept() is True
+    jobs = [o for o in doc.Objects if getattr(o, "FabGuideLayout", None) == lay and hasattr(o, "Operations")]
+    assert len(jobs) == lay.SheetCount
+    written = sorted(os.listdir(folder))
+    assert written == ["Layout-sheet-{}.nc".format(n + 1) for n in range(lay.SheetCount)], written
+    problem, result = json.loads(lay.ProblemJson), json.loads(lay.LayoutJson)
+    placed = fabguide_core.placed_outlines(problem, result)
+    for n, sheet in enumerate(fabguide_core.cut_sheets(problem, result)):
+        with open(os.path.join(folder, written[n])) as gcode:
+            found = gcode_checker.problems(gcode.read(), [dict(p, id=p["part"]) for p in placed if p["board"] == n],
+                                           sheet["thickness"], 2.5)
+        assert not found, found
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(jobs[0])
+    guitest.isometric()
+    print("screenshot: " + guitest.screenshot("material_cam_job"))
+    guitest.isometric("Top")
+    print("3-D view: " + guitest.view_image("material_cam_job_paths", compared=False))
+    doc.undo()  # the jobs, in one step
+    assert {o.Name for o in doc.Objects} == before, {o.Label for o in doc.Objects if o.Name not in before}
+    assert not [o for o in doc.Objects if hasattr(o, "Operations")], [o.Label for o in doc.Objects]
+    doc.undo()  # the kerfs
+    doc.undo()
+    doc.recompute()
+    assert (lay.Kerf.Value, lay.Spacing.Value) == (kerf, spacing)
+
+
+def set_cutting(doc, lay, kerf, spacing):
+    doc.openTransaction("Cutting")
+    lay.Kerf, lay.Spacing = kerf, spacing
+    doc.recompute()
+    doc.commitTransaction()
+
+
 def undo_removes_the_layout_in_one_step():
     doc = state["doc"]
     name = state["layout"].Name
@@ -194,6 +255,7 @@ guitest.run([
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,
     techdraw_page_opens_with_the_cut_sheet,
+    cam_job_from_the_layout_writes_checked_gcode,
     undo_removes_the_layout_in_one_step,
     make_board_from_a_selected_face,
 ])
