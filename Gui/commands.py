@@ -20,7 +20,7 @@ RELATIONSHIPS = names(F, "FabGuide_AddCover", "FabGuide_AddFitInside", "FabGuide
                       "FabGuide_AddGeometric")
 WORKSLIKE_FILE = names(F, "FabGuide_ImportWorkslike", "FabGuide_ExportWorkslike")
 PRINT = names(F, "FabGuide_MakePrintable", "FabGuide_ExportPrintable")
-BOARDS = names(M, "FabGuide_BoardsFromSolids", "FabGuide_MakeBoard")
+BOARDS = names(M, "FabGuide_BoardsFromSolids", "FabGuide_MakeBoard", "FabGuide_BandEdges")
 CUT_SHEETS = names(M, "FabGuide_ExportCutSheets", "FabGuide_TechDrawPages", "FabGuide_MakeCamJob")
 CONSTRAINTS = names(D, "FabGuide_EqualLengths", "FabGuide_SumOfLengths", "FabGuide_FixedLength", "FabGuide_LengthRange",
                     "FabGuide_EqualPosition", "FabGuide_Symmetric", "FabGuide_Ground", "FabGuide_Coplanar",
@@ -35,7 +35,8 @@ GROUPS = {
                                     "geometric", RELATIONSHIPS),
     "FabGuide_Print": Group("Print in place", "Make the mechanism printable in place, or export the print", PRINT),
     "FabGuide_WorkslikeFile": Group("Works-like file", "Import or export a *.workslike.json model", WORKSLIKE_FILE),
-    "FabGuide_Boards": Group("Boards", "Make boards from thin solids, or from a sketch or face", BOARDS),
+    "FabGuide_Boards": Group("Boards", "Make boards from thin solids, or from a sketch or face; band their edges",
+                              BOARDS),
     "FabGuide_CutSheets": Group("Cut sheets", "Export cut sheets, make TechDraw pages or CAM jobs", CUT_SHEETS),
     "FabGuide_DesignConstraints": Group("Design constraints", "Add a design constraint on the picked boards",
                                         CONSTRAINTS),

@@ -61,6 +61,34 @@ class BoardsFromSolids(Command):
                 solid.Visibility = False
 
 
+class BandEdges(Command):
+    ICON, MENU = "FabGuide_BandEdges.svg", "Band Edges"
+    TIP = "Glue edge banding on the picked edge faces of boards (asks for the band's name; empty removes it)"
+    last = "PVC 1 mm"  # the band named last, offered again
+
+    def run(self, doc):
+        from PySide import QtGui
+
+        picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() if board.is_board(s.Object)
+                 for sub in s.SubElementNames if board.element_name(sub).startswith("Face")]
+        sides = [(obj, board.side_of(obj, sub)) for obj, sub in picks]
+        if not sides or not all(side for _, side in sides):
+            return tell("Pick the edge faces of boards (their narrow sides, not the large faces) first.")
+        band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), "Band Edges",
+                                              "Band on the {} picked edge(s) (empty: none):".format(len(sides)),
+                                              text=BandEdges.last)
+        if not ok:
+            return
+        BandEdges.last = band.strip()
+        with transaction(doc, "Band edges"):
+            for obj, side in sides:
+                setattr(obj, "Edge" + side, BandEdges.last)
+            doc.recompute()
+        FreeCAD.Console.PrintMessage("FabGuide: {} on {}\n".format(
+            "'{}'".format(BandEdges.last) if BandEdges.last else "no band",
+            ", ".join("{} {}".format(obj.Label, side) for obj, side in sides)))
+
+
 def finish_boards(doc, made):
     for obj in made:
         viewproviders.ViewProviderBoard(obj.ViewObject)
@@ -161,6 +189,7 @@ COMMANDS = {
     "FabGuide_NewMasterBoard": NewMasterBoard(),
     "FabGuide_BoardsFromSolids": BoardsFromSolids(),
     "FabGuide_MakeBoard": MakeBoard(),
+    "FabGuide_BandEdges": BandEdges(),
     "FabGuide_Layout": MakeLayout(),
     "FabGuide_ExportCutSheets": ExportCutSheets(),
     "FabGuide_TechDrawPages": TechDrawPages(),

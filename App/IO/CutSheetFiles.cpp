@@ -2,6 +2,7 @@
 
 #include "IO/Json.h"
 #include "IO/Output.h"
+#include "IO/PackFormat.h"
 #include "IO/Xml.h"
 
 #include <dxflib/dl_dxf.h>
@@ -182,6 +183,15 @@ std::string svg(const material::CutSheet& sheet, double stroke)
                 out << "    " << svgPath(cut.points, h, cut.open) << "\n";
         out << "  </g>\n";
     }
+    if (!sheet.banding.empty()) {  // thick brown lines along the edges to band, the band's name as data
+        layer("edge-banding", "Edge banding (not cut)",
+              "fill=\"none\" stroke=\"#a0522d\" stroke-opacity=\"0.6\" stroke-width=\"" + show(10 * stroke) +
+                  "\"");
+        for (const material::Banding& b : sheet.banding)
+            out << "    <line x1=\"" << b.from.x << "\" y1=\"" << h - b.from.y << "\" x2=\"" << b.to.x
+                << "\" y2=\"" << h - b.to.y << "\" data-band=\"" << escapeXml(b.band) << "\"/>\n";
+        out << "  </g>\n";
+    }
     if (!sheet.tabs.empty()) {  // as designed: where the holding tabs go, for the CAM to leave them
         layer("tabs", "Holding tabs (not cut)", lines("#00c0c0"));
         for (const auto& [from, to] : sheet.tabs)
@@ -236,6 +246,8 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
                                                        {"ENGRAVE", 5}, {"SHEET", 8},     {"SAW", 30}};
     if (!sheet.tabs.empty())
         layers.emplace_back("TABS", 4);
+    if (!sheet.banding.empty())
+        layers.emplace_back("EDGE_BANDING", 32);
     for (const material::Drill& drill : sheet.drills)  // a layer per depth, which CAM maps to a drilling pass
         if (std::none_of(layers.begin(), layers.end(),
                          [&](const auto& l) { return l.first == drillLayer(drill); }))
@@ -283,6 +295,9 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
                       DL_Attributes("TABS", 256, -1, "BYLAYER", 1.0));
     for (const geometry::Polygon& mark : sheet.engraved)
         polygon(mark, "ENGRAVE");
+    for (const material::Banding& b : sheet.banding)
+        dxf.writeLine(*dw, DL_LineData(b.from.x, b.from.y, 0, b.to.x, b.to.y, 0),
+                      DL_Attributes("EDGE_BANDING", 256, -1, "BYLAYER", 1.0));
     for (const material::Drill& drill : sheet.drills)
         dxf.writeCircle(*dw, DL_CircleData(drill.at.x, drill.at.y, 0.0, drill.diameter / 2),
                         DL_Attributes(drillLayer(drill), 256, -1, "BYLAYER", 1.0));
@@ -313,11 +328,18 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path)
 {
     writeText(path, [&](std::ostream& out) {
-        out << "part,quantity,width,height,thickness,material,board,grain\n";
-        for (const material::CutListRow& row : rows)
+        out << "part,quantity,width,height,thickness,material,board,grain";
+        for (const std::string& side : sideNames())
+            out << ",edge_" << side;
+        out << ",label\n";
+        for (const material::CutListRow& row : rows) {
             out << quoteCsv(row.part) << "," << row.quantity << "," << row.width << "," << row.height << ","
                 << row.thickness << "," << quoteCsv(row.material) << "," << row.board + 1 << ","
-                << (row.grain ? "width" : "") << "\n";
+                << (row.grain ? "width" : "");
+            for (const std::string& band : row.edgeBanding)
+                out << "," << quoteCsv(band);
+            out << "," << quoteCsv(row.part) << "\n";
+        }
     });
 }
 

@@ -119,6 +119,31 @@ void readShape(const Fields& part, material::PartSpec& p)
             q = move(q);
 }
 
+/// "edge_banding": {"L1": "oak 1 mm", ...}, the band on each named side.
+std::array<std::string, 4> readEdgeBanding(const nlohmann::json& part, const std::string& path)
+{
+    std::array<std::string, 4> banding;
+    const auto found = part.find("edge_banding");
+    if (found == part.end())
+        return banding;
+    if (!found->is_object())
+        throw FormatError(path + ": must map sides (L1, L2, W1, W2) to band names, got " + found->dump());
+    const Fields bands(*found, path);
+    for (const auto& [side, band] : found->items()) {
+        const auto& names = sideNames();
+        const auto at = std::find(names.begin(), names.end(), side);
+        if (at == names.end())
+            throw FormatError(bands.pathOf(side) +
+                              ": not a side of the part; use L1, L2 (along its length), W1 or "
+                              "W2 (along its width)");
+        banding[at - names.begin()] = bands.text(side);
+        if (banding[at - names.begin()].empty())
+            throw FormatError(bands.pathOf(side) +
+                              ": the band's name is empty (leave the side out for none)");
+    }
+    return banding;
+}
+
 material::PartSpec readPart(const nlohmann::json& json, const std::string& path, size_t index)
 {
     const Fields part(json, path);
@@ -132,6 +157,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     p.orientations = readOrientations(part);
     p.followsGrain = part.flag("follow_grain", p.followsGrain);
     p.thickness = part.number("thickness", 0.0, 0.0);
+    p.edgeBanding = readEdgeBanding(json, part.pathOf("edge_banding"));
     return p;
 }
 
@@ -166,6 +192,12 @@ const std::vector<std::pair<std::string, material::Cuts>>& cutsNames()
 {
     static const std::vector<std::pair<std::string, material::Cuts>> names{
         {"free", material::Cuts::Free}, {"guillotine", material::Cuts::Guillotine}};
+    return names;
+}
+
+const std::array<std::string, 4>& sideNames()
+{
+    static const std::array<std::string, 4> names{"L1", "L2", "W1", "W2"};
     return names;
 }
 
@@ -497,6 +529,9 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
                                {"follow_grain", p.followsGrain}};
         if (p.thickness > 0)
             part["thickness"] = p.thickness;
+        for (size_t side = 0; side < 4; ++side)
+            if (!p.edgeBanding[side].empty())
+                part["edge_banding"][sideNames()[side]] = p.edgeBanding[side];
         if (geometry::isRectangle(p.outline)) {
             part["width"] = p.width();
             part["height"] = p.height();

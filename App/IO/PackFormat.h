@@ -18,6 +18,8 @@ constexpr int kPackFormatVersion = 1;
 /// settings.cuts and settings.first_cut as the formats and the command line spell them, in the order told.
 const std::vector<std::pair<std::string, material::Cuts>>& cutsNames();
 const std::vector<std::pair<std::string, material::FirstCut>>& firstCutNames();
+/// A part's sides as "edge_banding" and the cut list name them: L1, L2, W1, W2 (material::Side's order).
+const std::array<std::string, 4>& sideNames();
 
 /// The "settings" of a `*.pack.json` or `*.flatpack.json` document (defaults when absent).
 material::PackSettings readSettings(const nlohmann::json& document);

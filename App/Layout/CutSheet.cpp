@@ -35,6 +35,30 @@ geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem
     return geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
 }
 
+std::pair<geometry::Point2, geometry::Point2> placedSide(const Layout& layout, const PackProblem& problem,
+                                                         size_t k, Side side)
+{
+    const Placement& p = layout.placements[k];
+    const PartSpec& spec = problem.parts[p.part];
+    const double w = spec.width(), h = spec.height();
+    const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
+    switch (side) {
+        case Side::L1:
+            return {move({0, 0}), move({w, 0})};
+        case Side::L2:
+            return {move({0, h}), move({w, h})};
+        case Side::W1:
+            return {move({0, 0}), move({0, h})};
+        default:
+            return {move({w, 0}), move({w, h})};
+    }
+}
+
+double sideLength(const PartSpec& part, Side side)
+{
+    return side == Side::L1 || side == Side::L2 ? part.width() : part.height();
+}
+
 std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem, CutSheetOptions options)
 {
     const PackSettings& s = problem.settings;
@@ -55,14 +79,9 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     const int deepest = n ? *std::max_element(depth.begin(), depth.end()) : 0;
     std::vector<CutSheet> sheets;
     for (size_t k = 0; k < layout.sheets.size(); ++k)
-        sheets.push_back({layout.sheets[k],
-                          {},
-                          {},
-                          {},
-                          {},
-                          {},
-                          {},
-                          k < layout.sawCuts.size() ? layout.sawCuts[k] : std::vector<SawCut>{}});
+        sheets.emplace_back().board = layout.sheets[k];
+    for (size_t k = 0; k < layout.sawCuts.size() && k < sheets.size(); ++k)
+        sheets[k].sawCuts = layout.sawCuts[k];
     std::vector<std::vector<ToolPath>> last(sheets.size());  // the tabbed paths, cut after the rest
     // Inner cuts first: a part never drops out before its holes are cut, and a part in another's hole is cut
     // before that hole (deepest first). With holding tabs, a hole that holds a part is tabbed too, so the
@@ -108,6 +127,11 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
             const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
             for (const Drill& drill : spec.drills)
                 sheet.drills.push_back({move(drill.at), drill.diameter, drill.depth});
+            for (const Side side : kSides)
+                if (const std::string& band = spec.edgeBanding[static_cast<int>(side)]; !band.empty()) {
+                    const auto [from, to] = placedSide(layout, problem, k, side);
+                    sheet.banding.push_back({from, to, band});
+                }
             for (const geometry::Polygon& mark : spec.marks) {
                 sheet.engraved.emplace_back();
                 for (const geometry::Point2& q : mark)
@@ -138,7 +162,7 @@ std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem
         const PartSpec& spec = problem.parts[key.first];
         const MasterBoard& board = layout.sheets[key.second];
         rows.push_back({spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material,
-                        key.second, spec.followsGrain && board.grain != Grain::None});
+                        key.second, spec.followsGrain && board.grain != Grain::None, spec.edgeBanding});
     }
     return rows;
 }

@@ -33,6 +33,12 @@ struct ToolPath {
     size_t placement = 0;  ///< the placement (Layout::placements) whose outline or hole it is
 };
 
+/// Edge banding to glue on a placed part's edge (PartSpec::edgeBanding), drawn just inside that edge.
+struct Banding {
+    geometry::Point2 from, to;
+    std::string band;
+};
+
 /// How a cut sheet is drawn. For the machine as it cuts (a laser or a CNC's own path): tool paths offset by
 /// half the kerf, dogbones in inside corners, holding tabs as gaps. As designed (CAM software that offsets by
 /// its tool itself): the parts' nominal outlines, closed, no dogbones, the tabs listed as data.
@@ -55,7 +61,12 @@ struct CutSheet {
     std::vector<Drill> drills;                              ///< holes drilled into the face, not through
     std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)
     std::vector<SawCut> sawCuts;  ///< guillotine cuts: the saw's, in their order (Layout::sawCuts)
+    std::vector<Banding> banding;
 };
+
+/// The stretch of part k's bounding box along `side`, turned and moved as placed, as its banded edge.
+std::pair<geometry::Point2, geometry::Point2> placedSide(const Layout& layout, const PackProblem& problem,
+                                                         size_t k, Side side);
 
 /// Placement k's outline at its nominal size, turned and moved as placed on its sheet.
 geometry::Outline placedOutline(const Layout& layout, const PackProblem& problem, size_t k);
@@ -71,9 +82,13 @@ struct CutListRow {
     int quantity = 0;
     double width = 0, height = 0, thickness = 0;
     std::string material;
-    int board = 0;       ///< index into Layout::sheets
-    bool grain = false;  ///< its length (width) runs along the board's grain
+    int board = 0;                             ///< index into Layout::sheets
+    bool grain = false;                        ///< its length (width) runs along the board's grain
+    std::array<std::string, 4> edgeBanding{};  ///< PartSpec::edgeBanding
 };
+
+/// The length of a part's Side.
+double sideLength(const PartSpec& part, Side side);
 
 /// The cut list of a layout, one row per (part, board), in part order then board order.
 std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem);

@@ -5,6 +5,7 @@
 #include "Layout/Drill.h"
 #include "Layout/OrderingSearch.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -24,6 +25,11 @@ struct MasterBoard {
     double cost = 1;  ///< what one board costs (any unit; 1: a sheet); 0 for one already owned, an offcut
 };
 
+/// The sides of a part's bounding box, in its own frame, that can carry edge banding: L1 and L2 run along its
+/// x axis (its length) at y = 0 and at the top, W1 and W2 along y at x = 0 and at the right.
+enum class Side { L1, L2, W1, W2 };
+constexpr std::array<Side, 4> kSides{Side::L1, Side::L2, Side::W1, Side::W2};
+
 /// A part to cut, `quantity` times: a planar outline (polygon with holes) in millimetres, with the
 /// holes to drill and the marks to engrave on it (from its connectors), in the outline's frame.
 struct PartSpec {
@@ -35,6 +41,7 @@ struct PartSpec {
     std::vector<geometry::Polygon> marks;
     bool followsGrain = false;  ///< its length (x axis) along the grain of boards that have one
     double thickness = 0;       ///< mm: cut only from master boards this thick; 0: from any
+    std::array<std::string, 4> edgeBanding{};  ///< the band glued on each Side (its name); empty: none
     double width() const { return geometry::bounds(outline.outer).width(); }
     double height() const { return geometry::bounds(outline.outer).height(); }
     /// The width and height of its bounding box turned by `rotation` degrees (counter-clockwise).

@@ -210,3 +210,27 @@ TEST(CutSheet, CutListCountsPartsPerBoard)
     EXPECT_EQ(rows[0].material, "birch plywood");
     EXPECT_EQ(rows[1].part, "side");
 }
+
+TEST(CutSheet, EdgeBandingFollowsItsPartAsPlacedAndIntoTheCutList)
+{
+    PackProblem p;
+    p.boards = {{"sheet", "oak", 1000, 1000, 18, -1}};
+    p.parts = {rectangularPart("shelf", 300, 100, 1, {90})};
+    p.parts[0].edgeBanding[static_cast<int>(Side::L1)] = "oak 1 mm";  // its long edge at y = 0
+    Layout layout;
+    layout.sheets = p.boards;
+    layout.placements = {{0, 0, 50, 20, 90, 100, 300}};  // turned a quarter: the long edge stands upright
+    const CutSheet sheet = cutSheets(layout, p)[0];
+    ASSERT_EQ(sheet.banding.size(), 1u);
+    const Banding& band = sheet.banding[0];
+    EXPECT_EQ(band.band, "oak 1 mm");
+    EXPECT_NEAR(band.from.x, band.to.x, 1e-9);  // upright
+    EXPECT_NEAR(std::abs(band.to.y - band.from.y), 300, 1e-9);
+    EXPECT_TRUE(std::abs(band.from.x - 50) < 1e-9 ||
+                std::abs(band.from.x - 150) < 1e-9);  // on the part's edge
+    const std::vector<CutListRow> rows = cutList(layout, p);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].edgeBanding[0], "oak 1 mm");
+    EXPECT_DOUBLE_EQ(sideLength(p.parts[0], Side::L1), 300);
+    EXPECT_DOUBLE_EQ(sideLength(p.parts[0], Side::W2), 100);
+}

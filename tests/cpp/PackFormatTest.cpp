@@ -216,3 +216,23 @@ TEST(PackFormat, OutlinesThatCrossThemselvesHolesOutsideAndTwinIdsAreNamed)
     doc["parts"][1]["id"] = "seat";
     EXPECT_EQ(errorOf(doc), "parts[1].id: \"seat\" is used by parts[0] too; give each part its own id");
 }
+
+TEST(PackFormat, EdgeBandingReadsBackAsWrittenAndBadSidesAreNamed)
+{
+    json doc = goodProblem();
+    doc["parts"][0]["edge_banding"] = {{"L1", "oak 1 mm"}, {"W2", "oak 2 mm"}};
+    const material::PackProblem problem = io::readPackProblem(doc);
+    EXPECT_EQ(problem.parts[0].edgeBanding, (std::array<std::string, 4>{"oak 1 mm", "", "", "oak 2 mm"}));
+    EXPECT_EQ(problem.parts[1].edgeBanding, (std::array<std::string, 4>{}));
+    EXPECT_EQ(io::readPackProblem(io::problemToJson(problem)).parts[0].edgeBanding,
+              problem.parts[0].edgeBanding);
+    doc["parts"][0]["edge_banding"] = {{"front", "oak 1 mm"}};
+    EXPECT_EQ(errorOf(doc),
+              "parts[0].edge_banding.front: not a side of the part; use L1, L2 (along its length), "
+              "W1 or W2 (along its width)");
+    doc["parts"][0]["edge_banding"] = {{"L2", ""}};
+    EXPECT_EQ(errorOf(doc),
+              "parts[0].edge_banding.L2: the band's name is empty (leave the side out for none)");
+    doc["parts"][0]["edge_banding"] = json::array({"L1"});
+    EXPECT_NE(errorOf(doc).find("parts[0].edge_banding: must map sides"), std::string::npos);
+}

@@ -199,7 +199,36 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='outer-cut']/{http://www.w3.org/2000/svg}path")
     assert 'width="1220mm"' in svg and len(cuts) == 5 and 'data-label="sidel"' in svg
     csv = (tmp_path / "sheets" / "Layout-cutlist.csv").read_text().splitlines()
-    assert csv[0] == "part,quantity,width,height,thickness,material,board,grain" and len(csv) == 6
+    assert csv[0] == ("part,quantity,width,height,thickness,material,board,grain,edge_L1,edge_L2,edge_W1,edge_W2,"
+                      "label") and len(csv) == 6
+
+
+def test_edge_banding_picked_on_a_face_reaches_the_cut_list_and_the_sheet(doc, tmp_path):
+    """A shelf's front face is the side of its outline it lies on; the band goes into the problem, the cut list
+    and the drawing, along that edge of the placed part."""
+    boards, masters = shelf_unit(doc)
+    shelf = boards[2]
+    front = next("Face{}".format(i + 1) for i, f in enumerate(shelf.Shape.Faces)
+                 if abs(f.normalAt(0, 0).y + 1) < 1e-9)  # the face towards -y, 564 mm long
+    side = board.side_of(shelf, front)
+    assert side in ("L1", "L2"), side  # along the shelf's length
+    top = next("Face{}".format(i + 1) for i, f in enumerate(shelf.Shape.Faces) if abs(f.normalAt(0, 0).z) > 0.5)
+    assert board.side_of(shelf, top) is None
+    setattr(shelf, "Edge" + side, "birch 2 mm")
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    assert json.loads(lay.ProblemJson)["parts"][2]["edge_banding"] == {side: "birch 2 mm"}
+    layout.export_cut_sheets(lay, str(tmp_path))
+    rows = {r.split(",")[0]: r.split(",") for r in (tmp_path / "Layout-cutlist.csv").read_text().splitlines()}
+    header = rows.pop("part")
+    assert rows["shelf0"][header.index("edge_" + side)] == "birch 2 mm"
+    assert all(rows[p][header.index("edge_L1")] == "" for p in rows if p != "shelf0")
+    svg = ET.fromstring((tmp_path / "Layout-sheet-1.svg").read_text())
+    bands = svg.findall(".//{http://www.w3.org/2000/svg}g[@id='edge-banding']/{http://www.w3.org/2000/svg}line")
+    assert [b.get("data-band") for b in bands] == ["birch 2 mm"]
+    length = math.hypot(float(bands[0].get("x2")) - float(bands[0].get("x1")),
+                        float(bands[0].get("y2")) - float(bands[0].get("y1")))
+    assert abs(length - 564) < 0.1
 
 
 def test_two_layouts_share_a_folder_and_a_re_export_replaces_its_set_whole(doc, tmp_path):

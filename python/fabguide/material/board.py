@@ -10,6 +10,7 @@ from fabguide import properties
 
 SAMPLING = 0.05  # mm: arcs and splines become polygons deviating at most this much (thesis 5.4.1)
 ROTATIONS = ("Any", "Follow grain", "Fixed")  # Follow grain: the master board's Grain decides
+SIDES = ("L1", "L2", "W1", "W2")  # *.pack.json's edge_banding: along the length at its start and end, then the width
 
 
 class BoardError(ValueError):
@@ -28,6 +29,11 @@ class Board(properties.Proxy):
         add(obj, "App::PropertyInteger", "Quantity", "Board", "How many to cut", 1)
         add(obj, "App::PropertyEnumeration", "Rotation", "Board",
             "Turns allowed on the master board: any, keeping its length along the grain, or none", list(ROTATIONS))
+        for side, where in zip(SIDES, ("first long edge", "second long edge", "first short edge",
+                                       "second short edge")):
+            add(obj, "App::PropertyString", "Edge" + side, "Edge banding",
+                "Band glued on its {} (e.g. 'oak 1 mm'); empty: none. Band Edges sets it from picked faces"
+                .format(where), "")
         add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
         add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
 
@@ -170,5 +176,23 @@ def as_board3(obj, part_id):
 def packing_of(obj):
     """How the board is packed, as *.pack.json part fields (its shape comes from the connectors' pieces);
     Follow grain leaves the turns to each master board's grain."""
+    banding = {side: getattr(obj, "Edge" + side, "") for side in SIDES}
     return {"quantity": obj.Quantity, "orientations": [0] if obj.Rotation == "Fixed" else [0, 90, 180, 270],
-            "follow_grain": obj.Rotation == "Follow grain", "thickness": obj.Thickness.Value}
+            "follow_grain": obj.Rotation == "Follow grain", "thickness": obj.Thickness.Value,
+            "edge_banding": {side: band for side, band in banding.items() if band}}
+
+
+def side_of(obj, face_name):
+    """The side (SIDES) of the board's outline a face of its slab lies on, or None for its two large faces."""
+    slab = obj.Shape
+    face = slab.getElement(element_name(face_name))
+    outline = outline_of(slab)
+    origin, u, v = (FreeCAD.Vector(*outline[k]) for k in ("origin", "u", "v"))
+    if abs(face.normalAt(0, 0).dot(u.cross(v))) > 1e-6:
+        return None  # the top or bottom face
+    xs = [p[0] for p in outline["outline"]]
+    ys = [p[1] for p in outline["outline"]]
+    centre = face.CenterOfMass - origin
+    x, y = centre.dot(u), centre.dot(v)
+    distances = {"L1": abs(y - min(ys)), "L2": abs(y - max(ys)), "W1": abs(x - min(xs)), "W2": abs(x - max(xs))}
+    return min(distances, key=distances.get)
