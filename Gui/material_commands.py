@@ -119,7 +119,8 @@ class MakeLayout(Command):
 
 class ExportCutSheets(Command):
     ICON, MENU = "FabGuide_ExportCutSheets.svg", "Export Cut Sheets"
-    TIP = "Write SVG and DXF cut sheets per master board and a CSV cut list for the selected layout"
+    TIP = ("Write SVG and DXF cut sheets per master board, a CSV cut list, the shop's PDF report and part labels "
+           "for the selected layout")
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, layout.is_layout))
@@ -143,7 +144,8 @@ class ExportCutSheets(Command):
 
 class TechDrawPages(Command):
     ICON, MENU = "FabGuide_TechDrawPages.svg", "TechDraw Pages"
-    TIP = "Make a TechDraw page per master board of the selected layout, with its cut sheet to scale and labels"
+    TIP = ("Make TechDraw pages of the selected layout's shop report: a page per master board (parts numbered and "
+           "sized, grain, edge banding, saw cuts), then the cut list and the totals")
 
     def IsActive(self):
         return ExportCutSheets.IsActive(self)

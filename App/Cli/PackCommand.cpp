@@ -5,8 +5,10 @@
 #include "IO/Json.h"
 #include "IO/Output.h"
 #include "IO/PackFormat.h"
+#include "IO/Report.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -20,7 +22,8 @@ namespace {
 struct PackArguments {
     std::string input;
     std::string output;
-    std::string svgFolder, dxfFolder, csvFile;
+    std::string svgFolder, dxfFolder, csvFile, reportFile, labelsFile;
+    std::pair<double, double> labelSize{62, 29};
     bool strip = false;
     bool bottomLeft = false;
     bool asDesigned = false;
@@ -38,8 +41,9 @@ void run(const PackArguments& args)
     for (const std::string* folder : {&args.svgFolder, &args.dxfFolder})
         if (!folder->empty())
             io::checkWritableFolder(*folder);
-    if (!args.csvFile.empty())
-        io::checkWritableFile(args.csvFile);
+    for (const std::string* file : {&args.csvFile, &args.reportFile, &args.labelsFile})
+        if (!file->empty())
+            io::checkWritableFile(*file);
     io::OutputBatch files;
     const nlohmann::json document = io::readJsonFile(args.input);
     material::PackProblem problem =
@@ -74,6 +78,15 @@ void run(const PackArguments& args)
     for (const std::string& path : io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder,
                                                       args.csvFile, "", {args.asDesigned, args.textLabels}))
         std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
+    if (!args.reportFile.empty()) {
+        io::writeReport(layout, problem, std::filesystem::path(args.input).stem().stem().string(),
+                        args.reportFile);
+        std::printf("report        %s\n", args.reportFile.c_str());
+    }
+    if (!args.labelsFile.empty()) {
+        io::writeLabels(layout, problem, args.labelsFile, args.labelSize.first, args.labelSize.second);
+        std::printf("labels        %s\n", args.labelsFile.c_str());
+    }
     files.commit();
 }
 
@@ -92,6 +105,14 @@ void addPackCommand(CLI::App& app)
     cmd->add_option("--dxf", args->dxfFolder,
                     "folder for one DXF R2000 cut sheet per board (a layer per operation)");
     cmd->add_option("--csv", args->csvFile, "CSV cut list to write");
+    cmd->add_option(
+        "--report", args->reportFile,
+        "PDF report to write: each sheet with its parts numbered and sized, grain, edge banding and "
+        "saw cuts, then the cut list and the totals");
+    cmd->add_option("--labels", args->labelsFile, "PDF of labels for a label printer, one page per part cut");
+    cmd->add_option("--label-size", args->labelSize, "label width and height in mm")
+        ->delimiter('x')
+        ->capture_default_str();
     cmd->add_flag(
         "--text-labels", args->textLabels,
         "labels as text in a font (default: as single strokes to engrave, which laser software, CAM "

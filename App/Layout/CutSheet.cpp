@@ -13,7 +13,7 @@ namespace {
 /// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
 /// longer side (a freely turned part's own, kept within a quarter turn of upright), as large as fits the
 /// circle free there (a text n characters long is about 0.6 n of its height wide) between 2 and 12 mm.
-Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Placement& p)
+Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Placement& p, size_t k)
 {
     const auto [at, room] = geometry::deepestPoint(placed);
     const double n = static_cast<double>(std::max<size_t>(spec.id.size(), 1));
@@ -24,7 +24,7 @@ Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Place
         if (angle > 90)
             angle -= 180;
     }
-    return {spec.id, at, std::clamp(fits, 2.0, 12.0), angle};
+    return {spec.id, at, std::clamp(fits, 2.0, 12.0), angle, k};
 }
 
 }  // namespace
@@ -121,7 +121,7 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
             }
             add(k, path.outer, false, false, s.tabWidth > 0 && std::max(p.width, p.height) < s.tabBelow,
                 outers[p.sheet]);
-            sheet.labels.push_back(labelOf(spec, placed[k], p));
+            sheet.labels.push_back(labelOf(spec, placed[k], p, k));
             if (!options.textLabels)
                 sheet.lettering.push_back(strokes(sheet.labels.back()));
             const geometry::Placement2 move = geometry::placement(spec.outline, p.rotation, p.x, p.y);
@@ -150,6 +150,40 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
     for (size_t i = 0; i < sheets.size(); ++i)
         sheets[i].cuts.insert(sheets[i].cuts.end(), last[i].begin(), last[i].end());
     return sheets;
+}
+
+Totals totals(const Layout& layout, const PackProblem& problem)
+{
+    Totals t;
+    t.sheets = static_cast<int>(layout.sheets.size());
+    t.parts = static_cast<int>(layout.placements.size());
+    for (const MasterBoard& sheet : layout.sheets)
+        t.sheetArea += sheet.width * sheet.height, t.cost += sheet.cost;
+    std::map<std::string, double> banding;
+    const auto perimeter = [](const geometry::Polygon& polygon) {
+        double length = 0;
+        for (size_t i = 0; i < polygon.size(); ++i)
+            length += std::hypot(polygon[(i + 1) % polygon.size()].x - polygon[i].x,
+                                 polygon[(i + 1) % polygon.size()].y - polygon[i].y);
+        return length;
+    };
+    for (const Placement& p : layout.placements) {
+        const PartSpec& spec = problem.parts[p.part];
+        t.partArea += geometry::area(spec.outline);
+        if (layout.sawCuts.empty()) {
+            t.cutLength += perimeter(spec.outline.outer);
+            for (const geometry::Polygon& hole : spec.outline.holes)
+                t.cutLength += perimeter(hole);
+        }
+        for (const Side side : kSides)
+            if (const std::string& band = spec.edgeBanding[static_cast<int>(side)]; !band.empty())
+                banding[band] += sideLength(spec, side);
+    }
+    for (const std::vector<SawCut>& sheet : layout.sawCuts)
+        for (const SawCut& c : sheet)
+            t.cutLength += c.length();
+    t.banding.assign(banding.begin(), banding.end());
+    return t;
 }
 
 std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem)

@@ -14,7 +14,8 @@ struct Label {
     std::string text;
     geometry::Point2 at;  ///< the text's centre
     double height = 0;
-    double angle = 0;  ///< degrees counter-clockwise: 90 along a part that stands taller than wide
+    double angle = 0;      ///< degrees counter-clockwise: 90 along a part that stands taller than wide
+    size_t placement = 0;  ///< the placement (Layout::placements) it labels
 };
 
 /// One tool path of a cut sheet.
@@ -86,6 +87,18 @@ struct CutListRow {
     bool grain = false;                        ///< its length (width) runs along the board's grain
     std::array<std::string, 4> edgeBanding{};  ///< PartSpec::edgeBanding
 };
+
+/// What a layout takes and gives, for the shop's report.
+struct Totals {
+    int sheets = 0, parts = 0;
+    double sheetArea = 0, partArea = 0;  ///< mm²
+    double cost = 0;                     ///< of the sheets used (MasterBoard::cost)
+    /// mm: the saw's cuts for guillotine layouts, else every part's outline and holes.
+    double cutLength = 0;
+    std::vector<std::pair<std::string, double>> banding;  ///< mm of each band, by name
+};
+
+Totals totals(const Layout& layout, const PackProblem& problem);
 
 /// The length of a part's Side.
 double sideLength(const PartSpec& part, Side side);

@@ -5,6 +5,7 @@
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
+#include "IO/Report.h"
 #include "Json.h"
 
 #include <pybind11/stl.h>
@@ -96,17 +97,6 @@ py::object joinBoards(const py::object& boards, const std::string& style, int fi
         io::piecesToJson(material::coplanarPieces(board3, joined, settings.tolerance), joined, board3));
 }
 
-std::vector<std::string> cutSheetSvgs(const py::object& problemDict, const py::object& layoutDict,
-                                      double stroke)
-{
-    const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    std::vector<std::string> texts;
-    for (const material::CutSheet& sheet :
-         material::cutSheets(layout, problem, {false, true}))  // text to read
-        texts.push_back(io::svg(sheet, stroke));
-    return texts;
-}
-
 py::dict cutSheetDict(const material::CutSheet& sheet, const material::Layout& layout,
                       const material::PackProblem& problem)
 {
@@ -154,6 +144,27 @@ py::list cutSheetsOf(const py::object& problemDict, const py::object& layoutDict
     for (const material::CutSheet& sheet : material::cutSheets(layout, problem, {asDesigned, textLabels}))
         out.append(cutSheetDict(sheet, layout, problem));
     return out;
+}
+
+void writeReport(const py::object& problemDict, const py::object& layoutDict, const std::string& title,
+                 const std::string& path)
+{
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
+    io::writeReport(layout, problem, title, path);
+}
+
+std::vector<std::string> reportSvgs(const py::object& problemDict, const py::object& layoutDict,
+                                    const std::string& title)
+{
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
+    return io::reportSvgs(layout, problem, title);
+}
+
+void writeLabels(const py::object& problemDict, const py::object& layoutDict, const std::string& path,
+                 double width, double height)
+{
+    const auto [problem, layout] = readLayout(problemDict, layoutDict);
+    io::writeLabels(layout, problem, path, width, height);
 }
 
 /// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names.
@@ -208,9 +219,15 @@ void bindMaterial(py::module_& m)
         "[(from, to)], 'drills': [{'at', 'diameter', 'depth'}], 'lettering': per label its strokes, "
         "'labels': "
         "[{'text', 'at', 'height', 'angle'}], 'engraved'}; as designed (default): nominal outlines, closed.");
-    m.def(
-        "cut_sheet_svgs", &cutSheetSvgs, py::arg("problem"), py::arg("layout"), py::arg("stroke") = 0.1,
-        "The SVG text of each master board's cut sheet; stroke = line width in sheet mm (0.1: as written).");
+    m.def("write_report", &writeReport, py::arg("problem"), py::arg("layout"), py::arg("title"),
+          py::arg("path"),
+          "Write the shop's PDF report: a page per sheet (parts numbered and sized, grain, edge banding, saw "
+          "cuts), the cut list and the totals.");
+    m.def("report_svgs", &reportSvgs, py::arg("problem"), py::arg("layout"), py::arg("title"),
+          "The report's pages as SVG texts, 297 x 210 mm each.");
+    m.def("write_labels", &writeLabels, py::arg("problem"), py::arg("layout"), py::arg("path"),
+          py::arg("width") = 62.0, py::arg("height") = 29.0,
+          "Write a PDF of labels for a label printer, a page of width x height mm per part cut.");
     m.def(
         "write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
         py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",

@@ -4,7 +4,8 @@ with a handle hole; rough sizes; 12-19 mm boards), laid out with random cutting 
 holding tabs, spacing), a tool bit of a random diameter written as a user's *.fctb, and a post-processor (grbl or
 linuxcnc). Make CAM Job turns it into jobs and each job is posted; per sheet the G-code and what the independent
 checker (gcode_checker.py) needs are written as seed-S-sheet-N.nc / .json. One seed in eight lays the parts out
-closer than the tool: that must be refused, naming the Kerf. seed-S.json says what happened to each seed."""
+closer than the tool: that must be refused, naming the Kerf. seed-S.json says what happened to each seed.
+FABGUIDE_CAM_SEEDS is a list of seeds and ranges, "0-15,28"."""
 import json
 import os
 import random
@@ -117,13 +118,22 @@ def run(seed, out):
         FreeCAD.closeDocument(doc.Name)
 
 
+def seeds(text):
+    """'0-15,28,91' -> 0, 1, ..., 15, 28, 91."""
+    result = []
+    for item in text.split(","):
+        first, _, last = item.partition("-")
+        result += range(int(first), int(last or first) + 1)
+    return result
+
+
 def main():
     out = os.environ["FABGUIDE_CAM_OUT"]
     os.makedirs(out, exist_ok=True)
-    first, last = (int(v) for v in os.environ["FABGUIDE_CAM_SEEDS"].split("-"))
-    for seed in range(first, last + 1):
+    for seed in seeds(os.environ["FABGUIDE_CAM_SEEDS"]):
         with open(os.path.join(out, "seed-{}.json".format(seed)), "w") as report:
             json.dump(run(seed, out), report)
 
 
-main()
+if "FABGUIDE_CAM_OUT" in os.environ:  # run by freecadcmd (which names the script's module after its file)
+    main()

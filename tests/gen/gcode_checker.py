@@ -140,10 +140,12 @@ def first_reach(targets, centres, order, reach):
 
 
 def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_tool=None, drills=(), strokes=(),
-             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, tol=0.02, step=0.5):
+             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, tol=0.025, step=0.5):
     """What is wrong with the G-code of one sheet. parts: [{'id', 'outline', 'holes'}] as designed, in sheet
     millimetres; tabbed: ids of parts whose outline may keep `tags` holding tags at most tab_width (plus the
-    tool) long; drills: [{'at', 'diameter', 'depth'}]; strokes: the labels' strokes to engrave, [[(x, y)...]]."""
+    tool) long; drills: [{'at', 'diameter', 'depth'}]; strokes: the labels' strokes to engrave, [[(x, y)...]].
+    tol: CAM's geometry tolerance (a job's default 0.01 mm) on the model and on the path, and the G-code's
+    rounding."""
     found = []
     all_moves = moves(gcode)
     cut = [(i, m) for i, m in enumerate(all_moves) if m[0] == mill and m[1] in (1, 2, 3)]

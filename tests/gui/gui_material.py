@@ -144,15 +144,15 @@ def export_writes_svg_dxf_and_csv():
         Gui.runCommand("FabGuide_ExportCutSheets")
     finally:
         QtGui.QFileDialog.getExistingDirectory = original
-    assert sorted(os.listdir(folder)) == ["Layout-cutlist.csv", "Layout-sheet-1.dxf", "Layout-sheet-1.svg"], \
-        os.listdir(folder)
+    assert sorted(os.listdir(folder)) == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-report.pdf",
+                                          "Layout-sheet-1.dxf", "Layout-sheet-1.svg"], os.listdir(folder)
 
 
 def techdraw_page_opens_with_the_cut_sheet():
     Gui.Selection.clearSelection()
     Gui.runCommand("FabGuide_TechDrawPages")
     pages = [o for o in state["doc"].Objects if o.TypeId == "TechDraw::DrawPage"]
-    assert len(pages) == state["layout"].SheetCount
+    assert len(pages) == state["layout"].SheetCount + 1  # and the cut list with the totals
     QtGui.QApplication.processEvents()
     Gui.SendMsgToActiveView("ViewFit")
     print("screenshot: " + guitest.screenshot("material_techdraw_page"))

@@ -12,19 +12,24 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "gen"))
 import gcode_checker  # noqa: E402
+from cam_jobs import seeds  # noqa: E402
 
-SEEDS = int(os.environ.get("FABGUIDE_CAM_SEEDS", 16))  # CI: 16 designs per FreeCAD version
+# CI: 8 designs per FreeCAD version, and the seeds that once failed (tags the dressup dropped on finger notches,
+# a hole's offset within CAM's tolerance); FABGUIDE_CAM_SEEDS=0-999 for a benchmark run.
+SEEDS = os.environ.get("FABGUIDE_CAM_SEEDS", "0-7,28,91,114,125,134,198")
+
 
 
 @pytest.fixture(scope="module")
 def posted(tmp_path_factory, source_dir):
     out = str(tmp_path_factory.mktemp("cam"))
-    env = dict(os.environ, FABGUIDE_CAM_SEEDS="0-{}".format(SEEDS - 1), FABGUIDE_CAM_OUT=out)
+    env = dict(os.environ, FABGUIDE_CAM_SEEDS=SEEDS, FABGUIDE_CAM_OUT=out)
     run = subprocess.run(["freecadcmd", os.path.join(source_dir, "tests", "gen", "cam_jobs.py")], env=env,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=1800)
-    reports = [json.load(open(os.path.join(out, "seed-{}.json".format(s)))) for s in range(SEEDS)
+    wanted = seeds(SEEDS)
+    reports = [json.load(open(os.path.join(out, "seed-{}.json".format(s)))) for s in wanted
                if os.path.exists(os.path.join(out, "seed-{}.json".format(s)))]
-    assert len(reports) == SEEDS, run.stdout[-3000:]
+    assert len(reports) == len(wanted), run.stdout[-3000:]
     return out, reports
 
 
@@ -51,7 +56,7 @@ def test_every_design_is_posted_or_refused_by_name(posted):
             assert r["outcome"] == "refused" and "Kerf" in r["error"], r
         else:
             assert r["outcome"] == "posted", r
-    assert sum(r["outcome"] == "posted" for r in reports) >= SEEDS * 3 // 4
+    assert sum(r["outcome"] == "posted" for r in reports) >= len(reports) * 3 // 4
 
 
 def test_every_posted_sheet_passes_the_checker(posted):

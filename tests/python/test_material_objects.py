@@ -194,7 +194,8 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     doc.recompute()
     written = layout.export_cut_sheets(lay, str(tmp_path / "sheets"))
     names = sorted(p.split("/")[-1] for p in written)
-    assert names == ["Layout-cutlist.csv", "Layout-sheet-1.dxf", "Layout-sheet-1.svg"]
+    assert names == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-report.pdf", "Layout-sheet-1.dxf",
+                     "Layout-sheet-1.svg"]
     svg = (tmp_path / "sheets" / "Layout-sheet-1.svg").read_text()
     cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='outer-cut']/{http://www.w3.org/2000/svg}path")
     assert 'width="1220mm"' in svg and len(cuts) == 5 and 'data-label="sidel"' in svg
@@ -302,7 +303,7 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_pat
     assert lay.Connectors == [] and json.loads(lay.ProblemJson)["parts"][0]["holes"] == []
 
 
-def test_techdraw_pages_draw_each_sheet_to_scale_and_are_replaced_on_rerun(doc):
+def test_techdraw_pages_show_the_report_and_are_replaced_on_rerun(doc):
     from fabguide.material import techdraw
 
     boards, masters = shelf_unit(doc)
@@ -311,17 +312,13 @@ def test_techdraw_pages_draw_each_sheet_to_scale_and_are_replaced_on_rerun(doc):
     doc.recompute()
     assert lay.SheetCount >= 2
     pages = techdraw.make_pages(lay)
-    assert len(pages) == lay.SheetCount
-    for number, page in enumerate(pages, start=1):
-        assert "Invalid" not in page.State and page.Template.Template.endswith("A3_Landscape_blank.svg")
+    assert len(pages) == lay.SheetCount + 1  # a page per sheet, then the cut list and totals
+    for page in pages:
+        assert "Invalid" not in page.State and page.Template.Template.endswith("A4_Landscape_blank.svg")
         (drawing,) = page.Views
-        assert drawing.Symbol.startswith("<?xml") and 'width="1220mm"' in drawing.Symbol
-        assert drawing.Scale * 1220 <= 420 - 30 and drawing.Caption.startswith("Sheet {} of".format(number))
-    symbols = [page.Views[0].Symbol for page in pages]
-    for b in boards:  # every board is labelled on exactly one page
-        assert sum(">{}<".format(b.Label) in text for text in symbols) == 1, b.Label
+        assert "<svg" in drawing.Symbol and 'width="297mm"' in drawing.Symbol and drawing.Scale == 1  # A4 wide
     kept = len(doc.Objects)
-    assert len(techdraw.make_pages(lay)) == lay.SheetCount and len(doc.Objects) == kept  # replaced, not added
+    assert len(techdraw.make_pages(lay)) == len(pages) and len(doc.Objects) == kept  # replaced, not added
 
 
 @pytest.mark.parametrize("grain, turned", [("Along width", False), ("Along height", True)])

@@ -18,6 +18,7 @@ FEED = 1500.0  # mm/min across the sheet: a router in plywood or MDF
 PLUNGE = 300.0  # mm/min down
 SPINDLE = 18000.0  # rpm
 ENGRAVE_DEPTH = 0.5  # mm below the face
+TAGS = 2  # holding tags per tabbed outline
 BITS = {"end mill": "5mm_Endmill.fctb", "drill": "5mm_Drill.fctb", "v-bit": "60degree_Vbit.fctb"}
 
 
@@ -239,8 +240,7 @@ def profiles(cam, job, base, sheet, faces, mill, lay):
             dressed = dressup(job, cam.Dogbone.Create(dressed), dressed, op.Label + " dogbones")
         if cut["tabbed"] and not cut["hole"]:
             job.Document.recompute()
-            tagged = dressup(job, cam.Tags.Create(dressed), dressed, op.Label + " tags")
-            tags(tagged, sheet, cut, lay.TabWidth.Value, mill.Tool.Diameter.Value / 2)
+            tags(dressup(job, cam.Tags.Create(dressed), dressed, op.Label + " tags"), lay.TabWidth.Value)
 
 
 def dressup(job, made, base, label):
@@ -259,21 +259,11 @@ def depth(op, start, final):
         setattr(op, name, value)
 
 
-def tags(tagged, sheet, cut, width, radius):
-    """CAM's holding tags on a part's outline where the core puts its tabs, moved out to the tool's centre."""
+def tags(tagged, width):
+    """CAM's own holding tags, two as the core's tabs (CutSheet.tabs), placed by CAM on the longest straight
+    stretches of the tool path; the core's own places can fall on a finger joint's notch, where CAM drops them."""
     tagged.Width = width
-    outline = polygon_face(cut["points"], [])
-    positions = []
-    for (x0, y0), (x1, y1) in sheet["tabs"]:
-        mid = FreeCAD.Vector((x0 + x1) / 2, (y0 + y1) / 2, 0)
-        if outline.distToShape(Part.Vertex(mid))[0] > 1e-6:
-            continue  # another contour's tab
-        along = FreeCAD.Vector(x1 - x0, y1 - y0, 0)
-        normal = FreeCAD.Vector(along.y, -along.x, 0).normalize() * radius
-        out = mid + normal if not outline.isInside(mid + normal, 1e-6, True) else mid - normal
-        positions.append((out.x, out.y, True))
-    if positions:
-        tagged.Proxy.setXyEnabled(positions)
+    tagged.Proxy.generateTags(tagged, TAGS)
 
 
 def drillings(cam, job, base, sheet, feed, spindle):

@@ -26,7 +26,8 @@ class Layout(properties.Proxy):
     VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"),
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
                                "0 or a divisor of 90 (e.g. 15, 30, 45)"),
-                 Stages=properties.at_least(0, " (0: unlimited)"))
+                 Stages=properties.at_least(0, " (0: unlimited)"), LabelWidth=properties.at_least(20),
+                 LabelHeight=properties.at_least(10))
 
     def define(self, obj):
         add = properties.add
@@ -49,6 +50,8 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyBool", "TextLabels", "Cut sheets",
             "Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD's "
             "DXF import take as they are", False)
+        add(obj, "App::PropertyLength", "LabelWidth", "Cut sheets", "Width of the label printer's labels", 62)
+        add(obj, "App::PropertyLength", "LabelHeight", "Cut sheets", "Height of the label printer's labels", 29)
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
             "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
             "Auto", list(JOINTS))
@@ -210,12 +213,18 @@ def file_stem(label):
 
 
 def export_cut_sheets(obj, folder):
-    """LABEL-sheet-N.svg and .dxf per master board and LABEL-cutlist.csv into `folder`, for the layout as last
-    computed: two layouts share a folder, and a re-export replaces its own set whole."""
+    """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf and LABEL-labels.pdf
+    into `folder`, for the layout as last computed: two layouts share a folder, and a re-export replaces its own
+    set whole."""
     if not obj.LayoutJson:
         raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
     os.makedirs(folder, exist_ok=True)
     stem = file_stem(obj.Label)
-    return fabguide_core.write_cut_sheets(json.loads(obj.ProblemJson), json.loads(obj.LayoutJson), svg_folder=folder,
-                                          dxf_folder=folder, csv_file=os.path.join(folder, stem + "-cutlist.csv"),
-                                          name=stem, as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
+    problem, result = json.loads(obj.ProblemJson), json.loads(obj.LayoutJson)
+    written = fabguide_core.write_cut_sheets(problem, result, svg_folder=folder, dxf_folder=folder,
+                                             csv_file=os.path.join(folder, stem + "-cutlist.csv"), name=stem,
+                                             as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
+    report, labels = (os.path.join(folder, "{}-{}.pdf".format(stem, what)) for what in ("report", "labels"))
+    fabguide_core.write_report(problem, result, obj.Label, report)
+    fabguide_core.write_labels(problem, result, labels, obj.LabelWidth.Value, obj.LabelHeight.Value)
+    return written + [report, labels]
