@@ -22,7 +22,7 @@ namespace {
 struct PackArguments {
     std::string input;
     std::string output;
-    std::string svgFolder, dxfFolder, csvFile, reportFile, labelsFile;
+    std::string svgFolder, dxfFolder, csvFile, reportFile, labelsFile, optiCutterFile;
     std::pair<double, double> labelSize{62, 29};
     bool strip = false;
     bool bottomLeft = false;
@@ -41,7 +41,7 @@ void run(const PackArguments& args)
     for (const std::string* folder : {&args.svgFolder, &args.dxfFolder})
         if (!folder->empty())
             io::checkWritableFolder(*folder);
-    for (const std::string* file : {&args.csvFile, &args.reportFile, &args.labelsFile})
+    for (const std::string* file : {&args.csvFile, &args.reportFile, &args.labelsFile, &args.optiCutterFile})
         if (!file->empty())
             io::checkWritableFile(*file);
     io::OutputBatch files;
@@ -83,6 +83,10 @@ void run(const PackArguments& args)
                         args.reportFile);
         std::printf("report        %s\n", args.reportFile.c_str());
     }
+    if (!args.optiCutterFile.empty())
+        for (const std::string& path : io::writeOptiCutter(
+                 problem, args.optiCutterFile, std::filesystem::path(args.input).stem().stem().string()))
+            std::printf("optiCutter    %s\n", path.c_str());
     if (!args.labelsFile.empty()) {
         io::writeLabels(layout, problem, args.labelsFile, args.labelSize.first, args.labelSize.second);
         std::printf("labels        %s\n", args.labelsFile.c_str());
@@ -109,6 +113,10 @@ void addPackCommand(CLI::App& app)
         "--report", args->reportFile,
         "PDF report to write: each sheet with its parts numbered and sized, grain, edge banding and "
         "saw cuts, then the cut list and the totals");
+    cmd->add_option(
+        "--opticutter", args->optiCutterFile,
+        "the job as optiCutter's CSV import (parts, sheets, kerf), to compare or optimise there; one "
+        "file per thickness");
     cmd->add_option("--labels", args->labelsFile, "PDF of labels for a label printer, one page per part cut");
     cmd->add_option("--label-size", args->labelSize, "label width and height in mm")
         ->delimiter('x')

@@ -122,8 +122,9 @@ std::string drillLayer(const material::Drill& drill)
 
 }  // namespace
 
-std::string svg(const material::CutSheet& sheet, double stroke)
+std::string svg(const material::CutSheet& sheet)
 {
+    const double stroke = 0.1;  // mm: a hairline
     const double w = sheet.board.width, h = sheet.board.height;
     std::ostringstream out;
     // An Inkscape layer per operation, in the order they are done; `style` holds its colour and such.
@@ -369,6 +370,53 @@ std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& shee
     for (size_t stale = sheets.size() + 1; std::filesystem::remove(pathOf(stale), error); ++stale) {
     }
     return paths;
+}
+
+std::vector<std::string> writeOptiCutter(const material::PackProblem& problem, const std::string& path,
+                                         const std::string& name)
+{
+    std::vector<double> thicknesses;  // of the parts' master boards
+    for (const material::MasterBoard& board : problem.boards)
+        if (std::find(thicknesses.begin(), thicknesses.end(), board.thickness) == thicknesses.end())
+            thicknesses.push_back(board.thickness);
+    std::vector<std::string> written;
+    for (const double thickness : thicknesses) {
+        const auto fits = [&](const material::PartSpec& part) {
+            return part.thickness == 0 || part.thickness == thickness;
+        };
+        if (std::none_of(problem.parts.begin(), problem.parts.end(), fits))
+            continue;
+        std::string file = path;
+        if (thicknesses.size() > 1) {
+            const std::filesystem::path p(path);
+            file = (p.parent_path() /
+                    (p.stem().string() + "-" + show(thickness) + "mm" + p.extension().string()))
+                       .string();
+        }
+        writeText(file, [&](std::ostream& out) {
+            out << "N," << quoteCsv(name + (thicknesses.size() > 1 ? " " + show(thickness) + " mm" : ""))
+                << "\n";
+            for (const material::MasterBoard& board : problem.boards)
+                if (board.thickness == thickness) {
+                    out << "M," << quoteCsv(board.material.empty() ? board.name : board.material) << "\n";
+                    break;
+                }
+            out << "K," << problem.settings.kerf << "\n";
+            for (const material::MasterBoard& board : problem.boards)
+                if (board.thickness == thickness)
+                    out << "S," << board.width << "," << board.height << ","
+                        << (board.count < 0 ? std::string() : std::to_string(board.count)) << "\n";
+            for (const material::PartSpec& part : problem.parts)
+                if (fits(part)) {
+                    const bool turns = std::find(part.orientations.begin(), part.orientations.end(), 90) !=
+                                       part.orientations.end();
+                    out << "P," << part.width() << "," << part.height() << "," << part.quantity << ","
+                        << quoteCsv(part.id) << "," << (turns && !part.followsGrain ? "y" : "") << "\n";
+                }
+        });
+        written.push_back(file);
+    }
+    return written;
 }
 
 std::vector<std::string> writeCutSheets(const material::Layout& layout, const material::PackProblem& problem,

@@ -15,9 +15,9 @@ namespace fabguide::io {
 /// "outer-cut" (red #ff0000: outlines, holes holding parts), "tabs" (as designed: cyan #00c0c0 lines where
 /// holding tabs go) and, with guillotine cuts, "saw": the saw's cuts as dashed orange (#ff8000) lines with
 /// data-number and data-stage, each numbered in text at its middle.
+/// "edge-banding" (brown lines, data-band, not cut). Lines are 0.1 mm hairlines.
 /// y points up in FabGuide and down in SVG: flipped here.
-/// `stroke` is the line width in sheet millimetres: 0.1 (a hairline) for machines, wider for print.
-std::string svg(const material::CutSheet& sheet, double stroke = 0.1);
+std::string svg(const material::CutSheet& sheet);
 void writeSvg(const material::CutSheet& sheet, const std::string& path);
 
 /// DXF R2000 (AC1015) in millimetres with a layer per operation: INNER_CUT (magenta) and OUTER_CUT (red)
@@ -25,9 +25,17 @@ void writeSvg(const material::CutSheet& sheet, const std::string& path);
 /// LINEs, as designed), SAW (orange LINEs and their numbers, guillotine cuts) and SHEET.
 void writeDxf(const material::CutSheet& sheet, const std::string& path);
 
-/// CSV cut list with header part,quantity,width,height,thickness,material,board,grain (board numbered from 1;
-/// grain "width" when the part's width runs along the board's grain, empty when it may lie either way).
+/// CSV cut list with header
+/// part,quantity,width,height,thickness,material,board,grain,edge_L1,edge_L2,edge_W1, edge_W2,label (board
+/// numbered from 1; grain "width" when the part's width runs along the board's grain, empty when it may lie
+/// either way; the band on each side; the part's label).
 void writeCutList(const std::vector<material::CutListRow>& rows, const std::string& path);
+
+/// The parts and master boards of a problem in optiCutter's keyed CSV import format (N name, M material, S
+/// stock length/width/quantity, K kerf, P part length/width/quantity/label/can-turn), one file per thickness:
+/// `path` itself when all parts are one thickness, else PATH-<thickness>mm.csv each. Returns the paths.
+std::vector<std::string> writeOptiCutter(const material::PackProblem& problem, const std::string& path,
+                                         const std::string& name);
 
 /// The cut sheets of a layout: SVG files into `svgFolder`, DXF files into `dxfFolder`, the cut list into
 /// `csvFile`, each skipped when empty; sheet files named after `name` when given (writeSheets); returns the

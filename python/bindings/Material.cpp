@@ -160,6 +160,12 @@ std::vector<std::string> reportSvgs(const py::object& problemDict, const py::obj
     return io::reportSvgs(layout, problem, title);
 }
 
+std::vector<std::string> writeOptiCutter(const py::object& problemDict, const std::string& path,
+                                         const std::string& name)
+{
+    return io::writeOptiCutter(io::readPackProblem(toJson(problemDict)), path, name);
+}
+
 void writeLabels(const py::object& problemDict, const py::object& layoutDict, const std::string& path,
                  double width, double height)
 {
@@ -225,6 +231,8 @@ void bindMaterial(py::module_& m)
           "cuts), the cut list and the totals.");
     m.def("report_svgs", &reportSvgs, py::arg("problem"), py::arg("layout"), py::arg("title"),
           "The report's pages as SVG texts, 297 x 210 mm each.");
+    m.def("write_opticutter", &writeOptiCutter, py::arg("problem"), py::arg("path"), py::arg("name"),
+          "Write the problem in optiCutter's CSV import format, one file per thickness; returns the paths.");
     m.def("write_labels", &writeLabels, py::arg("problem"), py::arg("layout"), py::arg("path"),
           py::arg("width") = 62.0, py::arg("height") = 29.0,
           "Write a PDF of labels for a label printer, a page of width x height mm per part cut.");

@@ -144,7 +144,7 @@ def export_writes_svg_dxf_and_csv():
         Gui.runCommand("FabGuide_ExportCutSheets")
     finally:
         QtGui.QFileDialog.getExistingDirectory = original
-    assert sorted(os.listdir(folder)) == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-report.pdf",
+    assert sorted(os.listdir(folder)) == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-opticutter.csv", "Layout-report.pdf",
                                           "Layout-sheet-1.dxf", "Layout-sheet-1.svg"], os.listdir(folder)
 
 

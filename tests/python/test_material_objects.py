@@ -194,7 +194,7 @@ def test_export_writes_what_the_layout_shows(doc, tmp_path):
     doc.recompute()
     written = layout.export_cut_sheets(lay, str(tmp_path / "sheets"))
     names = sorted(p.split("/")[-1] for p in written)
-    assert names == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-report.pdf", "Layout-sheet-1.dxf",
+    assert names == ["Layout-cutlist.csv", "Layout-labels.pdf", "Layout-opticutter.csv", "Layout-report.pdf", "Layout-sheet-1.dxf",
                      "Layout-sheet-1.svg"]
     svg = (tmp_path / "sheets" / "Layout-sheet-1.svg").read_text()
     cuts = ET.fromstring(svg).findall(".//{http://www.w3.org/2000/svg}g[@id='outer-cut']/{http://www.w3.org/2000/svg}path")

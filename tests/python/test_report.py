@@ -82,3 +82,32 @@ def test_a_label_too_small_is_refused_by_name(tmp_path, fabguide_cli):
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     assert run.returncode != 0 and "label size 10 x 5 mm" in run.stderr
     assert not (tmp_path / "labels.pdf").exists() and not (tmp_path / "l.json").exists()
+
+
+def test_opticutter_import_lists_every_part_and_sheet_per_thickness(tmp_path, fabguide_cli):
+    """optiCutter's keyed CSV (N name, M material, K kerf, S stock, P part: length, width, quantity, label,
+    can turn), read back here: one file per thickness, every part once with its quantity and turning."""
+    import csv
+
+    problem = banded(3)
+    (tmp_path / "job.pack.json").write_text(json.dumps(problem))
+    subprocess.run([fabguide_cli, "pack", str(tmp_path / "job.pack.json"), "-o", str(tmp_path / "l.json"),
+                    "--opticutter", str(tmp_path / "job.csv"), "--iterations", "5"], check=True,
+                   stdout=subprocess.PIPE)
+    thicknesses = sorted({b["thickness"] for b in problem["boards"]})
+    seen = {}
+    for t in thicknesses:
+        rows = list(csv.reader((tmp_path / "job-{:g}mm.csv".format(t)).open()))
+        keys = [r[0] for r in rows]
+        assert keys[:3] == ["N", "M", "K"] and float(rows[2][1]) == problem["settings"]["kerf"]
+        stock = [r for r in rows if r[0] == "S"]
+        assert [(float(r[1]), float(r[2])) for r in stock] == [(b["width"], b["height"]) for b in problem["boards"]
+                                                               if b["thickness"] == t]
+        for r in rows:
+            if r[0] == "P":
+                part = next(p for p in problem["parts"] if p["id"] == r[4])
+                assert part["thickness"] == t and (float(r[1]), float(r[2])) == (part["width"], part["height"])
+                assert (r[5] == "y") == (90 in part.get("orientations", [0, 90, 180, 270])
+                                         and not part.get("follow_grain", False))
+                seen[r[4]] = int(r[3])
+    assert seen == {p["id"]: p.get("quantity", 1) for p in problem["parts"]}

@@ -213,8 +213,8 @@ def file_stem(label):
 
 
 def export_cut_sheets(obj, folder):
-    """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf and LABEL-labels.pdf
-    into `folder`, for the layout as last computed: two layouts share a folder, and a re-export replaces its own
+    """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf, LABEL-labels.pdf and
+    LABEL-opticutter.csv (optiCutter's import) into `folder`, for the layout as last computed: two layouts share a folder, and a re-export replaces its own
     set whole."""
     if not obj.LayoutJson:
         raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
@@ -227,4 +227,5 @@ def export_cut_sheets(obj, folder):
     report, labels = (os.path.join(folder, "{}-{}.pdf".format(stem, what)) for what in ("report", "labels"))
     fabguide_core.write_report(problem, result, obj.Label, report)
     fabguide_core.write_labels(problem, result, labels, obj.LabelWidth.Value, obj.LabelHeight.Value)
-    return written + [report, labels]
+    return written + [report, labels] + fabguide_core.write_opticutter(
+        problem, os.path.join(folder, stem + "-opticutter.csv"), obj.Label)
