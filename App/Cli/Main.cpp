@@ -3,10 +3,22 @@
 #include "Core/Version.h"
 #include "IO/Output.h"
 
+#include <chrono>
 #include <exception>
 #include <iostream>
 
 namespace fabguide::cli {
+
+namespace {
+
+const auto started = std::chrono::steady_clock::now();  // set as the program starts, before main
+
+}  // namespace
+
+double secondsSinceStart()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
 
 int runCommandLine(CLI::App& app, int argc, char** argv)
 {

@@ -9,4 +9,8 @@ namespace fabguide::cli {
 /// Runs the subcommand named on the command line; its exit status.
 int runCommandLine(CLI::App& app, int argc, char** argv);
 
+/// Seconds since the program started: a command's time limit counts from there, start-up and reading
+/// included.
+double secondsSinceStart();
+
 }  // namespace fabguide::cli

@@ -1,5 +1,6 @@
 // `fabguide pack`: lay parts out on master boards (thesis 5.3.1, 5.4.3), or pack a strip.
 #include "Cli/Commands.h"
+#include "Cli/Main.h"
 #include "Core/Parallel.h"
 #include "IO/CutSheetFiles.h"
 #include "IO/Json.h"
@@ -7,6 +8,7 @@
 #include "IO/PackFormat.h"
 #include "IO/Report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -54,6 +56,7 @@ void run(const PackArguments& args)
     problem.settings.stages = args.stages.value_or(problem.settings.stages);
     problem.settings.firstCut = args.firstCut.value_or(problem.settings.firstCut);
     material::OrderingSearchOptions search = args.search;
+    search.timeLimit = std::max(0.0, search.timeLimit - secondsSinceStart());  // start-up and reading count
     search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
     const material::Layout layout = material::pack(problem, search);
     io::writeJsonFile(
@@ -154,7 +157,9 @@ void addPackCommand(CLI::App& app)
         ->transform(CLI::CheckedTransformer(std::map<std::string, material::FirstCut>(
             io::firstCutNames().begin(), io::firstCutNames().end())));
     cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
-    cmd->add_option("--time-limit", args->search.timeLimit, "seconds for the ordering search")
+    cmd->add_option(
+           "--time-limit", args->search.timeLimit,
+           "seconds for the run, from start-up to the files written (most of it the ordering search)")
         ->check(CLI::Range(0.0, 86400.0))
         ->capture_default_str();
     args->search.iterations = std::numeric_limits<long>::max();

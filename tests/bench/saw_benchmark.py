@@ -4,8 +4,12 @@ packingsolver's repository is given, on the classic two-dimensional bin-packing 
 Martello & Vigo VII-X; items not turned, as the classes define them). Each layout is judged by the independent
 checkers (layout_check; saw_checker for guillotine layouts); sheets are set beside the area bound (the parts'
 area over a sheet's, per thickness, rounded up).
+With --packingsolver BIN (built by build_packingsolver.sh), packingsolver's free (rectangle) and 3-stage guillotine
+(rectangleguillotine, 3NAR: non-exact, either first direction) solvers run beside FabGuide on the same instances
+and time limits; kerf, spacing and trim go in as the usual equivalence (each item and the trimmed sheet grown by
+the kerf), one run per sheet thickness; their sheet counts are theirs, not checked here.
 Usage: saw_benchmark.py [--seconds 1,10] [--lists N] [--classes PACKINGSOLVER_REPO] [--per-class K]
-(prints the Markdown section)."""
+[--packingsolver BIN] (prints the Markdown section)."""
 import argparse
 import csv
 import io
@@ -55,6 +59,44 @@ def laid_out(problem, cuts, stages, seconds):
     return len(layout["boards"]), wall, found
 
 
+def by_packingsolver(binary, problem, kind, seconds):
+    """(sheets, wall seconds, problems) of packingsolver's `kind` solver, one run per thickness (the time limit
+    shared between them), summed."""
+    s = problem["settings"]
+    gap, trim = s.get("kerf", 0) + s.get("spacing", 0), s.get("trim", 0)
+    groups = [(board, [p for p in problem["parts"] if p.get("thickness", board.get("thickness")) ==
+                       board.get("thickness")]) for board in problem["boards"]]
+    groups = [(board, parts) for board, parts in groups if parts]
+    sheets, wall = 0, 0.0
+    for board, parts in groups:
+        with tempfile.TemporaryDirectory() as folder:
+            items, bins, out = (os.path.join(folder, n) for n in ("items.csv", "bins.csv", "out.json"))
+            with open(items, "w") as f:
+                f.write("WIDTH,HEIGHT,COPIES,ORIENTED\n")
+                for p in parts:
+                    fixed = p.get("orientations") == [0] or (p.get("follow_grain") and board.get("grain", "none") !=
+                                                              "none")
+                    f.write("{},{},{},{}\n".format(p["width"] + gap, p["height"] + gap, p.get("quantity", 1),
+                                                   int(fixed)))
+            with open(bins, "w") as f:
+                f.write("WIDTH,HEIGHT\n{},{}\n".format(board["width"] - 2 * trim + gap, board["height"] - 2 * trim + gap))
+            command = [os.path.join(binary, "packingsolver_" + kind), "-i", items, "-b", bins, "-f", "bin-packing",
+                       "--bin-infinite-copies", "-t", str(seconds / len(groups)), "-o", out, "-v", "0"]
+            if kind == "rectangleguillotine":
+                command += ["-p", "3NAR"]
+            start = time.monotonic()
+            run = subprocess.run(command, capture_output=True, text=True)
+            wall += time.monotonic() - start
+            if run.returncode:
+                return None, wall, [run.stderr.strip()[-200:]]
+            with open(out) as f:
+                solution = json.load(f)["Output"]["Solution"]
+            if solution["NumberOfItems"] != sum(p.get("quantity", 1) for p in parts):
+                return None, wall, ["packingsolver placed {} of the items".format(solution["NumberOfItems"])]
+            sheets += solution["NumberOfBins"]
+    return sheets, wall, []
+
+
 def class_instances(repo, per_class):
     """(name, problem) of the 2BP classes in packingsolver's repository (a git directory or a checkout)."""
     def read(path):
@@ -79,21 +121,28 @@ def class_instances(repo, per_class):
                                "orientations": [0]} for i in items]}
 
 
-def table(title, instances, seconds):
+def table(title, instances, seconds, packingsolver=""):
     """Markdown rows: per mode, the sheets summed, % above the area bound, worst wall time, problems."""
     rows, bound = {}, 0
+    runs = [(mode, lambda problem, mode=mode: laid_out(problem, *mode, seconds)) for mode in MODES]
+    if packingsolver:
+        runs += [(("packingsolver", kind), lambda problem, kind=kind: by_packingsolver(packingsolver, problem, kind,
+                                                                                       seconds))
+                 for kind in ("rectangle", "rectangleguillotine")]
     for name, problem in instances:
         bound += saw_checker.least_sheets(problem)
-        for cuts, stages in MODES:
-            sheets, wall, found = laid_out(problem, cuts, stages, seconds)
-            row = rows.setdefault((cuts, stages), [0, 0.0, []])
+        for mode, run in runs:
+            sheets, wall, found = run(problem)
+            row = rows.setdefault(mode, [0, 0.0, []])
             row[0] += sheets or 0
             row[1] = max(row[1], wall)
             row[2] += ["{}: {}".format(name, p) for p in found[:1]]
     out = ["", "**{}** at {} s: area bound {} sheets".format(title, seconds, bound), "",
            "| mode | sheets | above the bound % | slowest wall s | checker problems |", "|---|---|---|---|---|"]
     for (cuts, stages), (sheets, wall, found) in rows.items():
-        mode = cuts if cuts == "free" else "guillotine, {} stages".format(stages or "unlimited")
+        mode = ("FabGuide free" if cuts == "free" else "packingsolver {}".format(
+            "free (rectangle)" if stages == "rectangle" else "guillotine, 3 stages (rectangleguillotine 3NAR)")
+                if cuts == "packingsolver" else "FabGuide guillotine, {} stages".format(stages or "unlimited"))
         out.append("| {} | {} | {:.2f} | {:.2f} | {} |".format(mode, sheets, 100.0 * (sheets - bound) / bound, wall,
                                                                len(found) or "none"))
         out += ["  - " + p for p in found[:3]]
@@ -106,16 +155,17 @@ def main(argv):
     parser.add_argument("--lists", type=int, default=len(HELD_OUT))
     parser.add_argument("--classes", default="")
     parser.add_argument("--per-class", type=int, default=1)
+    parser.add_argument("--packingsolver", default="", help="folder of packingsolver_rectangle(guillotine)")
     args = parser.parse_args(argv)
     lines = ["## Sheets for a saw (issue 31)", "", "`python3 tests/bench/saw_benchmark.py {}`".format(" ".join(argv))]
     for seconds in [float(s) for s in args.seconds.split(",")]:
         lists = [("cut list {}".format(s), cutlists.problem(s)) for s in list(HELD_OUT)[:args.lists]]
         lines += table("{} generated shop cut lists (seeds {}-{})".format(len(lists), HELD_OUT[0],
                                                                           HELD_OUT[0] + len(lists) - 1),
-                       lists, seconds)
+                       lists, seconds, args.packingsolver)
         if args.classes:
             lines += table("2BP classes I-X, {} instance(s) per class and size".format(args.per_class),
-                           list(class_instances(args.classes, args.per_class)), seconds)
+                           list(class_instances(args.classes, args.per_class)), seconds, args.packingsolver)
     print("\n".join(lines))
 
 
