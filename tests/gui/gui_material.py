@@ -204,8 +204,9 @@ def cam_job_from_the_layout_writes_checked_gcode():
     print("screenshot: " + guitest.screenshot("material_cam_job"))
     guitest.isometric("Top")
     print("3-D view: " + guitest.view_image("material_cam_job_paths", compared=False))
+    undo = doc.UndoNames
     doc.undo()  # the jobs, in one step
-    assert {o.Name for o in doc.Objects} == before, {o.Label for o in doc.Objects if o.Name not in before}
+    assert {o.Name for o in doc.Objects} == before, (undo, {o.Label for o in doc.Objects if o.Name not in before})
     assert not [o for o in doc.Objects if hasattr(o, "Operations")], [o.Label for o in doc.Objects]
     doc.undo()  # the kerfs
     doc.undo()

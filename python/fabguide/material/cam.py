@@ -3,6 +3,7 @@ sheet, built from the parts as designed so that the tool's radius is CAM's own: 
 solids at board thickness, profiles in the core's cut order (holes before outlines, small parts before large),
 holding tags and dogbones as CAM dressups, drilling per dowel depth, labels engraved from their strokes.
 The G-code comes from FreeCAD's own post-processors."""
+import contextlib
 import importlib.util
 import json
 import os
@@ -93,14 +94,28 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE):
                            lay.Label, lay.Kerf.Value + lay.Spacing.Value, lay.Kerf.Value, lay.Spacing.Value, diameter))
     remove_jobs(lay)
     sheets = fabguide_core.cut_sheets(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson))
-    gui_factory = cam.Bit.Factory  # FreeCAD's GUI makes each tool bit in an undo step of its own; this is one
-    cam.Bit.Factory = cam.Bit.ToolBitFactory()
-    try:
+    with plain_bits(cam):
         jobs = [make_job(cam, lay, number, sheet, bit, post, feed, spindle) for number, sheet in enumerate(sheets, 1)]
-    finally:
-        cam.Bit.Factory = gui_factory
     lay.Document.recompute()
     return jobs
+
+
+@contextlib.contextmanager
+def plain_bits(cam):
+    """FreeCAD's GUI makes each tool bit in an undo step of its own, which would split Make CAM Job into eight;
+    its factory is set aside meanwhile. Its module is loaded first: loading it installs that factory (in 1.0
+    only when a tool bit is first shown)."""
+    if FreeCAD.GuiUp:
+        try:
+            import Path.Tool.Gui.Bit  # noqa: F401  (FreeCAD 1.0)
+        except ImportError:
+            import PathScripts.PathToolBitGui  # noqa: F401  (0.20)
+    gui_factory = cam.Bit.Factory
+    cam.Bit.Factory = cam.Bit.ToolBitFactory()
+    try:
+        yield
+    finally:
+        cam.Bit.Factory = gui_factory
 
 
 def remove_jobs(lay):
