@@ -271,6 +271,39 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
     return layout;
 }
 
+/// Layouts compared for the search: cost and sheets (`better`), then how unevenly the parts fill the sheets
+/// (the sum of each sheet's squared fill, larger first): a layout whose last sheets are emptier is nearer one
+/// with a sheet fewer.
+bool fuller(const Layout& a, const Layout& b)
+{
+    const auto measure = [](const Layout& l) {
+        double cost = 0, spread = 0;
+        std::vector<double> area(l.sheets.size());
+        for (const Placement& p : l.placements)
+            area[p.sheet] += p.width * p.height;
+        for (size_t k = 0; k < l.sheets.size(); ++k) {
+            cost += l.sheets[k].cost;
+            const double fill = area[k] / (l.sheets[k].width * l.sheets[k].height);
+            spread -= fill * fill;
+        }
+        return std::make_tuple(cost, l.sheets.size(), spread);
+    };
+    return measure(a) < measure(b);
+}
+
+/// The order with the parts of the layout's last sheet first: the parts that were left over are the ones to
+/// place while the sheets are empty (sequential value correction's idea, in its simplest form).
+std::vector<int> lastFirst(const std::vector<int>& order, const Layout& layout)
+{
+    std::vector<bool> last(order.size());
+    for (const Placement& p : layout.placements)
+        if (p.sheet + 1 == static_cast<int>(layout.sheets.size()))
+            last[p.part] = true;
+    std::vector<int> result = order;
+    std::stable_partition(result.begin(), result.end(), [&](int p) { return last[p]; });
+    return result;
+}
+
 }  // namespace
 
 Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
@@ -318,7 +351,9 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
     std::mt19937_64 random(seed);
     for (long r = 0; r < std::max(runs, 1L); ++r) {
         Rules rules = r < static_cast<long>(tried.size()) ? tried[r] : bestRules;
-        if (r >= static_cast<long>(tried.size()) && rules.order.size() > 1) {  // a neighbour of the best
+        if (best && r >= static_cast<long>(tried.size()) && r % 4 == 0)  // the best's left-overs first
+            rules.order = lastFirst(rules.order, *best);
+        else if (r >= static_cast<long>(tried.size()) && rules.order.size() > 1) {  // a neighbour of the best
             std::uniform_int_distribution<size_t> any(0, rules.order.size() - 1);
             for (int swaps = 1 + static_cast<int>(random() % 3); swaps > 0; --swaps)
                 std::swap(rules.order[any(random)], rules.order[any(random)]);
@@ -333,7 +368,7 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
         }
         if (!layout)
             break;
-        if (!best || better(*layout, *best))
+        if (!best || fuller(*layout, *best))
             best = std::move(layout), bestRules = rules;
     }
     if (!best)

@@ -346,6 +346,25 @@ double rasterSeconds(const PackProblem& problem)
     return cells / kRasterCellsPerSecond;
 }
 
+/// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
+/// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking (issue 31). Its saw cuts
+/// are dropped: the cuts are free.
+Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t seed,
+                    std::chrono::steady_clock::time_point deadline)
+{
+    PackProblem saw = problem;
+    saw.settings.cuts = Cuts::Guillotine;
+    saw.settings.stages = 0;
+    saw.settings.firstCut = FirstCut::Any;
+    try {
+        Layout sawn = guillotine(saw, kGuillotineRuns, seed, deadline);
+        sawn.sawCuts.clear();
+        return better(sawn, layout) ? sawn : layout;
+    } catch (const PackingError&) {  // a strip at a board's edge too narrow to saw: the free layout stands
+        return layout;
+    }
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -370,6 +389,9 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const double share =
             wall < 0.005 ? 1.0 : std::clamp((std::clock() - cpu) / double(CLOCKS_PER_SEC) / wall, 0.05, 1.0);
+        if (exact && units <= kSawnUnits)
+            exact = sawnIfBetter(problem, std::move(*exact), search.seed,
+                                 started + seconds(kSawShare * search.timeLimit));
         if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > secondsUntil(deadline)))
             return *exact;
     }

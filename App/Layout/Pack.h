@@ -136,6 +136,11 @@ constexpr double kRasterCellsPerSecond = 5e8;
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;
 
+/// Jobs of rectangles with at most this many units are also laid out by the guillotine search (a saw's layout
+/// is a free one too), in this share of the time limit; the better layout is kept.
+constexpr long kSawnUnits = 400;
+constexpr double kSawShare = 0.4;
+
 /// A strip of irregular parts is filled (Criterion::Fill) when its first share of the time allows this many
 /// passes, at this many column steps a second (measured on ESICUP instances: 1.2-1.6·10^8 on this kind of
 /// machine).
