@@ -81,14 +81,13 @@ void run(const PackArguments& args)
     for (const std::string& path : io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder,
                                                       args.csvFile, "", {args.asDesigned, args.textLabels}))
         std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
+    const std::string title = std::filesystem::path(args.input).stem().stem().string();  // job.pack.json: job
     if (!args.reportFile.empty()) {
-        io::writeReport(layout, problem, std::filesystem::path(args.input).stem().stem().string(),
-                        args.reportFile);
+        io::writeReport(layout, problem, title, args.reportFile);
         std::printf("report        %s\n", args.reportFile.c_str());
     }
     if (!args.optiCutterFile.empty())
-        for (const std::string& path : io::writeOptiCutter(
-                 problem, args.optiCutterFile, std::filesystem::path(args.input).stem().stem().string()))
+        for (const std::string& path : io::writeOptiCutter(problem, args.optiCutterFile, title))
             std::printf("optiCutter    %s\n", path.c_str());
     if (!args.labelsFile.empty()) {
         io::writeLabels(layout, problem, args.labelsFile, args.labelSize.first, args.labelSize.second);

@@ -381,6 +381,11 @@ struct Loop {
 
 }  // namespace
 
+double perimeter(const Polygon& contour)
+{
+    return contour.empty() ? 0 : Loop(contour).length();
+}
+
 std::vector<Polygon> withTabs(const Polygon& contour, int tabs, double width)
 {
     const Loop loop(contour);

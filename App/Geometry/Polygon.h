@@ -36,6 +36,9 @@ double signedArea(const Polygon& polygon);
 /// Area of the outer contour less its holes.
 double area(const Outline& outline);
 
+/// Length of a closed contour, its last point joined to its first.
+double perimeter(const Polygon& contour);
+
 Box2 bounds(const Polygon& polygon);
 
 /// Two edges of the polygon that cross or touch other than at their shared corner (edge i runs from point i

@@ -210,12 +210,6 @@ void drawCutList(const NextPage& next, const material::Layout& layout, const mat
         {"No.", 12},    {"Part", 52},     {"Qty", 12},   {"Length", 18}, {"Width", 18},
         {"Thick.", 14}, {"Material", 40}, {"Sheet", 13}, {"Grain", 13},  {"L1", 20},
         {"L2", 20},     {"W1", 20},       {"W2", 20}};
-    const auto partNumber = [&](const std::string& id) {
-        for (size_t i = 0; i < problem.parts.size(); ++i)
-            if (problem.parts[i].id == id)
-                return std::to_string(i + 1);
-        return std::string("?");
-    };
     const auto fit = [&](cairo_t* cr, std::string s, double width) {
         while (s.size() > 1 && widthOf(cr, s) > width - 1.5)
             s = s.substr(0, s.size() - 2) + "~";
@@ -245,7 +239,7 @@ void drawCutList(const NextPage& next, const material::Layout& layout, const mat
         for (size_t r = page * kRowsPerPage; r < std::min(rows.size(), (page + 1) * kRowsPerPage); ++r) {
             const material::CutListRow& row = rows[r];
             y += kRow;
-            std::vector<std::string> cells = {partNumber(row.part),
+            std::vector<std::string> cells = {std::to_string(row.index + 1),
                                               row.part,
                                               std::to_string(row.quantity),
                                               mm(row.width),

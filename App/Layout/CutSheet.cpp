@@ -160,20 +160,13 @@ Totals totals(const Layout& layout, const PackProblem& problem)
     for (const MasterBoard& sheet : layout.sheets)
         t.sheetArea += sheet.width * sheet.height, t.cost += sheet.cost;
     std::map<std::string, double> banding;
-    const auto perimeter = [](const geometry::Polygon& polygon) {
-        double length = 0;
-        for (size_t i = 0; i < polygon.size(); ++i)
-            length += std::hypot(polygon[(i + 1) % polygon.size()].x - polygon[i].x,
-                                 polygon[(i + 1) % polygon.size()].y - polygon[i].y);
-        return length;
-    };
     for (const Placement& p : layout.placements) {
         const PartSpec& spec = problem.parts[p.part];
         t.partArea += geometry::area(spec.outline);
         if (layout.sawCuts.empty()) {
-            t.cutLength += perimeter(spec.outline.outer);
+            t.cutLength += geometry::perimeter(spec.outline.outer);
             for (const geometry::Polygon& hole : spec.outline.holes)
-                t.cutLength += perimeter(hole);
+                t.cutLength += geometry::perimeter(hole);
         }
         for (const Side side : kSides)
             if (const std::string& band = spec.edgeBanding[static_cast<int>(side)]; !band.empty())
@@ -196,7 +189,8 @@ std::vector<CutListRow> cutList(const Layout& layout, const PackProblem& problem
         const PartSpec& spec = problem.parts[key.first];
         const MasterBoard& board = layout.sheets[key.second];
         rows.push_back({spec.id, quantity, spec.width(), spec.height(), board.thickness, board.material,
-                        key.second, spec.followsGrain && board.grain != Grain::None, spec.edgeBanding});
+                        key.second, spec.followsGrain && board.grain != Grain::None, spec.edgeBanding,
+                        key.first});
     }
     return rows;
 }

@@ -86,6 +86,7 @@ struct CutListRow {
     int board = 0;                             ///< index into Layout::sheets
     bool grain = false;                        ///< its length (width) runs along the board's grain
     std::array<std::string, 4> edgeBanding{};  ///< PartSpec::edgeBanding
+    int index = 0;                             ///< the part's place in PackProblem::parts
 };
 
 /// What a layout takes and gives, for the shop's report.

@@ -101,24 +101,15 @@ def in_material(points, part):
     return result
 
 
-def along(polygon, step):
-    """Points every `step` mm along a closed polygon."""
-    a, b = segments(polygon)
+def along(points, step, closed=True):
+    """Points every `step` mm along a polyline: closed, back to its first point; open, its last point included."""
+    p = np.array(points, dtype=float)
+    a, b = segments(p) if closed else (p[:-1], p[1:])
     out = []
-    for p, q in zip(a, b):
-        n = max(1, int(math.ceil(np.linalg.norm(q - p) / step)))
-        out.append(p + (q - p) * (np.arange(n) / n)[:, None])
-    return np.vstack(out)
-
-
-def along_open(polyline, step):
-    """Points every `step` mm along an open polyline, its ends included."""
-    p = np.array(polyline, dtype=float)
-    out = [p[:1]]
-    for a, b in zip(p, p[1:]):
-        n = max(1, int(math.ceil(np.linalg.norm(b - a) / step)))
-        out.append(a + (b - a) * (np.arange(1, n + 1) / n)[:, None])
-    return np.vstack(out)
+    for s, e in zip(a, b):
+        n = max(1, int(math.ceil(np.linalg.norm(e - s) / step)))
+        out.append(s + (e - s) * (np.arange(n) / n)[:, None])
+    return np.vstack(out + ([] if closed else [p[-1:]]))
 
 
 def first_reach(targets, centres, order, reach):
@@ -246,7 +237,8 @@ def drill_problems(all_moves, drill_tools, drills, thickness, tol):
             found.append("dowel hole at ({:.2f}, {:.2f}) not drilled {:g} mm deep".format(*d["at"], d["depth"]))
     stray = [p for i, p in enumerate(plunges) if i not in used]
     if stray:
-        found.append("{} plunge(s) of a drill where no hole is, first at ({:.2f}, {:.2f})".format(len(stray), *stray[0]))
+        found.append("{} plunge(s) of a drill where no hole is, first at ({:.2f}, {:.2f})".format(
+            len(stray), *stray[0]))
     return found
 
 
@@ -259,7 +251,7 @@ def engrave_problems(all_moves, tool, parts, strokes, thickness, depth, tol, ste
     points = points[points[:, 2] < thickness - tol]
     found = []
     for stroke in strokes:
-        targets = along_open(stroke, step / 2)
+        targets = along(stroke, step / 2, closed=False)
         reached = first_reach(targets, points, np.arange(len(points)), tol + step / 2)
         if not np.isfinite(reached).all():
             k = int(np.argmin(np.isfinite(reached)))

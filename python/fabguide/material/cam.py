@@ -169,7 +169,7 @@ def part_solids(sheet):
             outline["outline"] = cut["points"]
     solids, order = [], []
     for k, outline in by_placement.items():
-        face = polygon_face(outline["outline"], outline["holes"])
+        face = layout.polygon_face(outline["outline"], outline["holes"])
         solid = face.extrude(FreeCAD.Vector(0, 0, thickness))
         for drill in sheet["drills"]:
             centre = FreeCAD.Vector(drill["at"][0], drill["at"][1], thickness - drill["depth"])
@@ -190,13 +190,6 @@ def index_of(faces, face):
     return next(i for i, f in enumerate(faces) if f.isSame(face))
 
 
-def polygon_face(outline, holes):
-    def wire(points):
-        vectors = [FreeCAD.Vector(x, y, 0) for x, y in points]
-        return Part.makePolygon(vectors + vectors[:1])
-    return Part.makeFace([wire(outline)] + [wire(h) for h in holes], "Part::FaceMakerBullseye")
-
-
 def set_stock(cam, doc, job, sheet):
     """The stock is the master board itself, its lower-left corner at the origin like the layout's."""
     old = job.Stock
@@ -212,7 +205,7 @@ def tool(cam, job, controller, bit_file, number, feed, spindle, diameter=None):
     bit = cam.Bit.Factory.CreateFrom(bit_file)
     if diameter:
         bit.Diameter = diameter
-        bit.Label = "{:g} mm {}".format(diameter, "drill")
+        bit.Label = "{:g} mm drill".format(diameter)
     if controller is None:
         controller = cam.Controller.Create("TC: {}".format(bit.Label), bit, number)
         job.Proxy.addToolController(controller)
@@ -335,9 +328,9 @@ def write_gcode(jobs, folder, stem):
 
 def post(job, filename):
     """Writes the job's G-code with its post-processor (FreeCAD's own script of that name); returns it."""
-    cam = workbench()
-    script = next((os.path.join(folder, job.PostProcessor + "_post.py") for folder in cam.Preferences.searchPathsPost()
-                   if os.path.isfile(os.path.join(folder, job.PostProcessor + "_post.py"))), None)
+    name = job.PostProcessor + "_post.py"
+    scripts = [os.path.join(folder, name) for folder in workbench().Preferences.searchPathsPost()]
+    script = next((path for path in scripts if os.path.isfile(path)), None)
     if script is None:
         raise CamError("Job '{}': post-processor '{}' not found".format(job.Label, job.PostProcessor))
     spec = importlib.util.spec_from_file_location(job.PostProcessor + "_post", script)

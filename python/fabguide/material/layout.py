@@ -188,13 +188,18 @@ def beside(boards):
     return FreeCAD.Vector(box.XMax + GAP, box.YMin, 0)
 
 
+def polygon_face(points, holes=(), at=FreeCAD.Vector()):
+    """A planar face in z = 0 from a polygon [(x, y)...] and its holes, moved by `at`."""
+    def wire(polygon):
+        vectors = [at + FreeCAD.Vector(x, y, 0) for x, y in polygon]
+        return Part.makePolygon(vectors + vectors[:1])
+    return Part.makeFace([wire(points)] + [wire(h) for h in holes], "Part::FaceMakerBullseye")
+
+
 def sheets_shape(problem, result, origin):
     """A compound: one face per master board used (1 mm below), then one face per placed part."""
     def face(points, holes=(), z=0.0, dx=0.0):
-        def wire(poly):
-            pts = [origin + FreeCAD.Vector(x + dx, y, z) for x, y in poly]
-            return Part.makePolygon(pts + pts[:1])
-        return Part.makeFace([wire(points)] + [wire(h) for h in holes], "Part::FaceMakerBullseye")
+        return polygon_face(points, holes, origin + FreeCAD.Vector(dx, 0, z))
 
     offsets, x = [], 0.0
     for sheet in result["boards"]:
@@ -214,8 +219,8 @@ def file_stem(label):
 
 def export_cut_sheets(obj, folder):
     """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf, LABEL-labels.pdf and
-    LABEL-opticutter.csv (optiCutter's import) into `folder`, for the layout as last computed: two layouts share a folder, and a re-export replaces its own
-    set whole."""
+    LABEL-opticutter.csv (optiCutter's import) into `folder`, for the layout as last computed: two layouts share a
+    folder, and a re-export replaces its own set whole."""
     if not obj.LayoutJson:
         raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
     os.makedirs(folder, exist_ok=True)
