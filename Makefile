@@ -4,8 +4,11 @@
 #   make demo     ... then install the workbench into FreeCAD and run it on a bundled example
 #   make install  ... then install the workbench (MOD_DIR=... to choose the folder)
 #   make bench    ... then regenerate docs/benchmarks.md
+#   make deb      ... then build the Debian package of this release into build/ (tools/make-deb)
 # and what CI runs besides `make test` (.ci/run):
 #   make test-debian13   `make test` inside a Debian 13 chroot (FreeCAD 1.0, OCCT 7.8), made by tools/in-debian13
+#   make test-deb        `make deb`, then apt install the package and test the installed workbench (tools/test-deb)
+#   make test-deb-debian13   the same in the Debian 13 chroot
 #   make demo-debian13   `make demo` there
 #   make test-clang      the C++ tests built with clang, warnings as errors, into build-clang/
 #   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
@@ -25,7 +28,7 @@ SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
 .PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
-	clang-deps fuzz-products
+	clang-deps fuzz-products deb test-deb test-deb-debian13
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -48,6 +51,15 @@ demo: install
 
 test-debian13:
 	tools/in-debian13 make test
+
+deb: all
+	tools/make-deb $(BUILD)
+
+test-deb: deb
+	tools/test-deb $(BUILD)
+
+test-deb-debian13:
+	tools/in-debian13 make test-deb
 
 demo-debian13:
 	tools/in-debian13 make demo

@@ -7,18 +7,19 @@ import os
 import sys
 
 import FreeCAD
-import fabguide_core
+from freecad.fabguide.core import fabguide_core
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "build", "demo")
 
 mod_dir = os.path.dirname(os.path.realpath(fabguide_core.__file__))
-assert os.path.isfile(os.path.join(mod_dir, "InitGui.py")), "fabguide_core is not inside a workbench folder"
+assert os.path.isfile(os.path.join(mod_dir, "init_gui.py")), "fabguide_core is not inside a workbench folder"
 print("FabGuide {} loaded by FreeCAD {} from {}".format(
     fabguide_core.__version__, ".".join(FreeCAD.Version()[:3]), mod_dir))
 
-from fabguide.function import joints, mechanism, parts, printable, relationships, workslike_file  # noqa: E402
-from fabguide.material import layout  # noqa: E402
+from freecad.fabguide.function import (joints, mechanism, parts, printable, relationships,  # noqa: E402
+                                       workslike_file)
+from freecad.fabguide.material import layout  # noqa: E402
 
 # Function: the Cabinet as parts, joints, configurations and relationships; solved on recompute (thesis ch. 4).
 os.makedirs(os.path.join(OUT, "cabinet"), exist_ok=True)
@@ -85,7 +86,7 @@ FreeCAD.closeDocument(doc.Name)
 
 
 # Zero waste: the coffee table's design changed within its constraints to waste less (thesis 5.4, Table 5.1).
-from fabguide.material import design  # noqa: E402
+from freecad.fabguide.material import design  # noqa: E402
 
 os.makedirs(os.path.join(OUT, "coffee-table"), exist_ok=True)
 doc = FreeCAD.newDocument("CoffeeTable")

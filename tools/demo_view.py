@@ -14,9 +14,9 @@ OUT = os.path.join(ROOT, "build", "demo", "cabinet")
 
 
 def render():
-    from fabguide.function import configuration, mechanism, parts
-    from fabguide_gui import function_viewproviders
-    from fabguide_gui.posing import Poser
+    from freecad.fabguide.function import configuration, mechanism, parts
+    from freecad.fabguide.gui import function_viewproviders
+    from freecad.fabguide.gui.posing import Poser
 
     doc = FreeCAD.openDocument(os.path.join(OUT, "cabinet.FCStd"))
     mech = next(o for o in doc.Objects if mechanism.is_mechanism(o))

@@ -6,7 +6,7 @@ import os
 
 import FreeCAD
 
-from fabguide.material import board, layout, master_board
+from freecad.fabguide.material import board, layout, master_board
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 

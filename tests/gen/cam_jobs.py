@@ -14,9 +14,9 @@ import traceback
 import FreeCAD
 import Part
 
-import fabguide_core
-from fabguide import properties
-from fabguide.material import board, cam, layout, master_board
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import properties
+from freecad.fabguide.material import board, cam, layout, master_board
 
 
 def box(doc, name, size, at):

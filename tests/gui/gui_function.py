@@ -12,10 +12,10 @@ import FreeCAD
 import FreeCADGui as Gui
 from PySide import QtGui
 
-import fabguide_core
+from freecad.fabguide.core import fabguide_core
 import guitest
-from fabguide import cuboids
-from fabguide.function import joints, mechanism, relationships
+from freecad.fabguide import cuboids
+from freecad.fabguide.function import joints, mechanism, relationships
 
 state = {}
 SOURCE = os.environ["FABGUIDE_SOURCE_DIR"]

@@ -166,8 +166,8 @@ def cam_job_from_the_layout_writes_checked_gcode():
     independent checker passes; one undo step takes the jobs away."""
     sys.path.insert(0, os.path.join(os.environ["FABGUIDE_SOURCE_DIR"], "tests", "gen"))
     import gcode_checker
-    import fabguide_core
-    from fabguide_gui import material_commands
+    from freecad.fabguide.core import fabguide_core
+    from freecad.fabguide.gui import material_commands
 
     doc, lay = state["doc"], state["layout"]
     kerf, spacing = lay.Kerf.Value, lay.Spacing.Value

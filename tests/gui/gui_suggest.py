@@ -9,12 +9,12 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui as Gui
-import fabguide_core
+from freecad.fabguide.core import fabguide_core
 from PySide import QtGui
 
 import guitest
-from fabguide import cuboids, references
-from fabguide.material import design
+from freecad.fabguide import cuboids, references
+from freecad.fabguide.material import design
 
 state = {}
 
@@ -142,7 +142,7 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     guitest.isometric()
     Gui.Selection.clearSelection()
     Gui.runCommand("FabGuide_Suggest")
-    from fabguide_gui import design_commands
+    from freecad.fabguide.gui import design_commands
 
     panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
     QtGui.QApplication.processEvents()
@@ -221,7 +221,7 @@ def suggest_changes_the_spreadsheet_of_a_parametric_design():
     d.Parameters = ["Params.side 200 400", "Params.height 100 300"]
     doc.recompute()
     Gui.runCommand("FabGuide_Suggest")
-    from fabguide_gui import design_commands
+    from freecad.fabguide.gui import design_commands
 
     panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
     panel.seconds.setValue(4)

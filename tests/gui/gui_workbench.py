@@ -25,7 +25,7 @@ def workbench_activates_with_function_and_material_toolbars():
 
 
 def toolbars_fit_a_1366_px_screen_and_reach_every_command():
-    from fabguide_gui import commands
+    from freecad.fabguide.gui import commands
 
     window = Gui.getMainWindow()
     window.showNormal()

@@ -69,13 +69,14 @@ def isometric(direction="Isometric"):
     FreeCADGui.updateGui()
 
 
-def screenshot(name):
-    """Grab the FreeCAD window (panels, toolbars) into $FABGUIDE_SCREENSHOTS/name.png; returns the path.
-    The 3-D view is OpenGL, which a window grab leaves blank: see view_image."""
+def screenshot(name, window=None):
+    """Grab the FreeCAD window (panels, toolbars), or another top-level `window` (a dialog), into
+    $FABGUIDE_SCREENSHOTS/name.png; returns the path. The 3-D view is OpenGL, which a window grab leaves blank:
+    see view_image."""
     path = _path(name)
     settle()
     FreeCADGui.updateGui()
-    if not FreeCADGui.getMainWindow().grab().save(path):
+    if not (window or FreeCADGui.getMainWindow()).grab().save(path):
         raise RuntimeError("could not save screenshot " + path)
     return path
 

@@ -17,8 +17,8 @@ def source_dir():
 
 @pytest.fixture(scope="session")
 def fabguide_cli():
-    """The command-line tool in the build tree."""
-    path = os.path.join(os.environ["FABGUIDE_BUILD_DIR"], "fabguide")
+    """The command-line tool: $FABGUIDE_CLI (an installed one), else the build tree's."""
+    path = os.environ.get("FABGUIDE_CLI") or os.path.join(os.environ["FABGUIDE_BUILD_DIR"], "fabguide")
     assert os.access(path, os.X_OK), path
     return path
 

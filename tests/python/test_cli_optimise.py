@@ -5,7 +5,7 @@ import os
 import subprocess
 import xml.etree.ElementTree as ET
 
-import fabguide_core
+from freecad.fabguide.core import fabguide_core
 
 
 def optimise(fabguide_cli, path, out, *options):

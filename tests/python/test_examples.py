@@ -6,8 +6,8 @@ import os
 import FreeCAD
 import pytest
 
-from fabguide import properties
-from fabguide.material import layout
+from freecad.fabguide import properties
+from freecad.fabguide.material import layout
 
 
 @pytest.mark.parametrize("name", ["bookshelf", "coffee-table"])

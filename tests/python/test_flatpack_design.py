@@ -9,9 +9,9 @@ import os
 import FreeCAD
 import pytest
 
-import fabguide_core
-from fabguide import cuboids
-from fabguide.material import design, master_board, parametric
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import cuboids
+from freecad.fabguide.material import design, master_board, parametric
 
 
 @pytest.fixture

@@ -8,9 +8,9 @@ import os
 import FreeCAD
 import pytest
 
-import fabguide_core
-from fabguide import cuboids, properties
-from fabguide.function import configuration, joints, mechanism, parts, relationships, workslike_file
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import cuboids, properties
+from freecad.fabguide.function import configuration, joints, mechanism, parts, relationships, workslike_file
 
 
 @pytest.fixture
@@ -227,7 +227,7 @@ def test_every_example_imports_solves_and_round_trips(doc, source_dir, tmp_path,
 
 
 def test_the_printable_cellphone_has_separate_valid_bodies_that_keep_their_gap(doc, source_dir, tmp_path):
-    from fabguide.function import printable
+    from freecad.fabguide.function import printable
 
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "cellphone.workslike.json"))
     doc.recompute()
@@ -252,7 +252,7 @@ def test_the_printable_cellphone_has_separate_valid_bodies_that_keep_their_gap(d
 
 
 def test_a_printable_fits_the_build_volume_and_keeps_that_setting_when_saved(doc, source_dir, tmp_path):
-    from fabguide.function import printable
+    from freecad.fabguide.function import printable
 
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "toolbox.workslike.json"))
     doc.recompute()
@@ -308,7 +308,7 @@ def test_the_printable_body_names_come_without_making_the_bodies(source_dir):
 
 def test_a_printable_turned_to_fit_is_shown_as_modelled_and_exported_turned(doc, source_dir, tmp_path):
     import Part
-    from fabguide.function import printable
+    from freecad.fabguide.function import printable
 
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "tablet.workslike.json"))
     doc.recompute()
@@ -327,7 +327,7 @@ def test_a_printable_turned_to_fit_is_shown_as_modelled_and_exported_turned(doc,
 def test_a_fixed_part_rides_on_its_base_and_prints_as_one_body_with_it(doc, tmp_path):
     """A knob sunk into a hinged lid, held by a fixed joint: it moves with the lid, the solve leaves it sunk, it
     prints fused to the lid, and the joint survives a workslike round trip; without a base it is named."""
-    from fabguide.function import printable
+    from freecad.fabguide.function import printable
 
     body, lid = box(doc, "Body", (0, 0, 0), (40, 40, 10)), box(doc, "Lid", (0, 0, 10), (40, 40, 14))
     knob = box(doc, "Knob", (15, 2, 13), (25, 8, 20))
@@ -437,7 +437,7 @@ def test_a_file_the_core_refuses_is_refused_with_its_field_path(doc, tmp_path):
 
 
 def test_the_preview_moves_parts_as_the_print_does_turns_first_then_slides(doc, source_dir):
-    from fabguide_gui import posing
+    from freecad.fabguide.gui import posing
 
     mech = workslike_file.read(doc, os.path.join(source_dir, "examples", "cabinet.workslike.json"))
     doc.recompute()

@@ -10,7 +10,7 @@ import Part
 import Sketcher
 import pytest
 
-from fabguide.material import board, layout, master_board
+from freecad.fabguide.material import board, layout, master_board
 
 
 @pytest.fixture
@@ -304,7 +304,7 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_pat
 
 
 def test_techdraw_pages_show_the_report_and_are_replaced_on_rerun(doc):
-    from fabguide.material import techdraw
+    from freecad.fabguide.material import techdraw
 
     boards, masters = shelf_unit(doc)
     masters[0].Width, masters[0].Height, masters[0].Count = 1220, 610, 0  # two sheets

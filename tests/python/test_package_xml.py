@@ -4,7 +4,7 @@ import os
 import xml.etree.ElementTree as ET
 
 import FreeCAD
-import fabguide_core
+from freecad.fabguide.core import fabguide_core
 import pytest
 
 NS = {"p": "https://wiki.freecad.org/Package_Metadata"}
@@ -56,16 +56,27 @@ def test_supported_freecad(metadata):
     assert metadata.supportsCurrentFreeCAD()
 
 
+def test_urls_the_addon_manager_shows(metadata):
+    types = {url["type"] for url in metadata.Urls}
+    assert {"repository", "bugtracker", "readme", "documentation"} <= types
+
+
+def test_python_minimum_is_debian_12s(metadata, path):
+    assert ET.parse(path).getroot().find("p:pythonmin", NS).text == "3.11"
+
+
 def test_workbench_content(metadata, path, source_dir):
     workbench = metadata.Content["workbench"][0]
     assert workbench.Classname == "FabGuideWorkbench"
-    assert workbench.Subdirectory == "./"
-    assert os.path.isfile(os.path.join(source_dir, workbench.Subdirectory, "InitGui.py"))
+    assert workbench.Subdirectory == "./"  # the clone's root goes on sys.path: its freecad/ namespace package
+    assert os.path.isfile(os.path.join(source_dir, "freecad", "fabguide", "init_gui.py"))
+    assert not os.path.exists(os.path.join(source_dir, "freecad", "__init__.py"))  # FreeCAD's own, never ours
     depends = ET.parse(path).getroot().findall("p:content/p:workbench/p:depend", NS)
-    assert depends and all(d.get("type") == "internal" for d in depends)
-    assert "Part" in [d.text for d in depends]
+    assert depends and all(d.get("type") == "internal" and d.text == d.text.lower() for d in depends)
+    assert "part" in [d.text for d in depends]
+    assert workbench.Tag and workbench.Icon
 
 
-def test_workbench_class_is_the_one_initgui_registers(metadata, source_dir):
-    with open(os.path.join(source_dir, "InitGui.py")) as init_gui:
+def test_workbench_class_is_the_one_init_gui_registers(metadata, source_dir):
+    with open(os.path.join(source_dir, "freecad", "fabguide", "init_gui.py")) as init_gui:
         assert "addWorkbench({}())".format(metadata.Content["workbench"][0].Classname) in init_gui.read()

@@ -1,29 +1,36 @@
 """The installed workbench folder is complete and the core module loads from it."""
+import glob
 import os
 import subprocess
 
 import FreeCAD
 import Part
-import fabguide
-import fabguide_core
 import pytest
-from fabguide_gui import about, resources
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide.gui import about, resources
 
 
 def test_install_holds_everything_freecad_loads(mod_dir):
-    for relative in ["InitGui.py", "Init.py", "package.xml", "LICENSE", "Resources/icons/FabGuide.svg",
-                     "fabguide/__init__.py", "fabguide_gui/workbench.py", "fabguide_gui/commands.py"]:
+    for relative in ["package.xml", "LICENSE", "Resources/icons/FabGuide.svg", "freecad/fabguide/__init__.py",
+                     "freecad/fabguide/init_gui.py", "freecad/fabguide/gui/workbench.py",
+                     "freecad/fabguide/gui/commands.py"]:
         assert os.path.isfile(os.path.join(mod_dir, relative)), relative
-    assert [name for name in os.listdir(mod_dir) if name.startswith("fabguide_core.") and name.endswith(".so")]
+    assert installed_core(mod_dir)
+
+
+def installed_core(mod_dir):
+    """The core the installation holds: in the workbench's package (`make install`), else for the system Python
+    (the Debian package)."""
+    return (glob.glob(os.path.join(mod_dir, "freecad", "fabguide", "fabguide_core.*.so")) or
+            glob.glob("/usr/lib/python3/dist-packages/fabguide_core.*.so"))
 
 
 def test_core_module_is_the_installed_one(mod_dir):
-    assert os.path.realpath(fabguide_core.__file__).startswith(os.path.realpath(mod_dir))
+    assert os.path.realpath(fabguide_core.__file__) == os.path.realpath(installed_core(mod_dir)[0])
 
 
 def test_core_reports_its_version_and_libraries():
     assert fabguide_core.__version__.count(".") == 2
-    assert fabguide.__version__ == fabguide_core.__version__
     libraries = dict(fabguide_core.dependency_versions())
     assert set(libraries) == {"Eigen", "OpenCASCADE", "Clipper", "nlohmann-json"}
     assert libraries["OpenCASCADE"].startswith("7.")
@@ -35,20 +42,22 @@ def test_freecad_and_part_work_beside_the_core():
     assert FreeCAD.Version()[0] in ("0", "1")
 
 
-def test_freecad_user_mod_dir_is_the_test_one(mod_dir):
-    assert os.path.realpath(os.path.join(FreeCAD.getUserAppDataDir(), "Mod", "FabGuide")) == \
-        os.path.realpath(mod_dir)
+def test_freecad_loads_the_tested_workbench(mod_dir):
+    """The user's Mod/FabGuide, else the system's (the Debian package's): FreeCAD keys Mod folders by name."""
+    user = os.path.join(FreeCAD.getUserAppDataDir(), "Mod", "FabGuide")
+    loaded = user if os.path.isdir(user) else os.path.join(FreeCAD.getResourceDir(), "Mod", "FabGuide")
+    assert os.path.realpath(loaded) == os.path.realpath(mod_dir)
 
 
 def test_freecadcmd_imports_the_core_from_the_user_mod_dir(mod_dir):
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}  # only FreeCAD's own Mod search
-    run = subprocess.run(["freecadcmd", "-c", "import fabguide_core; print('core', fabguide_core.__version__, "
-                          "fabguide_core.__file__)"], env=env, capture_output=True, text=True, timeout=120)
+    run = subprocess.run(["freecadcmd", "-c", "from freecad.fabguide.core import fabguide_core; print('core', "
+                          "fabguide_core.__version__, fabguide_core.__file__)"], env=env, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout + run.stderr
     line = [l for l in run.stdout.splitlines() if l.startswith("core ")][-1]
     _, version, path = line.split(" ", 2)
     assert version == fabguide_core.__version__
-    assert os.path.realpath(path).startswith(os.path.realpath(mod_dir))
+    assert os.path.realpath(path) == os.path.realpath(installed_core(mod_dir)[0])
 
 
 def test_about_report_names_every_version():

@@ -1,0 +1,208 @@
+"""Mechanism: a group of parts, joints, configurations and relationships. Its recompute gathers them into a
+*.workslike.json model, solves it once in the core (thesis 4.4) and writes the boxes' sizes and places back.
+The user's latest edits are kept: a box coordinate changed since the last solve is locked for this one."""
+import json
+
+import FreeCAD
+
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import cuboids, properties, references
+from freecad.fabguide.function import configuration, joints, parts, relationships
+
+SATISFIED = "Satisfied"
+STALE = "Unknown: the mechanism did not solve (see its Status)"
+
+
+
+
+class MechanismError(ValueError):
+    """A mechanism that cannot be solved as modelled; the message names the mechanism and the field."""
+
+
+class Mechanism(properties.Proxy):
+    TYPE, NOUN = "FabGuide::Mechanism", "Mechanism"
+    VALID = dict(MinimumSize=properties.more_than(0))
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLength", "MinimumSize", "Mechanism", "Smallest size of a box along any axis", 1)
+        add(obj, "App::PropertyLength", "MinimumWall", "Mechanism",
+            "Least wall around a cavity on its sides that are not openings", 1)
+        references.define(obj, "Locks", "Mechanism", "Coordinates that keep their value: a box and its side")
+        add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
+            "Box coordinates you changed since the last solve keep their new value while the rest adapts", True)
+        add(obj, "App::PropertyLink", "ShownConfiguration", "Mechanism",
+            "The configuration the Configurations panel last showed; new relationships hold in it")
+        add(obj, "App::PropertyString", "Status", "Result", "Solved, or the relationships in conflict", mode=1)
+        add(obj, "App::PropertyFloat", "Violation", "Result", "Largest constraint violation after the solve, mm",
+            mode=1)
+        add(obj, "App::PropertyStringList", "Blamed", "Result",
+            "Parts a conflict blames besides its relationships' (overlapping parts, thin walls)", mode=1)
+        add(obj, "App::PropertyStringList", "Changes", "Result",
+            "What the last solve changed: box, size old → new, how far it moved", mode=1)
+        add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
+
+    def recompute(self, obj):
+        try:
+            solve(obj)
+        except ValueError as error:
+            unsolved(obj, str(error))
+            raise
+
+
+def create(doc, label="Mechanism"):
+    obj = doc.addObject("App::DocumentObjectGroupPython", "Mechanism")
+    Mechanism(obj)
+    obj.Label = label
+    return obj
+
+
+def is_mechanism(obj):
+    return properties.is_a(obj, Mechanism)
+
+
+def members(obj, test):
+    return [o for o in obj.Group if test(o)]
+
+
+def boxes(obj):
+    return [box for part in members(obj, parts.is_part) for box in parts.boxes(part) if cuboids.is_box(box)]
+
+
+def edits(obj):
+    """Box coordinates changed since the last solve, as lock names ("Lid.top"): both sides along an axis the
+    user changed, so a Length typed stays a length with the box's corner where it was, never becomes a move."""
+    if not obj.KeepEdits or not obj.Solved:
+        return []
+    before = json.loads(obj.Solved)
+    return ["{}.{}".format(box.Label, cuboids.SIDES[2 * a + high]) for box in boxes(obj) if box.Name in before
+            for a, now in enumerate(zip(*[iter(cuboids.coordinates(box))] * 2))
+            if any(abs(w - n) > 1e-7 for w, n in zip(before[box.Name][2 * a:2 * a + 2], now)) for high in (0, 1)]
+
+
+def model(obj, locks=()):
+    """The mechanism as a *.workslike.json dict."""
+    try:
+        return {
+            "format": "fabguide.workslike", "version": 1, "minimum_size": obj.MinimumSize.Value,
+            "minimum_wall": obj.MinimumWall.Value,
+            "parts": [parts.as_dict(p) for p in members(obj, parts.is_part)],
+            "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
+            "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
+            "relationships": [relationships.as_dict(r) for r in members(obj, relationships.is_relationship)],
+            "locks": list(dict.fromkeys(references.names(obj.Locks) + list(locks))),
+        }
+    except ValueError as error:
+        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+
+
+def solve(obj):
+    """Solve once; write back the boxes and each relationship's Status. A conflict names the relationships
+    (and locks) that cannot hold together; one the user's latest edit takes part in refuses the edit: the
+    boxes go back to the last solve, exactly."""
+    edited = edits(obj)
+    data = model(obj, edited)
+    try:
+        solved = fabguide_core.solve(data)
+    except fabguide_core.FormatError as error:
+        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+    report = solved["report"]
+    conflict = report["conflict"]
+    if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:
+        refuse(obj, report)
+        say_changes(obj, [])
+        return solved
+    by_name = {r["name"]: r for r in solved["relationships"]}
+    for rel in members(obj, relationships.is_relationship):
+        status = (satisfied(rel, report["notes"]) if report["solved"] else
+                  "Conflict: " + ", ".join(n for n in conflict if n != rel.Label) if rel.Label in conflict else "")
+        if rel.Status != status:
+            rel.Status = status
+        relationships.keep_pairs(rel, by_name.get(rel.Label, {}), {box.Label: box for box in boxes(obj)})
+    obj.Violation = report["violation"]
+    if obj.Blamed != report["parts"]:
+        obj.Blamed = report["parts"]
+    for note in report["notes"] if report["solved"] else []:
+        FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, note))
+    if not report["solved"]:
+        obj.Status = "Conflict: " + ", ".join(conflict)
+        FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
+        for note in report.get("notes", []):
+            FreeCAD.Console.PrintWarning("  {}\n".format(note))
+        say_changes(obj, [])
+        return solved
+    say_changes(obj, write_back(obj, solved))
+    place_pivots(obj, solved)
+    obj.Status = "Solved"
+    return solved
+
+
+def say_changes(obj, changes):
+    """The mechanism's Changes, what this solve did to the boxes (nothing when it wrote none back), also in the
+    report view."""
+    if obj.Changes != changes:
+        obj.Changes = changes
+    for change in changes:
+        FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
+
+
+def refuse(obj, report):
+    """The user's edit cannot hold with the rest: every box back where the last solve left it, the parts that
+    would clash blamed (red), the relationships' statuses as they were."""
+    before = json.loads(obj.Solved)
+    for box in boxes(obj):
+        if box.Name in before:
+            cuboids.place(box, before[box.Name])
+    if obj.Blamed != report["parts"]:
+        obj.Blamed = report["parts"]
+    obj.Status = "Edit refused: {} cannot hold together; the boxes are as they were".format(
+        ", ".join(report["conflict"]))
+    FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, obj.Status))
+
+
+def unsolved(obj, error):
+    """A mechanism that could not be read says why in its Status; its relationships' statuses no longer hold."""
+    obj.Status = error
+    if obj.Blamed:
+        obj.Blamed = []
+    for rel in members(obj, relationships.is_relationship):
+        if rel.Status != STALE:
+            rel.Status = STALE
+
+
+def satisfied(rel, notes):
+    """"Satisfied", and what inference had to stretch to link every part the relationship names; the graph it
+    inferred is kept in Pairs (keep_pairs), and so is the note while those pairs stay."""
+    prefix = rel.Label + ": "
+    own = [n[len(prefix):] for n in notes if n.startswith(prefix)]
+    if not own and getattr(rel, "Pairs", None) and rel.Status.startswith(SATISFIED + "; "):
+        return rel.Status
+    return "; ".join([SATISFIED] + own)
+
+
+def place_pivots(obj, solved):
+    """The double pivots' pivots where stage 2 of the solve put them."""
+    by_name = {j["name"]: j for j in solved["joints"]}
+    for joint in members(obj, joints.is_joint):
+        if joints.kind(joint) != "double_pivot":
+            continue
+        for key, prop in (("pivot", "Pivot"), ("base_pivot", "BasePivot")):
+            point = FreeCAD.Vector(*by_name[joint.Label][key][1])
+            if (getattr(joint, prop) - point).Length > 1e-9:
+                setattr(joint, prop, point)
+
+
+def write_back(obj, solved):
+    """Sizes and places the boxes as solved; remembers them to tell the user's next edits apart. Returns what
+    changed, a line per box (cuboids.change)."""
+    by_label = {c["name"]: c for p in solved["parts"] for c in p["cuboids"]}
+    after, changes = {}, []
+    for box in boxes(obj):
+        c = by_label[box.Label]
+        values = [round(v, 7) for a in range(3) for v in (c["min"][a], c["max"][a])]  # IPM noise off
+        before = cuboids.coordinates(box)
+        if cuboids.place(box, values):
+            changes.append(cuboids.change(box.Label, before, values))
+        after[box.Name] = values
+    obj.Solved = json.dumps(after)
+    return [c for c in changes if c]

@@ -1,0 +1,78 @@
+"""Task panel of Make CAM Job: the user's tool bit, post-processor, feed and speed, and where the G-code goes. OK
+makes one CAM job per master board of the layout (one undo step) and posts each; a refusal is said in the panel,
+which stays open to change what it names."""
+import json
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from freecad.fabguide.material import cam, layout
+from freecad.fabguide.gui import resources
+from freecad.fabguide.gui.command_base import transaction
+
+PROFILE_SHAPES = ("endmill.fcstd", "bullnose.fcstd")  # bits that cut a flat-bottomed profile
+
+
+class CamJobPanel:
+    def __init__(self, lay):
+        self.layout = lay
+        self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "CamJobPanel.ui"))
+        self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_CamJob.svg")))
+        for name, path in cam.library_bits().items():
+            if shape_of(path) in PROFILE_SHAPES:
+                self.form.bit.addItem(os.path.splitext(name)[0].replace("_", " "), path)
+        self.form.bit.setCurrentIndex(max(0, self.form.bit.findData(cam.library_bits().get(cam.BITS["end mill"]))))
+        self.form.post.addItems(cam.post_processors())
+        self.form.post.setCurrentText("grbl")
+        self.form.feed.setValue(cam.FEED)
+        self.form.spindle.setValue(cam.SPINDLE)
+        doc = lay.Document
+        self.form.folder.setText(os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~"))
+        self.form.browseBit.clicked.connect(self.browse_bit)
+        self.form.browseFolder.clicked.connect(self.browse_folder)
+
+    def browse_bit(self):
+        from PySide import QtGui
+
+        path = QtGui.QFileDialog.getOpenFileName(self.form, "Tool bit", os.path.expanduser("~"),
+                                                 "FreeCAD tool bits (*.fctb)")[0]
+        if path:
+            self.form.bit.addItem(os.path.basename(path), path)
+            self.form.bit.setCurrentIndex(self.form.bit.count() - 1)
+
+    def browse_folder(self):
+        from PySide import QtGui
+
+        folder = QtGui.QFileDialog.getExistingDirectory(self.form, "Folder for the G-code", self.form.folder.text())
+        if folder:
+            self.form.folder.setText(folder)
+
+    def accept(self):
+        lay, doc = self.layout, self.layout.Document
+        try:
+            with transaction(doc, "Make CAM Job"):
+                jobs = cam.make_jobs(lay, bit=self.form.bit.currentData(), post=self.form.post.currentText(),
+                                     feed=self.form.feed.value(), spindle=self.form.spindle.value())
+            written = (cam.write_gcode(jobs, self.form.folder.text(), layout.file_stem(lay.Label))
+                       if self.form.gcodeBox.isChecked() else [])
+        except (cam.CamError, layout.LayoutError, OSError) as error:
+            self.form.message.setText("<b>No CAM job made:</b> {}".format(error))
+            FreeCAD.Console.PrintWarning("FabGuide: {}\n".format(error))
+            return False
+        FreeCAD.Console.PrintMessage("FabGuide: {} CAM job(s) for '{}'{}\n".format(
+            len(jobs), lay.Label, "; wrote:\n  " + "\n  ".join(written) if written else ""))
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def reject(self):
+        FreeCADGui.Control.closeDialog()
+        return True
+
+
+def shape_of(bit_file):
+    try:
+        with open(bit_file) as source:
+            return os.path.basename(json.load(source).get("shape", ""))
+    except (OSError, ValueError):
+        return ""

@@ -1,0 +1,99 @@
+"""What every FabGuide command shares: one undo step per command, telling the user about mistakes, reading
+the selection."""
+import contextlib
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from freecad.fabguide.gui import resources
+
+
+@contextlib.contextmanager
+def transaction(doc, name):
+    """One undo step, or none if the command fails."""
+    doc.openTransaction(name)
+    try:
+        yield
+    except Exception:
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+
+
+def tell(message):
+    """A user mistake: said in the report view and in a message box."""
+    from PySide import QtGui
+
+    FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
+    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "FabGuide", message)
+
+
+def selected(test):
+    return [s.Object for s in FreeCADGui.Selection.getSelectionEx() if test(s.Object)]
+
+
+def all_in(doc, test):
+    return [o for o in doc.Objects if test(o)]
+
+
+def the_one(doc, test, what):
+    """The selected object of a kind, else the document's only one; when that is not one, tells the user to
+    select the `what` and returns None."""
+    found = selected(test) or all_in(doc, test)
+    if len(found) != 1:
+        tell("Select the {}.".format(what) if found else "There is no {} in this document yet.".format(what.split()[0]))
+        return None
+    return found[0]
+
+
+def ask_open(title, filter):
+    """A file to read, or "" when the user cancels."""
+    from PySide import QtGui
+
+    return QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), title, os.path.expanduser("~"), filter)[0]
+
+
+def ask_save(title, name, filter):
+    """A file to write, or "" when the user cancels."""
+    from PySide import QtGui
+
+    return QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), title, name, filter)[0]
+
+
+class Group:
+    """Commands behind one drop-down toolbar button (FreeCAD's Python group command), as FreeCAD's own
+    workbenches group theirs; the button shows the command used last."""
+
+    def __init__(self, menu, tip, names):
+        self.menu, self.tip, self.names = menu, tip, tuple(names)
+
+    def GetCommands(self):
+        return self.names
+
+    def GetDefaultCommand(self):
+        return 0
+
+    def GetResources(self):
+        return {"MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+
+class Command:
+    """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
+
+    def GetResources(self):
+        return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        """Runs the command; a mistake in the model (a ValueError: FabGuide's errors, the core's FormatError) is
+        told in one plain sentence, not a traceback."""
+        try:
+            self.run(FreeCAD.ActiveDocument)
+        except ValueError as error:
+            tell(str(error))

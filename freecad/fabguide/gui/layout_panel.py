@@ -1,0 +1,72 @@
+"""Task panel of a Layout: the material usage, live, and the cutting settings (thesis 5.1: the
+material-space view updates as the design changes)."""
+import os
+
+import FreeCADGui
+
+from freecad.fabguide import properties
+from freecad.fabguide.gui import editing, resources
+
+SETTINGS = ("Kerf", "Spacing", "Trim")
+
+
+class LayoutPanel:
+    def __init__(self, layout):
+        self.layout = layout
+        self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "LayoutPanel.ui"))
+        self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Layout.svg")))
+        layout.Document.openTransaction("Edit layout")
+        self.bindings = []
+        for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
+            box = getattr(self.form, name.lower())
+            box.setProperty("rawValue", getattr(layout, name).Value)
+            binding = FreeCADGui.ExpressionBinding(box)
+            binding.bind(layout, name)
+            binding.setAutoApply(True)
+            self.bindings.append(binding)
+            box.valueChanged.connect(lambda *_, name=name, box=box: self.set(name, box.property("rawValue")))
+        for name, combo in (("Cuts", self.form.cuts), ("FirstCut", self.form.firstCut)):
+            combo.addItems(layout.getEnumerationsOfProperty(name))
+            combo.setCurrentText(getattr(layout, name))
+            combo.currentTextChanged.connect(lambda text, name=name: self.set(name, text))
+        self.form.stages.setValue(layout.Stages)
+        self.form.stages.valueChanged.connect(lambda value: self.set("Stages", value))
+        self.show()
+
+    def set(self, name, value):
+        current = properties.number(getattr(self.layout, name))
+        if (abs(current - value) > 1e-12 if isinstance(value, float) else current != value):
+            setattr(self.layout, name, value)
+            self.layout.Document.recompute()
+        self.show()
+
+    def show(self):
+        """The layout's figures, or why it could not be made."""
+        layout, form = self.layout, self.form
+        if properties.failed(layout):
+            form.message.setText("<b>The layout could not be made:</b> {}".format(
+                getattr(layout, "Error", "") or "see the report view"))
+            return
+        form.message.setText("")
+        form.usage.setText("{:.1%}".format(layout.Usage))
+        form.utilisation.setText("{:.1%}".format(layout.SheetUtilisation))
+        form.waste.setText("{:.3f} m²".format(layout.WasteArea.Value / 1e6))
+        form.sheets.setText(str(layout.SheetCount))
+        guillotine = layout.Cuts.startswith("Guillotine")
+        form.sawCuts.setText("{}, {:.1f} m".format(layout.SawCuts, layout.SawCutLength.Value / 1000)
+                             if guillotine else "-")
+        form.stages.setEnabled(guillotine)
+        form.firstCut.setEnabled(guillotine)
+
+    def accept(self):
+        self.layout.Document.commitTransaction()
+        editing.end_edit(self.layout.Document)
+        return True
+
+    def reject(self):
+        document = self.layout.Document
+        document.abortTransaction()
+        document.recompute()
+        editing.end_edit(document)
+        return True
+

@@ -1,0 +1,199 @@
+"""Material toolbar (thesis ch. 5): master boards, boards, layout, cut sheets. Each command is one undo
+step; the work itself is done by the document objects in freecad.fabguide.material."""
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from freecad.fabguide import properties
+from freecad.fabguide.material import board, cam, layout, master_board, techdraw
+from freecad.fabguide.gui import editing, viewproviders
+from freecad.fabguide.gui.command_base import Command, all_in, selected, tell, the_one, transaction
+
+
+def first_thickness(doc):
+    boards = selected(board.is_board) or all_in(doc, board.is_board)
+    return boards[0].Thickness.Value if boards else 18
+
+
+class NewMasterBoard(Command):
+    ICON, MENU = "FabGuide_MasterBoard.svg", "New Master Board"
+    TIP = "Add a master board (sheet size, thickness, stock, material) to cut boards from"
+
+    def run(self, doc):
+        with transaction(doc, "New master board"):
+            obj = master_board.create(doc, thickness=first_thickness(doc))
+            viewproviders.ViewProviderMasterBoard(obj.ViewObject)
+            doc.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+
+
+class MakeBoard(Command):
+    ICON, MENU = "FabGuide_Board.svg", "Make Board"
+    TIP = "Make a board from each selected sketch or planar face, as thick as the master boards"
+
+    def run(self, doc):
+        picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() for sub in (s.SubElementNames or [None])
+                 if sub is None or board.element_name(sub).startswith("Face")]
+        if not picks:
+            return tell("Select sketches or planar faces first.")
+        masters = all_in(doc, master_board.is_master_board)
+        thickness = masters[0].Thickness.Value if masters else 18
+        with transaction(doc, "Make board"):
+            made = [board.create(doc, source, board.element_name(sub) if sub else None, thickness,
+                                 label=source.Label + " board") for source, sub in picks]
+            finish_boards(doc, made)
+
+
+class BoardsFromSolids(Command):
+    ICON, MENU = "FabGuide_BoardsFromSolids.svg", "Boards from Solids"
+    TIP = "Turn each selected thin solid into a board, detecting its thickness and outline"
+
+    def run(self, doc):
+        solids = selected(lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))
+        if not solids:
+            return tell("Select the solids of your furniture model (flat boxes, pads, extrusions) first.")
+        with transaction(doc, "Boards from solids"):
+            made = [board.create(doc, solid, label=solid.Label + " board") for solid in solids]
+            finish_boards(doc, made)
+            for solid in solids:
+                solid.Visibility = False
+
+
+class BandEdges(Command):
+    ICON, MENU = "FabGuide_BandEdges.svg", "Band Edges"
+    TIP = "Glue edge banding on the picked edge faces of boards (asks for the band's name; empty removes it)"
+    last = "PVC 1 mm"  # the band named last, offered again
+
+    def run(self, doc):
+        from PySide import QtGui
+
+        picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() if board.is_board(s.Object)
+                 for sub in s.SubElementNames if board.element_name(sub).startswith("Face")]
+        sides = [(obj, board.side_of(obj, sub)) for obj, sub in picks]
+        if not sides or not all(side for _, side in sides):
+            return tell("Pick the edge faces of boards (their narrow sides, not the large faces) first.")
+        band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), "Band Edges",
+                                              "Band on the {} picked edge(s) (empty: none):".format(len(sides)),
+                                              text=BandEdges.last)
+        if not ok:
+            return
+        BandEdges.last = band.strip()
+        with transaction(doc, "Band edges"):
+            for obj, side in sides:
+                setattr(obj, "Edge" + side, BandEdges.last)
+            doc.recompute()
+        FreeCAD.Console.PrintMessage("FabGuide: {} on {}\n".format(
+            "'{}'".format(BandEdges.last) if BandEdges.last else "no band",
+            ", ".join("{} {}".format(obj.Label, side) for obj, side in sides)))
+
+
+def finish_boards(doc, made):
+    for obj in made:
+        viewproviders.ViewProviderBoard(obj.ViewObject)
+    doc.recompute()
+    failed = [obj.Label for obj in made if properties.failed(obj)]
+    if failed:
+        FreeCAD.Console.PrintWarning("FabGuide: see the messages above for " + ", ".join(failed) + "\n")
+
+
+class MakeLayout(Command):
+    ICON, MENU = "FabGuide_Layout.svg", "Layout"
+    TIP = "Lay the selected (or all) boards out on the master boards and show the material usage"
+
+    def run(self, doc):
+        boards = selected(board.is_board) or all_in(doc, board.is_board)
+        if not boards:
+            return tell("There are no boards yet: use Boards from Solids or Make Board first.")
+        with transaction(doc, "Layout"):
+            masters = selected(master_board.is_master_board) or all_in(doc, master_board.is_master_board)
+            if not masters:
+                masters = [master_board.create(doc, thickness=boards[0].Thickness.Value)]
+                viewproviders.ViewProviderMasterBoard(masters[0].ViewObject)
+            obj = layout.create(doc, boards, masters)
+            viewproviders.ViewProviderLayout(obj.ViewObject)
+            doc.recompute()
+        editing.edit(obj)
+
+
+class ExportCutSheets(Command):
+    ICON, MENU = "FabGuide_ExportCutSheets.svg", "Export Cut Sheets"
+    TIP = ("Write SVG and DXF cut sheets per master board, a CSV cut list, the shop's PDF report and part labels "
+           "for the selected layout")
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, layout.is_layout))
+
+    def run(self, doc):
+        from PySide import QtGui
+
+        chosen = the_one(doc, layout.is_layout, "layout to export")
+        if chosen is None:
+            return
+        start = os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~")
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the cut sheets", start)
+        if not folder:
+            return
+        try:
+            written = layout.export_cut_sheets(chosen, folder)
+        except (layout.LayoutError, ValueError, RuntimeError) as error:
+            return tell(str(error))
+        FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
+
+
+class TechDrawPages(Command):
+    ICON, MENU = "FabGuide_TechDrawPages.svg", "TechDraw Pages"
+    TIP = ("Make TechDraw pages of the selected layout's shop report: a page per master board (parts numbered and "
+           "sized, grain, edge banding, saw cuts), then the cut list and the totals")
+
+    def IsActive(self):
+        return ExportCutSheets.IsActive(self)
+
+    def run(self, doc):
+        chosen = the_one(doc, layout.is_layout, "layout to draw")
+        if chosen is None:
+            return
+        try:
+            with transaction(doc, "TechDraw pages"):
+                pages = techdraw.make_pages(chosen)
+        except layout.LayoutError as error:
+            return tell(str(error))
+        pages[0].ViewObject.doubleClicked()
+
+
+class MakeCamJob(Command):
+    ICON, MENU = "FabGuide_CamJob.svg", "Make CAM Job"
+    TIP = ("Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, "
+           "engraved labels) with your tool and post-processor, and write its G-code")
+
+    def IsActive(self):
+        return ExportCutSheets.IsActive(self)
+
+    def run(self, doc):
+        chosen = the_one(doc, layout.is_layout, "layout to machine")
+        if chosen is None:
+            return
+        if FreeCADGui.Control.activeDialog():
+            return tell("Close the open task panel first (OK or Cancel), then make the CAM job.")
+        if not chosen.LayoutJson:
+            return tell("Layout '{}' has not been computed yet: recompute it first.".format(chosen.Label))
+        from freecad.fabguide.gui import cam_panel
+
+        try:
+            self.panel = cam_panel.CamJobPanel(chosen)  # kept for scripts
+        except cam.CamError as error:  # no CAM workbench in this FreeCAD
+            return tell(str(error))
+        FreeCADGui.Control.showDialog(self.panel)
+
+
+COMMANDS = {
+    "FabGuide_NewMasterBoard": NewMasterBoard(),
+    "FabGuide_BoardsFromSolids": BoardsFromSolids(),
+    "FabGuide_MakeBoard": MakeBoard(),
+    "FabGuide_BandEdges": BandEdges(),
+    "FabGuide_Layout": MakeLayout(),
+    "FabGuide_ExportCutSheets": ExportCutSheets(),
+    "FabGuide_TechDrawPages": TechDrawPages(),
+    "FabGuide_MakeCamJob": MakeCamJob(),
+}

@@ -1,0 +1,489 @@
+"""Flat-pack design (thesis 5.1): furniture modelled as native Part::Box boards of one thickness, with design
+constraints, inner and outer volumes and the master boards to cut from. Its recompute keeps the constraints
+holding as the user edits a box (thesis 5.3.5: the edit is kept, the rest adapts) and lays the boards out to
+show the material usage live; an edit that no longer fits the master boards is absorbed by the dynamic packer
+(5.3.2: the parts sharing its line across the board give way) or undone with the reason."""
+import contextlib
+import json
+import re
+
+import FreeCAD
+import Part
+
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import cuboids, properties, references
+from freecad.fabguide.material import master_board
+
+SATISFIED = "Satisfied"
+UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
+KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
+GRAINS = ("Free", "X", "Y", "Z")  # a box's Grain: none, or the model axis its wood's grain runs along
+
+
+class DesignError(ValueError):
+    """A design that cannot be read as modelled; the message names the design and the object."""
+
+
+class FlatpackDesign(properties.Proxy):
+    TYPE, NOUN = "FabGuide::FlatpackDesign", "Design"
+    VALID = dict(Resolution=properties.more_than(0))
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Design", "Master boards to cut the boards from")
+        add(obj, "App::PropertyLength", "Resolution", "Layout", "Grid cell size tau (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyLength", "Kerf", "Layout", "Width of the cut", 0.2)
+        add(obj, "App::PropertyLength", "Spacing", "Layout", "Extra material between parts", 3)
+        add(obj, "App::PropertyLength", "Trim", "Layout", "Margin cut off every master board edge", 5)
+        add(obj, "App::PropertyLength", "MinimumLength", "Design", "Shortest side a board may shrink to", 60)
+        add(obj, "App::PropertyBool", "Snap", "Design", "Boards that touch stay touching (edge snapping)", True)
+        add(obj, "App::PropertyBool", "KeepEdits", "Design",
+            "A box you edit keeps its new size and place while the rest adapts to the constraints", True)
+        add(obj, "App::PropertyStringList", "Parameters", "Parametric",
+            "Spreadsheet aliases that drive the boxes by expressions, as 'Sheet.alias min max' (thesis 5.4.2.2); "
+            "when given, Suggest changes these instead of the boxes")
+        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / layout bounding rectangle (thesis 5.2.3)",
+            mode=1)
+        add(obj, "App::PropertyString", "Status", "Result", "Laid out, or what is wrong", mode=1)
+        add(obj, "App::PropertyStringList", "Changes", "Result",
+            "What the last recompute or accepted suggestion that moved boards did: size old → new, how far",
+            mode=1)
+        add(obj, "App::PropertyString", "Valid", "Data", "Boards after the last valid recompute (JSON)", mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
+
+    def recompute(self, obj):
+        with saying_changes(obj):
+            recompute(obj)
+
+    def onChanged(self, obj, prop):
+        super().onChanged(obj, prop)
+        if prop == "Group" and not obj.Document.Restoring:
+            add_grain(boxes(obj))
+
+    def onDocumentRestored(self, obj):
+        super().onDocumentRestored(obj)
+        add_grain(boxes(obj))
+
+
+class DesignConstraint(properties.Proxy):
+    """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
+    what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
+    TYPE, NOUN = "FabGuide::DesignConstraint", "Constraint"
+    VALID = dict(Min=(lambda obj, v: obj.Kind != "range" or v.Value <= obj.Max.Value, "at most its Max"),
+                 Max=(lambda obj, v: obj.Kind != "range" or v.Value >= obj.Min.Value, "at least its Min"))
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyEnumeration", "Kind", "Constraint", "What must hold", list(KINDS))
+        references.define(obj, "Refs", "Constraint",
+                          "Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), "
+                          "sum (left side), fixed and range (one)")
+        references.define(obj, "Rhs", "Constraint", "Right side of a sum")
+        add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
+        add(obj, "App::PropertyDistance", "Value", "Constraint", "Fixed value or sum offset")
+        add(obj, "App::PropertyDistance", "Min", "Constraint", "Range: smallest value (beyond ±10⁸ m: none)",
+            -10 * UNBOUNDED)
+        add(obj, "App::PropertyDistance", "Max", "Constraint", "Range: largest value (beyond ±10⁸ m: none)",
+            10 * UNBOUNDED)
+        references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
+        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
+
+
+class Volume(properties.Proxy):
+    """An inner volume (space kept free, resting on board On) or the outer volume (the envelope the design must
+    fit), shown as a box (thesis 5.3.5.1)."""
+    TYPE = "FabGuide::DesignVolume"
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyEnumeration", "Kind", "Volume", "Inner: kept free; Outer: the design stays inside",
+            ["Inner", "Outer"])
+        add(obj, "App::PropertyLink", "On", "Volume", "Inner volume: the board it rests on and moves with")
+        add(obj, "App::PropertyLength", "Length", "Volume", "Size along x", 100)
+        add(obj, "App::PropertyLength", "Width", "Volume", "Size along y", 100)
+        add(obj, "App::PropertyLength", "Height", "Volume", "Size along z", 100)
+        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or the boards that break it", mode=1)
+
+    def recompute(self, obj):
+        obj.Shape = Part.makeBox(obj.Length.Value, obj.Width.Value, obj.Height.Value)
+
+
+def create(doc, boxes, master_boards, label="FlatpackDesign"):
+    obj = doc.addObject("App::DocumentObjectGroupPython", "FlatpackDesign")
+    FlatpackDesign(obj)
+    obj.Label = label
+    obj.Group = list(boxes)
+    obj.MasterBoards = list(master_boards)
+    return obj
+
+
+def add_constraint(design, kind, label=None, named=None, **values):
+    """A constraint in `design`: values are its properties (Refs, Rhs, Parts, Value, Min, Max, About), references
+    given as the format writes them ("Box.size.x") linked to the boxes `named` (by default the design's boxes
+    by label)."""
+    doc = design.Document
+    obj = doc.addObject("App::FeaturePython", "DesignConstraint")
+    DesignConstraint(obj)
+    obj.Kind = kind
+    named = named or {box.Label: box for box in boxes(design)}
+    for name, value in values.items():
+        if name in ("Refs", "Rhs", "About"):
+            value = references.links(named, [value] if isinstance(value, str) else value,
+                                     "{} constraint {}".format(kind, name))
+        setattr(obj, name, value)
+    obj.Label = label or "{} {}".format(kind.capitalize(), ", ".join(references.names(obj.Refs)) or
+                                        ", ".join(p.Label for p in values.get("Parts", [])))
+    design.addObject(obj)
+    return obj
+
+
+def add_volume(design, kind, at, size, on=None, label=None):
+    obj = design.Document.addObject("Part::FeaturePython", "Volume")
+    Volume(obj)
+    obj.Kind = kind
+    obj.On = on
+    obj.Length, obj.Width, obj.Height = size
+    obj.Placement = FreeCAD.Placement(FreeCAD.Vector(*at), FreeCAD.Rotation())
+    obj.Label = label or ("Space on " + on.Label if on else "Outer volume")
+    design.addObject(obj)
+    return obj
+
+
+def add_grain(boxes):
+    """Gives each box its Grain (group FabGuide) if it has none yet."""
+    for box in boxes:
+        properties.add(box, "App::PropertyEnumeration", "Grain", "FabGuide",
+                       "The model axis the wood's grain runs along, one in the board's face: the board is laid "
+                       "with it along the grain of master boards that have one. Free: no grain", list(GRAINS))
+
+
+def is_design(obj):
+    return properties.is_a(obj, FlatpackDesign)
+
+
+def is_constraint(obj):
+    return properties.is_a(obj, DesignConstraint)
+
+
+def is_volume(obj):
+    return properties.is_a(obj, Volume)
+
+
+def boxes(obj):
+    return [o for o in obj.Group if cuboids.is_box(o)]
+
+
+def inner_volumes(obj):
+    return [v for v in obj.Group if is_volume(v) and v.Kind == "Inner"]
+
+
+def parts_of(obj):
+    """The boards as the format's parts: {id, position, size, grain if set}, from the boxes as they are now."""
+    parts = []
+    for box in boxes(obj):
+        c = cuboids.coordinates(box)
+        part = {"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]}
+        if getattr(box, "Grain", "Free") != "Free":
+            part["grain"] = box.Grain.lower()  # one across the board is refused by the core, by name
+        parts.append(part)
+    return parts
+
+
+def constraint_dict(c):
+    d = {"kind": c.Kind, "name": c.Label}
+    refs = references.names(c.Refs)
+    if c.Kind in ("equal", "symmetric"):
+        d["refs"] = refs
+    if c.Kind == "symmetric" and c.About:
+        d["about"] = references.names(c.About)[0]
+    if c.Kind == "sum":
+        d.update(lhs=refs, rhs=references.names(c.Rhs), offset=c.Value.Value)
+    if c.Kind in ("fixed", "range"):
+        if len(refs) != 1:
+            raise DesignError("constraint '{}': a {} constraint takes one reference".format(c.Label, c.Kind))
+        d["ref"] = refs[0]
+    if c.Kind == "fixed":
+        d["value"] = c.Value.Value
+    if c.Kind == "range":
+        d.update({key: value for key, value in (("min", c.Min.Value), ("max", c.Max.Value)) if abs(value) < UNBOUNDED})
+    if c.Kind in ("ground", "coplanar", "snap"):
+        d["parts"] = [p.Label for p in c.Parts]
+    return d
+
+
+def volume_dicts(obj):
+    """(the inner volumes as the format's dicts, in the order of inner_volumes(obj); the outer one or None)."""
+    inner, outer = [], None
+    for v in obj.Group:
+        if not is_volume(v):
+            continue
+        low = v.Placement.Base
+        size = [v.Length.Value, v.Width.Value, v.Height.Value]
+        if v.Kind == "Inner":
+            if v.On is None:
+                raise DesignError("inner volume '{}': choose the board it rests on (On)".format(v.Label))
+            inner.append({"name": v.Label, "on": v.On.Label, "position": [low.x, low.y, low.z], "size": size})
+        else:
+            outer = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
+    return inner, outer
+
+
+def snapshot(obj):
+    """The boxes and inner volumes as they are now: {parts, inner_volumes}, a start for write_parts."""
+    return {"parts": parts_of(obj), "inner_volumes": volume_dicts(obj)[0]}
+
+
+def flatpack(obj, parts=None):
+    """The design as a *.flatpack.json dict (docs/formats.md), with `parts` instead of the boxes if given."""
+    try:
+        if not obj.MasterBoards:
+            raise DesignError("add a master board (MasterBoards)")
+        inner, outer = volume_dicts(obj)
+        doc = {"format": "fabguide.flatpack", "version": 1,
+               "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
+                            "trim": obj.Trim.Value, "min_length": obj.MinimumLength.Value, "snap": obj.Snap},
+               "boards": [master_board.as_problem_board(m) for m in obj.MasterBoards],
+               "parts": parts if parts is not None else parts_of(obj),
+               "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
+               "inner_volumes": inner}
+        if outer:
+            doc["outer_volume"] = outer
+        return doc
+    except (ValueError, cuboids.CuboidError) as error:
+        raise DesignError("Design '{}': {}".format(obj.Label, error))
+
+
+def recompute(obj):
+    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit."""
+    try:
+        edited = flatpack(obj)
+    except DesignError as error:
+        obj.Status = str(error)
+        raise
+    valid = json.loads(obj.Valid) if obj.Valid else None
+    start = dict(edited, parts=valid)  # the last valid state, the inner volumes resting on its boards
+    note = ""
+    same_boards = valid and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]]
+    if same_boards and obj.KeepEdits and not obj.Parameters and valid != edited["parts"]:
+        try:
+            corrected = fabguide_core.correct_design(start, edited)
+        except fabguide_core.FormatError as error:  # the valid state no longer reads: start from the boxes
+            FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, error))
+        else:
+            adopt(obj, edited, corrected["parts"], start)
+            note = held(obj, corrected)
+    try:
+        laid, note = lay_out_satisfied(obj, edited, note)
+    except fabguide_core.FormatError as error:
+        said = named(obj, str(error))
+        mark_constraints(obj, said)
+        obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
+                      else "Design '" + obj.Label + "': {}").format(said)
+        raise DesignError("Design '{}': {}".format(obj.Label, said))
+    except fabguide_core.PackingError as error:
+        if not same_boards:
+            obj.Status = str(error)
+            raise DesignError("Design '{}': {}".format(obj.Label, error))
+        laid, absorbed = absorb(obj, edited, start)
+        note += absorbed
+        if laid is None:
+            write_parts(obj, valid, start)
+            obj.Status = "Edit undone: {}".format(error)
+            FreeCAD.Console.PrintError("{}: edit undone: {}\n".format(obj.Label, error))
+            return
+    mark_constraints(obj, "")
+    obj.Usage = laid["usage"]
+    obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
+    status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
+    if not note and valid == edited["parts"] and obj.Status.startswith(status + ";"):
+        status = obj.Status  # FreeCAD recomputes again after boxes moved: keep what the first pass said
+    obj.Status = status
+    obj.Valid = json.dumps(edited["parts"])
+
+
+def named(obj, message):
+    """The core's field paths as the user knows them: "constraints[0].refs: ..." → "constraint 'same length'
+    refs: ...", "parts[3].grain: ..." → "box 'shelf' grain: ..."."""
+    for field, kind, labels in (("constraints", "constraint", [c.Label for c in obj.Group if is_constraint(c)]),
+                                ("parts", "box", [b.Label for b in boxes(obj)])):
+        message = re.sub(field + r"\[(\d+)\]\.?", lambda m: "{} '{}' ".format(kind, labels[int(m.group(1))])
+                         if int(m.group(1)) < len(labels) else m.group(0), message)
+    return message
+
+
+def held(obj, corrected):
+    """What the status says of an edit the constraints held: refused or how much was kept, and by what (each
+    once, the design's own constraints and volumes first); nothing for an edit kept whole."""
+    if corrected["alpha"] >= 1:
+        return ""
+    own = tuple(o.Label for o in obj.Group if is_constraint(o) or is_volume(o))
+    limits = sorted(dict.fromkeys(corrected["limits"]), key=lambda name: not name.startswith(own))
+    kept = "kept {:.0%}".format(corrected["alpha"]) if corrected["alpha"] > 0 else "refused"
+    return "; edit {}, held by {}".format(kept, ", ".join(limits))
+
+
+def adopt(obj, edited, parts, start):
+    """The boxes moved to `parts`, the core's answer from design `start`, and the design being laid out taken
+    from the boxes and inner volumes as they now are."""
+    write_parts(obj, parts, start)
+    edited.update(snapshot(obj))
+
+
+def lay_out_satisfied(obj, edited, note):
+    """The layout; when the boards break a constraint (one just added), they first move the least so that every
+    constraint holds (thesis 5.3.5.2 with nothing to keep). Raises ConstraintError when they cannot."""
+    try:
+        return fabguide_core.lay_out_design(edited), note
+    except fabguide_core.ConstraintError:
+        satisfied = fabguide_core.satisfy_design(edited)
+        if not satisfied["solved"]:
+            raise
+        adopt(obj, edited, satisfied["parts"], dict(edited))
+        return fabguide_core.lay_out_design(edited), note + "; boards moved so that every constraint holds"
+
+
+def absorb(obj, edited, start):
+    """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards, from the valid design
+    `start`: (layout, note) with the boxes written back when it fits, (None, "") otherwise."""
+    absorbed = fabguide_core.absorb_edit(start, edited)
+    if not absorbed["fitted"]:
+        return None, ""
+    adopt(obj, edited, absorbed["parts"], start)
+    try:
+        laid = fabguide_core.lay_out_design(edited)
+    except fabguide_core.PackingError:
+        return None, ""
+    return laid, "; edit absorbed: " + ", ".join(absorbed["snapped"])
+
+
+def mark_constraints(obj, error):
+    """Each constraint and volume named in `error` shows it; the others are satisfied."""
+    for c in obj.Group:
+        if is_constraint(c) or is_volume(c):
+            status = "Broken: " + error if c.Label in error else SATISFIED
+            if c.Status != status:
+                c.Status = status
+
+
+def write_parts(obj, parts, start=None):
+    """Moves and sizes the boxes to `parts`. An inner volume rests on its board as the core has it: where it was
+    in design `start` (a dict with parts and inner_volumes; the design now if None), moved as far as its board's
+    centre moved from `start` to `parts`; so writing `start`'s own parts puts every volume back exactly."""
+    start = start or snapshot(obj)
+    by_id = {p["id"]: p for p in parts}
+    for box in boxes(obj):
+        p = by_id[box.Label]
+        cuboids.place(box, [round(v, 9) for v in corners(p)])
+    before, after = centres(start["parts"]), centres(parts)
+    for v, was in zip(inner_volumes(obj), start["inner_volumes"]):
+        on = was["on"]
+        at = FreeCAD.Vector(*[round(was["position"][a] + after[on][a] - before[on][a], 9) for a in range(3)])
+        if (v.Placement.Base - at).Length > 1e-9:
+            v.Placement = FreeCAD.Placement(at, FreeCAD.Rotation())
+            v.purgeTouched()
+
+
+def corners(part):
+    """A format part's [left, right, near, far, bottom, top], as cuboids.coordinates has a box's."""
+    return [v for a in range(3) for v in (part["position"][a], part["position"][a] + part["size"][a])]
+
+
+def centres(parts):
+    return {p["id"]: [p["position"][a] + p["size"][a] / 2 for a in range(3)] for p in parts}
+
+
+@contextlib.contextmanager
+def saying_changes(obj, start=None):
+    """What the block does to the boards (from `start`, the format's parts, if given), in the design's Changes
+    and the report view (cuboids.change)."""
+    try:
+        before = ({p["id"]: corners(p) for p in start} if start
+                  else {box.Label: cuboids.coordinates(box) for box in boxes(obj)})
+    except cuboids.CuboidError:  # a rotated box: the recompute says so
+        before = {}
+    try:
+        yield
+    finally:
+        changes = [cuboids.change(box.Label, before[box.Label], cuboids.coordinates(box))
+                   for box in boxes(obj) if box.Label in before]
+        changes = [c for c in changes if c]
+        if changes:  # FreeCAD recomputes again after boxes moved: that pass changes nothing and says nothing
+            obj.Changes = changes
+        for change in changes:
+            FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
+
+
+def apply_parts(obj, parts, start=None):
+    """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept); the changes are
+    said from `start` (the design before the suggestions were previewed)."""
+    with saying_changes(obj, start):
+        write_parts(obj, parts)
+    obj.Valid = json.dumps(parts_of(obj))
+    obj.touch()
+
+
+def from_file(doc, path, label=None):
+    """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes."""
+    with open(path) as f:
+        data = json.load(f)
+    fabguide_core.lay_out_design(data)  # refuse what the core cannot read, with its message
+    masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
+                                   b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"),
+                                   b.get("cost", 1.0))
+               for b in data["boards"]]
+    made = {}
+    for p in data["parts"]:
+        box = doc.addObject("Part::Box", "Box")
+        box.Label = p["id"]
+        box.Length, box.Width, box.Height = p["size"]
+        box.Placement.Base = FreeCAD.Vector(*p["position"])
+        made[p["id"]] = box
+    obj = create(doc, made.values(), masters, label or data.get("title", "FlatpackDesign"))
+    for p in data["parts"]:
+        made[p["id"]].Grain = grain_named(p)
+    s = data.get("settings", {})
+    obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
+    obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
+    obj.MinimumLength, obj.Snap = s.get("min_length", 2 * data["boards"][0]["thickness"]), s.get("snap", True)
+    for c in data.get("constraints", []):
+        values = {}
+        if "refs" in c:
+            values["Refs"] = c["refs"]
+        if "lhs" in c:
+            values.update(Refs=c["lhs"], Rhs=c["rhs"], Value=c.get("offset", 0))
+        if "ref" in c:
+            values["Refs"] = [c["ref"]]
+        if c["kind"] == "fixed" and "value" in c:
+            values["Value"] = c["value"]
+        if c["kind"] == "range":
+            values.update(Min=c.get("min", -10 * UNBOUNDED), Max=c.get("max", 10 * UNBOUNDED))
+            if "fraction" in c:
+                values.update(fraction_bounds(data, c))
+        if isinstance(c.get("about"), str):
+            values["About"] = c["about"]
+        if "parts" in c:
+            values["Parts"] = [made[p] for p in c["parts"]]
+        add_constraint(obj, c["kind"], c.get("name"), made, **values)
+    for v in data.get("inner_volumes", []):
+        add_volume(obj, "Inner", v["position"], v["size"], made[v["on"]], v.get("name"))
+    if "outer_volume" in data:
+        low, high = data["outer_volume"]["min"], data["outer_volume"]["max"]
+        add_volume(obj, "Outer", low, [h - l for h, l in zip(high, low)])
+    return obj
+
+
+def grain_named(part):
+    """A file part's grain as a box's Grain; the older follow_grain is its first axis in the board's face."""
+    if part.get("follow_grain") and "grain" not in part:
+        return GRAINS[cuboids.in_plane(part["size"])[0] + 1]
+    return part.get("grain", "free").capitalize()
+
+
+def fraction_bounds(data, c):
+    """A range given as a fraction of the present value, as Min and Max."""
+    part, what, axis = c["ref"].rsplit(".", 2)
+    p = next(q for q in data["parts"] if q["id"] == part)
+    a = "xyz".index(axis)
+    value = {"size": p["size"][a], "min": p["position"][a], "max": p["position"][a] + p["size"][a]}.get(
+        what, p["position"][a] + p["size"][a] / 2)
+    return {"Min": c.get("min", value * (1 - c["fraction"])), "Max": c.get("max", value * (1 + c["fraction"]))}

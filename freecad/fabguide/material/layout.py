@@ -1,0 +1,236 @@
+"""Layout: the boards laid out on the master boards by docking (thesis 5.3.1, 5.4.3), shown as 2-D sheets
+beside the model, with the material usage. Cut sheets are written from exactly the layout shown."""
+import json
+import os
+import re
+
+import FreeCAD
+import Part
+
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import properties
+from freecad.fabguide.material import board, master_board
+
+GAP = 100  # mm between the model and the sheets, and between sheets
+JOINTS = {"Auto (dowels for thick boards)": "Auto", "Finger joints": "Fingers", "None": "None"}
+CUTS = {"Free (CNC router, laser)": "free", "Guillotine (panel saw)": "guillotine"}
+FIRST_CUTS = {"Any": "any", "Along the sheet": "along", "Across the sheet": "across"}
+
+
+class LayoutError(ValueError):
+    """A layout that cannot be made; the message names the layout and the board at fault."""
+
+
+class Layout(properties.Proxy):
+    TYPE, NOUN = "FabGuide::Layout", "Layout"
+    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"),
+                 RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
+                               "0 or a divisor of 90 (e.g. 15, 30, 45)"),
+                 Stages=properties.at_least(0, " (0: unlimited)"), LabelWidth=properties.at_least(20),
+                 LabelHeight=properties.at_least(10))
+
+    def define(self, obj):
+        add = properties.add
+        add(obj, "App::PropertyLinkList", "Boards", "Layout", "Boards to lay out")
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Layout", "Master boards to cut them from, opened in this order")
+        add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
+        add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
+        add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
+        add(obj, "App::PropertyLength", "Dogbone", "Cutting",
+            "Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; "
+            "0 for none (a laser)", 0)
+        add(obj, "App::PropertyLength", "TabWidth", "Cutting",
+            "Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none", 0)
+        add(obj, "App::PropertyLength", "TabBelow", "Cutting", "Parts whose longer side is shorter get holding tabs",
+            300)
+        add(obj, "App::PropertyBool", "AsDesigned", "Cut sheets",
+            "Export the parts' outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of "
+            "their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the "
+            "machine cuts them", False)
+        add(obj, "App::PropertyBool", "TextLabels", "Cut sheets",
+            "Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD's "
+            "DXF import take as they are", False)
+        add(obj, "App::PropertyLength", "LabelWidth", "Cut sheets", "Width of the label printer's labels", 62)
+        add(obj, "App::PropertyLength", "LabelHeight", "Cut sheets", "Height of the label printer's labels", 29)
+        add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
+            "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
+            "Auto", list(JOINTS))
+        add(obj, "App::PropertyEnumeration", "Cuts", "Cutting",
+            "Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only "
+            "(a panel, track or table saw), with the cut sequence on the cut sheets", list(CUTS))
+        add(obj, "App::PropertyInteger", "Stages", "Cutting",
+            "Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited", 0)
+        add(obj, "App::PropertyEnumeration", "FirstCut", "Cutting",
+            "Guillotine cuts: the first cuts along the sheet's length (x), across it, or whichever wastes less",
+            list(FIRST_CUTS))
+        add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
+        add(obj, "App::PropertyInteger", "SawCuts", "Result", "Guillotine cuts: the saw cuts to make", mode=1)
+        add(obj, "App::PropertyLength", "SawCutLength", "Result", "Guillotine cuts: their total length", mode=1)
+        add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyInteger", "RotationStep", "Search",
+            "Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, "
+            "e.g. 15); 0 = quarter turns only", 0)
+        add(obj, "App::PropertyInteger", "Iterations", "Search",
+            "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
+        add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
+        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / bounding rectangle of the layout", mode=1)
+        add(obj, "App::PropertyFloat", "SheetUtilisation", "Result", "Part area / area of the master boards used",
+            mode=1)
+        add(obj, "App::PropertyArea", "WasteArea", "Result", "Area of the master boards used minus part area", mode=1)
+        add(obj, "App::PropertyInteger", "SheetCount", "Result", "Master boards used", mode=1)
+        add(obj, "App::PropertyString", "ProblemJson", "Data", "The problem laid out (*.pack.json)", mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data", "The layout (layout JSON)", mode=2)
+
+    def recompute(self, obj):
+        problem, boards = make_problem(obj)
+        try:
+            joined = join(obj, boards)
+            problem["parts"] = pieces(obj, joined, boards)
+            result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
+        except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
+            raise LayoutError("Layout '{}': {}".format(obj.Label, name_parts(str(error), problem.get("parts", []))))
+        obj.ProblemJson = json.dumps(problem)
+        obj.LayoutJson = json.dumps(result)
+        obj.Usage = result["usage"]
+        obj.SheetUtilisation = result["sheet_utilisation"]
+        obj.WasteArea = result["waste_area"]
+        obj.SheetCount = len(result["boards"])
+        saw_cuts = [c for sheet in result.get("saw_cuts", []) for c in sheet]
+        obj.SawCuts = len(saw_cuts)
+        obj.SawCutLength = sum(c["length"] for c in saw_cuts)
+        obj.Connectors = [connector_text(c) for c in joined["connectors"]]
+        for note in joined["notes"]:
+            FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, note))
+        obj.Shape = sheets_shape(problem, result, beside(boards))
+        FreeCAD.Console.PrintMessage("{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}\n"
+                                     .format(obj.Label, len(result["placements"]), obj.SheetCount, obj.Usage,
+                                             obj.SheetUtilisation))
+
+
+def create(doc, boards, master_boards, label="Layout"):
+    obj = doc.addObject("Part::FeaturePython", "Layout")
+    obj.Label = label
+    Layout(obj)
+    obj.Boards = list(boards)
+    obj.MasterBoards = list(master_boards)
+    return obj
+
+
+def is_layout(obj):
+    return properties.is_a(obj, Layout)
+
+
+def part_ids(boards):
+    """Each board's name on the cut sheets: its label, made unique with its internal name if needed."""
+    labels = [b.Label for b in boards]
+    return [b.Label if labels.count(b.Label) == 1 else "{} ({})".format(b.Label, b.Name) for b in boards]
+
+
+def make_problem(obj):
+    """(the *.pack.json problem of the layout without its parts, which come from the joined pieces, and its
+    boards), or LayoutError naming the fault."""
+    boards = [b for b in obj.Boards if board.is_board(b)]
+    masters = [m for m in obj.MasterBoards if master_board.is_master_board(m)]
+    if not boards:
+        raise LayoutError("Layout '{}': no boards to lay out (add FabGuide boards to Boards)".format(obj.Label))
+    if not masters:
+        raise LayoutError("Layout '{}': no master boards (add one to MasterBoards)".format(obj.Label))
+    for b in boards:
+        if b.Shape.isNull():
+            raise LayoutError("Layout '{}': board '{}' has no shape; recompute it first".format(obj.Label, b.Label))
+    problem = {
+        "format": "fabguide.pack", "version": 1,
+        "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
+                     "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value, "tab_width": obj.TabWidth.Value,
+                     "tab_below": obj.TabBelow.Value, "rotation_step": obj.RotationStep,
+                     "cuts": CUTS[obj.Cuts], "stages": obj.Stages, "first_cut": FIRST_CUTS[obj.FirstCut]},
+        "boards": [master_board.as_problem_board(m) for m in masters],
+    }
+    return problem, boards
+
+
+def join(obj, boards):
+    """The boards' outlines with the connectors where they meet (thesis 5.1), from their 3-D placement."""
+    boards3 = [board.as_board3(b, part_id) for b, part_id in zip(boards, part_ids(boards))]
+    return fabguide_core.join_boards(boards3, style=JOINTS[obj.Joints])
+
+
+def pieces(obj, joined, boards):
+    """The parts to pack: one per piece of the joined design, each with the quantity, turns and grain of its
+    first board; coplanar boards in contact are one piece (thesis 5.3.4) and must be made once each."""
+    by_id = dict(zip(part_ids(boards), boards))
+    result = []
+    for piece in joined["parts"]:
+        members = [by_id[i] for i in piece.pop("boards")]
+        if len(members) > 1 and any(b.Quantity != 1 for b in members):
+            raise LayoutError("Layout '{}': {} lie in one plane and touch, so they are cut as one piece; set their "
+                              "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for b in members)))
+        result.append(dict(piece, **board.packing_of(members[0])))  # the first board's quantity, turns, grain
+    return result
+
+
+def connector_text(c):
+    """'Shelf board into Left side board: 3 dowels', one line of the Connectors list."""
+    what = {"fingers": "finger tabs", "dowels": "dowels", "cross slots": "cross slots"}[c["kind"]]
+    return "{} into {}: {} {}".format(c["a"], c["b"], c["count"], what)
+
+
+def name_parts(message, parts):
+    """The core names parts as parts[i]: say which board (or coplanar piece of boards) that is."""
+    return re.sub(r"parts\[(\d+)\]", lambda m: "board '{}'".format(parts[int(m.group(1))]["id"]), message)
+
+
+def beside(boards):
+    """Where the sheets go: to the right of the boards' bounding box, level with its bottom."""
+    box = boards[0].Shape.BoundBox
+    for b in boards[1:]:
+        box.add(b.Shape.BoundBox)
+    return FreeCAD.Vector(box.XMax + GAP, box.YMin, 0)
+
+
+def polygon_face(points, holes=(), at=FreeCAD.Vector()):
+    """A planar face in z = 0 from a polygon [(x, y)...] and its holes, moved by `at`."""
+    def wire(polygon):
+        vectors = [at + FreeCAD.Vector(x, y, 0) for x, y in polygon]
+        return Part.makePolygon(vectors + vectors[:1])
+    return Part.makeFace([wire(points)] + [wire(h) for h in holes], "Part::FaceMakerBullseye")
+
+
+def sheets_shape(problem, result, origin):
+    """A compound: one face per master board used (1 mm below), then one face per placed part."""
+    def face(points, holes=(), z=0.0, dx=0.0):
+        return polygon_face(points, holes, origin + FreeCAD.Vector(dx, 0, z))
+
+    offsets, x = [], 0.0
+    for sheet in result["boards"]:
+        offsets.append(x)
+        x += sheet["width"] + GAP
+    sheets = [face([(0, 0), (s["width"], 0), (s["width"], s["height"]), (0, s["height"])], z=-1.0, dx=dx)
+              for s, dx in zip(result["boards"], offsets)]
+    parts = [face(p["outline"], p["holes"], dx=offsets[p["board"]])
+             for p in fabguide_core.placed_outlines(problem, result)]
+    return Part.makeCompound(sheets + parts)
+
+
+def file_stem(label):
+    """A label as a file name: letters, digits, '-', '_' and '.', the rest '-' ("Shelf unit" -> "Shelf-unit")."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "-", label).strip("-.") or "layout"
+
+
+def export_cut_sheets(obj, folder):
+    """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf, LABEL-labels.pdf and
+    LABEL-opticutter.csv (optiCutter's import) into `folder`, for the layout as last computed: two layouts share a
+    folder, and a re-export replaces its own set whole."""
+    if not obj.LayoutJson:
+        raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
+    os.makedirs(folder, exist_ok=True)
+    stem = file_stem(obj.Label)
+    problem, result = json.loads(obj.ProblemJson), json.loads(obj.LayoutJson)
+    written = fabguide_core.write_cut_sheets(problem, result, svg_folder=folder, dxf_folder=folder,
+                                             csv_file=os.path.join(folder, stem + "-cutlist.csv"), name=stem,
+                                             as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
+    report, labels = (os.path.join(folder, "{}-{}.pdf".format(stem, what)) for what in ("report", "labels"))
+    fabguide_core.write_report(problem, result, obj.Label, report)
+    fabguide_core.write_labels(problem, result, labels, obj.LabelWidth.Value, obj.LabelHeight.Value)
+    return written + [report, labels] + fabguide_core.write_opticutter(
+        problem, os.path.join(folder, stem + "-opticutter.csv"), obj.Label)

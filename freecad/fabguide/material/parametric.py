@@ -1,0 +1,83 @@
+"""Parametric flat-pack designs (thesis 5.2.1, 5.4.2.2): the boxes of a FlatpackDesign follow spreadsheet aliases
+through expressions; D(X) sets the aliases, recomputes the document and reads the boards' sizes back. Suggest
+changes the aliases within their ranges; the core finds the gradients by finite differences."""
+import FreeCAD
+
+from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import cuboids
+from freecad.fabguide.material import design
+
+
+class ParameterError(ValueError):
+    """A Parameters entry that cannot be used; the message names the design and the entry."""
+
+
+def parameters(obj):
+    """[(sheet, alias, low, high)] from the design's Parameters ("Sheet.alias min max")."""
+    found = []
+    for entry in obj.Parameters:
+        words = entry.split()
+        try:
+            name, low, high = words[0], float(words[1]), float(words[2])
+            sheet_name, alias = name.split(".", 1)
+        except (IndexError, ValueError):
+            raise ParameterError("Design '{}': parameter '{}' must read 'Sheet.alias min max'".format(obj.Label, entry))
+        sheets = obj.Document.getObjectsByLabel(sheet_name) or [obj.Document.getObject(sheet_name)]
+        sheet = sheets[0]
+        if sheet is None or sheet.TypeId != "Spreadsheet::Sheet" or sheet.getCellFromAlias(alias) is None:
+            raise ParameterError("Design '{}': parameter '{}': no spreadsheet '{}' with an alias '{}'".format(
+                obj.Label, entry, sheet_name, alias))
+        if not low <= value(sheet, alias) <= high:
+            raise ParameterError("Design '{}': parameter '{}' is {} now, outside its range".format(
+                obj.Label, entry, value(sheet, alias)))
+        found.append((sheet, alias, low, high))
+    return found
+
+
+def value(sheet, alias):
+    v = sheet.get(alias)
+    return float(getattr(v, "Value", v))
+
+
+def set_values(obj, params, values, boxes_only=False):
+    """The aliases to `values`, the document recomputed (or only the sheets and boxes, while searching: the
+    design's own recompute lays the boards out, which the search does itself)."""
+    for (sheet, alias, _, _), v in zip(params, values):
+        sheet.set(sheet.getCellFromAlias(alias), repr(float(v)))
+    if boxes_only:
+        obj.Document.recompute(list(dict.fromkeys([p[0] for p in params])) + design.boxes(obj))
+    else:
+        obj.Document.recompute()
+
+
+def sizes(obj):
+    """Each box's material-space width and height: its two long sides, x before y before z."""
+    out = []
+    for box in design.boxes(obj):
+        lengths = [getattr(box, name).Value for name in cuboids.SIZES]
+        out += [lengths[a] for a in cuboids.in_plane(lengths)]
+    return out
+
+
+def optimise(obj, seed=1, time_limit=8.0, rounds=3, progress=None, cancel=None):
+    """MINWASTAGE over the aliases (on this thread: D(X) recomputes this document). The aliases are back at their
+    values when it returns."""
+    params = parameters(obj)
+    if not params:
+        raise ParameterError("Design '{}' has no Parameters".format(obj.Label))
+    data = design.flatpack(obj)
+    start = [value(sheet, alias) for sheet, alias, _, _ in params]
+
+    def sizes_at(values):
+        set_values(obj, params, values, boxes_only=True)
+        return sizes(obj)
+
+    parts = [{"id": box.Label, "quantity": 1} for box in design.boxes(obj)]
+    try:
+        return fabguide_core.optimise_parametric(
+            parts, sizes_at, start, [p[2] for p in params], [p[3] for p in params],
+            {"boards": data["boards"], "settings": data["settings"]}, seed=seed, time_limit=time_limit,
+            rounds=rounds, progress=progress, cancel=cancel)
+    finally:
+        set_values(obj, params, start)
+        FreeCAD.Console.PrintLog("FabGuide: {} parameters restored\n".format(obj.Label))

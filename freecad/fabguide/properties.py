@@ -1,0 +1,145 @@
+"""Adding FeaturePython properties idempotently, so documents saved by an older FabGuide gain new
+properties when they are opened (call `add` again from onDocumentRestored); the recompute of every FabGuide
+object, which says a mistake in the model in one plain sentence."""
+import FreeCAD
+
+from freecad import fabguide
+
+HIDDEN, OUTPUT = 4, 8  # App::PropertyType flags
+
+NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance")
+
+
+def add(obj, kind, name, group, doc, value=None, mode=0):
+    """Adds property `name` if missing and sets `value` on creation (for an enumeration, the list of choices);
+    mode 1 = read-only, 2 = hidden. A number an older FabGuide saved as another kind of number (a Float now a
+    Distance) becomes `kind`, keeping its value (migration 2: lengths in units)."""
+    if name in obj.PropertiesList:
+        was = obj.getTypeIdOfProperty(name)
+        if was == kind or was not in NUMBERS or kind not in NUMBERS:
+            return
+        kept = number(getattr(obj, name))
+        obj.removeProperty(name)
+        add(obj, kind, name, group, doc, kept, mode)
+        return
+    obj.addProperty(kind, name, group, doc)
+    if value is not None:
+        setattr(obj, name, value)
+    if mode:
+        obj.setEditorMode(name, mode)
+
+
+def stamp(obj):
+    """The FabGuide version that wrote the object, made or opened (and migrated) by this one: hidden, and an
+    output, so stamping an opened document changes nothing a recompute depends on."""
+    if "FabGuideVersion" not in obj.PropertiesList:
+        obj.addProperty("App::PropertyString", "FabGuideVersion", "Base", "The FabGuide version that wrote this",
+                        HIDDEN | OUTPUT)
+    obj.FabGuideVersion = fabguide.__version__
+
+
+class Stateless:
+    """Saved with no state of its own: FreeCAD 0.20 calls __getstate__/__setstate__, 0.21+ dumps/loads.
+    Everything FabGuide keeps lives in properties, never a reference to the object."""
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+def number(v):
+    """A property's number, whether a Quantity or a plain number."""
+    return getattr(v, "Value", v)
+
+
+def more_than(limit):
+    return lambda obj, v: number(v) > limit, "greater than {:g}".format(limit)
+
+
+def at_least(limit, meaning=""):
+    return lambda obj, v: number(v) >= limit, "{:g}{} or more".format(limit, meaning)
+
+
+class Proxy(Stateless):
+    """Base of FabGuide's FeaturePython proxies. Subclasses list their properties in `define(obj)` with
+    `add`; restoring a document calls it again, so documents saved by an older FabGuide gain new properties.
+    They recompute in `recompute(obj)`. VALID lists what a property's value must be, {name: (test(obj, value),
+    what it must be)}: a value that fails is refused as it is typed (the old one stays, the report view says
+    why), and a document that holds one anyway does not recompute."""
+
+    VALID, NOUN = {}, "Object"
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.define_all(obj)
+
+    def onDocumentRestored(self, obj):
+        self.define_all(obj)
+
+    def define_all(self, obj):
+        self.define(obj)
+        add(obj, "App::PropertyString", "Error", "Base", "Why the last recompute failed; empty when it did not",
+            mode=2)
+        stamp(obj)
+
+    def onBeforeChange(self, obj, prop):
+        if prop in self.VALID:
+            self.before = prop, getattr(obj, prop)  # on the proxy only: never saved
+
+    def onChanged(self, obj, prop):
+        before = getattr(self, "before", (None, None))
+        problem = self.invalid(obj, prop)
+        if problem and before[0] == prop and not obj.Document.Restoring:
+            FreeCAD.Console.PrintError("{}; kept {}\n".format(problem, getattr(before[1], "UserString", before[1])))
+            setattr(obj, prop, before[1])
+
+    def invalid(self, obj, prop):
+        """What is wrong with property `prop`'s value, as a sentence; "" when it is valid."""
+        test, must = self.VALID.get(prop, (None, ""))
+        if test is None or prop not in obj.PropertiesList or test(obj, getattr(obj, prop)):
+            return ""
+        return "{} '{}': {} must be {}".format(self.NOUN, obj.Label, prop, must)
+
+    def execute(self, obj):
+        """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError) is one plain
+        sentence in the report view and in the object's Error (its tree icon is marked), never a traceback;
+        `recompute` says it in the object's Status too, and clears the statuses it can no longer vouch for."""
+        try:
+            problem = next(filter(None, (self.invalid(obj, prop) for prop in self.VALID)), "")
+            if problem:
+                raise ValueError(problem)
+            self.recompute(obj)
+        except ValueError as error:
+            fail(obj, str(error))
+        else:
+            fail(obj, "")
+
+    def recompute(self, obj):
+        pass
+
+
+def failed(obj):
+    """Whether the last recompute of `obj` failed (said by FabGuide, or by FreeCAD for others' objects)."""
+    return bool(getattr(obj, "Error", "")) or "Invalid" in obj.State
+
+
+def fail(obj, message):
+    """Marks `obj` failed with `message` (said in the report view once), or not failed when it is empty."""
+    if obj.Error != message:
+        if message:
+            FreeCAD.Console.PrintError(message + "\n")
+        obj.Error = message
+
+
+def is_a(obj, proxy_class):
+    """Whether `obj` is a FabGuide object made by `proxy_class` (matched by its TYPE, not by identity, so
+    objects restored from a file count too)."""
+    return getattr(getattr(obj, "Proxy", None), "TYPE", None) == proxy_class.TYPE
