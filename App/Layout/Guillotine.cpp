@@ -214,8 +214,7 @@ std::vector<SawCut> edgeTrims(const MasterBoard& board, const PackSettings& s)
 /// One run: sheet after sheet, each filled from its whole by the rules. Nothing when `deadline` passes
 /// first.
 std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
-                          const std::vector<std::vector<std::vector<Pose>>>& poses,
-                          std::chrono::steady_clock::time_point deadline)
+                          const std::vector<std::vector<std::vector<Pose>>>& poses, Deadline deadline)
 {
     std::vector<int> remaining, left;
     long units = 0;
@@ -225,7 +224,7 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
         left.push_back(board.count);
     Layout layout;
     for (long placed = 0; placed < units; placed = static_cast<long>(layout.placements.size())) {
-        if (std::chrono::steady_clock::now() > deadline)
+        if (deadline.passed())
             return std::nullopt;
         const int first =
             *std::find_if(rules.order.begin(), rules.order.end(), [&](int p) { return remaining[p] > 0; });
@@ -306,8 +305,7 @@ std::vector<int> lastFirst(const std::vector<int>& order, const Layout& layout)
 
 }  // namespace
 
-Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
-                  std::chrono::steady_clock::time_point deadline)
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline)
 {
     const PackSettings& s = problem.settings;
     std::vector<std::vector<std::vector<Pose>>> poses;  // per board kind, per part
@@ -360,8 +358,7 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
         }
         std::optional<Layout> layout;
         try {
-            layout =
-                run(problem, rules, poses, best ? deadline : std::chrono::steady_clock::time_point::max());
+            layout = run(problem, rules, poses, best ? deadline : Deadline());
         } catch (const PackingError& e) {  // this order ran out of boards; another may not
             ranOutFirst = ranOutFirst.value_or(e);
             continue;

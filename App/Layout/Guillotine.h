@@ -2,6 +2,7 @@
 // most settings.stages changes of direction, and the cuts come in the order a person makes them.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Pack.h"
 
 #include <chrono>
@@ -26,7 +27,6 @@ constexpr long kGuillotineRuns = 2000;
 /// (`better`) of the runs made by `deadline`, at most `runs`, the first completing whatever the deadline.
 /// Fills Layout::sawCuts. Throws PackingError naming a part the boards run out before in every run, or one
 /// that would leave a strip too narrow to saw off at a board's edge.
-Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed,
-                  std::chrono::steady_clock::time_point deadline);
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline);
 
 }  // namespace fabguide::material

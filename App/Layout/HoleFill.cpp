@@ -62,7 +62,7 @@ bool firstFit(const Outline& room, const PartSpec& guest, int turn, Guest& out)
 
 /// One unit's guests: its holes filled from the units `left`, the largest parts first (`bySize`).
 std::vector<Guest> fill(const PackProblem& problem, int host, const std::vector<int>& bySize,
-                        std::vector<int>& left, std::chrono::steady_clock::time_point deadline)
+                        std::vector<int>& left, Deadline deadline)
 {
     const PartSpec& spec = problem.parts[host];
     const double clear = problem.settings.kerf + problem.settings.spacing + 0.01;
@@ -77,8 +77,7 @@ std::vector<Guest> fill(const PackProblem& problem, int host, const std::vector<
                 continue;
             for (int turn : turnsIn(guest, spec)) {
                 Guest placed{g, 0, 0, 0};
-                while (left[g] > 0 && std::chrono::steady_clock::now() < deadline &&
-                       firstFit(room, guest, turn, placed)) {
+                while (left[g] > 0 && !deadline.passed() && firstFit(room, guest, turn, placed)) {
                     guests.push_back(placed);
                     --left[g];
                     const Outline at = geometry::placed(guest.outline, turn, placed.x, placed.y);
@@ -93,7 +92,7 @@ std::vector<Guest> fill(const PackProblem& problem, int host, const std::vector<
 }  // namespace
 
 std::vector<std::vector<std::vector<Guest>>> fillHoles(const PackProblem& problem, std::vector<int>& left,
-                                                       std::chrono::steady_clock::time_point deadline)
+                                                       Deadline deadline)
 {
     std::vector<double> area;
     for (const PartSpec& part : problem.parts)

@@ -2,6 +2,7 @@
 // holes before the layout, so a coaster is cut from a stool seat's hand hole instead of from fresh board.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Pack.h"
 
 #include <chrono>
@@ -23,7 +24,7 @@ struct Guest {
 /// the host's thickness. `left` (units per part still to lay out) loses the units taken as guests. Stops
 /// filling at `deadline`: what is not in a hole by then is laid out on the boards.
 std::vector<std::vector<std::vector<Guest>>> fillHoles(const PackProblem& problem, std::vector<int>& left,
-                                                       std::chrono::steady_clock::time_point deadline);
+                                                       Deadline deadline);
 
 /// `layout` of `rest` (the problem's parts less their guests; rest part k is problem part `original[k]`) with
 /// the guests added, each turned and moved with its host: the j-th placed unit of a part carries the guests

@@ -143,8 +143,8 @@ constexpr size_t kWindow = 32;
 
 /// One MaxRects run: the units in their order, each placed by `rule` on the last `window` sheets opened or a
 /// new one.
-Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule rule,
-               std::chrono::steady_clock::time_point deadline, size_t window)
+Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule rule, Deadline deadline,
+               size_t window)
 {
     const double clearance = problem.settings.kerf + problem.settings.spacing;
     std::vector<int> left;  // boards of each kind still in stock; -1: as many as needed
@@ -154,7 +154,7 @@ Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule r
     Layout layout;
     for (size_t u = 0; u < units.size(); ++u) {
         const PartSpec& part = problem.parts[units[u]];
-        if (std::chrono::steady_clock::now() > deadline)
+        if (deadline.passed())
             throw PastDeadline{};
         Choice best;
         for (size_t b = bins.size() > window ? bins.size() - window : 0; b < bins.size(); ++b)
@@ -176,8 +176,7 @@ Layout laidOut(const PackProblem& problem, const std::vector<int>& units, Rule r
 
 /// Sheet by sheet: each filled with the best fitting (by `rule`, the larger part on a tie) of all the parts
 /// left until none fits; a new sheet for the largest part left (`units` in decreasing order).
-Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, Rule rule,
-                    std::chrono::steady_clock::time_point deadline)
+Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, Rule rule, Deadline deadline)
 {
     const double clearance = problem.settings.kerf + problem.settings.spacing;
     std::vector<int> left, remaining(problem.parts.size(), 0), order;  // order: part indices, largest first
@@ -197,7 +196,7 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
             throw ranOut(problem.parts[*largest], units.size() - done - 1);
         open(problem, kind, left, bins, layout);
         for (;;) {
-            if (std::chrono::steady_clock::now() > deadline)
+            if (deadline.passed())
                 throw PastDeadline{};
             Choice best;
             int chosen = -1;
@@ -220,8 +219,6 @@ Layout sheetBySheet(const PackProblem& problem, const std::vector<int>& units, R
     finish(problem, bins, layout);
     return layout;
 }
-
-using Deadline = std::chrono::steady_clock::time_point;
 
 /// Every MaxRects run on `problem` while the time lasts, each layout handed to `keep` (which returns false to
 /// stop); the first PackingError (boards ran out) of the runs that raised one, if any. The first run places
@@ -252,7 +249,7 @@ std::optional<PackingError> eachRun(const PackProblem& problem, Deadline deadlin
     };
     sortBy(Order::LongestSide);
     if (!tried([&] {
-            return laidOut(problem, units, Rule::ShortSide, needed ? Deadline::max() : deadline, kWindow);
+            return laidOut(problem, units, Rule::ShortSide, needed ? Deadline() : deadline, kWindow);
         }))
         return ranOutFirst;
     for (Order order : {Order::LongestSide, Order::Area, Order::Perimeter, Order::ShortestSide}) {
@@ -371,7 +368,7 @@ bool allRectangles(const PackProblem& problem)
     });
 }
 
-Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline)
+Layout maxRects(const PackProblem& problem, Deadline deadline)
 {
     std::optional<Layout> best;
     const auto ranOutFirst = eachRun(problem, deadline, true, [&](Layout&& layout) {
@@ -384,8 +381,7 @@ Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_poin
     return *best;
 }
 
-std::optional<Layout> maxRectsStrip(const PackProblem& problem,
-                                    std::chrono::steady_clock::time_point deadline)
+std::optional<Layout> maxRectsStrip(const PackProblem& problem, Deadline deadline)
 {
     const PackSettings& s = problem.settings;
     const double width = problem.boards[0].width, clearance = s.kerf + s.spacing;
@@ -400,7 +396,7 @@ std::optional<Layout> maxRectsStrip(const PackProblem& problem,
     on.boards = {problem.boards[0]};
     on.boards[0].count = 1;
     std::optional<Layout> best;
-    while (high - low > 1e-3 * high && std::chrono::steady_clock::now() < deadline) {
+    while (high - low > 1e-3 * high && !deadline.passed()) {
         on.boards[0].height = (low + high) / 2;
         std::optional<Layout> found;
         eachRun(on, deadline, false, [&](Layout&& layout) {

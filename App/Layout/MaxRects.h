@@ -3,6 +3,7 @@
 // pack() compares it with Docking's search on smaller jobs and keeps the better layout.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Pack.h"
 
 #include <chrono>
@@ -55,12 +56,11 @@ bool allRectangles(const PackProblem& problem);
 /// unit at the best free rectangle of any open sheet; then sheet by sheet, each filled with the best fitting
 /// of all the parts left (Jylänki's global variant). The first run always completes. Throws PackingError
 /// naming a part the boards run out before in every run.
-Layout maxRects(const PackProblem& problem, std::chrono::steady_clock::time_point deadline);
+Layout maxRects(const PackProblem& problem, Deadline deadline);
 
 /// Strip packing by MaxRects: the strip's height bisected between the parts' area over its width and every
 /// part stacked, each height tried by the runs above until one lays every part out; the lowest layout found
 /// by `deadline`, or nothing.
-std::optional<Layout> maxRectsStrip(const PackProblem& problem,
-                                    std::chrono::steady_clock::time_point deadline);
+std::optional<Layout> maxRectsStrip(const PackProblem& problem, Deadline deadline);
 
 }  // namespace fabguide::material

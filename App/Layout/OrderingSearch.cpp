@@ -54,8 +54,7 @@ std::vector<int> decreasingExtentOrder(const std::vector<RasterPart>& parts)
 }
 
 std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                              Criterion criterion, Bounds bounds, Preference preference,
-                              std::chrono::steady_clock::time_point deadline)
+                              Criterion criterion, Bounds bounds, Preference preference, Deadline deadline)
 {
     // Identical parts are interchangeable: keep one queue of indices per distinct part.
     std::vector<std::vector<int>> kinds;
@@ -80,7 +79,7 @@ std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::v
     while (order.size() < parts.size()) {
         size_t chosen = kinds.size();
         std::tuple<bool, int, int, long> best{true, 0, 0, 0};  // (needs a new sheet, sheet, y, -size)
-        for (size_t k = 0; k < kinds.size() && std::chrono::steady_clock::now() < deadline; ++k) {
+        for (size_t k = 0; k < kinds.size() && !deadline.passed(); ++k) {
             if (kinds[k].empty())
                 continue;
             const RasterPart& part = parts[kinds[k].back()];
@@ -110,7 +109,7 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
                             const std::vector<BoardStock>& stock, const OrderingSearchOptions& options)
 {
     using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeLimit);
+    const Deadline deadline(Clock::now() + seconds(options.timeLimit), options.cancel);
     const long n = static_cast<long>(order.size());
     const long iterations = options.iterations >= 0 ? options.iterations : n * n;
 
@@ -125,7 +124,7 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
     std::vector<LayoutCost> history(std::max(1, options.memory), bestCost);
     std::mt19937_64 random(options.seed);
     std::uniform_int_distribution<long> pick(0, std::max(0L, n - 1));
-    for (long i = 0; i < iterations && n > 1 && Clock::now() + pass < deadline; ++i) {
+    for (long i = 0; i < iterations && n > 1 && deadline.allows(pass); ++i) {
         const long a = pick(random), b = pick(random);
         if (a == b || parts[order[a]].shapes == parts[order[b]].shapes)
             continue;  // swapping identical parts changes nothing

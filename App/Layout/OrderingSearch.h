@@ -1,6 +1,7 @@
 // Exploring orderings by pairwise swaps (thesis 5.4.3, EXPLOREORDERINGS in Algorithm 7).
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Docking.h"
 
 #include <chrono>
@@ -38,6 +39,7 @@ struct OrderingSearchOptions {
     std::uint64_t seed = 1;  ///< same seed, same result
     int memory = 1;          ///< late-acceptance history length; 1 = the thesis' acceptance rule
     int threads = 1;         ///< pack: starts searched at once, and a strip's skyline searches
+    const std::atomic<bool>* cancel = nullptr;  ///< set by another thread: stop now with the best so far
 };
 
 /// Seconds left until `deadline` (0 when past it): what a time-limited search may still take.
@@ -59,12 +61,11 @@ enum class Preference { LargestArea, LargestExtent, Widest };
 /// position is lowest (ties by `preference`) is docked next. Docking this order gives the same layout.
 /// Past `deadline` the remaining parts follow in decreasing-extent order.
 std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                              Criterion criterion, Bounds bounds, Preference preference,
-                              std::chrono::steady_clock::time_point deadline);
+                              Criterion criterion, Bounds bounds, Preference preference, Deadline deadline);
 
 /// Starting from `order`, repeatedly swaps two random parts, re-docks, and keeps the swap when the
 /// layout costs no more (thesis 5.4.3). Stops after the iterations, or before a docking pass that would
-/// end past the time limit. Returns the best layout found.
+/// end past the time limit, or when cancelled. Returns the best layout found.
 GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<int> order,
                             const std::vector<BoardStock>& stock, const OrderingSearchOptions& options);
 

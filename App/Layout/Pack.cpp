@@ -160,7 +160,7 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
     // The starts run on the threads, each with an equal share of the time, of which building a best-fit
     // order may take a sixth.
     using Clock = std::chrono::steady_clock;
-    const auto end = Clock::now() + seconds(options.timeLimit);
+    const Deadline end(Clock::now() + seconds(options.timeLimit), options.cancel);
     const std::vector<Criterion> ways = options.criterion == Criterion::Fill
                                             ? std::vector<Criterion>{Criterion::Fill, Criterion::SnugFill}
                                             : std::vector<Criterion>{options.criterion};
@@ -171,15 +171,15 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
     const double share = options.timeLimit * threads / count;
     std::vector<GridLayout> found(count);
     const auto start = [&](int k) {
-        const auto until = std::min(end, Clock::now() + seconds(share));
+        const Deadline until = end.sooner(Clock::now() + seconds(share));
         OrderingSearchOptions search = options;
         search.criterion = ways[k / orders.size()];
         const std::optional<Preference> preference = orders[k % orders.size()];
-        const std::vector<int> order = preference
-                                           ? bestFitOrder(parts, stock, search.criterion, options.bounds,
-                                                          *preference, Clock::now() + seconds(share / 6))
-                                           : decreasingExtentOrder(parts);
-        search.timeLimit = secondsUntil(until);
+        const std::vector<int> order =
+            preference ? bestFitOrder(parts, stock, search.criterion, options.bounds, *preference,
+                                      until.sooner(Clock::now() + seconds(share / 6)))
+                       : decreasingExtentOrder(parts);
+        search.timeLimit = until.secondsLeft();
         found[k] = exploreOrderings(parts, order, stock, search);
     };
     runAll(count, threads, start, [](int) {});
@@ -313,7 +313,7 @@ long forTimeLimit(double perSecond, double seconds)
 /// The skyline search of a strip of rectangles on each thread, their seeds 2^32 apart, each within the work
 /// of the time limit; the lowest strip, the first thread's on a tie.
 std::optional<Layout> skylineOnThreads(const PackProblem& problem, const OrderingSearchOptions& search,
-                                       std::chrono::steady_clock::time_point deadline)
+                                       Deadline deadline)
 {
     const int threads = std::max(1, search.threads);
     const long work = forTimeLimit(kSkylineWorkPerSecond, search.timeLimit);
@@ -349,8 +349,7 @@ double rasterSeconds(const PackProblem& problem)
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
 /// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking (issue 31). Its saw cuts
 /// are dropped: the cuts are free.
-Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t seed,
-                    std::chrono::steady_clock::time_point deadline)
+Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t seed, Deadline deadline)
 {
     PackProblem saw = problem;
     saw.settings.cuts = Cuts::Guillotine;
@@ -368,7 +367,7 @@ Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t see
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
-    const auto deadline = started + seconds(search.timeLimit);
+    const Deadline deadline(started + seconds(search.timeLimit), search.cancel);
     const bool rectangles = allRectangles(problem);
     long units = 0;
     for (const PartSpec& part : problem.parts)
@@ -391,8 +390,8 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             wall < 0.005 ? 1.0 : std::clamp((std::clock() - cpu) / double(CLOCKS_PER_SEC) / wall, 0.05, 1.0);
         if (exact && units <= kSawnUnits)
             exact = sawnIfBetter(problem, std::move(*exact), search.seed,
-                                 started + seconds(kSawShare * search.timeLimit));
-        if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > secondsUntil(deadline)))
+                                 deadline.sooner(started + seconds(kSawShare * search.timeLimit)));
+        if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > deadline.secondsLeft()))
             return *exact;
     }
     // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
@@ -400,10 +399,12 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     // the rest up to kDockedUnits units; the lowest strip wins.
     std::optional<Layout> lower;
     if (problem.strip && rectangles) {
-        lower = skylineOnThreads(problem, search, started + seconds(0.85 * search.timeLimit));
+        lower =
+            skylineOnThreads(problem, search, deadline.sooner(started + seconds(0.85 * search.timeLimit)));
         if (lower && lower->stripHeight <= leastStripHeight(problem) + 1e-6)
             return *lower;
-        std::optional<Layout> bisected = maxRectsStrip(problem, started + seconds(0.95 * search.timeLimit));
+        std::optional<Layout> bisected =
+            maxRectsStrip(problem, deadline.sooner(started + seconds(0.95 * search.timeLimit)));
         if (bisected && (!lower || bisected->stripHeight < lower->stripHeight))
             lower = std::move(bisected);
         if (lower && units > kDockedUnits)
@@ -412,7 +413,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
-    options.timeLimit = secondsUntil(deadline);
+    options.timeLimit = deadline.secondsLeft();
     // A strip of irregular parts: the search gives a first strip in a share of the time, shrinking shortens
     // it in the rest, and compaction on the outlines gives back what the grid lost. The search fills it
     // bottom-left, holes included, when it has time for kFillPasses passes; Docking's height-fields cannot
@@ -447,18 +448,17 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 
 Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
 {
-    const auto started = std::chrono::steady_clock::now();
+    const Deadline deadline(std::chrono::steady_clock::now() + seconds(search.timeLimit), search.cancel);
     const PackProblem problem = freelyTurned(given);
     checkSettings(problem);
     if (problem.settings.cuts == Cuts::Guillotine)
         return guillotine(problem, search.iterations < 0 ? kGuillotineRuns : search.iterations, search.seed,
-                          started + seconds(search.timeLimit));
+                          deadline);
     std::vector<int> left;
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);
     const std::vector<int> quantities = left;
-    const std::vector<std::vector<std::vector<Guest>>> guests =
-        fillHoles(problem, left, started + seconds(0.25 * search.timeLimit));
+    const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left, deadline.share(4));
     if (left == quantities)
         return layOut(problem, search);
     PackProblem rest = problem;  // the parts less the units laid in holes
@@ -471,7 +471,7 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
             original.push_back(static_cast<int>(k));
         }
     OrderingSearchOptions options = search;
-    options.timeLimit = secondsUntil(started + seconds(search.timeLimit));
+    options.timeLimit = deadline.secondsLeft();
     return withGuests(layOut(rest, options), problem, original, guests);
 }
 

@@ -120,7 +120,7 @@ public:
 
     /// Cuts the strip shorter while the work budget and the time last, down to `least`: by the share `cut`
     /// of its height, halved (down to a cell) each time the overlap left cannot be separated.
-    void shrink(int least, long work, std::chrono::steady_clock::time_point deadline)
+    void shrink(int least, long work, Deadline deadline)
     {
         work_ = work;
         while (height_ > least && going(deadline)) {
@@ -150,10 +150,7 @@ public:
     }
 
 private:
-    bool going(std::chrono::steady_clock::time_point deadline) const
-    {
-        return count_.work() < work_ && std::chrono::steady_clock::now() < deadline;
-    }
+    bool going(Deadline deadline) const { return count_.work() < work_ && !deadline.passed(); }
 
     const Footprint& shape(size_t unit, const Pose& pose) const { return parts_[unit].shapes[pose.shape]; }
 
@@ -202,7 +199,7 @@ private:
 
     /// Moves the units that overlap or stick out past `length` until none does (true), or the overlap has not
     /// fallen for kStaleRounds rounds or the work budget or time ran out (false).
-    bool separate(int length, std::chrono::steady_clock::time_point deadline)
+    bool separate(int length, Deadline deadline)
     {
         for (auto& weights : weights_)
             weights.clear();
@@ -417,7 +414,7 @@ GridLayout posed(const GridLayout& start, const std::vector<RasterPart>& parts, 
 }  // namespace
 
 GridLayout shrinkStrip(const std::vector<RasterPart>& parts, const BoardStock& strip, const GridLayout& start,
-                       const ShrinkBudget& budget, std::chrono::steady_clock::time_point deadline)
+                       const ShrinkBudget& budget, Deadline deadline)
 {
     if (start.stock.size() != 1 || !start.unplaced.empty() || start.placed.size() != parts.size() ||
         static_cast<double>(strip.width) * start.usedHeight[0] > kShrinkCells)
@@ -431,8 +428,7 @@ GridLayout shrinkStrip(const std::vector<RasterPart>& parts, const BoardStock& s
     // In phases, each search starting from the lowest strip the last phase found (the first search's on a
     // tie, whichever thread finished first), so a search that is stuck does not waste its core for long.
     for (int phase = 0; phase < kPhases && height > least; ++phase) {
-        const auto end = std::chrono::steady_clock::now() +
-                         (deadline - std::chrono::steady_clock::now()) / (kPhases - phase);
+        const Deadline end = deadline.share(kPhases - phase);
         std::vector<Shrinker> searches;
         for (int t = 0; t < threads; ++t)
             searches.emplace_back(parts, strip, poses, height, cut,

@@ -5,6 +5,7 @@
 // On the material-space grid, so a strip with no cell taken twice is a valid layout.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Docking.h"
 
 #include <chrono>
@@ -31,6 +32,6 @@ struct ShrinkBudget {
 /// `start`, which is returned as it is when it is not a single strip with every part placed, or larger than
 /// kShrinkCells.
 GridLayout shrinkStrip(const std::vector<RasterPart>& parts, const BoardStock& strip, const GridLayout& start,
-                       const ShrinkBudget& budget, std::chrono::steady_clock::time_point deadline);
+                       const ShrinkBudget& budget, Deadline deadline);
 
 }  // namespace fabguide::material

@@ -68,8 +68,7 @@ std::vector<Kind> kindsOf(const PackProblem& problem, double clearance)
 class Search {
 public:
     Search(std::vector<Kind> kinds, std::vector<Segment> skyline, double height, double waste, bool whole,
-           long nodes, long work, std::optional<std::uint64_t> shuffle,
-           std::chrono::steady_clock::time_point deadline)
+           long nodes, long work, std::optional<std::uint64_t> shuffle, Deadline deadline)
         : kinds_(std::move(kinds)),
           height_(height),
           wasteLeft_(waste),
@@ -124,7 +123,7 @@ private:
     bool outOfWork()
     {
         work_ += 64 + static_cast<long>(kinds_.size() + skyline_.size());
-        if (--nodesLeft_ >= 0 && nodesLeft_ % 256 == 0 && std::chrono::steady_clock::now() > deadline_)
+        if (--nodesLeft_ >= 0 && nodesLeft_ % 256 == 0 && deadline_.passed())
             nodesLeft_ = -1;
         return spent();
     }
@@ -369,7 +368,7 @@ private:
     long nodesLeft_, mostWork_, work_ = 0, unitsLeft_ = 0;  // work_: done so far
     std::mt19937_64 random_;
     bool shuffled_;
-    std::chrono::steady_clock::time_point deadline_;
+    Deadline deadline_;
     std::vector<Segment> skyline_;
     std::vector<Put> puts_;
     std::vector<Candidate> ranked_;  // candidates() ranks every unit that fits here, then keeps the best
@@ -505,8 +504,7 @@ double leastStripHeight(const PackProblem& problem)
     return stripOf(problem).least - s.kerf - s.spacing + 2 * s.trim;
 }
 
-std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
-                                   std::chrono::steady_clock::time_point deadline)
+std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget, Deadline deadline)
 {
     const Strip strip = stripOf(problem);
     if (strip.kinds.empty())
@@ -535,7 +533,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
         Search search(std::move(kinds), std::move(skyline), height,
                       height * strip.width - strip.area - (under - keptArea), strip.whole, size,
                       greedy ? std::numeric_limits<long>::max() : work, shuffle,
-                      greedy ? std::chrono::steady_clock::time_point::max() : deadline);
+                      greedy ? Deadline() : deadline);
         const bool found = search.run();
         work -= search.work();
         puts.insert(puts.end(), search.puts().begin(), search.puts().end());
@@ -545,7 +543,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
         }
         return found;
     };
-    const auto left = [&] { return work > 0 && std::chrono::steady_clock::now() < deadline; };
+    const auto left = [&] { return work > 0 && !deadline.passed(); };
     // Greedily (no height, waste as it comes: one node a unit or a gap, past the budget and deadline); then a
     // short search at heights bisected between the lower bound and the lowest strip found.
     tried(HUGE_VAL, 0, static_cast<long>(2 * strip.units) + 1, std::nullopt);

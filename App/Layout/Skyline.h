@@ -6,6 +6,7 @@
 // (a large neighbourhood search), each just below that strip.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Pack.h"
 
 #include <chrono>
@@ -29,7 +30,7 @@ struct SkylineBudget {
 /// edges, grain kept) the search finds by `deadline` within `budget`; nothing when the time runs out before
 /// a first greedy strip.
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
-                                   std::chrono::steady_clock::time_point deadline);
+                                   Deadline deadline);
 
 /// The least height any strip of `problem` needs: the parts' area over the strip's width, and the tallest
 /// part as it lies lowest, with clearance and trim.

@@ -19,11 +19,6 @@ namespace fabguide::bindings {
 
 namespace {
 
-/// Lets another thread stop a running exploration.
-struct CancelToken {
-    std::atomic<bool> flag{false};
-};
-
 /// A design's layout: its measures (usage, sheets, waste_m2, largest_offcut), the layout dict and the pack
 /// problem dict it refers to.
 nlohmann::json layoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
@@ -213,10 +208,6 @@ py::object optimiseParametric(const py::list& parts,
 
 void bindExplore(py::module_& m)
 {
-    py::class_<CancelToken>(m, "CancelToken", "Stops a running optimise() from another thread.")
-        .def(py::init<>())
-        .def("cancel", [](CancelToken& t) { t.flag = true; })
-        .def_property_readonly("cancelled", [](const CancelToken& t) { return t.flag.load(); });
     m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1,
           "A *.flatpack.json design dict laid out on its master boards: {usage, layout, problem}. Raises "
           "FormatError naming a bad field or a broken constraint, PackingError naming a part that does not "

@@ -17,7 +17,7 @@ namespace fabguide::bindings {
 namespace {
 
 py::object pack(const py::object& problemDict, long iterations, double timeLimit, std::uint64_t seed,
-                bool bottomLeft)
+                bool bottomLeft, const CancelToken* cancel)
 {
     const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
     material::OrderingSearchOptions options;
@@ -26,6 +26,7 @@ py::object pack(const py::object& problemDict, long iterations, double timeLimit
     options.seed = seed;
     options.threads = cores();
     options.criterion = bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
+    options.cancel = cancel ? &cancel->flag : nullptr;
     material::Layout layout;
     {
         py::gil_scoped_release release;
@@ -201,12 +202,17 @@ void bindMaterial(py::module_& m)
 {
     bindFormatErrors(m);
     py::register_exception<material::PackingError>(m, "PackingError", PyExc_RuntimeError);
+    py::class_<CancelToken>(m, "CancelToken", "Stops a running pack() or optimise() from another thread.")
+        .def(py::init<>())
+        .def("cancel", [](CancelToken& t) { t.flag = true; })
+        .def_property_readonly("cancelled", [](const CancelToken& t) { return t.flag.load(); });
     m.def(
         "pack", &pack, py::arg("problem"), py::arg("iterations") = -1, py::arg("time_limit") = 60.0,
-        py::arg("seed") = 1, py::arg("bottom_left") = false,
+        py::arg("seed") = 1, py::arg("bottom_left") = false, py::arg("cancel") = nullptr,
         "Lay the parts of a pack problem (a *.pack.json dict) out on its master boards; returns the layout "
         "dict.\n"
         "iterations=-1 tries |parts|^2 ordering swaps (thesis 5.4.3); the same inputs give the same layout.\n"
+        "cancel (a CancelToken) stops the search from another thread with the best layout found so far.\n"
         "Raises FormatError naming a bad field, PackingError naming a part that does not fit.");
     m.def(
         "join_boards", &joinBoards, py::arg("boards"), py::arg("style") = "Auto",

@@ -12,7 +12,7 @@ using fabguide::material::testing::expectValid;
 
 namespace {
 
-const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+const Deadline kNoDeadline;  // no time limit
 
 /// Cabinet-shop parts: sides, shelves and rails, 60-900 x 60-600 mm, some of them repeated.
 PackProblem shopJob(unsigned seed, int stages)

@@ -7,7 +7,7 @@ using namespace fabguide::material;
 
 namespace {
 
-const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+const Deadline kNoDeadline;  // no time limit
 
 /// A 300 x 200 frame with a 200 x 100 window at (50, 50), and 40 x 30 tags.
 PackProblem frameAndTags(int tags)
@@ -91,7 +91,7 @@ TEST(HoleFill, PastItsDeadlineItLeavesTheRestToTheBoards)
 {
     const PackProblem problem = frameAndTags(20);
     std::vector<int> left{1, 20};
-    const auto guests = fillHoles(problem, left, std::chrono::steady_clock::now());
+    const auto guests = fillHoles(problem, left, Deadline(std::chrono::steady_clock::now()));
     EXPECT_TRUE(guests[0][0].empty());
     EXPECT_EQ(left[1], 20);
 }

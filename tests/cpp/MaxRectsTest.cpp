@@ -11,7 +11,7 @@ using fabguide::material::testing::expectValid;
 
 namespace {
 
-const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+const Deadline kNoDeadline;  // no time limit
 
 }  // namespace
 
@@ -86,7 +86,8 @@ TEST(MaxRects, AStripOfAPerfectPackingIsAsLowAsItsArea)
     problem.boards.push_back({"strip", "", 100, 0, 0, 1});
     problem.parts = {rectangularPart("a", 60, 40), rectangularPart("b", 40, 60),
                      rectangularPart("c", 30, 20, 2)};
-    const auto layout = maxRectsStrip(problem, std::chrono::steady_clock::now() + std::chrono::seconds(5));
+    const auto layout =
+        maxRectsStrip(problem, Deadline(std::chrono::steady_clock::now() + std::chrono::seconds(5)));
     ASSERT_TRUE(layout);
     EXPECT_NEAR(layout->stripHeight, 60, 60e-3);  // the bisection stops within 0.1 % of the height
     PackProblem board = problem;

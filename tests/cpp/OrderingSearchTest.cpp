@@ -61,7 +61,7 @@ TEST(OrderingSearch, BestFitOrderHoldsEveryPartOnceAndStartsLow)
     const std::vector<BoardStock> stock{{24, 400, 1}};
     const auto far = std::chrono::steady_clock::now() + std::chrono::hours(1);
     const std::vector<int> order =
-        bestFitOrder(parts, stock, Criterion::Docking, Bounds::Strip, Preference::LargestArea, far);
+        bestFitOrder(parts, stock, Criterion::Docking, Bounds::Strip, Preference::LargestArea, Deadline(far));
     std::vector<int> sorted = order;
     std::sort(sorted.begin(), sorted.end());
     for (size_t i = 0; i < sorted.size(); ++i)

@@ -7,7 +7,9 @@
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 using namespace fabguide::material;
@@ -57,6 +59,29 @@ TEST(Pack, KeepsKerfSpacingAndTrim)
             EXPECT_TRUE(apart(p, layout.placements[j], 8))
                 << i << " and " << j << " closer than kerf + spacing";
     }
+}
+
+TEST(Pack, ACancelledSearchStopsWithAValidLayout)
+{
+    // Cancelled as it starts, a search with neither a time limit nor an end to its work still returns, with
+    // each stage's first layout (the FreeCAD Layout's Stop, issue 34): on sheets free or sawn, and in a
+    // strip.
+    const std::atomic<bool> cancelled{true};
+    OrderingSearchOptions options;
+    options.iterations = std::numeric_limits<long>::max();
+    options.timeLimit = 1e9;
+    options.cancel = &cancelled;
+    for (const Cuts cuts : {Cuts::Free, Cuts::Guillotine})
+        for (const bool strip : {false, true}) {
+            PackProblem problem = shelfProblem();
+            problem.settings.cuts = cuts;
+            problem.strip = strip && cuts == Cuts::Free;
+            const Layout layout = pack(problem, options);
+            ASSERT_EQ(layout.placements.size(), 5u);
+            for (size_t i = 0; i < layout.placements.size(); ++i)
+                for (size_t j = i + 1; j < layout.placements.size(); ++j)
+                    EXPECT_TRUE(apart(layout.placements[i], layout.placements[j], 8)) << i << " and " << j;
+        }
 }
 
 TEST(Pack, RespectsAllowedOrientationsAndReportsPlacedSizes)

@@ -30,7 +30,7 @@ GridLayout stacked(const std::vector<RasterPart>& parts)
     return layout;
 }
 
-const auto kNoDeadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+const Deadline kNoDeadline;  // no time limit
 
 }  // namespace
 

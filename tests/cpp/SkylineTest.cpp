@@ -15,7 +15,7 @@ using fabguide::material::testing::expectValid;
 
 namespace {
 
-const auto kNoDeadline = std::chrono::steady_clock::time_point::max();
+const Deadline kNoDeadline;  // no time limit
 
 PackProblem stripOf(double width, std::vector<PartSpec> parts)
 {

@@ -11,7 +11,7 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui as Gui
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 import guitest
 
@@ -70,15 +70,17 @@ def master_board_and_layout_open_the_usage_panel():
     print("3-D view: " + guitest.view_image("material_layout_3d"))
 
 
-def editing_the_kerf_in_the_panel_relays_out_live():
+def editing_the_kerf_in_the_panel_relays_out_when_typing_pauses():
     layout = state["layout"]
     form = [w for w in Gui.getMainWindow().findChildren(QtGui.QAbstractSpinBox) if w.objectName() == "kerf"]
     assert form, "kerf field in the panel"
     assert form[0].property("unit") == "mm" or "mm" in form[0].text(), form[0].text()
     before = layout.LayoutJson
-    form[0].setProperty("rawValue", 8.0)
-    assert layout.Kerf.Value == 8.0
-    assert layout.LayoutJson != before
+    for typed in (7.0, 7.5, 8.0):  # keystrokes: the setting follows each, the layout waits for the pause
+        form[0].setProperty("rawValue", typed)
+        assert layout.Kerf.Value == typed and layout.LayoutJson == before
+    guitest.settle(1.2)
+    assert layout.LayoutJson != before and json.loads(layout.ProblemJson)["settings"]["kerf"] == 8.0
     usage = [w for w in Gui.getMainWindow().findChildren(QtGui.QLabel) if w.objectName() == "usage"][0]
     assert usage.text() == "{:.1%}".format(layout.Usage)
 
@@ -91,6 +93,7 @@ def guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts():
     assert not stages.isEnabled(), "stages mean nothing for free cuts"
     cuts.setCurrentText("Guillotine (panel saw)")
     stages.setValue(2)
+    guitest.settle(1.2)
     assert layout.Cuts == "Guillotine (panel saw)" and layout.Stages == 2 and stages.isEnabled()
     assert layout.SawCuts > 0 and layout.SawCutLength.Value > 0 and not layout.Error, layout.Error
     shown = [w for w in window.findChildren(QtGui.QLabel) if w.objectName() == "sawCuts"][0].text()
@@ -98,10 +101,33 @@ def guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts():
     QtGui.QApplication.processEvents()
     print("screenshot: " + guitest.screenshot("material_layout_guillotine"))
     cuts.setCurrentText("Free (CNC router, laser)")
+    guitest.settle(1.2)
     assert layout.Cuts.startswith("Free") and layout.SawCuts == 0
     Gui.Control.activeDialog() and Gui.ActiveDocument.resetEdit()
     Gui.Control.closeDialog()
     state["doc"].commitTransaction()
+
+
+def a_long_layout_shows_its_progress_and_stops_with_the_best_so_far():
+    doc, layout = state["doc"], state["layout"]
+    layout.Iterations, layout.TimeLimit = 10 ** 9, 300  # a search that would run for five minutes
+    seen = {}
+
+    def press_stop():  # runs from FreeCAD's event loop while the search runs: FreeCAD is not frozen
+        dialogs = [w for w in QtGui.QApplication.topLevelWidgets()
+                   if isinstance(w, QtGui.QProgressDialog) and w.isVisible()]
+        if not dialogs:
+            return QtCore.QTimer.singleShot(100, press_stop)
+        seen["label"] = dialogs[0].labelText()
+        print("screenshot: " + guitest.screenshot("material_layout_progress", dialogs[0]))
+        dialogs[0].cancel()
+
+    QtCore.QTimer.singleShot(1000, press_stop)
+    doc.recompute()
+    assert "Laying out" in seen.get("label", "") and "at most 300 s" in seen["label"], seen
+    assert not layout.Error and layout.SheetCount >= 1 and 0.5 < layout.Usage <= 1, layout.Error
+    layout.Iterations, layout.TimeLimit = -1, 60
+    doc.recompute()
 
 
 def mistakes_are_refused_or_said_in_one_sentence():
@@ -250,8 +276,9 @@ guitest.run([
     model_and_workbench,
     boards_from_solids_makes_one_board_per_solid,
     master_board_and_layout_open_the_usage_panel,
-    editing_the_kerf_in_the_panel_relays_out_live,
+    editing_the_kerf_in_the_panel_relays_out_when_typing_pauses,
     guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts,
+    a_long_layout_shows_its_progress_and_stops_with_the_best_so_far,
     mistakes_are_refused_or_said_in_one_sentence,
     top_view_of_the_sheet,
     export_writes_svg_dxf_and_csv,

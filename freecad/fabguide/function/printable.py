@@ -5,7 +5,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import properties
+from freecad.fabguide import background, properties
 from freecad.fabguide.function import mechanism
 
 PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
@@ -98,8 +98,9 @@ def bodies(obj):
     if obj.Mechanism is None:
         raise PrintableError("Printable '{}': choose the Mechanism to print".format(obj.Label))
     try:
-        return fabguide_core.printable(mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale,
-                                       fit(obj))
+        arguments = mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale, fit(obj)
+        return background.run("Making {} printable".format(obj.Label),
+                              lambda cancel: fabguide_core.printable(*arguments), stoppable=False)
     except (fabguide_core.FormatError, RuntimeError) as error:
         raise PrintableError("Printable '{}': {}".format(obj.Label, error))
 

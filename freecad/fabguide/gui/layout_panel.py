@@ -3,11 +3,13 @@ material-space view updates as the design changes)."""
 import os
 
 import FreeCADGui
+from PySide import QtCore
 
 from freecad.fabguide import properties
 from freecad.fabguide.gui import editing, resources
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
+PAUSE = 700  # ms without a change before the layout is made again: not on every keystroke
 
 
 class LayoutPanel:
@@ -16,6 +18,10 @@ class LayoutPanel:
         self.form = FreeCADGui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "LayoutPanel.ui"))
         self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Layout.svg")))
         layout.Document.openTransaction("Edit layout")
+        self.pending = QtCore.QTimer()
+        self.pending.setSingleShot(True)
+        self.pending.setInterval(PAUSE)
+        self.pending.timeout.connect(self.lay_out)
         self.bindings = []
         for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
             box = getattr(self.form, name.lower())
@@ -34,10 +40,16 @@ class LayoutPanel:
         self.show()
 
     def set(self, name, value):
+        """The setting at once; the layout made again once the typing pauses."""
         current = properties.number(getattr(self.layout, name))
         if (abs(current - value) > 1e-12 if isinstance(value, float) else current != value):
             setattr(self.layout, name, value)
-            self.layout.Document.recompute()
+            self.pending.start()
+            self.form.message.setText("<i>The layout is made again when you pause.</i>")
+
+    def lay_out(self):
+        self.pending.stop()
+        self.layout.Document.recompute()
         self.show()
 
     def show(self):
@@ -59,11 +71,14 @@ class LayoutPanel:
         form.firstCut.setEnabled(guillotine)
 
     def accept(self):
+        if self.pending.isActive():
+            self.lay_out()
         self.layout.Document.commitTransaction()
         editing.end_edit(self.layout.Document)
         return True
 
     def reject(self):
+        self.pending.stop()
         document = self.layout.Document
         document.abortTransaction()
         document.recompute()

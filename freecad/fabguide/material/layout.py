@@ -8,7 +8,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import properties
+from freecad.fabguide import background, properties
 from freecad.fabguide.material import board, master_board
 
 GAP = 100  # mm between the model and the sheets, and between sheets
@@ -27,6 +27,7 @@ class Layout(properties.Proxy):
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
                                "0 or a divisor of 90 (e.g. 15, 30, 45)"),
                  Stages=properties.at_least(0, " (0: unlimited)"), LabelWidth=properties.at_least(20),
+                 TimeLimit=properties.more_than(0),
                  LabelHeight=properties.at_least(10))
 
     def define(self, obj):
@@ -73,6 +74,9 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyInteger", "Iterations", "Search",
             "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
         add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
+        add(obj, "App::PropertyFloat", "TimeLimit", "Search",
+            "Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far",
+            60.0)
         add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / bounding rectangle of the layout", mode=1)
         add(obj, "App::PropertyFloat", "SheetUtilisation", "Result", "Part area / area of the master boards used",
             mode=1)
@@ -86,7 +90,11 @@ class Layout(properties.Proxy):
         try:
             joined = join(obj, boards)
             problem["parts"] = pieces(obj, joined, boards)
-            result = fabguide_core.pack(problem, iterations=obj.Iterations, seed=obj.Seed)
+            # The search runs on a thread of its own (background.py): it is given values, never FreeCAD objects.
+            search = dict(iterations=obj.Iterations, seed=obj.Seed, time_limit=obj.TimeLimit)
+            result = background.run(
+                "Laying out {} ({} boards)".format(obj.Label, sum(p.get("quantity", 1) for p in problem["parts"])),
+                lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             raise LayoutError("Layout '{}': {}".format(obj.Label, name_parts(str(error), problem.get("parts", []))))
         obj.ProblemJson = json.dumps(problem)
