@@ -1,7 +1,14 @@
-"""FreeCAD's GUI start-up imports this (FreeCAD's `freecad` namespace packages): registers the workbench."""
+"""FreeCAD's GUI start-up imports this (FreeCAD's `freecad` namespace packages): registers the workbench and
+its preferences page (Edit > Preferences > FabGuide)."""
+import os
+
 import FreeCADGui
 
 from freecad.fabguide.gui import busy  # noqa: F401  (long core calls run off FreeCAD's thread)
+from freecad.fabguide.gui import documents  # noqa: F401  (opened documents get FabGuide's view providers)
+from freecad.fabguide.gui import resources
 from freecad.fabguide.gui.workbench import FabGuideWorkbench
 
 FreeCADGui.addWorkbench(FabGuideWorkbench())
+FreeCADGui.addPreferencePage(os.path.join(resources.RESOURCES, "ui", "Preferences.ui"), "FabGuide")
+FreeCADGui.addIcon("preferences-fabguide", resources.icon("FabGuide.svg"))  # the page's group icon

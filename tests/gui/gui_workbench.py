@@ -1,8 +1,9 @@
 """The FabGuide workbench loads in the real FreeCAD GUI and shows its toolbars and menus."""
 import os
 
+import FreeCAD
 import FreeCADGui as Gui
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 import guitest
 
@@ -48,6 +49,33 @@ def about_command_is_registered():
     assert "FabGuide_About" in Gui.listCommands()
 
 
+def preferences_page_stores_what_new_objects_start_with():
+    from freecad.fabguide import preferences
+
+    seen = {}
+
+    def on_the_page():  # the Preferences dialog is modal: this runs from its event loop
+        dialog = QtGui.QApplication.activeModalWidget()
+        if dialog is None:
+            return QtCore.QTimer.singleShot(100, on_the_page)
+        kerf = [w for w in dialog.findChildren(QtGui.QDoubleSpinBox) if w.objectName() == "Kerf"]
+        seen["kerf"] = bool(kerf)
+        if kerf:
+            kerf[0].setValue(0.35)
+            seen["screenshot"] = guitest.screenshot("preferences", dialog)
+        dialog.accept()
+
+    QtCore.QTimer.singleShot(300, on_the_page)
+    Gui.showPreferences("FabGuide", 0)
+    group = FreeCAD.ParamGet(preferences.PATH)
+    try:
+        assert seen.get("kerf"), "the FabGuide page with its Kerf field"
+        assert group.GetFloat("Kerf", 0) == 0.35 and preferences.get("Kerf") == 0.35
+        print("screenshot: " + seen["screenshot"])
+    finally:
+        group.RemFloat("Kerf")  # the test home's user.cfg keeps what is set
+
+
 def window_screenshot_is_saved():
     path = guitest.screenshot("workbench")
     assert os.path.getsize(path) > 10000, path
@@ -59,5 +87,6 @@ guitest.run([
     workbench_activates_with_function_and_material_toolbars,
     toolbars_fit_a_1366_px_screen_and_reach_every_command,
     about_command_is_registered,
+    preferences_page_stores_what_new_objects_start_with,
     window_screenshot_is_saved,
 ])

@@ -5,7 +5,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, properties
+from freecad.fabguide import background, preferences, properties
 from freecad.fabguide.function import mechanism
 
 PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
@@ -24,14 +24,14 @@ class Printable(properties.Proxy):
         add(obj, "App::PropertyLink", "Mechanism", "Printable", "The mechanism to print in place")
         add(obj, "App::PropertyEnumeration", "Printer", "Printable", "Printer profile: the gap it needs", list(PRINTERS))
         add(obj, "App::PropertyLength", "Gap", "Printable", "Clearance between parts (set by the printer profile)",
-            0.4)
+            preferences.get("Gap"))
         add(obj, "App::PropertyFloat", "Scale", "Printable",
             "Print at this scale (0.2 for 1:5); the gap stays as it is", 1.0)
         add(obj, "App::PropertyBool", "FitToBuildVolume", "Printable",
             "Print at the largest scale (at most 1) that fits the build volume; sets Scale", False)
         add(obj, "App::PropertyVector", "BuildVolume", "Printable",
             "The printer's build volume in mm: width (x), depth (y), height (z); the print may turn a quarter about z",
-            FreeCAD.Vector(250, 210, 210))
+            FreeCAD.Vector(*(preferences.get("BuildVolume" + axis) for axis in "XYZ")))
         add(obj, "App::PropertyString", "PrintSize", "Result", "Width x depth x height of the print", mode=1)
         add(obj, "App::PropertyBool", "TurnedOnBed", "Result",
             "Fitted turned a quarter about z: exported so, shown as modelled", False, mode=1)
@@ -120,6 +120,9 @@ def create(doc, mech, label=None):
     """The Printable group and one body per part and link of the mechanism."""
     obj = doc.addObject("App::DocumentObjectGroupPython", "Printable")
     Printable(obj)
+    gap = preferences.get("Gap")  # the printer profile of the preferences' gap, else Custom
+    obj.Printer = next((name for name, value in PRINTERS.items() if value == gap), "Custom")
+    obj.Gap = gap
     obj.Label = label or mech.Label + " printable"
     obj.Mechanism = mech
     sync(obj)

@@ -7,7 +7,7 @@ import FreeCADGui
 
 from freecad.fabguide import cuboids, properties
 from freecad.fabguide.material import design, master_board
-from freecad.fabguide.gui import viewproviders
+from freecad.fabguide.gui import editing, viewproviders
 from freecad.fabguide.gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
 
 AXES = "xyz"
@@ -300,7 +300,7 @@ class Suggest(Command):
             self.panel = suggest_panel.SuggestPanel(target)  # kept for scripts: .wait(), .result
         except ValueError as error:  # Parameters that do not name spreadsheet aliases
             return tell(str(error))
-        FreeCADGui.Control.showDialog(self.panel)
+        editing.show(self.panel, target.Document)
 
 
 COMMANDS = {

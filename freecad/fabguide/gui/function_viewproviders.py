@@ -3,6 +3,7 @@ in the 3-D view, conflicting parts shown in red, and the task panels opened by d
 import FreeCADGui
 
 from freecad.fabguide.function import configuration, joints, mechanism, parts, printable, relationships
+from freecad.fabguide.gui import editing
 from freecad.fabguide.gui.viewproviders import EditedByDoubleClick, ViewProvider
 
 CONFLICT_COLOUR = (0.85, 0.2, 0.2)
@@ -26,7 +27,7 @@ class ViewProviderMechanism(EditedByDoubleClick, ViewProvider):
         from freecad.fabguide.gui.configurations_panel import ConfigurationsPanel
 
         self.panel = ConfigurationsPanel(vobj.Object)
-        FreeCADGui.Control.showDialog(self.panel)
+        editing.show(self.panel, vobj.Object.Document)
         return True
 
     def unsetEdit(self, vobj, mode=0):
@@ -54,7 +55,7 @@ class ViewProviderConfiguration(ViewProvider):
 
         mech = next((m for m in vobj.Object.InList if mechanism.is_mechanism(m)), None)
         if mech is not None:
-            FreeCADGui.Control.showDialog(ConfigurationsPanel(mech, vobj.Object))
+            editing.show(ConfigurationsPanel(mech, vobj.Object), mech.Document)
         return True
 
 
@@ -126,7 +127,7 @@ class ViewProviderRelationship(ViewProvider):
     def doubleClicked(self, vobj):
         from freecad.fabguide.gui.relationship_panel import RelationshipPanel
 
-        FreeCADGui.Control.showDialog(RelationshipPanel(vobj.Object))
+        editing.show(RelationshipPanel(vobj.Object), vobj.Object.Document)
         return True
 
 

@@ -70,6 +70,9 @@ class LayoutPanel:
         form.stages.setEnabled(guillotine)
         form.firstCut.setEnabled(guillotine)
 
+    def abandon(self):
+        self.pending.stop()
+
     def accept(self):
         if self.pending.isActive():
             self.lay_out()

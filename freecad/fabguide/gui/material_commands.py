@@ -13,7 +13,7 @@ from freecad.fabguide.gui.command_base import Command, all_in, selected, tell, t
 
 def first_thickness(doc):
     boards = selected(board.is_board) or all_in(doc, board.is_board)
-    return boards[0].Thickness.Value if boards else 18
+    return boards[0].Thickness.Value if boards else None  # none: the preferences' sheet thickness
 
 
 class NewMasterBoard(Command):
@@ -184,7 +184,7 @@ class MakeCamJob(Command):
             self.panel = cam_panel.CamJobPanel(chosen)  # kept for scripts
         except cam.CamError as error:  # no CAM workbench in this FreeCAD
             return tell(str(error))
-        FreeCADGui.Control.showDialog(self.panel)
+        editing.show(self.panel, chosen.Document)
 
 
 COMMANDS = {

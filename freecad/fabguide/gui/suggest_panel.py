@@ -342,6 +342,11 @@ class SuggestPanel:
         if self.thread:
             self.thread.join()
 
+    def abandon(self):
+        """Its document closes or changes under it: the search stops, nothing is applied or previewed."""
+        self.end_search()
+        self.timer.stop()
+
     def accept(self):
         self.end_search()
         if self.chosen is not None:

@@ -3,6 +3,7 @@ import FreeCADGui
 
 from freecad.fabguide import properties
 from freecad.fabguide.gui import editing, resources
+from freecad.fabguide.material import board, design, layout, master_board
 
 SHEET_COLOUR = (0.91, 0.83, 0.65)  # the master boards in a layout: raw wood
 PART_COLOUR = (0.24, 0.49, 0.79)   # the parts laid out on them
@@ -71,7 +72,7 @@ class ViewProviderLayout(EditedByDoubleClick, ViewProvider):
     def setEdit(self, vobj, mode=0):
         from freecad.fabguide.gui.layout_panel import LayoutPanel
 
-        FreeCADGui.Control.showDialog(LayoutPanel(vobj.Object))
+        editing.show(LayoutPanel(vobj.Object), vobj.Object.Document)
         return True
 
     def unsetEdit(self, vobj, mode=0):
@@ -142,3 +143,8 @@ class ViewProviderVolume(ViewProvider):
     def colour(self, vobj):
         vobj.ShapeColor = VOLUME_COLOURS.get(getattr(vobj.Object, "Kind", "Inner"), VOLUME_COLOURS["Inner"])
         vobj.Transparency = 75
+
+
+CLASSES = [(board.is_board, ViewProviderBoard), (master_board.is_master_board, ViewProviderMasterBoard),
+           (layout.is_layout, ViewProviderLayout), (design.is_design, ViewProviderFlatpackDesign),
+           (design.is_constraint, ViewProviderDesignConstraint), (design.is_volume, ViewProviderVolume)]

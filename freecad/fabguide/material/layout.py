@@ -8,7 +8,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, properties
+from freecad.fabguide import background, preferences, properties
 from freecad.fabguide.material import board, master_board
 
 GAP = 100  # mm between the model and the sheets, and between sheets
@@ -34,9 +34,12 @@ class Layout(properties.Proxy):
         add = properties.add
         add(obj, "App::PropertyLinkList", "Boards", "Layout", "Boards to lay out")
         add(obj, "App::PropertyLinkList", "MasterBoards", "Layout", "Master boards to cut them from, opened in this order")
-        add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)", 0.2)
-        add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf", 2)
-        add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge", 5)
+        add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)",
+            preferences.get("Kerf"))
+        add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf",
+            preferences.get("Spacing"))
+        add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge",
+            preferences.get("Trim"))
         add(obj, "App::PropertyLength", "Dogbone", "Cutting",
             "Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; "
             "0 for none (a laser)", 0)
@@ -76,7 +79,7 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
         add(obj, "App::PropertyFloat", "TimeLimit", "Search",
             "Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far",
-            60.0)
+            preferences.get("LayoutTimeLimit"))
         add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / bounding rectangle of the layout", mode=1)
         add(obj, "App::PropertyFloat", "SheetUtilisation", "Result", "Part area / area of the master boards used",
             mode=1)

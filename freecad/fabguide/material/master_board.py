@@ -1,5 +1,5 @@
 """MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
-from freecad.fabguide import properties
+from freecad.fabguide import preferences, properties
 
 # The grain directions, as *.pack.json names them.
 GRAIN = {"None": "none", "Along width": "width", "Along height": "height"}
@@ -24,9 +24,13 @@ class MasterBoard(properties.Proxy):
             "sheets", 1.0)
 
 
-def create(doc, width=2440, height=1220, thickness=18, count=1, material="plywood", label="MasterBoard",
+def create(doc, width=None, height=None, thickness=None, count=1, material="plywood", label="MasterBoard",
            grain="none", cost=1.0):
-    """A master board; `grain` as *.pack.json names it (none, width, height); `cost` 0 for an offcut."""
+    """A master board; `grain` as *.pack.json names it (none, width, height); `cost` 0 for an offcut. Sizes not
+    given are the preferences' (a sheet of 2440 x 1220 x 18 mm until set)."""
+    width = width or preferences.get("SheetWidth")
+    height = height or preferences.get("SheetHeight")
+    thickness = thickness or preferences.get("SheetThickness")
     obj = doc.addObject("App::FeaturePython", "MasterBoard")
     obj.Label = label
     MasterBoard(obj)
