@@ -10,6 +10,7 @@
 #   make test-deb        `make deb`, then apt install the package and test the installed workbench (tools/test-deb)
 #   make test-deb-debian13   the same in the Debian 13 chroot
 #   make demo-debian13   `make demo` there
+#   make test-debian14   `make test` in Debian 14 "forky" (testing: FreeCAD 1.1, Qt6), not in CI (docs/decisions.md)
 #   make test-clang      the C++ tests built with clang, warnings as errors, into build-clang/
 #   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
 #   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
@@ -28,7 +29,7 @@ SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
 .PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
-	clang-deps fuzz-products deb test-deb test-deb-debian13
+	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -60,6 +61,9 @@ test-deb: deb
 
 test-deb-debian13:
 	tools/in-debian13 make test-deb
+
+test-debian14:
+	FABGUIDE_SUITE=forky tools/in-debian13 make test
 
 demo-debian13:
 	tools/in-debian13 make demo

@@ -195,10 +195,20 @@ def mistakes_are_told_in_a_sentence_and_change_nothing():
     said = guitest.told("FabGuide_NewMechanism")
     assert said and said.startswith("'Tilted' is rotated: FabGuide parts are axis-aligned boxes"), said
     assert [o.Label for o in doc.Objects] == ["Tilted"], "nothing made"
+    assert active("FabGuide_NewMechanism") and not active("FabGuide_AddHinge"), "a box picked, no edge"
+    assert FreeCAD.ActiveDocument is doc and not active("FabGuide_Solve"), "no mechanism to solve"
     Gui.Selection.clearSelection()
-    said = guitest.told("FabGuide_AddHinge")
-    assert said and "edge" in said.lower(), said
+    assert not active("FabGuide_NewMechanism"), "greyed out until boxes are picked"
+    assert guitest.told("FabGuide_AddHinge") is None and [o.Label for o in doc.Objects] == ["Tilted"], "inactive"
+    Gui.Selection.addSelection(tilted, "Edge1")
+    assert active("FabGuide_AddHinge") and not active("FabGuide_AddSlide")
+    Gui.Selection.clearSelection()
     FreeCAD.closeDocument(doc.Name)
+
+
+def active(name):
+    """Whether the command is enabled (its IsActive) for the active document and selection."""
+    return Gui.Command.get(name).isActive()
 
 
 def the_crate_bed_folds_along_its_four_bar_motion():

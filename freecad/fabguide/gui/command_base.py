@@ -1,6 +1,7 @@
 """What every FabGuide command shares: one undo step per command, telling the user about mistakes, reading
 the selection."""
 import contextlib
+import functools
 import os
 
 import FreeCAD
@@ -35,6 +36,37 @@ def selected(test):
 
 def all_in(doc, test):
     return [o for o in doc.Objects if test(o)]
+
+
+def selecting(test, kind=None, least=1):
+    """A command's gate (its NEEDS): at least `least` picked objects passing `test`, or with `kind` ("Edge",
+    "Face"), at least `least` picked elements of that kind on such objects. Cheap: FreeCAD asks often."""
+    return functools.partial(_selecting, test, kind, least)
+
+
+def _selecting(test, kind, least, doc):
+    found = 0
+    for s in FreeCADGui.Selection.getSelectionEx():
+        if test(s.Object):
+            found += sum(1 for n in s.SubElementNames if n.startswith(kind)) if kind else 1
+    return found >= least
+
+
+def present(test):
+    """A command's gate: the document holds an object passing `test` (picked, or the only one, is the run's)."""
+    return functools.partial(_present, test)
+
+
+def _present(test, doc):
+    return any(test(o) for o in doc.Objects)
+
+
+def both(*gates):
+    return functools.partial(_all, gates)
+
+
+def _all(gates, doc):
+    return all(gate(doc) for gate in gates)
 
 
 def the_one(doc, test, what):
@@ -82,13 +114,20 @@ class Group:
 
 
 class Command:
-    """Active with an open document; subclasses give ICON, MENU, TIP and run(doc)."""
+    """Active with an open document whose selection or content fits NEEDS (greyed out otherwise, as FreeCAD's own
+    commands are); subclasses give ICON, MENU, TIP, NEEDS and run(doc), which says in one sentence what a selection
+    that passes the gate still lacks."""
+
+    NEEDS = None  # a gate on the active document (selecting, present, both: partials, so never bound as methods)
 
     def GetResources(self):
         return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
 
     def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
+        doc = FreeCAD.ActiveDocument
+        if doc is None or self.NEEDS is None:
+            return doc is not None
+        return self.NEEDS(doc)
 
     def Activated(self):
         """Runs the command; a mistake in the model (a ValueError: FabGuide's errors, the core's FormatError) is

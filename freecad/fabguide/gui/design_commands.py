@@ -8,7 +8,8 @@ import FreeCADGui
 from freecad.fabguide import cuboids, properties
 from freecad.fabguide.material import design, master_board
 from freecad.fabguide.gui import editing, viewproviders
-from freecad.fabguide.gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
+from freecad.fabguide.gui.command_base import (Command, all_in, ask_open, ask_save, present, selected, selecting,
+                                              tell, the_one, transaction)
 
 AXES = "xyz"
 
@@ -69,6 +70,7 @@ class DesignFromBoxes(Command):
     ICON, MENU = "FabGuide_FlatpackDesign.svg", "Flat-pack Design from Boxes"
     TIP = ("Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut "
            "from the selected or existing master boards; its usage updates as you edit")
+    NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = selected(cuboids.is_box)
@@ -122,6 +124,7 @@ def decorate(obj):
 class ExportFlatpack(Command):
     ICON, MENU = "FabGuide_ExportFlatpack.svg", "Export Flat-pack Design"
     TIP = "Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)"
+    NEEDS = present(design.is_design)
 
     def run(self, doc):
         chosen = the_one(doc, design.is_design, "flat-pack design to export")
@@ -141,6 +144,10 @@ class ExportFlatpack(Command):
 class EdgesCommand(Command):
     """A constraint on the lengths of picked box edges."""
     KIND, LEAST = "equal", 2
+
+    @property
+    def NEEDS(self):
+        return selecting(cuboids.is_box, "Edge", least=self.LEAST)
 
     def run(self, doc):
         edges = [(b, e) for b, e in picked() if e and e.startswith("Edge")]
@@ -190,6 +197,7 @@ class LengthRange(EdgesCommand):
 class EqualPosition(Command):
     ICON, MENU = "FabGuide_EqualPosition.svg", "Equal Position"
     TIP = "The picked faces of boards stay level with each other (same coordinate along their normal)"
+    NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def run(self, doc):
         faces = [(b, f) for b, f in picked() if f and f.startswith("Face")]
@@ -202,6 +210,10 @@ class EqualPosition(Command):
 class BoxesCommand(Command):
     """A constraint on picked boxes."""
     KIND, LEAST = "ground", 1
+
+    @property
+    def NEEDS(self):
+        return selecting(cuboids.is_box, least=self.LEAST)
 
     def run(self, doc):
         boxes = list(dict.fromkeys(b for b, _ in picked()))
@@ -254,6 +266,7 @@ def add_volume(doc, target, kind, at, size, on=None):
 class InnerVolume(Command):
     ICON, MENU = "FabGuide_InnerVolume.svg", "Inner Volume"
     TIP = "Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place"
+    NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = list(dict.fromkeys(b for b, _ in picked()))
@@ -271,6 +284,7 @@ class InnerVolume(Command):
 class OuterVolume(Command):
     ICON, MENU = "FabGuide_OuterVolume.svg", "Outer Volume"
     TIP = "An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place"
+    NEEDS = present(design.is_design)
 
     def run(self, doc):
         target = the_one(doc, design.is_design, "flat-pack design")
@@ -289,6 +303,7 @@ class Suggest(Command):
     ICON, MENU = "FabGuide_Suggest.svg", "Suggest"
     TIP = ("Search for design variations that keep your constraints and waste less material (or, for a design with "
            "Parameters, spreadsheet values within their ranges); preview and accept")
+    NEEDS = present(design.is_design)
 
     def run(self, doc):
         target = the_one(doc, design.is_design, "flat-pack design")

@@ -9,7 +9,8 @@ import FreeCADGui
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import joints, mechanism, parts, printable, relationships, workslike_file
 from freecad.fabguide.gui import editing, function_viewproviders as vp
-from freecad.fabguide.gui.command_base import Command, all_in, ask_open, ask_save, selected, tell, the_one, transaction
+from freecad.fabguide.gui.command_base import (Command, all_in, ask_open, ask_save, both, present, selected, selecting,
+                                              tell, the_one, transaction)
 
 
 def picks():
@@ -77,6 +78,7 @@ def usable(boxes):
 class NewMechanism(Command):
     ICON, MENU = "FabGuide_Mechanism.svg", "Mechanism from Boxes"
     TIP = "Make a mechanism; each selected box (Part::Box) becomes one of its parts"
+    NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = usable([o for o in selected(cuboids.is_box) if parts.part_of(doc.Objects, o) is None])
@@ -89,6 +91,7 @@ class NewMechanism(Command):
 class MakePart(Command):
     ICON, MENU = "FabGuide_Part.svg", "Part from Boxes"
     TIP = "Make one part of the selected boxes: they move together"
+    NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = usable(selected(cuboids.is_box))
@@ -105,6 +108,7 @@ class MakePart(Command):
 class MakeCavity(Command):
     ICON, MENU = "FabGuide_Cavity.svg", "Cavity"
     TIP = "Select a box of a part, then boxes to cut out of it: openings and compartments"
+    NEEDS = selecting(cuboids.is_box, least=2)
 
     def run(self, doc):
         boxes = selected(cuboids.is_box)
@@ -150,22 +154,26 @@ class AddJoint(Command):
 class AddHinge(AddJoint):
     ICON, MENU, KIND = "FabGuide_Hinge.svg", "Add Hinge", "hinge"
     TIP = "Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)"
+    NEEDS = selecting(cuboids.is_box, "Edge")
 
 
 class AddSlide(AddJoint):
     ICON, MENU, KIND = "FabGuide_Slide.svg", "Add Slide", "slide"
     TIP = "Pick a face of a box: its part slides along the face's normal"
+    NEEDS = selecting(cuboids.is_box, "Face")
 
 
 class AddSlidingHinge(AddJoint):
     ICON, MENU, KIND = "FabGuide_SlidingHinge.svg", "Add Sliding Hinge", "sliding_hinge"
     TIP = "Pick an edge and a face of a box: its part turns about the edge, which slides along the face's normal"
+    NEEDS = both(selecting(cuboids.is_box, "Edge"), selecting(cuboids.is_box, "Face"))
 
 
 class AddDoublePivot(Command):
     ICON, MENU = "FabGuide_DoublePivot.svg", "Add Double Pivot"
     TIP = ("Pick a point on a face of the moving part's box, then one on the face of the part it links to, in the "
            "same plane: a rigid link joins them (the solve places both pivots)")
+    NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def run(self, doc):
         points = [(s.Object, sub, point) for s in FreeCADGui.Selection.getSelectionEx() if cuboids.is_box(s.Object)
@@ -185,6 +193,7 @@ class AddFixedJoint(Command):
     ICON, MENU = "FabGuide_Fixed.svg", "Add Fixed Joint"
     TIP = ("Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints "
            "as one body with it")
+    NEEDS = selecting(cuboids.is_box, least=2)
 
     def run(self, doc):
         boxes = [o for o, _ in picks() if cuboids.is_box(o)]
@@ -205,8 +214,8 @@ class AddFixedJoint(Command):
 class AddRelationship(Command):
     """Pick boxes of the parts in order; the last picked is the covered / enclosing / supported part. The
     relationship holds in the configuration the mechanism shows (see Configurations)."""
-
     KIND = None
+    NEEDS = selecting(lambda o: cuboids.is_box(o) or parts.is_part(o), least=2)
 
     def check(self):
         """What is wrong with the selection, or None."""
@@ -258,6 +267,7 @@ class AddSupport(AddRelationship):
 class AddFlush(AddRelationship):
     ICON, MENU, KIND = "FabGuide_Flush.svg", "Add Flush", "flush"
     TIP = "Pick two faces of boxes: they lie in one plane"
+    NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def check(self):
         if len(picked_elements("Face")) != 2:
@@ -270,6 +280,7 @@ class AddFlush(AddRelationship):
 class AddGeometric(AddRelationship):
     ICON, MENU, KIND = "FabGuide_Geometric.svg", "Add Geometric", "geometric"
     TIP = "Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)"
+    NEEDS = selecting(cuboids.is_box, "Edge")
 
     def check(self):
         if len(picked_elements("Edge")) not in (1, 2):
@@ -289,6 +300,7 @@ class AddGeometric(AddRelationship):
 class Solve(Command):
     ICON, MENU = "FabGuide_Solve.svg", "Solve"
     TIP = "Solve the selected (or every) mechanism: the least change that makes its relationships hold"
+    NEEDS = present(mechanism.is_mechanism)
 
     def run(self, doc):
         mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
@@ -305,6 +317,7 @@ class Solve(Command):
 class Configurations(Command):
     ICON, MENU = "FabGuide_Configurations.svg", "Configurations"
     TIP = "Pose the joints: name configurations and move the mechanism between them"
+    NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, mechanism.is_mechanism))
@@ -343,6 +356,7 @@ def import_file(doc, path):
 class ExportWorkslike(Command):
     ICON, MENU = "FabGuide_Export.svg", "Export Works-like Model"
     TIP = "Write the selected mechanism as a *.workslike.json file (the CLI's fabguide solve reads it)"
+    NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
         return Configurations.IsActive(self)
@@ -364,6 +378,7 @@ class MakePrintable(Command):
     ICON, MENU = "FabGuide_Printable.svg", "Make Printable"
     TIP = ("Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, "
            "pivot links; checked along every motion")
+    NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
         return Configurations.IsActive(self)
@@ -386,6 +401,7 @@ class MakePrintable(Command):
 class ExportPrintable(Command):
     ICON, MENU = "FabGuide_ExportPrintable.svg", "Export Printable"
     TIP = "Write the selected printable as STL, 3MF and STEP: the assembly and one file per body"
+    NEEDS = present(printable.is_printable)
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, printable.is_printable))

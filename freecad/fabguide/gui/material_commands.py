@@ -5,10 +5,10 @@ import os
 import FreeCAD
 import FreeCADGui
 
-from freecad.fabguide import properties
+from freecad.fabguide import preferences, properties
 from freecad.fabguide.material import board, cam, layout, master_board, techdraw
 from freecad.fabguide.gui import editing, viewproviders
-from freecad.fabguide.gui.command_base import Command, all_in, selected, tell, the_one, transaction
+from freecad.fabguide.gui.command_base import Command, all_in, present, selected, selecting, tell, the_one, transaction
 
 
 def first_thickness(doc):
@@ -32,6 +32,7 @@ class NewMasterBoard(Command):
 class MakeBoard(Command):
     ICON, MENU = "FabGuide_Board.svg", "Make Board"
     TIP = "Make a board from each selected sketch or planar face, as thick as the master boards"
+    NEEDS = selecting(lambda o: hasattr(o, "Shape"))
 
     def run(self, doc):
         picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() for sub in (s.SubElementNames or [None])
@@ -39,7 +40,7 @@ class MakeBoard(Command):
         if not picks:
             return tell("Select sketches or planar faces first.")
         masters = all_in(doc, master_board.is_master_board)
-        thickness = masters[0].Thickness.Value if masters else 18
+        thickness = masters[0].Thickness.Value if masters else preferences.get("SheetThickness")
         with transaction(doc, "Make board"):
             made = [board.create(doc, source, board.element_name(sub) if sub else None, thickness,
                                  label=source.Label + " board") for source, sub in picks]
@@ -49,6 +50,7 @@ class MakeBoard(Command):
 class BoardsFromSolids(Command):
     ICON, MENU = "FabGuide_BoardsFromSolids.svg", "Boards from Solids"
     TIP = "Turn each selected thin solid into a board, detecting its thickness and outline"
+    NEEDS = selecting(lambda o: hasattr(o, "Shape") and not board.is_board(o))
 
     def run(self, doc):
         solids = selected(lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))
@@ -64,6 +66,7 @@ class BoardsFromSolids(Command):
 class BandEdges(Command):
     ICON, MENU = "FabGuide_BandEdges.svg", "Band Edges"
     TIP = "Glue edge banding on the picked edge faces of boards (asks for the band's name; empty removes it)"
+    NEEDS = selecting(board.is_board, "Face")
     last = "PVC 1 mm"  # the band named last, offered again
 
     def run(self, doc):
@@ -101,6 +104,7 @@ def finish_boards(doc, made):
 class MakeLayout(Command):
     ICON, MENU = "FabGuide_Layout.svg", "Layout"
     TIP = "Lay the selected (or all) boards out on the master boards and show the material usage"
+    NEEDS = present(board.is_board)
 
     def run(self, doc):
         boards = selected(board.is_board) or all_in(doc, board.is_board)
@@ -121,9 +125,7 @@ class ExportCutSheets(Command):
     ICON, MENU = "FabGuide_ExportCutSheets.svg", "Export Cut Sheets"
     TIP = ("Write SVG and DXF cut sheets per master board, a CSV cut list, the shop's PDF report and part labels "
            "for the selected layout")
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, layout.is_layout))
+    NEEDS = present(layout.is_layout)
 
     def run(self, doc):
         from PySide import QtGui
@@ -146,6 +148,7 @@ class TechDrawPages(Command):
     ICON, MENU = "FabGuide_TechDrawPages.svg", "TechDraw Pages"
     TIP = ("Make TechDraw pages of the selected layout's shop report: a page per master board (parts numbered and "
            "sized, grain, edge banding, saw cuts), then the cut list and the totals")
+    NEEDS = present(layout.is_layout)
 
     def IsActive(self):
         return ExportCutSheets.IsActive(self)
@@ -166,6 +169,7 @@ class MakeCamJob(Command):
     ICON, MENU = "FabGuide_CamJob.svg", "Make CAM Job"
     TIP = ("Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, "
            "engraved labels) with your tool and post-processor, and write its G-code")
+    NEEDS = present(layout.is_layout)
 
     def IsActive(self):
         return ExportCutSheets.IsActive(self)
