@@ -67,6 +67,8 @@ def master_board_and_layout_open_the_usage_panel():
     colours = layout.ViewObject.DiffuseColor
     assert len(colours) == len(layout.Shape.Faces) and colours[0] != colours[-1], "sheets and parts coloured"
     print("screenshot: " + guitest.screenshot("material_layout_panel"))
+    for path in guitest.screenshots_at_screen_sizes("material_layout"):
+        print("screenshot: " + path)
     print("3-D view: " + guitest.view_image("material_layout_3d"))
 
 

@@ -159,6 +159,8 @@ def suggest_shows_three_suggestions_and_applies_one_as_one_step():
     panel.slider.setValue(panel.slider.maximum())
     QtGui.QApplication.processEvents()
     print("screenshot: " + guitest.screenshot("suggest_panel"))
+    for path in guitest.screenshots_at_screen_sizes("suggest"):
+        print("screenshot: " + path)
     print("3-D view: " + guitest.view_image("suggest_3d", compared=False))
     undo_steps = doc.UndoCount
     panel.accept()

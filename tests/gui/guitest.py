@@ -69,6 +69,19 @@ def isometric(direction="Isometric"):
     FreeCADGui.updateGui()
 
 
+def screenshots_at_screen_sizes(name):
+    """The FreeCAD window as users see it on a laptop (1366 x 768) and a desktop (1920 x 1080): NAME_1366.png and
+    NAME_1920.png; returns their paths. The window keeps the last size."""
+    window = FreeCADGui.getMainWindow()
+    window.showNormal()
+    paths = []
+    for width, height in ((1366, 768), (1920, 1080)):
+        window.setGeometry(0, 0, width, height)
+        settle(0.5)
+        paths.append(screenshot("{}_{}".format(name, width)))
+    return paths
+
+
 def screenshot(name, window=None):
     """Grab the FreeCAD window (panels, toolbars), or another top-level `window` (a dialog), into
     $FABGUIDE_SCREENSHOTS/name.png; returns the path. The 3-D view is OpenGL, which a window grab leaves blank:

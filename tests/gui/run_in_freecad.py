@@ -37,8 +37,11 @@ def main(script):
     bootstrap = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bootstrap.py")
     with tempfile.TemporaryDirectory() as folder:
         log_file = os.path.join(folder, "freecad.log")
-        # FreeCAD 0.20's GUI takes its own options only after the file to run.
-        command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", bootstrap, "--log-file", log_file]
+        # FreeCAD 0.20's GUI takes its own options only after the file to run. Each test has its own user settings
+        # (FreeCAD writes them when it quits, and when a preferences page is accepted): tests running at once in
+        # one HOME would otherwise see each other's.
+        command = ["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", "freecad", bootstrap, "--log-file", log_file,
+                   "--user-cfg", os.path.join(folder, "user.cfg")]
         try:
             run = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                                  timeout=TIMEOUT)
