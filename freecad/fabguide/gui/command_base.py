@@ -1,7 +1,6 @@
 """What every FabGuide command shares: one undo step per command, telling the user about mistakes, reading
 the selection."""
 import contextlib
-import functools
 import os
 
 import FreeCAD
@@ -38,35 +37,36 @@ def all_in(doc, test):
     return [o for o in doc.Objects if test(o)]
 
 
+class Gate:
+    """A command's gate (its NEEDS), a test of the active document. An object rather than a function: as a class
+    attribute, a function would be bound as a method (and a functools.partial will be, from Python 3.14)."""
+
+    def __init__(self, test):
+        self.test = test
+
+    def __call__(self, doc):
+        return self.test(doc)
+
+
 def selecting(test, kind=None, least=1):
-    """A command's gate (its NEEDS): at least `least` picked objects passing `test`, or with `kind` ("Edge",
-    "Face"), at least `least` picked elements of that kind on such objects. Cheap: FreeCAD asks often."""
-    return functools.partial(_selecting, test, kind, least)
-
-
-def _selecting(test, kind, least, doc):
-    found = 0
-    for s in FreeCADGui.Selection.getSelectionEx():
-        if test(s.Object):
-            found += sum(1 for n in s.SubElementNames if n.startswith(kind)) if kind else 1
-    return found >= least
+    """At least `least` picked objects passing `test`, or with `kind` ("Edge", "Face"), at least `least` picked
+    elements of that kind on such objects. Cheap: FreeCAD asks often."""
+    def ready(doc):
+        found = 0
+        for s in FreeCADGui.Selection.getSelectionEx():
+            if test(s.Object):
+                found += sum(1 for n in s.SubElementNames if n.startswith(kind)) if kind else 1
+        return found >= least
+    return Gate(ready)
 
 
 def present(test):
-    """A command's gate: the document holds an object passing `test` (picked, or the only one, is the run's)."""
-    return functools.partial(_present, test)
-
-
-def _present(test, doc):
-    return any(test(o) for o in doc.Objects)
+    """The document holds an object passing `test` (the picked one, or the only one, is what the command runs on)."""
+    return Gate(lambda doc: any(test(o) for o in doc.Objects))
 
 
 def both(*gates):
-    return functools.partial(_all, gates)
-
-
-def _all(gates, doc):
-    return all(gate(doc) for gate in gates)
+    return Gate(lambda doc: all(gate(doc) for gate in gates))
 
 
 def the_one(doc, test, what):
@@ -118,7 +118,7 @@ class Command:
     commands are); subclasses give ICON, MENU, TIP, NEEDS and run(doc), which says in one sentence what a selection
     that passes the gate still lacks."""
 
-    NEEDS = None  # a gate on the active document (selecting, present, both: partials, so never bound as methods)
+    NEEDS = None  # a Gate on the active document (selecting, present, both); None: any open document
 
     def GetResources(self):
         return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
