@@ -6,7 +6,7 @@ import json
 import FreeCAD
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import cuboids, properties, references
+from freecad.fabguide import background, cuboids, properties, references
 from freecad.fabguide.function import configuration, joints, parts, relationships
 
 SATISFIED = "Satisfied"
@@ -103,7 +103,7 @@ def solve(obj):
     edited = edits(obj)
     data = model(obj, edited)
     try:
-        solved = fabguide_core.solve(data)
+        solved = background.run("Solving " + obj.Label, lambda cancel: fabguide_core.solve(data), stoppable=False)
     except fabguide_core.FormatError as error:
         raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
     report = solved["report"]

@@ -11,7 +11,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import cuboids, properties, references
+from freecad.fabguide import background, cuboids, properties, references
 from freecad.fabguide.material import master_board
 
 SATISFIED = "Satisfied"
@@ -333,13 +333,19 @@ def lay_out_satisfied(obj, edited, note):
     """The layout; when the boards break a constraint (one just added), they first move the least so that every
     constraint holds (thesis 5.3.5.2 with nothing to keep). Raises ConstraintError when they cannot."""
     try:
-        return fabguide_core.lay_out_design(edited), note
+        return laid_out(obj, edited), note
     except fabguide_core.ConstraintError:
         satisfied = fabguide_core.satisfy_design(edited)
         if not satisfied["solved"]:
             raise
         adopt(obj, edited, satisfied["parts"], dict(edited))
-        return fabguide_core.lay_out_design(edited), note + "; boards moved so that every constraint holds"
+        return laid_out(obj, edited), note + "; boards moved so that every constraint holds"
+
+
+def laid_out(obj, edited):
+    """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py)."""
+    return background.run("Laying out " + obj.Label, lambda cancel: fabguide_core.lay_out_design(edited),
+                          stoppable=False)
 
 
 def absorb(obj, edited, start):
@@ -350,7 +356,7 @@ def absorb(obj, edited, start):
         return None, ""
     adopt(obj, edited, absorbed["parts"], start)
     try:
-        laid = fabguide_core.lay_out_design(edited)
+        laid = laid_out(obj, edited)
     except fabguide_core.PackingError:
         return None, ""
     return laid, "; edit absorbed: " + ", ".join(absorbed["snapped"])
