@@ -17,6 +17,11 @@ def adopt(doc):
         cls = next((cls for test, cls in function_viewproviders.CLASSES + viewproviders.CLASSES if test(obj)), None)
         if cls is not None:
             cls(shown)
+            if not hasattr(shown.Proxy, "Object"):  # FreeCAD attaches a view provider once, as it is made
+                shown.Proxy.attach(shown)
+                mode = getattr(shown.Proxy, "getDefaultDisplayMode", lambda: None)()
+                if mode in shown.listDisplayModes():
+                    shown.DisplayMode = mode
 
 
 class Opened:
