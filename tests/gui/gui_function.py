@@ -124,6 +124,9 @@ def the_relationship_panel_colours_the_faces():
     form.findChild(QtGui.QPushButton, "add").click()  # nothing picked: it says what to do
     status = form.findChild(QtGui.QLabel, "status").text()
     assert "Pick two faces" in status and lists[0].count() == 1, status
+    Gui.Selection.addSelection(lid)  # the panel's selection gate: faces of boxes only
+    Gui.Selection.addSelection(lid, "Edge1")
+    assert not Gui.Selection.getSelectionEx(), "only faces of boxes can be picked while pairs are edited"
     Gui.Selection.addSelection(lid, "Face1")
     Gui.Selection.addSelection(body, "Face1")
     form.findChild(QtGui.QPushButton, "add").click()  # the two picked faces, first to second
@@ -138,6 +141,9 @@ def the_relationship_panel_colours_the_faces():
                                     if b.text() in ("Cancel", "&Cancel")][0].click()
     QtGui.QApplication.processEvents()
     assert len({c[:3] for c in lid.ViewObject.DiffuseColor}) == 1, "colours restored"
+    Gui.Selection.addSelection(lid)
+    assert Gui.Selection.getSelection() == [lid], "the gate goes with the panel"
+    Gui.Selection.clearSelection()
 
 
 def a_conflict_turns_the_parts_red_and_undo_takes_it_back():

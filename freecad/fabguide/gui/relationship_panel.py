@@ -16,6 +16,13 @@ from freecad.fabguide.gui.function_commands import picked_elements
 BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
 
 
+class FacesOfBoxes:
+    """A selection gate while pairs are edited: only faces of boxes can be picked, as the pairs need."""
+
+    def allow(self, doc, obj, sub):
+        return cuboids.is_box(obj) and sub.startswith("Face")
+
+
 class RelationshipPanel:
     def __init__(self, rel):
         self.rel, self.coloured, self.changes = rel, set(), []
@@ -29,6 +36,8 @@ class RelationshipPanel:
                                  (self.form.infer, self.infer)):
                 button.clicked.connect(slot)
             self.pairs.itemChanged.connect(self.colour)
+            self.gate = FacesOfBoxes()
+            FreeCADGui.Selection.addSelectionGate(self.gate)
         rel.Document.openTransaction("Edit " + rel.Label)
         self.fill()
 
@@ -120,6 +129,10 @@ class RelationshipPanel:
                 pass
         self.coloured = set()
 
+    def abandon(self):
+        if self.pairs is not None:
+            FreeCADGui.Selection.removeSelectionGate()
+
     def accept(self):
         if self.pairs is not None and self.texts() != relationships.pair_texts(self.rel):
             try:
@@ -129,6 +142,7 @@ class RelationshipPanel:
                 self.status.setText("<b style='color:#b22222'>{}</b>".format(error))
                 return False
             self.solve()
+        self.abandon()
         self.uncolour()
         self.rel.Document.commitTransaction()
         close_panel(self.rel.Document)
@@ -136,6 +150,7 @@ class RelationshipPanel:
         return True
 
     def reject(self):
+        self.abandon()
         self.uncolour()
         self.rel.Document.abortTransaction()
         self.rel.Document.recompute()
