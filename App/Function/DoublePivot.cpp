@@ -358,7 +358,11 @@ std::optional<std::pair<double, double>> leastChange(Placement& p, const Range& 
         alglib::minnlcsetbc(state, lower, upper);
         alglib::minnlcsetnlc(state, static_cast<int>(p.poses.size()), 0);
         alglib::minnlcsetcond(state, 1e-10, 200);
+#ifdef FABGUIDE_ALGLIB_SLP
         alglib::minnlcsetalgoslp(state);  // 3x faster than SQP on these two-variable problems
+#else
+        alglib::minnlcsetalgosqp(state);  // ALGLIB 4 has no SLP
+#endif
         alglib::minnlcoptimize(state, evaluate, nullptr, &p);
         alglib::minnlcresults(state, result, report);
     } catch (const alglib::ap_error& e) {  // no third-party exception leaves the core
