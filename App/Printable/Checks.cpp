@@ -4,6 +4,8 @@
 #include "Printable/Joints.h"
 #include "Printable/Motion.h"
 
+#include <cassert>  // FCL 0.7's headers use assert without including it: with GCC 15 (Debian 14) nothing else does
+
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/distance.h>
 #include <BRepBndLib.hxx>
