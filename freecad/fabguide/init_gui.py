@@ -11,4 +11,4 @@ from freecad.fabguide.gui.workbench import FabGuideWorkbench
 
 FreeCADGui.addWorkbench(FabGuideWorkbench())
 FreeCADGui.addPreferencePage(os.path.join(resources.RESOURCES, "ui", "Preferences.ui"), "FabGuide")
-FreeCADGui.addIcon("preferences-fabguide", resources.icon("FabGuide.svg"))  # the page's group icon
+FreeCADGui.addIconPath(os.path.dirname(resources.icon("FabGuide.svg")))  # holds the page's preferences-fabguide.svg

@@ -36,6 +36,8 @@ def workbench():
         from Path.Dressup import DogboneII as Dogbone, Tags
         from Path.Tool import Bit, Controller
         import Path.Preferences as Preferences
+        import Path.Tool as tools
+        ToolBit = getattr(tools, "ToolBit", None)  # FreeCAD 1.1
     except ImportError:
         try:
             from PathScripts import (PathJob as Job, PathStock as Stock, PathDrilling as Drilling,
@@ -43,11 +45,12 @@ def workbench():
                                      PathDressupDogbone as Dogbone, PathDressupHoldingTags as Tags,
                                      PathToolBit as Bit, PathToolController as Controller,
                                      PathPreferences as Preferences)
+            ToolBit = None
         except ImportError as error:
             raise CamError("FreeCAD's CAM (Path) workbench is not installed: {}".format(error))
     return types.SimpleNamespace(Job=Job, Stock=Stock, Drilling=Drilling, Engrave=Engrave, Profile=Profile,
                                  Dogbone=Dogbone, Tags=Tags, Bit=Bit, Controller=Controller,
-                                 Preferences=Preferences)
+                                 Preferences=Preferences, ToolBit=ToolBit)
 
 
 def library_bits():
@@ -58,11 +61,13 @@ def library_bits():
     return {name: os.path.join(folder, name) for name in sorted(os.listdir(folder))} if os.path.isdir(folder) else {}
 
 
-def bit_diameter(cam, bit):
-    """The diameter (mm) of the tool bit file `bit`; CamError if it has none."""
+def bit_diameter(bit):
+    """The diameter (mm) of the tool bit file `bit` (FreeCAD's *.fctb JSON, the same in 0.20 to 1.1); CamError if
+    it has none."""
     try:
-        return FreeCAD.Units.Quantity(cam.Bit.Declaration(bit)["parameter"]["Diameter"]).Value
-    except (KeyError, ValueError, OSError) as error:
+        with open(bit, encoding="utf-8") as f:
+            return FreeCAD.Units.Quantity(json.load(f)["parameter"]["Diameter"]).Value
+    except (KeyError, TypeError, ValueError, OSError) as error:
         raise CamError("tool bit file '{}' has no diameter ({})".format(bit, error))
 
 
@@ -87,7 +92,7 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE):
     bit = bit or library_bits().get(BITS["end mill"])
     if not bit or not os.path.isfile(bit):
         raise CamError("tool bit file '{}' not found".format(bit))
-    diameter = bit_diameter(cam, bit)
+    diameter = bit_diameter(bit)
     if lay.Kerf.Value + lay.Spacing.Value < diameter - 1e-9:
         raise CamError("Layout '{}': its parts are {:g} mm apart (Kerf {:g} + Spacing {:g} mm), too close for the "
                        "{:g} mm tool: set its Kerf to the tool's diameter".format(
@@ -105,6 +110,9 @@ def plain_bits(cam):
     """FreeCAD's GUI makes each tool bit in an undo step of its own, which would split Make CAM Job into eight;
     its factory is set aside meanwhile. Its module is loaded first: loading it installs that factory (in 1.0
     only when a tool bit is first shown)."""
+    if not hasattr(cam.Bit, "Factory"):  # FreeCAD 1.1 makes tool bits without a factory
+        yield
+        return
     if FreeCAD.GuiUp:
         try:
             import Path.Tool.Gui.Bit  # noqa: F401  (FreeCAD 1.0)
@@ -202,7 +210,7 @@ def set_stock(cam, doc, job, sheet):
 
 def tool(cam, job, controller, bit_file, number, feed, spindle, diameter=None):
     """A tool controller of the job with the bit of `bit_file` (its diameter changed to `diameter` if given)."""
-    bit = cam.Bit.Factory.CreateFrom(bit_file)
+    bit = tool_bit(cam, job.Document, bit_file)
     if diameter:
         bit.Diameter = diameter
         bit.Label = "{:g} mm drill".format(diameter)
@@ -222,6 +230,13 @@ def tool(cam, job, controller, bit_file, number, feed, spindle, diameter=None):
     if getattr(bit, "ViewObject", None):
         bit.ViewObject.Visibility = False
     return controller
+
+
+def tool_bit(cam, doc, bit_file):
+    """The tool bit document object of `bit_file`: by FreeCAD 0.20's and 1.0's factory, or 1.1's ToolBit asset."""
+    if hasattr(cam.Bit, "Factory"):
+        return cam.Bit.Factory.CreateFrom(bit_file)
+    return cam.ToolBit.from_file(bit_file).attach_to_doc(doc=doc)
 
 
 def profiles(cam, job, base, sheet, faces, mill, lay):

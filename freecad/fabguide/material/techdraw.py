@@ -10,7 +10,9 @@ import FreeCAD
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide.material import layout
 
-TEMPLATE = ("Mod", "TechDraw", "Templates", "A4_Landscape_blank.svg")
+# TechDraw's blank A4 page: in Templates/ up to FreeCAD 1.0, in Templates/ISO/ from 1.1.
+TEMPLATES = (("Mod", "TechDraw", "Templates", "A4_Landscape_blank.svg"),
+             ("Mod", "TechDraw", "Templates", "ISO", "A4_Landscape_blank.svg"))
 PAGE = (297.0, 210.0)  # A4 landscape, mm: the report's pages
 
 
@@ -32,7 +34,10 @@ def make_pages(lay):
         for name in names:  # removing a page may take its template with it
             if doc.getObject(name):
                 doc.removeObject(name)
-    template_path = os.path.join(FreeCAD.getResourceDir(), *TEMPLATE)
+    template_path = next((path for path in (os.path.join(FreeCAD.getResourceDir(), *t) for t in TEMPLATES)
+                          if os.path.isfile(path)), None)
+    if template_path is None:
+        raise layout.LayoutError("TechDraw's blank A4 template is not installed with this FreeCAD")
     svgs = fabguide_core.report_svgs(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson), lay.Label)
     pages = []
     for number, text in enumerate(svgs, start=1):
