@@ -101,7 +101,8 @@ def run(seed, out):
             cam.post(job, stem + ".nc")
             roles = {}
             for controller in job.Tools.Group:
-                shape = os.path.basename(str(getattr(controller.Tool, "BitShape", ""))).split(".")[0]
+                bit = controller.Tool  # its shape file: BitShape up to FreeCAD 1.0, ShapeID from 1.1
+                shape = os.path.basename(str(getattr(bit, "BitShape", "") or getattr(bit, "ShapeID", ""))).split(".")[0]
                 roles.setdefault(shape, []).append(controller.ToolNumber)
             with open(stem + ".json", "w") as spec:
                 json.dump({"seed": seed, "post": post, "thickness": sheet["thickness"], "radius": diameter / 2,

@@ -162,4 +162,4 @@ class ConfigurationsPanel:
         self.poser.clear()
 
     def getStandardButtons(self):
-        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+        return editing.OK_CANCEL

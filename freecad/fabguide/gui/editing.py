@@ -2,7 +2,12 @@
 re-activates the document of the current selection after a new document is made."""
 import FreeCAD
 import FreeCADGui
-from PySide import QtCore
+from PySide import QtCore, QtGui
+
+# A task panel's OK and Cancel buttons as the number FreeCAD takes: PySide6 (FreeCAD 1.1) makes the flags an enum
+# that int() refuses.
+OK_CANCEL = QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel
+OK_CANCEL = int(getattr(OK_CANCEL, "value", OK_CANCEL))
 
 
 def edit(obj, mode=0):

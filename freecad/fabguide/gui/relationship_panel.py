@@ -9,7 +9,7 @@ from PySide import QtCore, QtGui
 
 from freecad.fabguide import cuboids, references
 from freecad.fabguide.function import mechanism, parts, relationships
-from freecad.fabguide.gui import resources
+from freecad.fabguide.gui import editing, resources
 from freecad.fabguide.gui.configurations_panel import close_panel
 from freecad.fabguide.gui.function_commands import picked_elements
 
@@ -158,4 +158,4 @@ class RelationshipPanel:
         return True
 
     def getStandardButtons(self):
-        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+        return editing.OK_CANCEL
