@@ -3,8 +3,11 @@
 #include "IO/Json.h"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <vector>
@@ -59,10 +62,21 @@ private:
     sigset_t before_;
 };
 
+/// Whether `path` is free to be replaced by a file: nothing there, a regular file, or a link (replaced
+/// itself, never followed). A device, pipe, socket or folder is not: as root, renaming over /dev/null would
+/// replace it.
+bool replaceable(const std::string& path)
+{
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::symlink_status(path, error);
+    return !std::filesystem::exists(status) || std::filesystem::is_regular_file(status) ||
+           std::filesystem::is_symlink(status);
+}
+
 /// Renames `file` into place; false if that failed (the temporary is then removed).
 bool rename(const File& file)
 {
-    if (std::rename(file.temporary.c_str(), file.path.c_str()) == 0)
+    if (replaceable(file.path) && std::rename(file.temporary.c_str(), file.path.c_str()) == 0)
         return true;
     std::remove(file.temporary.c_str());
     return false;
@@ -84,11 +98,17 @@ extern "C" void onInterrupt(int signal)
     _exit(128 + signal);
 }
 
+/// A new empty file beside `path` under a name no one can guess, made by this call alone (mkstemp: O_CREAT |
+/// O_EXCL, so a link planted in a shared folder is never written through).
 std::string temporaryFor(const std::string& path)
 {
     const std::filesystem::path p(path);
-    return (p.parent_path() / ("." + p.filename().string() + ".partial-" + std::to_string(getpid())))
-        .string();
+    std::string name = (p.parent_path() / ("." + p.filename().string() + ".partial-XXXXXX")).string();
+    const int fd = mkstemp(name.data());
+    if (fd < 0)
+        throw FormatError(path + ": cannot write beside it (" + std::strerror(errno) + ")");
+    close(fd);
+    return name;
 }
 
 }  // namespace
@@ -99,6 +119,8 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     if (!folder.empty() && !std::filesystem::create_directories(folder, error) && error)
         throw FormatError(folder.string() + ": cannot create folder (" + error.message() + ")");
+    if (!replaceable(path))
+        throw FormatError(path + ": not a file (a device, pipe or folder is never replaced)");
     const File file{temporaryFor(path), path};
     {
         Changing changing;
@@ -152,8 +174,9 @@ void OutputBatch::commit()
     Changing changing;
     for (const File& file : pending().files)
         if (file.written && !rename(file)) {
+            const std::string path = file.path;  // removeAll frees `file`
             removeAll();
-            throw FormatError(file.path + ": cannot write file");
+            throw FormatError(path + ": cannot write file");
         }
     pending().files.clear();
 }

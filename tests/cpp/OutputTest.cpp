@@ -1,0 +1,94 @@
+#include "IO/Json.h"
+#include "IO/Output.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+using namespace fabguide::io;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A fresh folder of its own for each test.
+fs::path folder(const std::string& name)
+{
+    const fs::path path =
+        fs::temp_directory_path() / ("fabguide-output-" + name + "-" + std::to_string(getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+    return path;
+}
+
+void writeText(const std::string& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST(Output, TheTemporaryIsNewAndUnguessableSoAPlantedLinkIsNeverWrittenThrough)
+{
+    // A link planted where 0.1 put its temporary (.NAME.partial-PID) in a shared folder, pointing outside it.
+    const fs::path shared = folder("shared"), outside = folder("outside");
+    writeText((outside / "victim").string(), "kept");
+    fs::create_symlink(outside / "victim", shared / (".out.json.partial-" + std::to_string(getpid())));
+    std::string used;
+    writeAtomically((shared / "out.json").string(), [&](const std::string& temporary) {
+        used = temporary;
+        struct stat made {};
+        ASSERT_EQ(lstat(temporary.c_str(), &made), 0);
+        EXPECT_TRUE(S_ISREG(made.st_mode)) << "made as a plain file before it is written";
+        writeText(temporary, "new");
+    });
+    EXPECT_EQ(readText(outside / "victim"), "kept");
+    EXPECT_EQ(readText(shared / "out.json"), "new");
+    EXPECT_NE(used, (shared / (".out.json.partial-" + std::to_string(getpid()))).string());
+    EXPECT_FALSE(fs::exists(used));
+}
+
+TEST(Output, ADeviceOrPipeIsNeverReplaced)
+{
+    const fs::path dir = folder("pipe");
+    const fs::path pipe = dir / "fifo";
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    try {
+        writeAtomically(pipe.string(), [](const std::string& temporary) { writeText(temporary, "x"); });
+        FAIL() << "a pipe was replaced";
+    } catch (const FormatError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(pipe.string() + ": not a file", 0), 0u) << e.what();
+    }
+    EXPECT_TRUE(fs::is_fifo(pipe));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "no temporary left";
+}
+
+TEST(Output, ARenameThatFailsAtCommitNamesItsFileAndLeavesNoTemporary)
+{
+    // The second file's place becomes a folder after it is written: its rename fails when the batch commits.
+    // The error names it (0.1 read the name from a freed list: garbage, or a use-after-free under ASan).
+    const fs::path dir = folder("commit");
+    const std::string first = (dir / "a.svg").string(), second = (dir / "b.svg").string();
+    OutputBatch batch;
+    writeAtomically(first, [](const std::string& temporary) { writeText(temporary, "a"); });
+    writeAtomically(second, [](const std::string& temporary) { writeText(temporary, "b"); });
+    fs::create_directories(fs::path(second) / "in-the-way");
+    try {
+        batch.commit();
+        FAIL() << "a rename onto a folder succeeded";
+    } catch (const FormatError& e) {
+        EXPECT_EQ(std::string(e.what()), second + ": cannot write file");
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << entry.path();
+}
