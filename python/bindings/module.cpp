@@ -1,5 +1,5 @@
 // fabguide_core: Python bindings of the C++ core. Plain data crosses this boundary
-// (numbers, lists, dicts); FreeCAD document objects in python/fabguide call into it.
+// (numbers, lists, dicts); FreeCAD document objects in freecad/fabguide call into it.
 #include "Bindings.h"
 #include "Core/Version.h"
 
