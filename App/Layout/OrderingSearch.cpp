@@ -24,7 +24,7 @@ LayoutCost cost(const GridLayout& layout, const std::vector<BoardStock>& stock, 
 
 double secondsUntil(std::chrono::steady_clock::time_point deadline)
 {
-    return std::max(0.0, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
+    return Deadline(deadline).secondsLeft();
 }
 
 std::chrono::steady_clock::duration seconds(double s)

@@ -5,25 +5,25 @@ import FreeCAD
 
 PATH = "User parameter:BaseApp/Preferences/Mod/FabGuide"
 
-# name: (default, what it is); the names are the page's prefEntry names.
+# The defaults, by the page's prefEntry names.
 DEFAULTS = {
-    "Kerf": (0.2, "a new Layout's kerf, mm"),
-    "Spacing": (2.0, "a new Layout's spacing, mm"),
-    "Trim": (5.0, "a new Layout's edge trim, mm"),
-    "LayoutTimeLimit": (60.0, "a new Layout's time limit, s"),
-    "SheetWidth": (2440.0, "a new master board's width, mm"),
-    "SheetHeight": (1220.0, "a new master board's height, mm"),
-    "SheetThickness": (18.0, "a new master board's thickness when no board says it, mm"),
-    "Gap": (0.4, "a new Printable's gap, mm"),
-    "BuildVolumeX": (250.0, "the printer's build volume, width, mm"),
-    "BuildVolumeY": (210.0, "the printer's build volume, depth, mm"),
-    "BuildVolumeZ": (210.0, "the printer's build volume, height, mm"),
+    "Kerf": 0.2,  # a new Layout's, mm
+    "Spacing": 2.0,
+    "Trim": 5.0,
+    "LayoutTimeLimit": 60.0,  # s
+    "SheetWidth": 2440.0,  # a new master board's, mm
+    "SheetHeight": 1220.0,
+    "SheetThickness": 18.0,  # when no board gives it
+    "Gap": 0.4,  # a new Printable's, mm
+    "BuildVolumeX": 250.0,  # the printer's, mm
+    "BuildVolumeY": 210.0,
+    "BuildVolumeZ": 210.0,
 }
 
 
 def get(name):
     """The user's value of preference `name`, or its default; a value that cannot be right (not above 0) is not
     used."""
-    default = DEFAULTS[name][0]
+    default = DEFAULTS[name]
     value = FreeCAD.ParamGet(PATH).GetFloat(name, default)
     return value if value > 0 else default

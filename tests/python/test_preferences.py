@@ -34,7 +34,7 @@ def test_the_page_stores_every_preference_under_the_path_read(source_dir):
     for name, box in entries.items():
         assert "User parameter:BaseApp/Preferences/" + box.find("property[@name='prefPath']/cstring").text == \
             preferences.PATH
-        assert float(box.find("property[@name='value']/double").text) == preferences.DEFAULTS[name][0], name
+        assert float(box.find("property[@name='value']/double").text) == preferences.DEFAULTS[name], name
 
 
 def test_new_objects_start_with_the_preferences(chosen, source_dir):

@@ -14,12 +14,6 @@ from freecad.fabguide.gui.posing import Poser
 NEW = "New configuration"
 
 
-def close_panel(doc):
-    """Leaves edit mode in doc if the panel came from there (its unsetEdit closes the dialog), else closes it."""
-    if not editing.end_edit(doc):
-        FreeCADGui.Control.closeDialog()
-
-
 def quantity_box(unit, largest):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
     the user's units."""
@@ -154,7 +148,7 @@ class ConfigurationsPanel:
 
     def close(self):
         self.cleanup()
-        close_panel(self.mech.Document)
+        editing.close_panel(self.mech.Document)
 
     def cleanup(self):
         """Stops the animation and removes the preview from the 3-D view (idempotent)."""

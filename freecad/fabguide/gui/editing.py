@@ -24,6 +24,12 @@ def end_edit(doc):
     return True
 
 
+def close_panel(doc):
+    """Leaves edit mode in doc if the panel came from there (its unsetEdit closes the dialog), else closes it."""
+    if not end_edit(doc):
+        FreeCADGui.Control.closeDialog()
+
+
 def show(panel, doc):
     """Shows task panel `panel`, which works on App document `doc`. It closes when the document closes (nothing is
     left to work on) or an undo or redo changes the document under it (it would show what is no longer there);
@@ -61,8 +67,9 @@ class Watch:
         if not showing(self.panel):
             return
         getattr(self.panel, "abandon", lambda: None)()
-        if not closing:
-            end_edit(doc)
-        FreeCADGui.Control.closeDialog()
+        if closing:  # its GUI document goes with it: no edit mode to leave
+            FreeCADGui.Control.closeDialog()
+        else:
+            close_panel(doc)
         FreeCAD.Console.PrintMessage("FabGuide: the task panel closed: its document {}\n".format(
             "closed" if closing else "changed by undo or redo"))

@@ -10,7 +10,6 @@ from PySide import QtCore, QtGui
 from freecad.fabguide import cuboids, references
 from freecad.fabguide.function import mechanism, parts, relationships
 from freecad.fabguide.gui import editing, resources
-from freecad.fabguide.gui.configurations_panel import close_panel
 from freecad.fabguide.gui.function_commands import picked_elements
 
 BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
@@ -145,7 +144,7 @@ class RelationshipPanel:
         self.abandon()
         self.uncolour()
         self.rel.Document.commitTransaction()
-        close_panel(self.rel.Document)
+        editing.close_panel(self.rel.Document)
         FreeCAD.Console.PrintMessage("{}: {}\n".format(self.rel.Label, self.rel.Status))
         return True
 
@@ -154,7 +153,7 @@ class RelationshipPanel:
         self.uncolour()
         self.rel.Document.abortTransaction()
         self.rel.Document.recompute()
-        close_panel(self.rel.Document)
+        editing.close_panel(self.rel.Document)
         return True
 
     def getStandardButtons(self):
