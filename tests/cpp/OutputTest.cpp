@@ -47,7 +47,7 @@ TEST(Output, TheTemporaryIsNewAndUnguessableSoAPlantedLinkIsNeverWrittenThrough)
     std::string used;
     writeAtomically((shared / "out.json").string(), [&](const std::string& temporary) {
         used = temporary;
-        struct stat made {};
+        struct stat made = {};
         ASSERT_EQ(lstat(temporary.c_str(), &made), 0);
         EXPECT_TRUE(S_ISREG(made.st_mode)) << "made as a plain file before it is written";
         writeText(temporary, "new");
