@@ -5,7 +5,7 @@ import FreeCAD
 
 from freecad import fabguide
 
-HIDDEN, OUTPUT = 4, 8  # App::PropertyType flags
+READ_ONLY, HIDDEN, OUTPUT = 1, 4, 8  # App::PropertyType flags
 
 NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance")
 
@@ -109,21 +109,32 @@ class Proxy(Stateless):
         return "{} '{}': {} must be {}".format(self.NOUN, obj.Label, prop, must)
 
     def execute(self, obj):
-        """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError) is one plain
-        sentence in the report view and in the object's Error (its tree icon is marked), never a traceback;
-        `recompute` says it in the object's Status too, and clears the statuses it can no longer vouch for."""
+        """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError; or the core's
+        PackingError: it does not fit) is one plain sentence in the report view and in the object's Error (its
+        tree icon is marked), never a traceback; `recompute` says it in the object's Status too, and clears the
+        statuses it can no longer vouch for."""
         try:
             problem = next(filter(None, (self.invalid(obj, prop) for prop in self.VALID)), "")
             if problem:
                 raise ValueError(problem)
             self.recompute(obj)
-        except ValueError as error:
+        except mistakes() as error:
             fail(obj, str(error))
         else:
             fail(obj, "")
 
     def recompute(self, obj):
         pass
+
+
+def mistakes():
+    """The exceptions that are a mistake in the model, said as they are: ValueError, and the core's PackingError
+    when the core is there (a clone without it still opens documents)."""
+    try:
+        from freecad.fabguide.core import fabguide_core
+    except ImportError:
+        return (ValueError,)
+    return (ValueError, fabguide_core.PackingError)
 
 
 def failed(obj):

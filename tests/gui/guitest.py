@@ -143,6 +143,18 @@ def looks_like_its_reference(path, name):
         path, reference, difference, TOLERANCE)
 
 
+def keys(widget, text="", key=None):
+    """Types `text` into `widget` key by key as a user does (each keystroke its own events), then presses `key`
+    (QtCore.Qt.Key_Return, ...) if given. Debian's PySide has no QtTest."""
+    from PySide import QtGui
+
+    strokes = [(ord(ch.upper()), ch) for ch in text] + ([(key, "")] if key is not None else [])
+    for code, ch in strokes:
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, code, QtCore.Qt.NoModifier, ch))
+        QtCore.QCoreApplication.processEvents()
+
+
 def with_file_dialog(name, path, command):
     """Runs FreeCAD command `command` with QFileDialog.`name` (getOpenFileName, getSaveFileName) answering
     `path`, as if the user had picked it (a modal dialog would stop the test)."""

@@ -5,6 +5,7 @@ reopening; suggestions from the core applied to it keep every constraint; a para
 spreadsheet is optimised through its gradients; each box's Grain reaches the layout, files and suggestions."""
 import json
 import os
+import re
 
 import FreeCAD
 import pytest
@@ -461,16 +462,20 @@ def test_renaming_a_board_keeps_its_constraints_and_deleting_one_says_which(doc)
     assert obj.Status == obj.Error and same.Status.startswith("Broken: "), obj.Status
 
 
-def test_a_range_refuses_a_min_above_its_max_as_it_is_typed(doc):
+def test_a_range_takes_its_min_as_typed_and_names_a_min_above_its_max(doc):
     a, b, obj = two_boards(doc, 340)
     span = design.add_constraint(obj, "range", "a's length", Refs=["a.size.x"], Min=250, Max=350)
     doc.recompute()
-    span.Min = 400  # above Max: refused, the range stays as it was
-    assert (span.Min.Value, span.Max.Value) == (250, 350)
-    span.Max, span.Min = 500, 280  # Max first, then Min: both kept
-    assert (span.Min.Value, span.Max.Value) == (280, 500)
+    before = a.Length.Value
+    for typed in (4, 40, 400):  # "400" as the property editor applies it, keystroke by keystroke
+        span.Min = typed
+    assert span.Min.Value == 400, "kept as typed, not cut at a keystroke"
     doc.recompute()
-    assert not obj.Error and span.Status == design.SATISFIED, obj.Status
+    said = r"Constraint 'a's length': its Min \(400[.0]* mm\) is more than its Max \(350[.0]* mm\)"  # user's decimals
+    assert re.fullmatch(said, span.Error) and re.search(said, obj.Error) and a.Length.Value == before, obj.Error
+    span.Max, span.Min = 500, 280
+    doc.recompute()
+    assert not obj.Error and not span.Error and span.Status == design.SATISFIED, obj.Status
 
 
 def test_a_document_of_plain_numbers_opens_with_lengths(doc, tmp_path):

@@ -303,7 +303,7 @@ def test_thin_boards_get_finger_joints_that_change_the_cut_outlines(doc, tmp_pat
     assert lay.Connectors == [] and json.loads(lay.ProblemJson)["parts"][0]["holes"] == []
 
 
-def test_techdraw_pages_show_the_report_and_are_replaced_on_rerun(doc):
+def test_techdraw_pages_show_the_report_are_redrawn_on_rerun_and_refused_in_error(doc, tmp_path):
     from freecad.fabguide.material import techdraw
 
     boards, masters = shelf_unit(doc)
@@ -318,7 +318,20 @@ def test_techdraw_pages_show_the_report_and_are_replaced_on_rerun(doc):
         (drawing,) = page.Views
         assert "<svg" in drawing.Symbol and 'width="297mm"' in drawing.Symbol and drawing.Scale == 1  # A4 wide
     kept = len(doc.Objects)
-    assert len(techdraw.make_pages(lay)) == len(pages) and len(doc.Objects) == kept  # replaced, not added
+    names = [p.Name for p in pages]
+    again = techdraw.make_pages(lay)
+    assert [p.Name for p in again] == names and len(doc.Objects) == kept  # redrawn one for one
+    masters[0].Width, masters[0].Height = 2440, 1220  # one sheet: the first page kept, the extra ones gone
+    doc.recompute()
+    fewer = techdraw.make_pages(lay)
+    assert len(fewer) == lay.SheetCount + 1 < len(names) and fewer[0].Name == names[0]
+    assert not any(doc.getObject(name) for name in names[len(fewer):])
+    masters[0].Width = 100  # the layout in error: no page drawn from its last good layout
+    doc.recompute()
+    with pytest.raises(layout.LayoutError, match="Mend that first"):
+        techdraw.make_pages(lay)
+    with pytest.raises(layout.LayoutError, match="Mend that first"):
+        layout.export_cut_sheets(lay, str(tmp_path))
 
 
 @pytest.mark.parametrize("grain, turned", [("Along width", False), ("Along height", True)])

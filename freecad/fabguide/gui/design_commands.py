@@ -69,7 +69,8 @@ def add(doc, kind, boxes, label=None, **values):
 class DesignFromBoxes(Command):
     ICON, MENU = "FabGuide_FlatpackDesign.svg", "Flat-pack Design from Boxes"
     TIP = ("Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut "
-           "from the selected or existing master boards; its usage updates as you edit")
+           "from the master boards selected with them, or a new one of their thickness; its usage updates as you "
+           "edit")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
@@ -78,10 +79,8 @@ class DesignFromBoxes(Command):
             return tell("Select the Part boxes your furniture is made of first.")
         thickness = min(min(b.Length.Value, b.Width.Value, b.Height.Value) for b in boxes)
         with transaction(doc, "Flat-pack design"):
-            masters = selected(master_board.is_master_board) or [
-                m for m in all_in(doc, master_board.is_master_board) if abs(m.Thickness.Value - thickness) < 1e-6]
-            if not masters:
-                masters = [master_board.create(doc, thickness=thickness)]
+            # Its own master board unless the user picks one: a shared one changed for another design breaks this.
+            masters = selected(master_board.is_master_board) or [master_board.create(doc, thickness=thickness)]
             obj = design.create(doc, boxes, masters)
             decorate(obj)
             doc.recompute()
@@ -312,10 +311,9 @@ class Suggest(Command):
         from freecad.fabguide.gui import suggest_panel
 
         try:
-            self.panel = suggest_panel.SuggestPanel(target)  # kept for scripts: .wait(), .result
+            self.panel = editing.show(lambda: suggest_panel.SuggestPanel(target), target.Document)  # for scripts
         except ValueError as error:  # Parameters that do not name spreadsheet aliases
             return tell(str(error))
-        editing.show(self.panel, target.Document)
 
 
 COMMANDS = {

@@ -30,12 +30,42 @@ def close_panel(doc):
         FreeCADGui.Control.closeDialog()
 
 
-def show(panel, doc):
-    """Shows task panel `panel`, which works on App document `doc`. It closes when the document closes (nothing is
+def show(make, doc):
+    """Makes a task panel with `make()` and shows it; it works on App document `doc`. Returns the panel, or None
+    when another task panel is open (said to the user; FreeCAD shows one at a time, and the panel is not made, so
+    nothing it would begin is left half done). Enter in its fields never accepts it (the panel's `enter()`, if it
+    has one, runs instead: a half-typed value is not a choice). It closes when the document closes (nothing is
     left to work on) or an undo or redo changes the document under it (it would show what is no longer there);
     its `abandon()`, if it has one, stops what it runs first."""
+    if FreeCADGui.Control.activeDialog():
+        from freecad.fabguide.gui.command_base import tell
+
+        tell("Another task panel is open: finish it with OK or Cancel first.")
+        return None
+    panel = make()
+    panel.enter_keys = EnterKeys(panel)
     FreeCADGui.Control.showDialog(panel)
     FreeCAD.addDocumentObserver(Watch(panel, doc.Name))
+    return panel
+
+
+class EnterKeys(QtCore.QObject):
+    """Return and Enter in a panel's fields call its `enter()` instead of reaching the task view, which would
+    accept the whole panel."""
+
+    def __init__(self, panel):
+        super().__init__()
+        self.panel = panel
+        forms = panel.form if isinstance(panel.form, (list, tuple)) else [panel.form]
+        for form in forms:
+            for field in form.findChildren(QtGui.QAbstractSpinBox) + form.findChildren(QtGui.QLineEdit):
+                field.installEventFilter(self)
+
+    def eventFilter(self, watched, event):
+        if event.type() == QtCore.QEvent.KeyPress and event.key() in (QtCore.Qt.Key_Return, QtCore.Qt.Key_Enter):
+            getattr(self.panel, "enter", lambda: None)()
+            return True
+        return False
 
 
 def showing(panel):

@@ -26,8 +26,10 @@ class ViewProviderMechanism(EditedByDoubleClick, ViewProvider):
     def setEdit(self, vobj, mode=0):
         from freecad.fabguide.gui.configurations_panel import ConfigurationsPanel
 
-        self.panel = ConfigurationsPanel(vobj.Object)
-        editing.show(self.panel, vobj.Object.Document)
+        panel = editing.show(lambda: ConfigurationsPanel(vobj.Object), vobj.Object.Document)
+        if panel is None:  # another panel is open: it stays the one shown
+            return False
+        self.panel = panel
         return True
 
     def unsetEdit(self, vobj, mode=0):
@@ -55,7 +57,7 @@ class ViewProviderConfiguration(ViewProvider):
 
         mech = next((m for m in vobj.Object.InList if mechanism.is_mechanism(m)), None)
         if mech is not None:
-            editing.show(ConfigurationsPanel(mech, vobj.Object), mech.Document)
+            editing.show(lambda: ConfigurationsPanel(mech, vobj.Object), mech.Document)
         return True
 
 
@@ -127,7 +129,7 @@ class ViewProviderRelationship(ViewProvider):
     def doubleClicked(self, vobj):
         from freecad.fabguide.gui.relationship_panel import RelationshipPanel
 
-        editing.show(RelationshipPanel(vobj.Object), vobj.Object.Document)
+        editing.show(lambda: RelationshipPanel(vobj.Object), vobj.Object.Document)
         return True
 
 

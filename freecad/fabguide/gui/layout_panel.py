@@ -2,6 +2,7 @@
 material-space view updates as the design changes)."""
 import os
 
+import FreeCAD
 import FreeCADGui
 from PySide import QtCore
 
@@ -10,6 +11,22 @@ from freecad.fabguide.gui import editing, resources
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
 PAUSE = 700  # ms without a change before the layout is made again: not on every keystroke
+
+
+def readable(box):
+    """Whether a length box holds a length within its range (or an expression, which FreeCAD judges): its own
+    validity flag calls a plain "0.3" unfinished."""
+    text = box.text().strip()
+    if text.startswith("="):
+        return True
+    try:
+        typed = FreeCAD.Units.Quantity(text)
+    except ValueError:  # "1e", "abc"
+        return False
+    if typed.Unit not in (FreeCAD.Units.Unit(), FreeCAD.Units.Length):  # "2 kg"; a plain number is in mm
+        return False
+    value = typed.Value
+    return box.property("minimum") <= float(value) <= box.property("maximum")
 
 
 class LayoutPanel:
@@ -22,7 +39,7 @@ class LayoutPanel:
         self.pending.setSingleShot(True)
         self.pending.setInterval(PAUSE)
         self.pending.timeout.connect(self.lay_out)
-        self.bindings = []
+        self.bindings, self.typed_from = [], {}  # typed_from: each setting before this bout of typing
         for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
             box = getattr(self.form, name.lower())
             box.setProperty("rawValue", getattr(layout, name).Value)
@@ -31,6 +48,7 @@ class LayoutPanel:
             binding.setAutoApply(True)
             self.bindings.append(binding)
             box.valueChanged.connect(lambda *_, name=name, box=box: self.set(name, box.property("rawValue")))
+            box.textChanged.connect(lambda *_: self.pending.start())  # "1e9" is 1 on its way: judged at the pause
         for name, combo in (("Cuts", self.form.cuts), ("FirstCut", self.form.firstCut)):
             combo.addItems(layout.getEnumerationsOfProperty(name))
             combo.setCurrentText(getattr(layout, name))
@@ -43,14 +61,36 @@ class LayoutPanel:
         """The setting at once; the layout made again once the typing pauses."""
         current = properties.number(getattr(self.layout, name))
         if (abs(current - value) > 1e-12 if isinstance(value, float) else current != value):
+            self.typed_from.setdefault(name, current)
             setattr(self.layout, name, value)
             self.pending.start()
             self.form.message.setText("<i>The layout is made again when you pause.</i>")
 
     def lay_out(self):
+        """Once the typing pauses: a value typed out of range or unreadable is refused whole (the keystrokes on
+        its way had set 1 of "1e9"), the setting back to what it was, said; then the layout made again."""
         self.pending.stop()
+        if not editing.showing(self):  # closed meanwhile (its fields change as they go)
+            return
+        refused = [self.refuse(name) for name in SETTINGS if not readable(getattr(self.form, name.lower()))]
+        self.typed_from = {}
         self.layout.Document.recompute()
         self.show()
+        if refused:
+            self.form.message.setText("<b>{}</b>".format(" ".join(refused)))
+
+    def refuse(self, name):
+        box = getattr(self.form, name.lower())
+        kept = self.typed_from.get(name, getattr(self.layout, name).Value)
+        said = "{}: \"{}\" is not a length from {:g} to {:g} mm; it stays {:g} mm.".format(
+            name, box.text(), box.property("minimum"), box.property("maximum"), kept)
+        setattr(self.layout, name, kept)
+        box.setProperty("rawValue", kept)
+        return said
+
+    def enter(self):
+        """Enter in a field: lay out now (the panel stays open)."""
+        self.lay_out()
 
     def show(self):
         """The layout's figures, or why it could not be made."""

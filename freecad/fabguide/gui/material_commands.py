@@ -178,17 +178,13 @@ class MakeCamJob(Command):
         chosen = the_one(doc, layout.is_layout, "layout to machine")
         if chosen is None:
             return
-        if FreeCADGui.Control.activeDialog():
-            return tell("Close the open task panel first (OK or Cancel), then make the CAM job.")
-        if not chosen.LayoutJson:
-            return tell("Layout '{}' has not been computed yet: recompute it first.".format(chosen.Label))
         from freecad.fabguide.gui import cam_panel
 
         try:
-            self.panel = cam_panel.CamJobPanel(chosen)  # kept for scripts
-        except cam.CamError as error:  # no CAM workbench in this FreeCAD
+            layout.current(chosen)
+            self.panel = editing.show(lambda: cam_panel.CamJobPanel(chosen), chosen.Document)  # for scripts
+        except (layout.LayoutError, cam.CamError) as error:  # in error, or no CAM workbench in this FreeCAD
             return tell(str(error))
-        editing.show(self.panel, chosen.Document)
 
 
 COMMANDS = {

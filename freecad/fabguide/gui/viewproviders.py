@@ -72,10 +72,16 @@ class ViewProviderLayout(EditedByDoubleClick, ViewProvider):
     def setEdit(self, vobj, mode=0):
         from freecad.fabguide.gui.layout_panel import LayoutPanel
 
-        editing.show(LayoutPanel(vobj.Object), vobj.Object.Document)
+        panel = editing.show(lambda: LayoutPanel(vobj.Object), vobj.Object.Document)
+        if panel is None:  # another panel is open: it stays the one shown
+            return False
+        self.panel = panel
         return True
 
     def unsetEdit(self, vobj, mode=0):
+        if getattr(self, "panel", None) is not None:
+            self.panel.abandon()  # also when edit mode ends without OK or Cancel: no layout after the pause
+            self.panel = None
         FreeCADGui.Control.closeDialog()
         return True
 

@@ -83,8 +83,7 @@ def jobs_of(lay):
 def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE):
     """Replaces the layout's CAM jobs with one per master board; `bit` = a tool bit file (*.fctb) for the
     profiles (default: FreeCAD's 5 mm end mill). Returns the jobs."""
-    if not lay.LayoutJson:
-        raise layout.LayoutError("Layout '{}' has not been computed yet: recompute it first".format(lay.Label))
+    layout.current(lay)
     cam = workbench()
     if post not in cam.Preferences.allAvailablePostProcessors():
         raise CamError("no post-processor '{}' in FreeCAD (there are: {})".format(

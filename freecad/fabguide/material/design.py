@@ -52,6 +52,7 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
 
     def recompute(self, obj):
+        master_board.note_users(obj.Document)
         with saying_changes(obj):
             recompute(obj)
 
@@ -59,6 +60,7 @@ class FlatpackDesign(properties.Proxy):
         super().onChanged(obj, prop)
         if prop == "Group" and not obj.Document.Restoring:
             add_grain(boxes(obj))
+        master_board.users_changed(obj, prop)
 
     def onDocumentRestored(self, obj):
         super().onDocumentRestored(obj)
@@ -69,8 +71,6 @@ class DesignConstraint(properties.Proxy):
     """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
     what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
     TYPE, NOUN = "FabGuide::DesignConstraint", "Constraint"
-    VALID = dict(Min=(lambda obj, v: obj.Kind != "range" or v.Value <= obj.Max.Value, "at most its Max"),
-                 Max=(lambda obj, v: obj.Kind != "range" or v.Value >= obj.Min.Value, "at least its Min"))
 
     def define(self, obj):
         add = properties.add
@@ -87,6 +87,13 @@ class DesignConstraint(properties.Proxy):
             10 * UNBOUNDED)
         references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
         add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
+
+    def recompute(self, obj):
+        """Min and Max are checked together here, not as each is typed: "900" passes through 9 and 90 on its way
+        past a Max of 500, and a refusal would keep 90."""
+        if obj.Kind == "range" and obj.Min.Value > obj.Max.Value:
+            raise ValueError("Constraint '{}': its Min ({}) is more than its Max ({})".format(
+                obj.Label, obj.Min.UserString, obj.Max.UserString))
 
 
 class Volume(properties.Proxy):
@@ -205,6 +212,7 @@ def constraint_dict(c):
     if c.Kind == "fixed":
         d["value"] = c.Value.Value
     if c.Kind == "range":
+        DesignConstraint.recompute(None, c)
         d.update({key: value for key, value in (("min", c.Min.Value), ("max", c.Max.Value)) if abs(value) < UNBOUNDED})
     if c.Kind in ("ground", "coplanar", "snap"):
         d["parts"] = [p.Label for p in c.Parts]
@@ -281,9 +289,10 @@ def recompute(obj):
                       else "Design '" + obj.Label + "': {}").format(said)
         raise DesignError("Design '{}': {}".format(obj.Label, said))
     except fabguide_core.PackingError as error:
-        if not same_boards:
-            obj.Status = str(error)
-            raise DesignError("Design '{}': {}".format(obj.Label, error))
+        if not same_boards or valid == edited["parts"]:  # no edit of the boxes to absorb or undo
+            said = "{}{}".format(error, master_board.shared(obj.MasterBoards, obj))
+            obj.Status = said
+            raise DesignError("Design '{}': {}".format(obj.Label, said))
         laid, absorbed = absorb(obj, edited, start)
         note += absorbed
         if laid is None:
@@ -351,7 +360,10 @@ def laid_out(obj, edited):
 def absorb(obj, edited, start):
     """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards, from the valid design
     `start`: (layout, note) with the boxes written back when it fits, (None, "") otherwise."""
-    absorbed = fabguide_core.absorb_edit(start, edited)
+    try:
+        absorbed = fabguide_core.absorb_edit(start, edited)
+    except fabguide_core.PackingError:  # not even the valid design fits any more
+        return None, ""
     if not absorbed["fitted"]:
         return None, ""
     adopt(obj, edited, absorbed["parts"], start)

@@ -27,6 +27,7 @@ class Layout(properties.Proxy):
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
                                "0 or a divisor of 90 (e.g. 15, 30, 45)"),
                  Stages=properties.at_least(0, " (0: unlimited)"), LabelWidth=properties.at_least(20),
+                 Seed=(lambda obj, v: 0 <= v < 2 ** 63, "0 or more"),
                  TimeLimit=properties.more_than(0),
                  LabelHeight=properties.at_least(10))
 
@@ -88,7 +89,12 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyString", "ProblemJson", "Data", "The problem laid out (*.pack.json)", mode=2)
         add(obj, "App::PropertyString", "LayoutJson", "Data", "The layout (layout JSON)", mode=2)
 
+    def onChanged(self, obj, prop):
+        super().onChanged(obj, prop)
+        master_board.users_changed(obj, prop)
+
     def recompute(self, obj):
+        master_board.note_users(obj.Document)
         problem, boards = make_problem(obj)
         try:
             joined = join(obj, boards)
@@ -99,7 +105,8 @@ class Layout(properties.Proxy):
                 "Laying out {} ({} boards)".format(obj.Label, sum(p.get("quantity", 1) for p in problem["parts"])),
                 lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
-            raise LayoutError("Layout '{}': {}".format(obj.Label, name_parts(str(error), problem.get("parts", []))))
+            raise LayoutError("Layout '{}': {}{}".format(obj.Label, name_parts(str(error), problem.get("parts", [])),
+                                                         master_board.shared(obj.MasterBoards, obj)))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
         obj.Usage = result["usage"]
@@ -228,12 +235,22 @@ def file_stem(label):
     return re.sub(r"[^A-Za-z0-9._-]+", "-", label).strip("-.") or "layout"
 
 
+def current(obj):
+    """Refuses a layout whose result is not the layout of its boards as they are: never computed, or its last
+    recompute failed (files or pages made from it would show the last layout that could be made)."""
+    if not obj.LayoutJson:
+        raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
+    if properties.failed(obj):
+        raise LayoutError("{} Mend that first: what was made now would show the last layout that could be "
+                          "made, not the boards as they are.".format(obj.Error.rstrip(".") + "." if obj.Error else
+                                                                     "Layout '{}' is in error.".format(obj.Label)))
+
+
 def export_cut_sheets(obj, folder):
     """LABEL-sheet-N.svg and .dxf per master board, LABEL-cutlist.csv, LABEL-report.pdf, LABEL-labels.pdf and
     LABEL-opticutter.csv (optiCutter's import) into `folder`, for the layout as last computed: two layouts share a
     folder, and a re-export replaces its own set whole."""
-    if not obj.LayoutJson:
-        raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
+    current(obj)
     os.makedirs(folder, exist_ok=True)
     stem = file_stem(obj.Label)
     problem, result = json.loads(obj.ProblemJson), json.loads(obj.LayoutJson)

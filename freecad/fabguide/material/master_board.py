@@ -22,6 +22,10 @@ class MasterBoard(properties.Proxy):
         add(obj, "App::PropertyFloat", "Cost", "Master board",
             "What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new "
             "sheets", 1.0)
+        if "UsedBy" not in obj.PropertiesList:  # an output: noting the users never recomputes anything
+            obj.addProperty("App::PropertyStringList", "UsedBy", "Result",
+                            "The designs and layouts cut from this master board: a change reaches them all",
+                            properties.READ_ONLY | properties.OUTPUT)
 
 
 def create(doc, width=None, height=None, thickness=None, count=1, material="plywood", label="MasterBoard",
@@ -49,3 +53,31 @@ def as_problem_board(obj):
     return {"name": obj.Label, "material": obj.Material, "width": obj.Width.Value, "height": obj.Height.Value,
             "thickness": obj.Thickness.Value, "count": obj.Count if obj.Count > 0 else -1,
             "grain": GRAIN[obj.Grain], "cost": obj.Cost}
+
+
+def users(obj):
+    """The designs and layouts that cut from master board `obj`, by label."""
+    return sorted(o.Label for o in obj.InList if obj in getattr(o, "MasterBoards", []))
+
+
+def note_users(doc):
+    """Each master board of `doc` shows who cuts from it (its UsedBy): called when a design or layout recomputes,
+    is renamed or changes its master boards."""
+    for m in doc.Objects:
+        if is_master_board(m) and hasattr(m, "UsedBy") and list(m.UsedBy) != users(m):
+            m.UsedBy = users(m)
+
+
+def users_changed(user, prop):
+    """A design's or layout's onChanged: renamed, or cut from other master boards."""
+    if prop in ("Label", "MasterBoards") and not user.Document.Restoring:
+        note_users(user.Document)
+
+
+def shared(masters, user):
+    """What the message of `user`'s failure adds when its master boards are others' too: a change made for
+    another design is the likely cause."""
+    others = {m.Label: [u for u in users(m) if u != user.Label] for m in masters}
+    said = ["master board '{}' is shared with {}".format(m, ", ".join("'{}'".format(u) for u in us))
+            for m, us in others.items() if us]
+    return " ({})".format("; ".join(said)) if said else ""

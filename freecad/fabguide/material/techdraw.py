@@ -23,37 +23,48 @@ def pages_of(lay):
 
 
 def make_pages(lay):
-    """Replaces the layout's pages with the report's: one per master board, then the cut list; returns them."""
+    """The layout's pages made the report's, one per master board, then the cut list: pages made before are
+    kept and redrawn one for one (an open page stays open, showing what it shows now), extra ones removed.
+    Returns them."""
     import TechDraw  # noqa: F401  (registers the TechDraw document objects)
 
-    if not lay.LayoutJson:
-        raise layout.LayoutError("Layout '{}' has not been computed yet: recompute it first".format(lay.Label))
-    doc = lay.Document
-    for page in pages_of(lay):
-        names = [view.Name for view in page.Views] + [page.Name] + ([page.Template.Name] if page.Template else [])
-        for name in names:  # removing a page may take its template with it
-            if doc.getObject(name):
-                doc.removeObject(name)
+    layout.current(lay)
+    svgs = fabguide_core.report_svgs(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson), lay.Label)
+    made = pages_of(lay)
+    for page in made[len(svgs):]:
+        remove(page)
+    pages = made[:len(svgs)] + [new_page(lay) for _ in range(len(svgs) - len(made))]
+    for number, (page, text) in enumerate(zip(pages, svgs), start=1):
+        page.Label = "{} report {}".format(lay.Label, number)
+        next(view for view in page.Views if view.TypeId == "TechDraw::DrawViewSymbol").Symbol = text
+    lay.Document.recompute()
+    return pages
+
+
+def remove(page):
+    doc = page.Document
+    names = [view.Name for view in page.Views] + [page.Name] + ([page.Template.Name] if page.Template else [])
+    for name in names:  # removing a page may take its template with it
+        if doc.getObject(name):
+            doc.removeObject(name)
+
+
+def new_page(lay):
+    """A blank A4 page of the layout's, holding one drawing at scale 1."""
     template_path = next((path for path in (os.path.join(FreeCAD.getResourceDir(), *t) for t in TEMPLATES)
                           if os.path.isfile(path)), None)
     if template_path is None:
         raise layout.LayoutError("TechDraw's blank A4 template is not installed with this FreeCAD")
-    svgs = fabguide_core.report_svgs(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson), lay.Label)
-    pages = []
-    for number, text in enumerate(svgs, start=1):
-        page = doc.addObject("TechDraw::DrawPage", "ReportPage")
-        page.Label = "{} report {}".format(lay.Label, number)
-        page.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide", "The layout this page draws")
-        page.FabGuideLayout = lay
-        template = doc.addObject("TechDraw::DrawSVGTemplate", "ReportTemplate")
-        template.Template = template_path
-        page.Template = template
-        drawing = doc.addObject("TechDraw::DrawViewSymbol", "Report")
-        drawing.Symbol = text
-        drawing.ScaleType = "Custom"
-        drawing.Scale = 1.0
-        drawing.X, drawing.Y = PAGE[0] / 2, PAGE[1] / 2
-        page.addView(drawing)
-        pages.append(page)
-    doc.recompute()
-    return pages
+    doc = lay.Document
+    page = doc.addObject("TechDraw::DrawPage", "ReportPage")
+    page.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide", "The layout this page draws")
+    page.FabGuideLayout = lay
+    template = doc.addObject("TechDraw::DrawSVGTemplate", "ReportTemplate")
+    template.Template = template_path
+    page.Template = template
+    drawing = doc.addObject("TechDraw::DrawViewSymbol", "Report")
+    drawing.ScaleType = "Custom"
+    drawing.Scale = 1.0
+    drawing.X, drawing.Y = PAGE[0] / 2, PAGE[1] / 2
+    page.addView(drawing)
+    return page
