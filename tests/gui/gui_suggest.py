@@ -220,6 +220,11 @@ def suggest_changes_the_spreadsheet_of_a_parametric_design():
     Gui.runCommand("FabGuide_DesignFromBoxes")
     d = next(o for o in doc.Objects if design.is_design(o))
     d.MasterBoards[0].Width, d.MasterBoards[0].Height = 900, 600
+    doc.recompute()
+    said = guitest.told("FabGuide_Suggest")  # without Parameters it could change nothing: said before searching
+    assert said.startswith("Suggest cannot change 'side', 'end', 'bottom': their sizes or places are set by "
+                           "expressions"), said
+    assert not Gui.Control.activeDialog()
     d.Parameters = ["Params.side 200 400", "Params.height 100 300"]
     doc.recompute()
     Gui.runCommand("FabGuide_Suggest")
@@ -229,12 +234,28 @@ def suggest_changes_the_spreadsheet_of_a_parametric_design():
     panel.seconds.setValue(4)
     panel.wait()
     assert panel.cards.buttons(), panel.message.text()
+    assert "stopped" not in panel.message.text(), "its time limit ended it; the user did not stop it"
     assert not panel.locks.isVisible()
     steps = doc.UndoCount
     panel.accept()
     assert doc.UndoCount == steps + 1
     assert sheet.get("side") != 300 or sheet.get("height") != 170
+    assert all(abs(sheet.get(a) * 10 - round(sheet.get(a) * 10)) < 1e-6 for a in ("side", "height")), \
+        "written to 0.1 mm: {} {}".format(sheet.get("side"), sheet.get("height"))
     assert boards[2].Length.Value == sheet.get("side") - 24
+
+
+def cancel_while_searching_leaves_nothing_running():
+    doc = state["doc"]
+    Gui.runCommand("FabGuide_Suggest")
+    from freecad.fabguide.gui import design_commands
+
+    panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
+    guitest.settle(0.3)
+    panel.reject()
+    assert not panel.timer.isActive() and not Gui.Control.activeDialog()
+    guitest.settle(0.5)  # a poll timer left on the deleted form would raise here
+    FreeCAD.closeDocument(doc.Name)
 
 
 guitest.run([
@@ -244,4 +265,5 @@ guitest.run([
     suggest_shows_three_suggestions_and_applies_one_as_one_step,
     import_and_export_a_flatpack_design,
     suggest_changes_the_spreadsheet_of_a_parametric_design,
+    cancel_while_searching_leaves_nothing_running,
 ])

@@ -88,6 +88,9 @@ def test_selection_names_of_freecad_1_are_understood():
     (lambda doc: Part.makeSphere(50), "has no planar face"),
     (lambda doc: Part.makeCone(50, 20, 80), "not a flat board"),
     (lambda doc: Part.makeBox(10, 10, 10).fuse(Part.makeBox(30, 30, 5)), "not a flat board"),
+    (lambda doc: Part.makeBox(150, 150, 150), "150 mm thick and 150 mm wide, a block or a post"),
+    (lambda doc: Part.makeBox(50, 50, 700), "50 mm thick and 50 mm wide, a block or a post"),
+    (lambda doc: Part.makeCylinder(20, 40), "40 mm thick and 40 mm wide, a block or a post"),
 ])
 def test_solids_that_are_not_boards_are_refused_by_name(doc, make, message):
     source = doc.addObject("Part::Feature", "Blob")

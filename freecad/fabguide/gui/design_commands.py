@@ -78,12 +78,15 @@ class DesignFromBoxes(Command):
         if not boxes:
             return tell("Select the Part boxes your furniture is made of first.")
         thickness = min(min(b.Length.Value, b.Width.Value, b.Height.Value) for b in boxes)
-        with transaction(doc, "Flat-pack design"):
-            # Its own master board unless the user picks one: a shared one changed for another design breaks this.
-            masters = selected(master_board.is_master_board) or [master_board.create(doc, thickness=thickness)]
-            obj = design.create(doc, boxes, masters)
-            decorate(obj)
-            doc.recompute()
+        try:
+            with transaction(doc, "Flat-pack design"):
+                # Its own master board unless the user picks one: a shared one changed for another design breaks it.
+                masters = selected(master_board.is_master_board) or [master_board.create(doc, thickness=thickness)]
+                obj = design.create(doc, boxes, masters)
+                decorate(obj)
+                doc.recompute()
+        except design.DesignError as error:
+            return tell(str(error) + ".")
         if properties.failed(obj):
             tell("{}: {}".format(obj.Label, obj.Status or "see the report view"))
 

@@ -283,8 +283,8 @@ class AddGeometric(AddRelationship):
     NEEDS = selecting(cuboids.is_box, "Edge")
 
     def check(self):
-        if len(picked_elements("Edge")) not in (1, 2):
-            return "Pick one or two edges of boxes."
+        if len(picked_elements("Edge")) not in (1, 2) or any(not (e or "").startswith("Edge") for _, e in picks()):
+            return "Pick one or two edges of boxes, and nothing else (a face or a whole box says no length)."
 
     def fields(self, doc, found):
         edges = picked_elements("Edge")

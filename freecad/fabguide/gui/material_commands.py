@@ -35,8 +35,8 @@ class MakeBoard(Command):
     NEEDS = selecting(lambda o: hasattr(o, "Shape"))
 
     def run(self, doc):
-        picks = [(s.Object, sub) for s in FreeCADGui.Selection.getSelectionEx() for sub in (s.SubElementNames or [None])
-                 if sub is None or board.element_name(sub).startswith("Face")]
+        picks = [(board.whole(s.Object), sub) for s in FreeCADGui.Selection.getSelectionEx()
+                 for sub in (s.SubElementNames or [None]) if sub is None or board.element_name(sub).startswith("Face")]
         if not picks:
             return tell("Select sketches or planar faces first.")
         masters = all_in(doc, master_board.is_master_board)
@@ -53,7 +53,8 @@ class BoardsFromSolids(Command):
     NEEDS = selecting(lambda o: hasattr(o, "Shape") and not board.is_board(o))
 
     def run(self, doc):
-        solids = selected(lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))
+        solids = list(dict.fromkeys(board.whole(o) for o in selected(
+            lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))))
         if not solids:
             return tell("Select the solids of your furniture model (flat boxes, pads, extrusions) first.")
         with transaction(doc, "Boards from solids"):

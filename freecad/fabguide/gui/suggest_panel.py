@@ -51,6 +51,11 @@ def card_text(k, suggestion, before):
                                                               change)
 
 
+def driven_by_expressions(box):
+    """Whether an expression sets a box's size or place: a value written there would not stay."""
+    return any(path.split(".")[0].lstrip(".") in cuboids.SIZES + ("Placement",) for path, _ in box.ExpressionEngine)
+
+
 class Boxes:
     """Suggestions as boards' sizes and places (a design of boxes with constraints)."""
 
@@ -58,6 +63,12 @@ class Boxes:
     can_lock = True
 
     def __init__(self, obj):
+        driven = [b.Label for b in design.boxes(obj) if driven_by_expressions(b)]
+        if driven:
+            raise ValueError(
+                "Suggest cannot change {}: their sizes or places are set by expressions. Give Design '{}' the "
+                "spreadsheet aliases that drive them as Parameters ('Sheet.alias min max'), and Suggest changes "
+                "those.".format(", ".join("'{}'".format(label) for label in driven), obj.Label))
         self.obj = obj
         self.start = None
 
@@ -98,10 +109,10 @@ class Aliases:
         return [(step["parameters"], step["usage"]) for step in suggestion["path"]]
 
     def show(self, state):
-        parametric.set_values(self.obj, self.params, state, boxes_only=True)
+        parametric.set_values(self.obj, self.params, parametric.rounded(self.params, state), boxes_only=True)
 
     def apply(self, state):
-        parametric.set_values(self.obj, self.params, state)
+        parametric.set_values(self.obj, self.params, parametric.rounded(self.params, state))
 
 
 class SuggestPanel:
@@ -155,7 +166,7 @@ class SuggestPanel:
             return
         self.clear_cards()
         self.result, self.error, self.progress = None, None, (0.0, self.design.Usage)
-        self.token = fabguide_core.CancelToken()
+        self.token, self.stopped = fabguide_core.CancelToken(), False
         options = dict(seed=self.seed.value(), threads=self.threads.value(), time_limit=self.seconds.value())
 
         def work(progress):
@@ -186,6 +197,7 @@ class SuggestPanel:
 
     def stop(self):
         if self.token:
+            self.stopped = True  # by the user: its time limit ending a search is not "stopped"
             self.token.cancel()
 
     def wait(self):
@@ -225,7 +237,7 @@ class SuggestPanel:
         result = self.result
         suggestions = result["suggestions"]
         self.bar.setValue(100)
-        stopped = " (stopped early)" if result["stopped"] else ""
+        stopped = " (stopped)" if self.stopped else ""
         if not suggestions:
             least = result.get("least_sheets", 0)
             why = "; with every board as small as they allow it still needs {} sheet(s)".format(least) \
@@ -341,11 +353,11 @@ class SuggestPanel:
         self.stop()
         if self.thread:
             self.thread.join()
+        self.timer.stop()  # its form goes with the panel
 
     def abandon(self):
         """Its document closes or changes under it: the search stops, nothing is applied or previewed."""
         self.end_search()
-        self.timer.stop()
 
     def accept(self):
         self.end_search()

@@ -115,6 +115,13 @@ def largest_planar_face(shape):
     return max(faces, key=lambda f: f.Area) if faces else None
 
 
+def whole(obj):
+    """What a click on `obj` means as a board's source: a PartDesign feature stands for its Body (the Body's solid
+    is its tip's; a link to a feature inside a Body from outside it is out of scope for FreeCAD)."""
+    body = obj.getParentGeoFeatureGroup() if hasattr(obj, "getParentGeoFeatureGroup") else None
+    return body if body is not None and body.TypeId == "PartDesign::Body" else obj
+
+
 def slab_thickness(solid, what):
     """Distance between the solid's largest planar face and the parallel face opposite it; the solid
     must be that face swept straight through (a flat board), else BoardError."""
@@ -131,7 +138,19 @@ def slab_thickness(solid, what):
     if abs(solid.Volume - top.Area * thickness) > 1e-3 * solid.Volume:
         raise BoardError("{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)"
                          .format(what, solid.Volume, top.Area * thickness))
+    width = narrowest(solid)
+    if thickness >= width - 1e-6:
+        raise BoardError("{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board "
+                         "is thinner than it is wide)".format(what, thickness, width))
     return thickness
+
+
+def narrowest(slab):
+    """The slab's face's narrower extent, along its frame (frame_of): its width."""
+    face, origin, u, v = frame_of(slab)
+    points = face.OuterWire.discretize(Number=64)
+    return min(max(p.sub(origin).dot(axis) for p in points) - min(p.sub(origin).dot(axis) for p in points)
+               for axis in (u, v))
 
 
 def frame_of(slab):

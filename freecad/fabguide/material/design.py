@@ -116,6 +116,14 @@ class Volume(properties.Proxy):
 
 
 def create(doc, boxes, master_boards, label="FlatpackDesign"):
+    """A design holding `boxes`; DesignError naming a box that is in a group already (FreeCAD keeps an object
+    in one group, and the user's own grouping is not undone for them)."""
+    for box in boxes:
+        group = box.getParentGroup()
+        if group is not None:
+            raise DesignError("Box '{}' is in {} '{}' already, and a box belongs to one group: take it out of "
+                              "'{}' first, or pick other boxes".format(
+                                  box.Label, "design" if is_design(group) else "group", group.Label, group.Label))
     obj = doc.addObject("App::DocumentObjectGroupPython", "FlatpackDesign")
     FlatpackDesign(obj)
     obj.Label = label

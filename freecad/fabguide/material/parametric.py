@@ -43,11 +43,16 @@ def set_values(obj, params, values, boxes_only=False):
     """The aliases to `values`, the document recomputed (or only the sheets and boxes, while searching: the
     design's own recompute lays the boards out, which the search does itself)."""
     for (sheet, alias, _, _), v in zip(params, values):
-        sheet.set(sheet.getCellFromAlias(alias), repr(float(v)))
+        sheet.set(sheet.getCellFromAlias(alias), "{:.12g}".format(float(v)))
     if boxes_only:
         obj.Document.recompute(list(dict.fromkeys([p[0] for p in params])) + design.boxes(obj))
     else:
         obj.Document.recompute()
+
+
+def rounded(params, values, step=0.1):
+    """Values as a maker types them, to `step` mm, each kept within its parameter's range."""
+    return [min(max(round(v / step) * step, low), high) for (_, _, low, high), v in zip(params, values)]
 
 
 def sizes(obj):
