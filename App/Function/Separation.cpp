@@ -25,9 +25,11 @@ Box boxOf(const Model& model, int cuboid, int configuration)
 /// The poses in which print-in-place makes room for a fit inside (thesis 4.5.1, issue 30): by (inner part,
 /// enclosing part, pose), the configurations of the fits whose room the pose is in: the modelled pose, each
 /// fit's configuration and the poses on the way to it.
-std::map<std::tuple<int, int, int>, std::set<int>> rooms(const Model& model)
+using Rooms = std::map<std::tuple<int, int, int>, std::set<int>>;
+
+Rooms rooms(const Model& model)
 {
-    std::map<std::tuple<int, int, int>, std::set<int>> room;
+    Rooms room;
     for (const FitInside& f : model.fitInside)
         for (int p : f.inner) {
             room[{p, f.enclosing, -1}].insert(f.configuration);
@@ -39,16 +41,40 @@ std::map<std::tuple<int, int, int>, std::set<int>> rooms(const Model& model)
     return room;
 }
 
+/// The volume of box a within box b.
+double common(const Box& a, const Box& b)
+{
+    double inside = 1;
+    for (int axis = 0; axis < 3; ++axis)
+        inside *= std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
+    return inside;
+}
+
+double volume(const Box& a)
+{
+    return common(a, a);
+}
+
 /// Whether box a lies at least half inside box b.
 bool mostlyInside(const Box& a, const Box& b)
 {
-    double inside = 1, volume = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        inside *=
-            std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
-        volume *= a[2 * axis + 1] - a[2 * axis];
+    return 2 * common(a, b) >= volume(a);
+}
+
+/// Whether solid cuboids a and b of different parts may overlap in the configuration: they are carried together
+/// (one part, or held by fixed joints), or a fit inside makes room for one in the other. Print-in-place cuts the
+/// room a fit's inner parts sweep (thesis 4.5.1), but only for an inner cuboid carved out of an enclosing one
+/// (mostly inside it where the fit holds): one between a frame's posts stays clear of them.
+bool exempt(const Model& model, const Rooms& room, const std::vector<int>& owner, int a, int b, int configuration)
+{
+    for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
+        const auto found = room.find({owner[inner], owner[enclosing], configuration});
+        if (found != room.end())
+            for (int k : found->second)
+                if (mostlyInside(boxOf(model, inner, k), boxOf(model, enclosing, k)))
+                    return true;
     }
-    return 2 * inside >= volume;
+    return carrierOf(model, owner[a]) == carrierOf(model, owner[b]);
 }
 
 bool overlaps(const Box& a, const Box& b)
@@ -155,28 +181,13 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
             boxes[c] = boxOf(model, c, configuration);
         }
     std::sort(solids.begin(), solids.end(), [&](int a, int b) { return boxes[a][0] < boxes[b][0]; });
-    const auto room = rooms(model);
+    const Rooms room = rooms(model);
     const std::vector<int> owner = owners(model);
-    // A fit inside's inner and enclosing parts may overlap where print-in-place cuts the room the inner parts
-    // sweep (thesis 4.5.1), but only an inner cuboid carved out of an enclosing one (mostly inside it where
-    // the fit holds): one between a frame's posts stays clear of them. Elsewhere they are kept apart as any
-    // two parts.
-    const auto exempt = [&](int a, int b, int pa, int pb) {
-        for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
-            const auto found = room.find({owner[inner], owner[enclosing], configuration});
-            if (found != room.end())
-                for (int k : found->second)
-                    if (mostlyInside(boxOf(model, inner, k), boxOf(model, enclosing, k)))
-                        return true;
-        }
-        return carrierOf(model, pa) == carrierOf(model, pb);  // one part, or held together by fixed joints
-    };
     std::vector<std::pair<int, int>> pairs;
     for (size_t i = 0; i < solids.size(); ++i)
         for (size_t k = i + 1; k < solids.size() && boxes[solids[k]][0] < boxes[solids[i]][1] + margin; ++k) {
             const int a = solids[i], b = solids[k];
-            const int pa = owner[a], pb = owner[b];
-            bool near = !exempt(a, b, pa, pb);
+            bool near = !exempt(model, room, owner, a, b, configuration);
             for (int axis = 1; axis < 3 && near; ++axis)
                 near = std::min(boxes[a][2 * axis + 1], boxes[b][2 * axis + 1]) -
                            std::max(boxes[a][2 * axis], boxes[b][2 * axis]) >
@@ -185,6 +196,35 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
                 pairs.push_back(std::minmax(a, b));
         }
     return pairs;
+}
+
+std::vector<std::pair<int, int>> drawnInside(const Model& model)
+{
+    // The volume of box `in` within the material of `solids`' solid cuboids: their boxes less their cavities.
+    const auto material = [&](const Box& in, std::initializer_list<int> solids) {
+        Box within = in;
+        for (int s : solids) {
+            const Box box = boxOf(model, s, -1);
+            for (int k = 0; k < 6; ++k)
+                within[k] = k % 2 ? std::min(within[k], box[k]) : std::max(within[k], box[k]);
+        }
+        double volume = common(within, within);
+        for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c)
+            for (int s : solids)
+                if (model.cuboids[c].within == s)
+                    volume -= common(within, boxOf(model, c, -1));
+        return std::max(0.0, volume);
+    };
+    std::vector<std::pair<int, int>> found;
+    for (const auto& [a, b] : nearPairs(model, -1, 0)) {  // overlapping pairs that nothing lets overlap
+        const double both = material(boxOf(model, a, -1), {a, b});
+        for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}})
+            if (2 * both >= material(boxOf(model, inner, -1), {inner})) {
+                found.emplace_back(inner, outer);
+                break;
+            }
+    }
+    return found;
 }
 
 namespace {

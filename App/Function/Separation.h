@@ -34,6 +34,12 @@ bool exactlyPosed(const Model& model, int part, int configuration);
 /// modelled, in the fit's configuration and on the way there.
 std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration, double margin);
 
+/// Solid cuboids (inner, outer) of different parts, the inner one drawn at least half inside the outer one's
+/// material (its box less its cavities) as modelled, where nothing lets them overlap (no fixed joint, no fit
+/// inside's room; issue 36): a part made before the cavity it goes in. Keeping them apart would move or shrink
+/// parts no relationship names, so the solve does not try.
+std::vector<std::pair<int, int>> drawnInside(const Model& model);
+
 /// The least change that keeps a and b clear, judged on `arranged` (the model as its relationships arrange
 /// it): of the separating axes of the two posed cuboids (x, y, z; for turned parts also their own axes and
 /// the cross products), the one and the order that overlap least; or a cavity of one part that holds the

@@ -675,6 +675,24 @@ void keepPivotsOnFaces(const Model& before, Model& after)
                 }
 }
 
+/// Parts drawn inside others (Separation.h's drawnInside), refused with what to do; empty when there are none.
+SolveResult refusedDrawnInside(const Model& model)
+{
+    SolveResult refused{false, model, {}, 0, {}, {}};
+    const std::vector<int> owner = owners(model);
+    for (const auto& [inner, outer] : drawnInside(model)) {
+        const std::string &a = model.cuboids[inner].name, &b = model.cuboids[outer].name;
+        refused.conflict.push_back("drawn inside: " + a + " in " + b);
+        refused.notes.push_back("'" + a + "' is drawn inside '" + b + "', and nothing lets them overlap: make a " +
+                                "cavity in '" + b + "' where '" + a + "' goes, or move it out; nothing was changed");
+        for (int c : {inner, outer})
+            if (const std::string& part = model.parts[owner[c]].name;
+                std::find(refused.parts.begin(), refused.parts.end(), part) == refused.parts.end())
+                refused.parts.push_back(part);
+    }
+    return refused;
+}
+
 }  // namespace
 
 SolveResult solve(const Model& model)
@@ -686,6 +704,8 @@ SolveResult solve(const Model& model)
             return {false, model, {"one piece: " + part.name}, 0, {pieces.error}, {part.name}};
         pieceNotes.insert(pieceNotes.end(), pieces.notes.begin(), pieces.notes.end());
     }
+    if (SolveResult inside = refusedDrawnInside(model); !inside.conflict.empty())
+        return inside;
     Eigen::VectorXd target(6 * model.cuboids.size());
     for (size_t c = 0; c < model.cuboids.size(); ++c)
         for (int k = 0; k < 6; ++k)

@@ -16,11 +16,13 @@ NEW = "New configuration"
 
 def quantity_box(unit, largest):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
-    the user's units."""
+    the user's units. Its own range is wide: a box limited to ±360 drops the last keystroke of "-400" (the user
+    sees -40); `largest` is checked on OK instead (editing.readable), and a value beyond it refused whole."""
     box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
     box.setProperty("unit", unit)
-    box.setProperty("minimum", -largest)
-    box.setProperty("maximum", largest)
+    box.setProperty("minimum", -1e12)
+    box.setProperty("maximum", 1e12)
+    box.setProperty("largest", largest)
     box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)  # room for "-180.00 °" in a narrow combo view
     return box
 
@@ -40,7 +42,8 @@ class ConfigurationsPanel:
         self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Configurations.svg")))
         for name in ("choice", "name", "slider", "play", "status"):
             setattr(self, name, getattr(self.form, name))
-        self.choice.addItems([c.Label for c in self.configurations] + [NEW])
+        self.choice.addItems([c.Label + (" (current)" if c == mech.ShownConfiguration else "")
+                              for c in self.configurations] + [NEW])
         grid = self.form.poses
         self.moves, self.angles, self.offsets = [], [], []
         for row, joint in enumerate(self.joints):  # the joint's name on a line, its angle and offset below it
@@ -122,20 +125,34 @@ class ConfigurationsPanel:
             position = max(0, min(100, position))
         self.slider.setValue(position)
 
+    def unreadable(self):
+        """What is typed wrong in a used field, as a sentence; "" when every field reads."""
+        for row, joint in enumerate(self.joints):
+            for box, what, unit in ((self.angles[row], "angle", "Angle"), (self.offsets[row], "offset", "Length")):
+                largest = box.property("largest")
+                if self.moves[row].isChecked() and box.isVisible() and not editing.readable(box, unit, (-largest, largest)):
+                    return "The {} of {}: \"{}\" is not {} from {:g} to {:g}; type it again.".format(
+                        what, joint.Label, box.text(), "an angle" if unit == "Angle" else "a length", -largest,
+                        largest)
+        return ""
+
     def accept(self):
+        mistake = self.unreadable()
+        if mistake:  # the panel stays open with what was typed: nothing half-typed is stored
+            self.status.setText("<b>{}</b>".format(mistake))
+            return False
+        index, label, poses = self.choice.currentIndex(), self.name.text(), self.poses()  # before the form goes
+        posed = [(j, value(self.angles[r]), value(self.offsets[r])) for r, j in enumerate(self.joints)
+                 if self.moves[r].isChecked()]
         self.close()
         doc = self.mech.Document
         doc.openTransaction("Configuration")
-        index = self.choice.currentIndex()
         chosen = self.configurations[index] if index < len(self.configurations) else None
         if chosen is None:
-            chosen = vp.attach(configuration.create(doc, self.name.text(), []))
+            chosen = vp.attach(configuration.create(doc, label, []))
             self.mech.Group = self.mech.Group + [chosen]
-        chosen.Label = self.name.text() or chosen.Label
-        poses = self.poses()
-        configuration.set_poses(chosen, [(j, value(self.angles[r]), value(self.offsets[r]))
-                                         for r, j in enumerate(self.joints) if self.moves[r].isChecked()],
-                                [poses[j.Name][2] for r, j in enumerate(self.joints) if self.moves[r].isChecked()])
+        chosen.Label = label or chosen.Label
+        configuration.set_poses(chosen, posed, [poses[j.Name][2] for j, _, _ in posed])
         self.mech.ShownConfiguration = chosen
         doc.recompute()
         doc.commitTransaction()

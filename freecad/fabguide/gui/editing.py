@@ -68,6 +68,24 @@ class EnterKeys(QtCore.QObject):
         return False
 
 
+def readable(box, unit="Length", limits=None):
+    """Whether a quantity spin box holds a quantity of `unit` (FreeCAD.Units' name; a plain number is in the
+    box's unit) within `limits` (low, high; by default its range), or an expression (FreeCAD judges those). The box's own validity flag calls a
+    plain "0.3" unfinished, and a value out of range is not emitted: a field typed "1e9" still holds the 1 on its
+    way there."""
+    text = box.text().strip()
+    if text.startswith("="):
+        return True
+    try:
+        typed = FreeCAD.Units.Quantity(text)
+    except ValueError:  # "1e", "abc"
+        return False
+    if typed.Unit not in (FreeCAD.Units.Unit(), getattr(FreeCAD.Units, unit)):  # "2 kg"
+        return False
+    low, high = limits or (box.property("minimum"), box.property("maximum"))
+    return low <= typed.Value <= high
+
+
 def showing(panel):
     try:
         return bool(panel.form and panel.form.isVisible())

@@ -2,7 +2,6 @@
 material-space view updates as the design changes)."""
 import os
 
-import FreeCAD
 import FreeCADGui
 from PySide import QtCore
 
@@ -11,22 +10,6 @@ from freecad.fabguide.gui import editing, resources
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
 PAUSE = 700  # ms without a change before the layout is made again: not on every keystroke
-
-
-def readable(box):
-    """Whether a length box holds a length within its range (or an expression, which FreeCAD judges): its own
-    validity flag calls a plain "0.3" unfinished."""
-    text = box.text().strip()
-    if text.startswith("="):
-        return True
-    try:
-        typed = FreeCAD.Units.Quantity(text)
-    except ValueError:  # "1e", "abc"
-        return False
-    if typed.Unit not in (FreeCAD.Units.Unit(), FreeCAD.Units.Length):  # "2 kg"; a plain number is in mm
-        return False
-    value = typed.Value
-    return box.property("minimum") <= float(value) <= box.property("maximum")
 
 
 class LayoutPanel:
@@ -39,9 +22,12 @@ class LayoutPanel:
         self.pending.setSingleShot(True)
         self.pending.setInterval(PAUSE)
         self.pending.timeout.connect(self.lay_out)
-        self.bindings, self.typed_from = [], {}  # typed_from: each setting before this bout of typing
+        self.bindings, self.typed_from, self.limits = [], {}, {}  # typed_from: each setting before this typing
         for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
             box = getattr(self.form, name.lower())
+            # The range is checked when typing pauses: a box limited to it drops keystrokes ("1e9" shows "1e").
+            self.limits[name] = (box.property("minimum"), box.property("maximum"))
+            box.setProperty("maximum", 1e12)
             box.setProperty("rawValue", getattr(layout, name).Value)
             binding = FreeCADGui.ExpressionBinding(box)
             binding.bind(layout, name)
@@ -72,7 +58,7 @@ class LayoutPanel:
         self.pending.stop()
         if not editing.showing(self):  # closed meanwhile (its fields change as they go)
             return
-        refused = [self.refuse(name) for name in SETTINGS if not readable(getattr(self.form, name.lower()))]
+        refused = [self.refuse(name) for name in SETTINGS if not editing.readable(getattr(self.form, name.lower()), limits=self.limits[name])]
         self.typed_from = {}
         self.layout.Document.recompute()
         self.show()
@@ -83,7 +69,7 @@ class LayoutPanel:
         box = getattr(self.form, name.lower())
         kept = self.typed_from.get(name, getattr(self.layout, name).Value)
         said = "{}: \"{}\" is not a length from {:g} to {:g} mm; it stays {:g} mm.".format(
-            name, box.text(), box.property("minimum"), box.property("maximum"), kept)
+            name, box.text(), *self.limits[name], kept)
         setattr(self.layout, name, kept)
         box.setProperty("rawValue", kept)
         return said

@@ -1,0 +1,133 @@
+"""A new user's drawer session, full of mistakes (issue 36): a carcass with a top, a drawer front and a tray drawn
+inside the carcass, made parts before the cavity; a Geometric picked from a face and an edge; an angle typed out of
+range and Enter pressed in a Configurations field. Nothing changes that no relationship asks for, every mistake is
+a sentence (the runner fails on any traceback or unexpected red line).
+"""
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+import guitest
+from freecad.fabguide import cuboids
+from freecad.fabguide.function import mechanism
+
+state = {}
+told = []
+
+
+def close_message_boxes():
+    box = QtGui.QApplication.activeModalWidget()
+    if isinstance(box, QtGui.QMessageBox):
+        told.append(box.text())
+        box.accept()
+
+
+def box(label, low, high):
+    b = state["doc"].addObject("Part::Box", "Box")
+    b.Label = label
+    cuboids.set_coordinates(b, [v for a in range(3) for v in (low[a], high[a])])
+    return b
+
+
+def pick(*picked):
+    Gui.Selection.clearSelection()
+    for obj, element in picked:
+        if element:
+            Gui.Selection.addSelection(obj, element)
+        else:
+            Gui.Selection.addSelection(obj)
+
+
+def heights():
+    return {b.Label: (round(cuboids.coordinates(b)[4], 6), round(cuboids.coordinates(b)[5], 6))
+            for b in state["doc"].Objects if cuboids.is_box(b)}
+
+
+def a_part_made_before_its_cavity_changes_nothing():
+    state["timer"] = timer = QtCore.QTimer()
+    timer.timeout.connect(close_message_boxes)
+    timer.start(50)
+    Gui.activateWorkbench("FabGuideWorkbench")
+    doc = state["doc"] = guitest.new_document("Drawer")
+    carcass, top = box("Carcass", (0, 0, 0), (600, 400, 800)), box("Top", (0, 0, 800), (600, 400, 830))
+    front, tray = box("Front", (20, -20, 600), (580, 0, 780)), box("Tray", (30, 0, 610), (570, 380, 770))
+    doc.recompute()
+    drawn = heights()
+    pick((front, None), (tray, None))
+    Gui.runCommand("FabGuide_MakePart")
+    pick((carcass, None))
+    Gui.runCommand("FabGuide_MakePart")
+    pick((top, None))
+    Gui.runCommand("FabGuide_MakePart")
+    mech = state["mech"] = next(o for o in doc.Objects if mechanism.is_mechanism(o))
+    assert heights() == drawn, "no box moved or shrank: {}".format(heights())
+    assert mech.Status == "Conflict: drawn inside: Tray in Carcass", mech.Status
+    state.update(carcass=carcass, tray=tray, top=top)
+
+
+def the_cavity_made_the_mechanism_solves_as_drawn():
+    doc, carcass = state["doc"], state["carcass"]
+    space = box("Drawer space", (20, 0, 600), (580, 390, 780))
+    doc.recompute()
+    pick((carcass, None), (space, None))
+    Gui.runCommand("FabGuide_MakeCavity")
+    doc.recompute()
+    assert state["mech"].Status == "Solved", state["mech"].Status
+    assert heights()["Carcass"] == (0, 800) and heights()["Top"] == (800, 830), heights()
+
+
+def a_geometric_from_a_face_and_an_edge_is_refused():
+    doc, tray = state["doc"], state["tray"]
+    objects = len(doc.Objects)
+    del told[:]
+    pick((tray, "Face1"), (tray, "Edge1"))
+    Gui.runCommand("FabGuide_AddGeometric")
+    guitest.settle(0.2)
+    assert told and told[0].startswith("Pick one or two edges of boxes, and nothing else"), told
+    assert len(doc.Objects) == objects
+
+
+def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept():
+    doc, mech, tray = state["doc"], state["mech"], state["tray"]
+    pick((tray, "Edge1"))
+    Gui.runCommand("FabGuide_AddHinge")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_Configurations")
+    guitest.settle(0.3)
+    panel = mech.ViewObject.Proxy.panel
+    configurations = len([o for o in mech.Group if hasattr(o, "Angles")])
+    panel.moves[-1].setChecked(True)
+    angle = panel.angles[-1]
+    angle.setFocus()
+    angle.selectAll()
+    guitest.keys(angle, "-400", QtCore.Qt.Key_Return)
+    guitest.settle(0.3)
+    assert angle.text().startswith("-400"), "every keystroke kept: {}".format(angle.text())
+    assert Gui.Control.activeDialog(), "Enter in a field does not accept the panel"
+    assert not panel.accept(), "OK refused while the angle does not read"
+    assert "is not an angle from -360 to 360" in panel.status.text(), panel.status.text()
+    assert len([o for o in mech.Group if hasattr(o, "Angles")]) == configurations, "nothing stored"
+    angle.selectAll()
+    guitest.keys(angle, "-40")
+    assert panel.accept()
+    guitest.settle(0.3)
+    shown = mech.ShownConfiguration
+    assert shown is not None and list(shown.Angles) == [-40.0], shown and shown.Angles
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    Gui.runCommand("FabGuide_Configurations")
+    guitest.settle(0.3)
+    panel = mech.ViewObject.Proxy.panel
+    assert panel.choice.currentText() == shown.Label + " (current)", panel.choice.currentText()
+    print("window: " + guitest.screenshot("mistakes_function_configurations"))
+    panel.reject()
+    state["timer"].stop()
+
+
+guitest.run([
+    a_part_made_before_its_cavity_changes_nothing,
+    the_cavity_made_the_mechanism_solves_as_drawn,
+    a_geometric_from_a_face_and_an_edge_is_refused,
+    an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept,
+])
