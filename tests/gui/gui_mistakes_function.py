@@ -76,6 +76,19 @@ def the_cavity_made_the_mechanism_solves_as_drawn():
     assert heights()["Carcass"] == (0, 800) and heights()["Top"] == (800, 830), heights()
 
 
+def fit_inside_picked_on_the_tray_takes_the_tray_not_the_front():
+    doc, tray, carcass = state["doc"], state["tray"], state["carcass"]
+    front = doc.getObjectsByLabel("Front")[0]
+    before = {b.Label: cuboids.coordinates(b) for b in (front, tray, carcass)}
+    pick((tray, None), (carcass, None))
+    Gui.runCommand("FabGuide_AddFitInside")
+    fit = next(o for o in doc.Objects if getattr(o, "Portion", None) is not None)
+    assert [b.Label for b in fit.Portion] == ["Tray"], [b.Label for b in fit.Portion]
+    assert state["mech"].Status == "Solved", state["mech"].Status
+    after = {b.Label: cuboids.coordinates(b) for b in (front, tray, carcass)}
+    assert after == before, "the drawer already fits: nothing moves ({})".format(after)
+
+
 def a_geometric_from_a_face_and_an_edge_is_refused():
     doc, tray = state["doc"], state["tray"]
     objects = len(doc.Objects)
@@ -128,6 +141,7 @@ def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept()
 guitest.run([
     a_part_made_before_its_cavity_changes_nothing,
     the_cavity_made_the_mechanism_solves_as_drawn,
+    fit_inside_picked_on_the_tray_takes_the_tray_not_the_front,
     a_geometric_from_a_face_and_an_edge_is_refused,
     an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept,
 ])

@@ -96,6 +96,8 @@ def test_conflicts_are_named_and_leave_the_boxes_alone(doc):
     (lambda d, m: setattr(d.getObjectsByLabel("Top covers base")[0], "Pairs",
                           [(d.getObjectsByLabel("Lid")[0], "bottom"), (d.getObjectsByLabel("Body")[0], "near")]),
      "Body.near and Lid.bottom are linked but not parallel"),
+    (lambda d, m: setattr(d.getObjectsByLabel("Lid")[0], "Height", 5e9),  # said in the user's words
+     r"Mechanism 'Mechanism': part 'Top' box 'Lid' top: .*beyond"),
 ])
 def test_bad_input_is_an_error_naming_the_object(doc, spoil, message):
     mech, body, lid, cover = clamshell(doc)

@@ -380,10 +380,19 @@ def test_coplanar_boards_in_contact_are_cut_as_one_piece(doc):
         lay.Proxy.recompute(lay)
 
 
-def test_core_errors_about_a_part_name_the_piece_it_is(doc):
-    assert layout.name_parts("parts[1].outline: encloses no area",
-                             [{"id": "Bar board + Stem board"}, {"id": "Leg board"}]) == \
-        "board 'Leg board'.outline: encloses no area"
+def test_core_errors_name_what_the_user_named(doc):
+    from freecad.fabguide import messages
+
+    assert messages.in_words("parts[1].outline: encloses no area",
+                             {"parts": [{"id": "Bar board + Stem board"}, {"id": "Leg board"}]}, messages.PACK) == \
+        "board 'Leg board' outline: encloses no area"
+    works = {"parts": [{"name": "Base", "cuboids": [{"name": "b"}]}, {"name": "Drawer", "cuboids": [{"name": "Tray"}]}],
+             "joints": [{"name": "lid hinge"}], "relationships": [{"name": "lid covers", "covering": ["Lid"]}]}
+    for path, words in (("parts[1].cuboids[0].max[2]", "part 'Drawer' box 'Tray' top"),
+                        ("joints[0].part", "joint 'lid hinge' part"),
+                        ("relationships[0].covering[0]", "relationship 'lid covers' covering 'Lid'"),
+                        ("parts[2].name", "parts[2].name")):  # leads nowhere: kept as it is
+        assert messages.in_words(path + ": wrong", works, messages.WORKSLIKE) == words + ": wrong"
 
 
 @pytest.mark.parametrize("make, prop, bad, message", [

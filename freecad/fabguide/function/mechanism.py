@@ -6,7 +6,7 @@ import json
 import FreeCAD
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, cuboids, properties, references
+from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.function import configuration, joints, parts, relationships
 
 SATISFIED = "Satisfied"
@@ -105,7 +105,8 @@ def solve(obj):
     try:
         solved = background.run("Solving " + obj.Label, lambda cancel: fabguide_core.solve(data), stoppable=False)
     except fabguide_core.FormatError as error:
-        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+        raise MechanismError("Mechanism '{}': {}".format(obj.Label, messages.in_words(str(error), data,
+                                                                                      messages.WORKSLIKE)))
     report = solved["report"]
     conflict = report["conflict"]
     if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:

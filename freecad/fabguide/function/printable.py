@@ -5,7 +5,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, preferences, properties
+from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.function import mechanism
 
 PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
@@ -102,7 +102,8 @@ def bodies(obj):
         return background.run("Making {} printable".format(obj.Label),
                               lambda cancel: fabguide_core.printable(*arguments), stoppable=False)
     except (fabguide_core.FormatError, RuntimeError) as error:
-        raise PrintableError("Printable '{}': {}".format(obj.Label, error))
+        raise PrintableError("Printable '{}': {}".format(obj.Label, messages.in_words(str(error), arguments[0],
+                                                                                      messages.WORKSLIKE)))
 
 
 def fit(obj):

@@ -246,6 +246,17 @@ class AddCover(AddRelationship):
         return {"Covering": found[:-1], "Covered": found[-1:]}
 
 
+def portion(inner):
+    """The boxes that must fit (thesis 4.2.2's partial fit) when a box was picked of a part of several, as picked:
+    the tray of a drawer, not its front; every box of the other inner parts. Empty (the whole parts) otherwise."""
+    picked = [o for o, _ in picks()[:-1]]
+    boxes = [o for o in picked if cuboids.is_box(o)]
+    partial = [p for p in inner if p not in picked and set(p.Cuboids) - set(boxes) and set(p.Cuboids) & set(boxes)]
+    if not partial:
+        return []
+    return [b for p in inner for b in p.Cuboids if p not in partial or b in boxes]
+
+
 class AddFitInside(AddRelationship):
     ICON, MENU, KIND, LAST = "FabGuide_FitInside.svg", "Add Fit Inside", "fit_inside", "enclosing"
     TIP = "These parts fit inside that one (picked last; pick one of its cavities to fit in it)"
@@ -253,7 +264,7 @@ class AddFitInside(AddRelationship):
     def fields(self, doc, found):
         last = picks()[-1][0]
         cavity = last if any(last in p.Cavities for p in found[-1:]) else None
-        return {"Inner": found[:-1], "Enclosing": found[-1], "Cavity": cavity}
+        return {"Inner": found[:-1], "Enclosing": found[-1], "Cavity": cavity, "Portion": portion(found[:-1])}
 
 
 class AddSupport(AddRelationship):

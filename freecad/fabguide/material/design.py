@@ -5,13 +5,12 @@ show the material usage live; an edit that no longer fits the master boards is a
 (5.3.2: the parts sharing its line across the board give way) or undone with the reason."""
 import contextlib
 import json
-import re
 
 import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, cuboids, properties, references
+from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.material import master_board
 
 SATISFIED = "Satisfied"
@@ -291,7 +290,7 @@ def recompute(obj):
     try:
         laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
-        said = named(obj, str(error))
+        said = messages.in_words(str(error), edited, messages.FLATPACK)
         mark_constraints(obj, said)
         obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
                       else "Design '" + obj.Label + "': {}").format(said)
@@ -316,16 +315,6 @@ def recompute(obj):
         status = obj.Status  # FreeCAD recomputes again after boxes moved: keep what the first pass said
     obj.Status = status
     obj.Valid = json.dumps(edited["parts"])
-
-
-def named(obj, message):
-    """The core's field paths as the user knows them: "constraints[0].refs: ..." → "constraint 'same length'
-    refs: ...", "parts[3].grain: ..." → "box 'shelf' grain: ..."."""
-    for field, kind, labels in (("constraints", "constraint", [c.Label for c in obj.Group if is_constraint(c)]),
-                                ("parts", "box", [b.Label for b in boxes(obj)])):
-        message = re.sub(field + r"\[(\d+)\]\.?", lambda m: "{} '{}' ".format(kind, labels[int(m.group(1))])
-                         if int(m.group(1)) < len(labels) else m.group(0), message)
-    return message
 
 
 def held(obj, corrected):

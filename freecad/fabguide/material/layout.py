@@ -8,7 +8,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import background, preferences, properties
+from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.material import board, master_board
 
 GAP = 100  # mm between the model and the sheets, and between sheets
@@ -105,7 +105,7 @@ class Layout(properties.Proxy):
                 "Laying out {} ({} boards)".format(obj.Label, sum(p.get("quantity", 1) for p in problem["parts"])),
                 lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
-            raise LayoutError("Layout '{}': {}{}".format(obj.Label, name_parts(str(error), problem.get("parts", [])),
+            raise LayoutError("Layout '{}': {}{}".format(obj.Label, messages.in_words(str(error), problem, messages.PACK),
                                                          master_board.shared(obj.MasterBoards, obj)))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
@@ -191,11 +191,6 @@ def connector_text(c):
     """'Shelf board into Left side board: 3 dowels', one line of the Connectors list."""
     what = {"fingers": "finger tabs", "dowels": "dowels", "cross slots": "cross slots"}[c["kind"]]
     return "{} into {}: {} {}".format(c["a"], c["b"], c["count"], what)
-
-
-def name_parts(message, parts):
-    """The core names parts as parts[i]: say which board (or coplanar piece of boards) that is."""
-    return re.sub(r"parts\[(\d+)\]", lambda m: "board '{}'".format(parts[int(m.group(1))]["id"]), message)
 
 
 def beside(boards):
