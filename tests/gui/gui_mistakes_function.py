@@ -123,6 +123,7 @@ def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept()
     assert len([o for o in mech.Group if hasattr(o, "Angles")]) == configurations, "nothing stored"
     angle.selectAll()
     guitest.keys(angle, "-40")
+    panel.name.setText("Drawer pulled out all the way for cleaning behind it, as the manual shows on page twelve")
     assert panel.accept()
     guitest.settle(0.3)
     shown = mech.ShownConfiguration
@@ -133,7 +134,9 @@ def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept()
     guitest.settle(0.3)
     panel = mech.ViewObject.Proxy.panel
     assert panel.choice.currentText() == shown.Label + " (current)", panel.choice.currentText()
-    print("window: " + guitest.screenshot("mistakes_function_configurations"))
+    assert panel.form.minimumSizeHint().width() <= 260, "a long name does not widen the panel: {}".format(panel.form.minimumSizeHint().width())
+    for path in guitest.screenshots_at_screen_sizes("mistakes_function_configurations"):
+        print("window: " + path)
     panel.reject()
     state["timer"].stop()
 

@@ -127,7 +127,8 @@ def solve(obj):
         FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, note))
     if not report["solved"]:
         obj.Status = "Conflict: " + ", ".join(conflict)
-        FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}\n".format(obj.Label, ", ".join(conflict)))
+        FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}. {}\n".format(
+            obj.Label, ", ".join(conflict), what_to_do(conflict)))
         for note in report.get("notes", []):
             FreeCAD.Console.PrintWarning("  {}\n".format(note))
         say_changes(obj, [])
@@ -136,6 +137,18 @@ def solve(obj):
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved
+
+
+def what_to_do(conflict):
+    """A hint after a conflict: what the user can change."""
+    if any(n.startswith(("drawn inside", "one piece")) for n in conflict):
+        return "Mend the model as the note below says."
+    hint = "Change or delete one of the relationships"
+    if any(n.startswith("lock: ") for n in conflict):
+        hint += ", or unlock a box (the mechanism's Locks)"
+    if any(n.startswith("no overlap") for n in conflict):
+        hint += ", or move the parts that meet apart"
+    return hint + "."
 
 
 def say_changes(obj, changes):

@@ -6,6 +6,7 @@ import os
 import FreeCAD
 import FreeCADGui
 
+from freecad.fabguide import properties
 from freecad.fabguide.gui import resources
 
 
@@ -130,9 +131,22 @@ class Command:
         return self.NEEDS(doc)
 
     def Activated(self):
-        """Runs the command; a mistake in the model (a ValueError: FabGuide's errors, the core's FormatError) is
-        told in one plain sentence, not a traceback."""
+        """Runs the command; a mistake in the model (a ValueError: FabGuide's errors, the core's FormatError; the
+        core's PackingError) is told in one plain sentence, not a traceback, and so is anything unforeseen, its
+        traceback kept for a bug report in FreeCAD's log only."""
         try:
             self.run(FreeCAD.ActiveDocument)
-        except ValueError as error:
+        except properties.mistakes() as error:
             tell(str(error))
+        except Exception as error:  # noqa: B902  (a user meets a sentence, whatever went wrong)
+            unforeseen(self.MENU, error)
+
+
+def unforeseen(what, error):
+    """Something FabGuide did not foresee while doing `what`: one sentence for the user, the traceback in the
+    log (FreeCAD's --log-file, Report view with logging on) for a bug report."""
+    import traceback
+
+    FreeCAD.Console.PrintLog(traceback.format_exc())
+    tell("{} did not finish: {} ({}). Please report this, with what you did, at the FabGuide issue tracker.".format(
+        what, error, type(error).__name__))

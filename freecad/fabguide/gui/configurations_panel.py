@@ -44,6 +44,9 @@ class ConfigurationsPanel:
             setattr(self, name, getattr(self.form, name))
         self.choice.addItems([c.Label + (" (current)" if c == mech.ShownConfiguration else "")
                               for c in self.configurations] + [NEW])
+        # A long configuration name elides rather than widening the panel past the screen (and OK with it).
+        self.choice.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+        self.choice.setMinimumContentsLength(10)
         grid = self.form.poses
         self.moves, self.angles, self.offsets = [], [], []
         for row, joint in enumerate(self.joints):  # the joint's name on a line, its angle and offset below it
