@@ -66,6 +66,7 @@ void run(const OptimiseArguments& args)
 
     const std::filesystem::path out(args.output);
     std::filesystem::create_directories(out);
+    io::replaceSetOf((out / "summary.json").string());  // a suggestion not found again goes with the new set
     nlohmann::json summary = {{"usage_before", exploration.usageBefore()},
                               {"before", writeLayout(material, exploration.start, out, "before")},
                               {"seconds", exploration.seconds},

@@ -112,6 +112,7 @@ int run(const PrintableArguments& args)
             "part in the way)\n",
             body.c_str());
     std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
+    io::replaceSetOf((std::filesystem::path(args.output) / "report.json").string());  // bodies since renamed
     std::vector<std::string> written = io::writePrintFiles(onTheBed, args.output);
     for (const std::string& path : written)
         std::printf("wrote %s\n", path.c_str());

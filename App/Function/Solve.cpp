@@ -675,7 +675,8 @@ void keepPivotsOnFaces(const Model& before, Model& after)
                 }
 }
 
-/// Parts drawn inside others (Separation.h's drawnInside), refused with what to do; empty when there are none.
+/// Parts drawn inside others (Separation.h's drawnInside), refused with what to do; empty when there are
+/// none.
 SolveResult refusedDrawnInside(const Model& model)
 {
     SolveResult refused{false, model, {}, 0, {}, {}};
@@ -683,8 +684,8 @@ SolveResult refusedDrawnInside(const Model& model)
     for (const auto& [inner, outer] : drawnInside(model)) {
         const std::string &a = model.cuboids[inner].name, &b = model.cuboids[outer].name;
         refused.conflict.push_back("drawn inside: " + a + " in " + b);
-        refused.notes.push_back("'" + a + "' is drawn inside '" + b + "', and nothing lets them overlap: make a " +
-                                "cavity in '" + b + "' where '" + a + "' goes, or move it out; nothing was changed");
+        refused.notes.push_back(refused.conflict.back() + ": nothing lets them overlap; make a cavity in '" +
+                                b + "' where '" + a + "' goes (or move it out); nothing was changed");
         for (int c : {inner, outer})
             if (const std::string& part = model.parts[owner[c]].name;
                 std::find(refused.parts.begin(), refused.parts.end(), part) == refused.parts.end())

@@ -367,8 +367,8 @@ std::vector<std::string> writeSheets(const std::vector<material::CutSheet>& shee
             writeAtomically(paths.back(),
                             [&](const std::string& file) { writeDxf(sheets[s], paths.back(), file); });
     }
-    for (size_t stale = sheets.size() + 1; std::filesystem::remove(pathOf(stale), error); ++stale) {
-    }
+    for (size_t stale = sheets.size() + 1; std::filesystem::exists(pathOf(stale), error); ++stale)
+        removeWhenCommitted(pathOf(stale));  // the previous layout's last sheets, once this one is in place
     return paths;
 }
 

@@ -2,6 +2,7 @@
 
 #include "IO/Json.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -26,6 +27,7 @@ struct File {
 /// The files under temporary names. The signal handler reads the list only while no thread changes it.
 struct Pending {
     std::vector<File> files;
+    std::vector<std::string> stale;  ///< removed once the batch commits, unless written
     int batches = 0;
     std::mutex mutex;
     std::atomic<bool> changing{false};
@@ -165,20 +167,72 @@ OutputBatch::OutputBatch()
 OutputBatch::~OutputBatch()
 {
     Changing changing;
-    if (--pending().batches == 0)
+    if (--pending().batches == 0) {
         removeAll();
+        pending().stale.clear();
+    }
 }
 
 void OutputBatch::commit()
 {
     Changing changing;
+    std::vector<std::string> written;
     for (const File& file : pending().files)
-        if (file.written && !rename(file)) {
-            const std::string path = file.path;  // removeAll frees `file`
-            removeAll();
-            throw FormatError(path + ": cannot write file");
+        if (file.written) {
+            if (!rename(file)) {
+                const std::string path = file.path;  // removeAll frees `file`
+                removeAll();
+                throw FormatError(path + ": cannot write file");
+            }
+            written.push_back(std::filesystem::absolute(file.path).lexically_normal().string());
         }
     pending().files.clear();
+    for (const std::string& path : pending().stale)
+        if (std::find(written.begin(), written.end(), path) == written.end())
+            std::remove(path.c_str());
+    pending().stale.clear();
+}
+
+void removeWhenCommitted(const std::string& path)
+{
+    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    Changing changing;
+    if (pending().batches == 0)
+        std::remove(absolute.c_str());
+    else
+        pending().stale.push_back(absolute);
+}
+
+void replaceSetOf(const std::string& manifest)
+{
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::absolute(manifest).lexically_normal().parent_path();
+    nlohmann::json listed;
+    try {
+        listed = readJsonFile(manifest);
+    } catch (const std::exception&) {
+        return;  // none yet
+    }
+    if (!listed.is_object() ||
+        (listed.value("format", "").rfind("fabguide.", 0) != 0 && !listed.contains("suggestions")))
+        return;  // not one of ours: nothing it names is touched
+    std::vector<const nlohmann::json*> todo{&listed};
+    while (!todo.empty()) {
+        const nlohmann::json& node = *todo.back();
+        todo.pop_back();
+        if (node.is_structured())
+            for (const nlohmann::json& child : node)
+                todo.push_back(&child);
+        if (!node.is_string())
+            continue;
+        const std::filesystem::path named(node.get<std::string>());
+        for (const std::filesystem::path& file : {folder / named, std::filesystem::absolute(named)}) {
+            const std::filesystem::path normal = file.lexically_normal();
+            if (normal.parent_path() == folder &&
+                std::filesystem::is_regular_file(std::filesystem::symlink_status(normal, error)))
+                removeWhenCommitted(normal.string());
+        }
+    }
 }
 
 void removeTemporariesOnInterrupt()

@@ -92,3 +92,52 @@ TEST(Output, ARenameThatFailsAtCommitNamesItsFileAndLeavesNoTemporary)
     for (const auto& entry : fs::directory_iterator(dir))
         EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << entry.path();
 }
+
+TEST(Output, ThePreviousSetsLeftoversGoOnlyOnceTheNewSetIsInPlace)
+{
+    const fs::path out = folder("set");
+    for (const char* name : {"lid.stl", "old body.stl", "mine.txt"})
+        writeText((out / name).string(), "old");
+    writeText(
+        (out / "report.json").string(),
+        R"({"format": "fabguide.printable-report", "files": ["lid.stl", "old body.stl", "report.json"]})");
+    {
+        OutputBatch batch;  // a run that fails before it commits: the old set stays whole
+        replaceSetOf((out / "report.json").string());
+        writeAtomically((out / "lid.stl").string(), [](const std::string& t) { writeText(t, "new"); });
+    }
+    EXPECT_TRUE(fs::exists(out / "old body.stl"));
+    EXPECT_EQ(readText(out / "lid.stl"), "old");
+    {
+        OutputBatch batch;
+        replaceSetOf((out / "report.json").string());
+        writeAtomically((out / "lid.stl").string(), [](const std::string& t) { writeText(t, "new"); });
+        writeAtomically((out / "report.json").string(), [](const std::string& t) { writeText(t, "{}"); });
+        EXPECT_TRUE(fs::exists(out / "old body.stl")) << "not before the commit";
+        batch.commit();
+    }
+    EXPECT_FALSE(fs::exists(out / "old body.stl")) << "a body since renamed";
+    EXPECT_EQ(readText(out / "lid.stl"), "new");
+    EXPECT_TRUE(fs::exists(out / "report.json") && fs::exists(out / "mine.txt"))
+        << "written again, or never ours";
+}
+
+TEST(Output, AManifestNotOursOrNamingFilesElsewhereRemovesNothing)
+{
+    const fs::path out = folder("foreign"), elsewhere = folder("elsewhere");
+    writeText((elsewhere / "victim").string(), "kept");
+    writeText((out / "notes.txt").string(), "kept");
+    writeText((out / "report.json").string(), R"({"files": ["notes.txt"]})");  // another tool's report
+    writeText(
+        (out / "summary.json").string(),
+        R"({"suggestions": [], "file": ")" + (elsewhere / "victim").string() + R"(", "up": "../victim"})");
+    {
+        OutputBatch batch;
+        replaceSetOf((out / "report.json").string());
+        replaceSetOf((out / "summary.json").string());
+        replaceSetOf((out / "missing.json").string());
+        batch.commit();
+    }
+    EXPECT_TRUE(fs::exists(out / "notes.txt"));
+    EXPECT_TRUE(fs::exists(elsewhere / "victim"));
+}
