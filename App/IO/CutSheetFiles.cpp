@@ -35,10 +35,11 @@ void writeText(const std::string& path, Write&& write)
 
 std::string quoteCsv(const std::string& text)
 {
-    if (text.find_first_of(",\"\n") == std::string::npos)
-        return text;
+    const std::string plain = plainText(text);  // one row per part, whatever its name holds
+    if (plain.find_first_of(",\"") == std::string::npos)
+        return plain;
     std::string out = "\"";
-    for (char c : text)
+    for (char c : plain)
         out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
@@ -308,16 +309,17 @@ void writeDxf(const material::CutSheet& sheet, const std::string& path, const st
     for (size_t k = sheet.lettering.empty() ? 0 : sheet.labels.size(); k < sheet.labels.size(); ++k) {
         const material::Label& label =
             sheet.labels[k];  // as text, centred horizontally (1) and vertically (2)
-        dxf.writeText(*dw,
-                      DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0,
-                                  1, 2, label.text, "Standard", label.angle * kPi / 180),  // radians
-                      DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
+        dxf.writeText(
+            *dw,
+            DL_TextData(label.at.x, label.at.y, 0, label.at.x, label.at.y, 0, label.height, 1.0, 0, 1, 2,
+                        plainText(label.text), "Standard", label.angle * kPi / 180),  // radians
+            DL_Attributes("ENGRAVE", 256, -1, "BYLAYER", 1.0));
     }
     for (const material::SawCut& c : sheet.sawCuts) {  // the saw's lines, each with its number beside it
         dxf.writeLine(*dw, DL_LineData(c.from.x, c.from.y, 0, c.to.x, c.to.y, 0),
                       DL_Attributes("SAW", 256, -1, "BYLAYER", 1.0));
         const double x = (c.from.x + c.to.x) / 2, y = (c.from.y + c.to.y) / 2;
-        dxf.writeText(*dw, DL_TextData(x, y, 0, x, y, 0, 8, 1.0, 0, 1, 0, c.number, "Standard", 0),
+        dxf.writeText(*dw, DL_TextData(x, y, 0, x, y, 0, 8, 1.0, 0, 1, 0, plainText(c.number), "Standard", 0),
                       DL_Attributes("SAW", 256, -1, "BYLAYER", 1.0));
     }
     dw->sectionEnd();

@@ -23,10 +23,12 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Vec.hxx>
 
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -105,6 +107,23 @@ std::string prusaSlicerConfig(const std::string& name, const std::vector<printab
                << "<metadata type=\"volume\" key=\"volume_type\" value=\"ModelPart\"/></volume>";
     config << "</object></config>\n";
     return config.str();
+}
+
+std::string lowercase(std::string text)
+{
+    for (char& c : text)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+/// Whether Windows keeps the name for a device (whatever the extension).
+bool reservedOnWindows(const std::string& stem)
+{
+    static const std::set<std::string> devices{"con", "prn", "aux", "nul"};
+    const std::string lower = lowercase(stem);
+    return devices.count(lower) ||
+           (lower.size() == 4 && (lower.rfind("com", 0) == 0 || lower.rfind("lpt", 0) == 0) &&
+            std::isdigit(static_cast<unsigned char>(lower[3])));
 }
 
 /// A body's file name stem: its name with '-' for what is not a letter or digit. A body of many parts is
@@ -243,8 +262,16 @@ std::vector<std::string> writePrintFiles(const printable::Printable& printable, 
         }
     };
     write(printable.bodies, "assembly");
-    for (const printable::Body& b : printable.bodies)
-        write({b}, fileName(b.name));
+    // Each body's stem its own: "a b" and "a-b" both read a-b, a body named "assembly" or "report" would
+    // replace those files, and Windows keeps CON, NUL, COM1... for devices (issue 35).
+    std::set<std::string> taken{"assembly", "report"};
+    for (const printable::Body& b : printable.bodies) {
+        const std::string stem = fileName(b.name);
+        std::string unique = stem;
+        for (int k = 2; !taken.insert(lowercase(unique)).second || reservedOnWindows(unique); ++k)
+            unique = stem + "-" + std::to_string(k);
+        write({b}, unique);
+    }
     return written;
 }
 

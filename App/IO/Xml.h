@@ -1,11 +1,16 @@
-// XML text for the files FabGuide writes (SVG cut sheets, 3MF models).
+// Text for the files FabGuide writes (SVG cut sheets, 3MF models, DXF): names as users typed them, made safe.
 #pragma once
 
 #include <string>
 
 namespace fabguide::io {
 
-/// text with &, <, > and " escaped, for an element's text or an attribute's value.
+/// `text` as every file format takes it on one line: invalid UTF-8 and control characters (line breaks, tabs,
+/// NUL) each become U+FFFD, the replacement character. XML 1.0 refuses them even escaped, and in a DXF a line
+/// break inside a value shifts every group code after it (issue 35).
+std::string plainText(const std::string& text);
+
+/// plainText with &, <, > and " escaped, for an element's text or an attribute's value.
 std::string escapeXml(const std::string& text);
 
 }  // namespace fabguide::io

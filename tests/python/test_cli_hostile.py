@@ -168,3 +168,33 @@ def test_a_run_killed_while_writing_leaves_one_whole_set_of_files(fabguide_cli, 
         # -15: killed while the program loads, before its handler is installed and before it touches a file
         assert run_.wait(timeout=10) in (0, 143, -signal.SIGTERM)
         assert files(folder) in (first, second), "trial {}: a mixed or broken set".format(trial)
+
+
+HOSTILE_NAMES = ["line\nbreak", "tab\there", "nul\u0000byte", "bell\u0007", "del\u007f", 'quote " & <tag>',
+                 "comma, semicolon; pipe|", "Tür – 棚 🪚", "x" * 20000, "back\\slash/../..", "\r\ncarriage"]
+
+
+def test_ids_of_any_characters_give_files_real_parsers_read(fabguide_cli, tmp_path):
+    import csv
+    import xml.etree.ElementTree as ElementTree
+
+    import ezdxf
+
+    parts = [{"id": name, "width": 200 + 10 * k, "height": 150} for k, name in enumerate(HOSTILE_NAMES)]
+    document = dict(PACK, parts=parts, settings={"tab_width": 0})
+    (tmp_path / "names.pack.json").write_text(json.dumps(document))
+    out = tmp_path / "out"
+    result = run(fabguide_cli, "pack", str(tmp_path / "names.pack.json"), "-o", str(out / "layout.json"), "--svg",
+                 str(out), "--dxf", str(out), "--csv", str(out / "cutlist.csv"), "--iterations", "10")
+    assert result.returncode == 0, result.stderr
+    svgs, dxfs = sorted(out.glob("*.svg")), sorted(out.glob("*.dxf"))
+    assert svgs and len(svgs) == len(dxfs)
+    for svg in svgs:
+        ElementTree.parse(str(svg))  # XML 1.0: no control character, even escaped
+    for dxf in dxfs:
+        ezdxf.readfile(str(dxf))  # its group codes intact
+    with open(out / "cutlist.csv", newline="", encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    assert len(rows) == 1 + len(HOSTILE_NAMES), "one row per part, whatever its name holds"
+    assert rows[1 + HOSTILE_NAMES.index("Tür – 棚 🪚")][0] == "Tür – 棚 🪚", "unicode kept as it is"
+    assert json.loads((out / "layout.json").read_text())["placements"]  # the layout JSON escapes its own

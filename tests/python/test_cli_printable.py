@@ -223,3 +223,17 @@ def test_a_second_print_into_the_folder_leaves_no_files_of_bodies_since_renamed(
     assert not set(olds) & set(left), "the old body's files went with the new set: {}".format(left)
     assert "my notes.txt" in left
     assert sorted(os.path.basename(f) for f in report(out)["files"]) == [n for n in left if n != "my notes.txt"]
+
+
+def test_bodies_whose_names_read_alike_get_files_of_their_own(fabguide_cli, source_dir, tmp_path):
+    text = open(os.path.join(source_dir, "examples", "cellphone.workslike.json")).read()
+    for old, new in (("base", "a b"), ("screen", "a-b"), ("battery", "con")):  # con: a device on Windows
+        text = text.replace('"{}'.format(old), '"{}'.format(new))
+    path = tmp_path / "alike.workslike.json"
+    path.write_text(text)
+    out = tmp_path / "out"
+    run = subprocess.run([fabguide_cli, "printable", str(path), "-o", str(out)], capture_output=True, text=True,
+                         timeout=600)
+    assert run.returncode == 0, run.stderr
+    stems = sorted({f.stem for f in out.glob("*.stl")})
+    assert stems == ["a-b", "a-b-2", "assembly", "con-2"], stems
