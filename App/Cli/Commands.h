@@ -5,6 +5,9 @@
 
 namespace fabguide::cli {
 
+/// A search's --seed: a whole number a double holds exactly (-1 and 2^64 were taken and wrapped, issue 35).
+inline const CLI::Range kSeeds(0LL, 9007199254740991LL);
+
 void addVersionCommand(CLI::App& app);
 void addPackCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);

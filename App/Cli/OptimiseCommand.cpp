@@ -125,7 +125,9 @@ void addOptimiseCommand(CLI::App& app)
     cmd->alias("optimize");
     cmd->add_option("input", args->input, "*.flatpack.json design")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "folder for the suggestions and summary.json")->required();
-    cmd->add_option("--seed", args->options.seed, "same seed, same suggestions")->capture_default_str();
+    cmd->add_option("--seed", args->options.seed, "same seed, same suggestions")
+        ->check(kSeeds)
+        ->capture_default_str();
     cmd->add_option("--threads", args->options.threads, "exploration threads")
         ->check(CLI::Range(1, 256))
         ->capture_default_str();

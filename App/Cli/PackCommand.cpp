@@ -155,7 +155,9 @@ void addPackCommand(CLI::App& app)
                     "(default: the file's settings.first_cut)")
         ->transform(CLI::CheckedTransformer(std::map<std::string, material::FirstCut>(
             io::firstCutNames().begin(), io::firstCutNames().end())));
-    cmd->add_option("--seed", args->search.seed, "seed of the ordering search")->capture_default_str();
+    cmd->add_option("--seed", args->search.seed, "seed of the ordering search")
+        ->check(kSeeds)
+        ->capture_default_str();
     cmd->add_option(
            "--time-limit", args->search.timeLimit,
            "seconds for the run, from start-up to the files written (most of it the ordering search)")
@@ -163,7 +165,8 @@ void addPackCommand(CLI::App& app)
         ->capture_default_str();
     args->search.iterations = std::numeric_limits<long>::max();
     cmd->add_option("--iterations", args->search.iterations,
-                    "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)");
+                    "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)")
+        ->check(CLI::Range(-1LL, 1000000000000000000LL));
     args->search.threads = cores();
     cmd->add_option("--threads", args->search.threads,
                     "threads of the search: its starts, a strip's skyline searches, run at once")

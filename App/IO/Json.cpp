@@ -2,6 +2,7 @@
 
 #include "IO/Output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -164,6 +165,46 @@ bool Fields::flag(const std::string& key, bool fallback) const
     if (value && !value->is_boolean())
         throw FormatError(pathOf(key) + ": must be true or false, got " + value->dump());
     return value ? value->get<bool>() : fallback;
+}
+
+namespace {
+
+/// The number of single-character edits (insertions, deletions, substitutions) from a to b.
+size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+void Fields::only(const std::vector<std::string>& known) const
+{
+    for (const auto& [key, value] : object_.items()) {
+        if (std::find(known.begin(), known.end(), key) != known.end())
+            continue;
+        const auto closest = std::min_element(known.begin(), known.end(), [&](const auto& a, const auto& b) {
+            return editDistance(key, a) < editDistance(key, b);
+        });
+        std::string known_list;
+        for (const std::string& k : known)
+            known_list += (known_list.empty() ? "" : ", ") + k;
+        throw FormatError(pathOf(key) + ": no such key" +
+                          (closest != known.end() && editDistance(key, *closest) <= 2
+                               ? "; did you mean \"" + *closest + "\"?"
+                               : " (known: " + known_list + ")"));
+    }
 }
 
 void Fields::header(const std::string& format, int version) const

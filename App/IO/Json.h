@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fabguide::io {
 
@@ -54,6 +55,9 @@ public:
     Eigen::Vector3d vector3(const std::string& key) const;
     /// The array at key (required unless `optional`, then empty when absent).
     const nlohmann::json& array(const std::string& key, bool optional = false) const;
+    /// Refuses a key not in `known` (a misspelt "kerff" would otherwise be ignored without a word), naming it
+    /// and the known key it is closest to.
+    void only(const std::vector<std::string>& known) const;
     std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
     bool has(const std::string& key) const { return object_.contains(key); }
 

@@ -216,6 +216,9 @@ material::PackSettings readSettings(const nlohmann::json& document)
     if (!document.contains("settings"))
         return result;
     const Fields settings(document["settings"], "settings");
+    settings.only({"resolution", "kerf", "spacing", "trim", "dogbone", "tab_width", "tab_below",
+                   "rotation_step", "cuts", "stages", "first_cut", "min_length",
+                   "snap"});  // the last two: a flat-pack design's
     result.resolution = settings.number("resolution", 0.5);
     if (!(result.resolution > 0))
         throw FormatError("settings.resolution: must be greater than 0");
@@ -241,6 +244,7 @@ material::PackSettings readSettings(const nlohmann::json& document)
 material::MasterBoard readMasterBoard(const nlohmann::json& json, const std::string& path)
 {
     const Fields board(json, path);
+    board.only({"name", "material", "width", "height", "thickness", "count", "cost", "grain"});
     material::MasterBoard b;
     b.name = board.text("name", "board");
     b.material = board.text("material", "");

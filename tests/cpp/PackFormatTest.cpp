@@ -107,6 +107,18 @@ TEST(PackFormat, ErrorsNameTheOffendingField)
     EXPECT_EQ(errorOf(json::array()), "document: must be a JSON object");
 }
 
+TEST(PackFormat, AMisspeltKeyIsNamedWithTheKeyMeant)
+{
+    json d = goodProblem();
+    d["settings"]["kerff"] = 0.3;  // ignored without a word, the kerf would be 0.2
+    EXPECT_EQ(errorOf(d), "settings.kerff: no such key; did you mean \"kerf\"?");
+    d = goodProblem();
+    d["boards"][0]["colour"] = "red";
+    EXPECT_EQ(errorOf(d),
+              "boards[0].colour: no such key (known: name, material, width, height, thickness, count, "
+              "cost, grain)");
+}
+
 TEST(PackFormat, ErrorsCarryTheirFieldPath)
 {
     EXPECT_EQ(io::FormatError("parts[0].orientations[1]: must be 0, 90, 180 or 270").field(),

@@ -104,6 +104,21 @@ def test_command_line_ranges_are_checked_in_plain_numbers(fabguide_cli, source_d
     assert len(result.stderr) < 300, result.stderr  # not DBL_MAX in 300 digits
 
 
+@pytest.mark.parametrize("option, value", [("--seed", "-1"), ("--seed", "18446744073709551616"),
+                                           ("--iterations", "-5")])
+def test_seeds_and_iterations_out_of_range_are_refused_not_wrapped(fabguide_cli, source_dir, tmp_path, option, value):
+    source = os.path.join(source_dir, "examples", "bookshelf.pack.json")
+    result = run(fabguide_cli, "pack", source, "-o", str(tmp_path / "x.json"), option, value)
+    assert result.returncode != 0 and "{}: Value {} not in range".format(option, value) in result.stderr
+    assert not (tmp_path / "x.json").exists()
+
+
+def test_a_misspelt_setting_is_named_with_the_one_meant(fabguide_cli, tmp_path):
+    (tmp_path / "p.pack.json").write_text(json.dumps(changed(PACK, ["settings"], {"kerff": 0.3})))
+    result = run(fabguide_cli, "pack", str(tmp_path / "p.pack.json"), "-o", str(tmp_path / "x.json"))
+    assert result.returncode == 1 and 'settings.kerff: no such key; did you mean "kerf"?' in result.stderr
+
+
 def test_an_unwritable_output_is_refused_before_the_search(fabguide_cli, source_dir, tmp_path):
     blocker = tmp_path / "a-file"
     blocker.write_text("in the way")
