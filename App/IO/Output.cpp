@@ -13,6 +13,7 @@
 #include <mutex>
 #include <vector>
 
+#include <signal.h>
 #include <unistd.h>
 
 namespace fabguide::io {
@@ -100,12 +101,43 @@ extern "C" void onInterrupt(int signal)
     _exit(128 + signal);
 }
 
+/// Removes, once per folder and process, the temporaries that runs since ended left in `folder` (killed by
+/// SIGKILL, or the machine stopped): `.NAME.partial-PID-XXXXXX` whose process no longer exists. One still
+/// running (another run writing there now) keeps its own.
+void removeLeftovers(const std::filesystem::path& folder)
+{
+    static std::mutex once;
+    static std::vector<std::string> cleaned;
+    const std::lock_guard<std::mutex> guard(once);
+    const std::string key = std::filesystem::absolute(folder).lexically_normal().string();
+    if (std::find(cleaned.begin(), cleaned.end(), key) != cleaned.end())
+        return;
+    cleaned.push_back(key);
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, error)) {
+        const std::string name = entry.path().filename().string();
+        const size_t at = name.rfind(".partial-");
+        if (name[0] != '.' || at == std::string::npos || name.size() < at + 9 + 8)
+            continue;
+        const std::string pid = name.substr(at + 9, name.size() - at - 9 - 7);  // PID of PID-XXXXXX
+        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9)
+            continue;
+        if (kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH &&
+            entry.is_regular_file(error))
+            std::filesystem::remove(entry.path(), error);
+    }
+}
+
 /// A new empty file beside `path` under a name no one can guess, made by this call alone (mkstemp: O_CREAT |
-/// O_EXCL, so a link planted in a shared folder is never written through).
+/// O_EXCL, so a link planted in a shared folder is never written through). It carries this process's id, so a
+/// later run can tell a temporary whose run has ended (removeLeftovers).
 std::string temporaryFor(const std::string& path)
 {
     const std::filesystem::path p(path);
-    std::string name = (p.parent_path() / ("." + p.filename().string() + ".partial-XXXXXX")).string();
+    removeLeftovers(p.parent_path());
+    std::string name =
+        (p.parent_path() / ("." + p.filename().string() + ".partial-" + std::to_string(getpid()) + "-XXXXXX"))
+            .string();
     const int fd = mkstemp(name.data());
     if (fd < 0)
         throw FormatError(path + ": cannot write beside it (" + std::strerror(errno) + ")");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace fabguide::io;
@@ -140,4 +141,24 @@ TEST(Output, AManifestNotOursOrNamingFilesElsewhereRemovesNothing)
     }
     EXPECT_TRUE(fs::exists(out / "notes.txt"));
     EXPECT_TRUE(fs::exists(elsewhere / "victim"));
+}
+
+TEST(Output, TemporariesARunThatEndedLeftAreRemovedByTheNextAndALiveRunsAreKept)
+{
+    const fs::path out = folder("leftovers");
+    const pid_t ended = fork();
+    if (ended == 0)
+        _exit(0);
+    waitpid(ended, nullptr, 0);  // its id names no process now
+    const std::string dead = ".old.svg.partial-" + std::to_string(ended) + "-Ab12Cd";
+    const std::string alive =
+        ".old.svg.partial-" + std::to_string(getppid()) + "-Ef34Gh";  // a run still going
+    writeText((out / dead).string(), "left by a SIGKILL");
+    writeText((out / alive).string(), "being written");
+    writeText((out / ".notes.partial-draft").string(), "someone's");
+    writeAtomically((out / "new.svg").string(), [](const std::string& t) { writeText(t, "new"); });
+    EXPECT_FALSE(fs::exists(out / dead));
+    EXPECT_TRUE(fs::exists(out / alive));
+    EXPECT_TRUE(fs::exists(out / ".notes.partial-draft"));
+    EXPECT_EQ(readText(out / "new.svg"), "new");
 }
