@@ -14,21 +14,24 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
-                          double seconds)
+                          double seconds, const std::atomic<bool>* cancel)
 {
     const RasterProblem units = material.raster(sizes);
-    return searchFromStarts(units.parts, material.stock(), orderingSearch(units.parts.size(), seed, seconds));
+    OrderingSearchOptions search = orderingSearch(units.parts.size(), seed, seconds);
+    search.cancel = cancel;
+    return searchFromStarts(units.parts, material.stock(), search);
 }
 
 SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
-                        std::uint64_t seed, Clock::time_point deadline)
+                        std::uint64_t seed, Clock::time_point deadline, const std::atomic<bool>* cancel)
 {
+    const auto going = [&] { return Clock::now() < deadline && !(cancel && cancel->load()); };
     constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
     // Each fresh layout gets an even share of the time: the least design, then the bisections.
     const auto share = [&](int layoutsLeft) { return secondsUntil(deadline) / std::max(1, layoutsLeft); };
     const auto laidOut = [&](const Eigen::VectorXd& X, double seconds) {
         Eigen::VectorXd sizes = design.sizes(X);
-        GridLayout layout = searchedLayout(material, sizes, seed, seconds);
+        GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
         return designLayout(material, X, std::move(sizes), std::move(layout));
     };
     const std::optional<Eigen::VectorXd> shrunk = design.least(start.X, deadline);
@@ -45,7 +48,7 @@ SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material
     for (int sheets = start.figures.sheets - 1; sheets >= smallest.figures.sheets; --sheets) {
         DesignLayout fits = smallest;
         double hi = 1;
-        for (int k = 0; k < halvings && Clock::now() < deadline; ++k) {
+        for (int k = 0; k < halvings && going(); ++k) {
             const double t = (lo + hi) / 2;
             const auto X = design.between(start.X, least, t);
             if (!X) {

@@ -14,9 +14,9 @@
 namespace fabguide::material {
 
 /// The layout command's ordering search on part sizes s (best-fit and decreasing-extent starts, |parts|²
-/// swaps each, for at most `seconds`).
+/// swaps each, for at most `seconds`, or until `cancel` is set: Suggest's Stop).
 GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
-                          double seconds);
+                          double seconds, const std::atomic<bool>* cancel = nullptr);
 
 /// What FEWERSHEETS found: the least design with its fresh layout (none when it could not be found), and the
 /// designs that save sheets.
@@ -29,8 +29,9 @@ struct SavedSheets {
 /// constraint holds) laid out afresh; if that needs fewer sheets, then for each sheet count from one fewer
 /// down to that one, the design nearest to `start` on the way (bisection on the fraction of the shrink)
 /// whose fresh layout fits on that many. No designs when the design cannot shrink onto fewer sheets or the
-/// deadline came first.
+/// deadline (or `cancel`) came first.
 SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
-                        std::uint64_t seed, std::chrono::steady_clock::time_point deadline);
+                        std::uint64_t seed, std::chrono::steady_clock::time_point deadline,
+                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace fabguide::material

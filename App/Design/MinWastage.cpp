@@ -45,11 +45,12 @@ std::uint64_t seedOf(std::uint64_t seed, int round, int task)
 constexpr double kSearchOn = 10, kReopenCheck = 2;
 
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
-                         std::uint64_t seed, Clock::time_point deadline)
+                         std::uint64_t seed, Clock::time_point deadline, const std::atomic<bool>* cancel)
 {
     const RasterProblem units = material.raster(sizes);
-    return exploreOrderings(units.parts, std::move(order), material.stock(),
-                            orderingSearch(units.parts.size(), seed, secondsUntil(deadline)));
+    OrderingSearchOptions search = orderingSearch(units.parts.size(), seed, secondsUntil(deadline));
+    search.cancel = cancel;
+    return exploreOrderings(units.parts, std::move(order), material.stock(), search);
 }
 
 /// One task of a round: EXPLOREORDERINGS from the entry's order (shuffled unless `keepOrder`), then
@@ -65,8 +66,9 @@ Entry improve(const DesignSpace& design, const MaterialSpace& material, const En
     // The ordering search takes at most half of a task's share of the time limit: the design change the rest.
     const double share = options.timeLimit * std::max(1, options.threads) /
                          std::max(1, options.rounds * options.tasksPerRound);
-    explorer.order = orderOf(exploredOrder(material, from.design.sizes, order, seed,
-                                           std::min(deadline, Clock::now() + seconds(share / 2))));
+    explorer.order =
+        orderOf(exploredOrder(material, from.design.sizes, order, seed,
+                              std::min(deadline, Clock::now() + seconds(share / 2)), options.cancel));
     const DesignLayout start = explorer.docked(from.design.X);
     Entry out{improveDesign(explorer, start, options.improveIterations), explorer.order, from.path};
     out.path.insert(out.path.end(), explorer.path.begin(), explorer.path.end());
@@ -180,13 +182,17 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
 }  // namespace
 
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
-                    double seconds)
+                    double seconds, const std::atomic<bool>* cancel)
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
-    GridLayout layout = searchedLayout(material, sizes, seed, seconds);
-    if (!layout.unplaced.empty() && seconds < kSearchOn)  // a short share of a time limit: search on first
-        layout = searchedLayout(material, sizes, seed, kSearchOn);
+    GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
+    const bool stopped = cancel && cancel->load();
+    if (!layout.unplaced.empty() && seconds < kSearchOn &&
+        !stopped)  // a short share of a time limit: search on
+        layout = searchedLayout(material, sizes, seed, kSearchOn, cancel);
+    if (!layout.unplaced.empty() && cancel && cancel->load())
+        throw PackingError("stopped before the design as it is was laid out: nothing to compare with");
     if (!layout.unplaced.empty())
         throw PackingError("the design does not fit on the master boards: part '" +
                            material.parts()[material.kindOf()[layout.unplaced.front()]].id +
@@ -203,12 +209,14 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     const auto deadline = started + seconds(0.85 * std::max(0.0, options.timeLimit));
     Exploration exploration;
     // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
-    exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4));
+    exploration.start =
+        layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4), options.cancel);
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
     // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.
-    SavedSheets saved = fewerSheets(design, material, exploration.start, options.seed,
-                                    std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)));
+    SavedSheets saved =
+        fewerSheets(design, material, exploration.start, options.seed,
+                    std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)), options.cancel);
     exploration.leastSheets =
         saved.least && saved.least->layout.unplaced.empty() ? saved.least->figures.sheets : 0;
     for (DesignLayout& d : saved.designs) {

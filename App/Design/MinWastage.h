@@ -47,7 +47,7 @@ struct Exploration {
 /// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over). Throws PackingError
 /// naming a part left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
-                    double seconds = 10);
+                    double seconds = 10, const std::atomic<bool>* cancel = nullptr);
 
 /// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first), after FEWERSHEETS (a fifth of the
 /// time limit) whose designs the rounds improve on. Every suggestion keeps the design's constraints (it comes
