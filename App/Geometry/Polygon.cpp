@@ -450,6 +450,62 @@ std::pair<Point2, double> deepestPoint(const Outline& outline)
     return {{(pole.minX + pole.maxX) / 2, (pole.minY + pole.maxY) / 2}, lo};
 }
 
+namespace {
+
+/// The distance from p to the segment from a to b.
+double toSegment(Point2 p, Point2 a, Point2 b)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    const double t =
+        length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
+/// Marks in `kept` the vertices of polygon[first..last] (indices mod its size) that Douglas-Peucker keeps.
+void keepFarthest(const Polygon& polygon, size_t first, size_t last, double tolerance,
+                  std::vector<bool>& kept)
+{
+    std::vector<std::pair<size_t, size_t>> todo{{first, last}};
+    const size_t n = polygon.size();
+    while (!todo.empty()) {
+        const auto [from, to] = todo.back();
+        todo.pop_back();
+        double farthest = tolerance;
+        size_t at = from;
+        for (size_t k = from + 1; k < to; ++k)
+            if (const double d = toSegment(polygon[k % n], polygon[from % n], polygon[to % n]); d > farthest)
+                farthest = d, at = k;
+        if (at != from) {
+            kept[at % n] = true;
+            todo.emplace_back(from, at);
+            todo.emplace_back(at, to);
+        }
+    }
+}
+
+}  // namespace
+
+Polygon simplified(const Polygon& polygon, double tolerance)
+{
+    const size_t n = polygon.size();
+    if (n < 5)
+        return polygon;
+    size_t opposite = 1;  // the vertex farthest from the first: the two halves' ends
+    for (size_t k = 2; k < n; ++k)
+        if (std::hypot(polygon[k].x - polygon[0].x, polygon[k].y - polygon[0].y) >
+            std::hypot(polygon[opposite].x - polygon[0].x, polygon[opposite].y - polygon[0].y))
+            opposite = k;
+    std::vector<bool> kept(n, false);
+    kept[0] = kept[opposite] = true;
+    keepFarthest(polygon, 0, opposite, tolerance, kept);
+    keepFarthest(polygon, opposite, n, tolerance, kept);
+    Polygon out;
+    for (size_t k = 0; k < n; ++k)
+        if (kept[k])
+            out.push_back(polygon[k]);
+    return out.size() >= 3 ? out : polygon;
+}
+
 Outline offset(const Outline& outline, double distance)
 {
     ClipperLib::ClipperOffset clipper(/*miterLimit=*/4);

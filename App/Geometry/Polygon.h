@@ -106,6 +106,11 @@ std::vector<std::pair<Point2, Point2>> tabGaps(const Polygon& contour, int tabs,
 /// (Clipper, round corners) by a bisected depth until nothing is left.
 std::pair<Point2, double> deepestPoint(const Outline& outline);
 
+/// The contour with only the vertices that keep it within `tolerance` of every vertex it had
+/// (Douglas-Peucker, on both halves of the closed contour): a 100,000-point circle read from a file becomes a
+/// few hundred.
+Polygon simplified(const Polygon& polygon, double tolerance);
+
 /// Grows outer contours and shrinks holes by `distance` (mitred corners), using Clipper:
 /// the tool path of a cut of width 2·distance that leaves the outline at its nominal size.
 Outline offset(const Outline& outline, double distance);

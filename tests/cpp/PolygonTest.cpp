@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -172,4 +173,27 @@ TEST(Polygon, OutlinesOverlapWhereTheirMaterialDoesNotWhereTheyOnlyTouch)
     EXPECT_TRUE(overlap(frame, square(75, 40, 10)));     // across the hole's edge
     EXPECT_TRUE(overlap(frame, square(5, 40, 10)));      // wholly in the material
     EXPECT_TRUE(overlap(square(-10, -10, 200), frame));  // holding the frame
+}
+
+TEST(Polygon, SimplifiedKeepsEveryVertexWithinTheToleranceAndCornersAsTheyAre)
+{
+    Polygon circle;
+    const int n = 100000;
+    for (int k = 0; k < n; ++k)
+        circle.push_back({250 * std::cos(2 * M_PI * k / n), 250 * std::sin(2 * M_PI * k / n)});
+    const Polygon fewer = simplified(circle, 0.025);
+    EXPECT_LT(fewer.size(), 1000u);
+    for (size_t k = 0; k < circle.size(); k += 97) {  // every vertex dropped lies near the new contour
+        double nearest = 1e9;
+        for (size_t j = 0; j < fewer.size(); ++j) {
+            const Point2 a = fewer[j], b = fewer[(j + 1) % fewer.size()], p = circle[k];
+            const double dx = b.x - a.x, dy = b.y - a.y;
+            const double t =
+                std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+            nearest = std::min(nearest, std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy));
+        }
+        EXPECT_LE(nearest, 0.025 + 1e-9) << k;
+    }
+    const Polygon ell{{0, 0}, {30, 0}, {30, 10}, {10, 10}, {10, 30}, {0, 30}};
+    EXPECT_EQ(simplified(ell, 0.05).size(), ell.size());
 }

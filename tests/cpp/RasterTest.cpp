@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace fabguide::material;
 using fabguide::geometry::Outline;
 
@@ -41,4 +43,29 @@ TEST(Raster, ClearanceGrowsEveryEdgeByHalf)
     EXPECT_EQ(f.right()[25], 12);   // inner edge x = 10 grown to 11, offset by the 1 mm margin
     EXPECT_TRUE(f.filled(31, 11));  // the arm's top edge y = 10 grown to 11
     EXPECT_FALSE(f.filled(31, 12));
+}
+
+TEST(Raster, ADenseCircleAndAPlateOfPinHolesRasteriseCoveringTheirMaterial)
+{
+    // Issue 35: a 100,000-point circle and 10,000 holes once took 18 s and 24 s to rasterise.
+    const int n = 100000;
+    Outline disc;
+    for (int k = 0; k < n; ++k)
+        disc.outer.push_back(
+            {250 + 250 * std::cos(2 * M_PI * k / n), 250 + 250 * std::sin(2 * M_PI * k / n)});
+    const Footprint f = rasterise(disc, 0.5, 0);
+    for (int y = 0; y < f.height(); y += 7)
+        for (int x = 0; x < f.width(); x += 7)
+            if (std::hypot(x * 0.5 + 0.25 - 250, y * 0.5 + 0.25 - 250) < 250) {  // a cell centre in the disc
+                EXPECT_TRUE(f.filled(x, y)) << x << " " << y;
+            }
+    EXPECT_LE(f.area(), M_PI * 251 * 251 / 0.25);  // and not much more
+    Outline plate{{{0, 0}, {500, 0}, {500, 500}, {0, 500}}, {}};
+    for (int k = 0; k < 10000; ++k) {
+        const double x = 2 + 5 * (k % 100), y = 2 + 5 * (k / 100);
+        plate.holes.push_back({{x, y}, {x + 2, y}, {x + 2, y + 2}, {x, y + 2}});
+    }
+    const Footprint g = rasterise(plate, 0.5, 0);
+    EXPECT_EQ(g.width(), 1000);
+    EXPECT_TRUE(g.filled(0, 0) && g.filled(999, 999));
 }
