@@ -3,23 +3,15 @@ inside the carcass, made parts before the cavity; a Geometric picked from a face
 range and Enter pressed in a Configurations field. Nothing changes that no relationship asks for, every mistake is
 a sentence (the runner fails on any traceback or unexpected red line).
 """
-import FreeCAD
 import FreeCADGui as Gui
-from PySide import QtCore, QtGui
+from PySide import QtCore
 
 import guitest
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import mechanism
 
 state = {}
-told = []
-
-
-def close_message_boxes():
-    box = QtGui.QApplication.activeModalWidget()
-    if isinstance(box, QtGui.QMessageBox):
-        told.append(box.text())
-        box.accept()
+boxes = None  # guitest.MessageBoxes, from the first step: what message boxes said, in order
 
 
 def box(label, low, high):
@@ -44,9 +36,8 @@ def heights():
 
 
 def a_part_made_before_its_cavity_changes_nothing():
-    state["timer"] = timer = QtCore.QTimer()
-    timer.timeout.connect(close_message_boxes)
-    timer.start(50)
+    global boxes
+    boxes = guitest.MessageBoxes()
     Gui.activateWorkbench("FabGuideWorkbench")
     doc = state["doc"] = guitest.new_document("Drawer")
     carcass, top = box("Carcass", (0, 0, 0), (600, 400, 800)), box("Top", (0, 0, 800), (600, 400, 830))
@@ -92,16 +83,16 @@ def fit_inside_picked_on_the_tray_takes_the_tray_not_the_front():
 def a_geometric_from_a_face_and_an_edge_is_refused():
     doc, tray = state["doc"], state["tray"]
     objects = len(doc.Objects)
-    del told[:]
+    del boxes.told[:]
     pick((tray, "Face1"), (tray, "Edge1"))
     Gui.runCommand("FabGuide_AddGeometric")
     guitest.settle(0.2)
-    assert told and told[0].startswith("Pick one or two edges of boxes, and nothing else"), told
+    assert boxes.told and boxes.told[0].startswith("Pick one or two edges of boxes, and nothing else"), boxes.told
     assert len(doc.Objects) == objects
 
 
 def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept():
-    doc, mech, tray = state["doc"], state["mech"], state["tray"]
+    mech, tray = state["mech"], state["tray"]
     pick((tray, "Edge1"))
     Gui.runCommand("FabGuide_AddHinge")
     Gui.Selection.clearSelection()
@@ -138,7 +129,7 @@ def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept()
     for path in guitest.screenshots_at_screen_sizes("mistakes_function_configurations"):
         print("window: " + path)
     panel.reject()
-    state["timer"].stop()
+    boxes.timer.stop()
 
 
 guitest.run([

@@ -17,14 +17,7 @@ from PySide import QtCore, QtGui
 import guitest
 
 state = {}
-told = []  # what message boxes said, in order
-
-
-def close_message_boxes():
-    box = QtGui.QApplication.activeModalWidget()
-    if isinstance(box, QtGui.QMessageBox):
-        told.append(box.text())
-        box.accept()
+boxes = None  # guitest.MessageBoxes, from the first step: what message boxes said, in order
 
 
 def bookcase(doc, name, x):
@@ -50,9 +43,8 @@ def design_from(boxes):
 
 
 def two_designs_get_a_master_board_each():
-    state["timer"] = timer = QtCore.QTimer()
-    timer.timeout.connect(close_message_boxes)
-    timer.start(50)
+    global boxes
+    boxes = guitest.MessageBoxes()
     Gui.activateWorkbench("FabGuideWorkbench")
     doc = state["doc"] = guitest.new_document("Bookcases")
     bookcase_design = design_from(bookcase(doc, "Bookcase", 0))
@@ -98,14 +90,14 @@ def a_layout_refuses_a_negative_seed():
 
 
 def a_second_panel_is_refused_in_one_sentence():
-    doc, lay = state["doc"], state["layout"]
-    del told[:]
+    lay = state["layout"]
+    del boxes.told[:]
     assert not lay.ViewObject.Proxy.setEdit(lay.ViewObject, 0), "no second panel over the first (a double-click)"
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(state["cabinet"])
     Gui.runCommand("FabGuide_Suggest")
     guitest.settle(0.3)
-    assert told == ["Another task panel is open: finish it with OK or Cancel first."] * 2, told
+    assert boxes.told == ["Another task panel is open: finish it with OK or Cancel first."] * 2, boxes.told
 
 
 def a_kerf_typed_out_of_range_is_refused_whole_and_enter_keeps_the_panel():
@@ -139,7 +131,7 @@ def nothing_is_made_from_a_layout_in_error():
     folder = tempfile.mkdtemp()
     original = QtGui.QFileDialog.getExistingDirectory
     QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kwargs: folder)
-    del told[:]
+    del boxes.told[:]
     try:
         for command in ("FabGuide_ExportCutSheets", "FabGuide_TechDrawPages", "FabGuide_MakeCamJob"):
             Gui.runCommand(command)
@@ -147,7 +139,7 @@ def nothing_is_made_from_a_layout_in_error():
     finally:
         QtGui.QFileDialog.getExistingDirectory = original
     assert os.listdir(folder) == [], "no files of the last good layout"
-    assert len(told) == 3 and all("Mend that first" in t for t in told), told
+    assert len(boxes.told) == 3 and all("Mend that first" in t for t in boxes.told), boxes.told
     assert not [o for o in doc.Objects if o.TypeId == "TechDraw::DrawPage"]
     for m in masters:
         m.Width = 2440
@@ -180,7 +172,7 @@ def saved_is_unmodified():
     Gui.runCommand("Std_Save")
     guitest.settle(0.5)
     assert not Gui.getDocument(doc.Name).Modified, [o.Name for o in doc.Objects if "Touched" in o.State]
-    state["timer"].stop()
+    boxes.timer.stop()
 
 
 guitest.run([

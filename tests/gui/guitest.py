@@ -59,6 +59,25 @@ def told(command):
     return seen[0] if seen else None
 
 
+class MessageBoxes:
+    """Answers every message box the session raises, as a user reading it would (OK), keeping what each said in
+    `told`: a session of many mistakes runs on without a box stopping it."""
+
+    def __init__(self):
+        self.told = []
+        self.timer = QtCore.QTimer()
+        self.timer.timeout.connect(self.answer)
+        self.timer.start(50)
+
+    def answer(self):
+        from PySide import QtGui
+
+        box = QtGui.QApplication.activeModalWidget()
+        if isinstance(box, QtGui.QMessageBox):
+            self.told.append(box.text())
+            box.accept()
+
+
 def isometric(direction="Isometric"):
     """The active 3-D view from a direction (Isometric, Right, Top, ...), fitted, with no camera animation (on by
     default in 1.0: a render right after viewIsometric would catch the camera half-way)."""

@@ -29,11 +29,13 @@ def changed(document, path, value):
 
 
 def run(cli, *args, timeout=60):
-    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-    start = time.monotonic()
+    """The command's result, with the processor time it took (`cpu_seconds`: work, which a busy machine does not
+    stretch as it does wall time) and the peak memory of any child so far."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     result = subprocess.run([cli, *args], capture_output=True, text=True, timeout=timeout)
-    result.seconds = time.monotonic() - start
-    result.peak_kb = max(before, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    result.cpu_seconds = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    result.peak_kb = max(before.ru_maxrss, after.ru_maxrss)
     return result
 
 
@@ -60,7 +62,7 @@ def test_pack_refuses_sizes_beyond_a_workshop_at_once(fabguide_cli, tmp_path, na
     assert result.returncode == 1, (name, result.stdout, result.stderr)
     assert words in result.stderr, result.stderr
     assert result.stderr.count("\n") == 1 and "terminate" not in result.stderr
-    assert result.seconds < 1.0 and result.peak_kb < 200_000, (result.seconds, result.peak_kb)
+    assert result.cpu_seconds < 1.0 and result.peak_kb < 200_000, (result.cpu_seconds, result.peak_kb)
     assert not (tmp_path / "layout.json").exists()
 
 
@@ -94,7 +96,7 @@ def test_a_hinge_angle_beyond_a_turn_is_refused_by_name(fabguide_cli, source_dir
         result = run(fabguide_cli, *command)
         assert result.returncode == 1, result.stdout
         assert "configurations[0].poses.{}: an angle of at most 360 degrees".format(joint) in result.stderr
-        assert result.seconds < 1.0
+        assert result.cpu_seconds < 1.0
 
 
 def test_command_line_ranges_are_checked_in_plain_numbers(fabguide_cli, source_dir, tmp_path):
@@ -125,7 +127,7 @@ def test_an_unwritable_output_is_refused_before_the_search(fabguide_cli, source_
     source = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
     result = run(fabguide_cli, "optimise", source, "-o", str(blocker / "out"), "--time-limit", "30")
     assert result.returncode == 1 and "a-file/out: not a folder" in result.stderr, result.stderr
-    assert result.seconds < 1.0  # refused before 30 s of search, not after
+    assert result.cpu_seconds < 1.0  # refused before 30 s of search, not after
     result = run(fabguide_cli, "pack", os.path.join(source_dir, "examples", "bookshelf.pack.json"),
                  "-o", str(tmp_path))
     assert result.returncode == 1 and "is a folder, not a file to write" in result.stderr
