@@ -343,6 +343,8 @@ void readInnerVolumes(const Fields& root, Design& design)
         v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
         v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
         v.size = volume.vector3("size");
+        if (v.size.minCoeff() <= 0)  // a space no part could be kept out of (issue 32)
+            throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
         v.offset = volume.vector3("position") - design.boards[v.on].centre;
         design.innerVolumes.push_back(v);
     }

@@ -155,4 +155,11 @@ TEST(CorrectionTest, TheFormatNamesWhatItCannotRead)
               "the design does not satisfy its own constraints: top 650");
     EXPECT_EQ(error({{{"kind", "snap"}, {"parts", {"shelf", "top"}}}}),
               "constraints[0]: shelf and top do not touch");
+    try {
+        table(nlohmann::json::array(),
+              {{{"on", "shelf"}, {"position", {20, 60, 162}}, {"size", {100, -50, 80}}}});
+        ADD_FAILURE() << "a negative inner volume read";
+    } catch (const io::FormatError& e) {
+        EXPECT_STREQ(e.what(), "inner_volumes[0].size: every side must be longer than 0");
+    }
 }
