@@ -354,7 +354,9 @@ void readInnerVolumes(const Fields& root, Design& design)
 void checkSatisfied(const Design& design)
 {
     const Eigen::VectorXd X = design.variables();
-    std::vector<std::string> broken = material::unsatisfied(design, X);
+    // Judged to 0.1 µm: the search holds its constraints to 1e-6 mm and writes them with as many digits, so a
+    // reader as strict as the search could refuse a suggestion it wrote (issue 32).
+    std::vector<std::string> broken = material::unsatisfied(design, X, 1e-4);
     for (const std::string& name : material::ineffective(design, X))
         broken.push_back(name);
     if (broken.empty())
