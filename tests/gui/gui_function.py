@@ -278,6 +278,12 @@ def a_fixed_joint_from_two_picked_boxes():
     joint = [o for o in doc.Objects if joints.is_joint(o) and joints.kind(o) == "fixed"][0]
     assert joint.Part.Cuboids == [knob] and joint.Base.Cuboids == [door]
     assert joints.as_dict(joint)["type"] == "fixed" and joint.ViewObject.Proxy.coordinates.point.getNum() == 2
+    Gui.Selection.clearSelection()  # the same two picked the other way round: a loop, refused
+    Gui.Selection.addSelection(door)
+    Gui.Selection.addSelection(knob)
+    said = guitest.told("FabGuide_AddFixedJoint")
+    assert said == "'Knob part' already rides on 'Door part': pick the part to hold first, then the part it rides on.", said
+    assert len([o for o in doc.Objects if joints.is_joint(o)]) == 1
 
 
 def the_cellphone_made_printable_in_its_colours():

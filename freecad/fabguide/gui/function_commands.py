@@ -202,6 +202,9 @@ class AddFixedJoint(Command):
         owners = [parts.part_of(doc.Objects, b) for b in boxes]
         if boxes[0] is boxes[1] or (owners[0] is not None and owners[0] is owners[1]):
             return tell("Both boxes are in one part: pick a box of the part to hold, then one of another part.")
+        if owners[0] is not None and owners[1] is not None and rides_on(doc, owners[1], owners[0]):
+            return tell("'{}' already rides on '{}': pick the part to hold first, then the part it rides on."
+                        .format(owners[1].Label, owners[0].Label))
         with transaction(doc, self.MENU):
             part, base = part_of(doc, boxes[0]), part_of(doc, boxes[1])
             joint = vp.attach(joints.create(doc, "fixed", part, base=base,
@@ -209,6 +212,19 @@ class AddFixedJoint(Command):
             mech = mechanism_for(doc, [part, base])
             add_to(mech, joint)
             finish(doc, joint, mech)
+
+
+def rides_on(doc, part, base):
+    """Whether `part` hangs on `base` through its joints, directly or through parts between (picking a fixed
+    joint the other way round would close a loop)."""
+    hanging = {j.Part: j.Base for j in all_in(doc, joints.is_joint) if j.Base is not None}
+    seen = set()
+    while part in hanging and part.Name not in seen:
+        seen.add(part.Name)
+        part = hanging[part]
+        if part == base:
+            return True
+    return False
 
 
 class AddRelationship(Command):
