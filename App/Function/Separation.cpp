@@ -46,7 +46,8 @@ double common(const Box& a, const Box& b)
 {
     double inside = 1;
     for (int axis = 0; axis < 3; ++axis)
-        inside *= std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
+        inside *=
+            std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
     return inside;
 }
 
@@ -61,11 +62,13 @@ bool mostlyInside(const Box& a, const Box& b)
     return 2 * common(a, b) >= volume(a);
 }
 
-/// Whether solid cuboids a and b of different parts may overlap in the configuration: they are carried together
-/// (one part, or held by fixed joints), or a fit inside makes room for one in the other. Print-in-place cuts the
-/// room a fit's inner parts sweep (thesis 4.5.1), but only for an inner cuboid carved out of an enclosing one
-/// (mostly inside it where the fit holds): one between a frame's posts stays clear of them.
-bool exempt(const Model& model, const Rooms& room, const std::vector<int>& owner, int a, int b, int configuration)
+/// Whether solid cuboids a and b of different parts may overlap in the configuration: they are carried
+/// together (one part, or held by fixed joints), or a fit inside makes room for one in the other.
+/// Print-in-place cuts the room a fit's inner parts sweep (thesis 4.5.1), but only for an inner cuboid carved
+/// out of an enclosing one (mostly inside it where the fit holds): one between a frame's posts stays clear of
+/// them.
+bool exempt(const Model& model, const Rooms& room, const std::vector<int>& owner, int a, int b,
+            int configuration)
 {
     for (const auto& [inner, enclosing] : {std::pair{a, b}, std::pair{b, a}}) {
         const auto found = room.find({owner[inner], owner[enclosing], configuration});

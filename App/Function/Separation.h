@@ -36,8 +36,8 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
 
 /// Solid cuboids (inner, outer) of different parts, the inner one drawn at least half inside the outer one's
 /// material (its box less its cavities) as modelled, where nothing lets them overlap (no fixed joint, no fit
-/// inside's room; issue 36): a part made before the cavity it goes in. Keeping them apart would move or shrink
-/// parts no relationship names, so the solve does not try.
+/// inside's room; issue 36): a part made before the cavity it goes in. Keeping them apart would move or
+/// shrink parts no relationship names, so the solve does not try.
 std::vector<std::pair<int, int>> drawnInside(const Model& model);
 
 /// The least change that keeps a and b clear, judged on `arranged` (the model as its relationships arrange

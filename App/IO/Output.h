@@ -25,13 +25,14 @@ public:
     void commit();
 };
 
-/// Removes `path` once the open OutputBatch has committed (at once when none is open), unless the batch wrote it:
-/// a file of the previous set that the new set does not have goes only when the new set is in place.
+/// Removes `path` once the open OutputBatch has committed (at once when none is open), unless the batch wrote
+/// it: a file of the previous set that the new set does not have goes only when the new set is in place.
 void removeWhenCommitted(const std::string& path);
 
-/// Every file that `manifest` (a JSON file an earlier run wrote beside its outputs: summary.json, report.json)
-/// names in its folder, removed when the batch commits unless written again: the previous set's leftovers (a
-/// body since renamed, a suggestion not found again). A manifest that is missing or does not read names none.
+/// Every file that `manifest` (a JSON file an earlier run wrote beside its outputs: summary.json,
+/// report.json) names in its folder, removed when the batch commits unless written again: the previous set's
+/// leftovers (a body since renamed, a suggestion not found again). A manifest that is missing or does not
+/// read names none.
 void replaceSetOf(const std::string& manifest);
 
 /// On SIGINT or SIGTERM: removes every temporary file not yet renamed and exits with 128 + the signal

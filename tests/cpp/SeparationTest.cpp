@@ -67,16 +67,18 @@ TEST(Separation, APartDrawnInsideAnotherBeforeItsCavityIsNamedAndNothingChanges)
 {
     // Issue 36: a tray drawn inside a carcass, its cavity not made yet. Keeping them apart shrank the carcass
     // (800 -> 665 mm) and the top standing on it: edits no relationship asked for.
-    json d = {{"parts",
-               {cuboidPart("carcass", {0, 0, 0}, {600, 400, 800}), cuboidPart("top", {0, 0, 800}, {600, 400, 830}),
-                cuboidPart("tray", {30, 0, 610}, {570, 380, 770})}}};
+    json d = {
+        {"parts",
+         {cuboidPart("carcass", {0, 0, 0}, {600, 400, 800}), cuboidPart("top", {0, 0, 800}, {600, 400, 830}),
+          cuboidPart("tray", {30, 0, 610}, {570, 380, 770})}}};
     const function::Model drawn = io::readWorkslike(d);
     function::SolveResult r = function::solve(drawn);
     EXPECT_FALSE(r.solved);
     EXPECT_EQ(r.conflict, std::vector<std::string>{"drawn inside: tray in carcass"});
     EXPECT_EQ(r.parts, (std::vector<std::string>{"tray", "carcass"}));
     ASSERT_EQ(r.notes.size(), 1u);
-    EXPECT_NE(r.notes[0].find("make a cavity in 'carcass' where 'tray' goes"), std::string::npos) << r.notes[0];
+    EXPECT_NE(r.notes[0].find("make a cavity in 'carcass' where 'tray' goes"), std::string::npos)
+        << r.notes[0];
     EXPECT_EQ(at(r.model, "carcass", Side::Top), 800);
     // With its cavity made it solves, and nothing moves: the tray is in the void.
     d["parts"][0]["cuboids"].push_back(cuboid("drawer space", {20, 0, 600}, {580, 390, 780}, true));
