@@ -26,7 +26,8 @@ def said(path, document, nouns):
             words.append(SIDES[key][int(index)])
         elif index and isinstance(items, list) and int(index) < len(items):
             node = items[int(index)]
-            name = node if isinstance(node, str) else node.get("name", node.get("id")) if isinstance(node, dict) else None
+            name = node if isinstance(node, str) else (node.get("name", node.get("id")) if isinstance(node, dict)
+                                                       else None)
             if name is None:
                 return path
             words.append("{} '{}'".format(nouns.get(key, key.replace("_", " ")), name))

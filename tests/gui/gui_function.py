@@ -282,7 +282,8 @@ def a_fixed_joint_from_two_picked_boxes():
     Gui.Selection.addSelection(door)
     Gui.Selection.addSelection(knob)
     said = guitest.told("FabGuide_AddFixedJoint")
-    assert said == "'Knob part' already rides on 'Door part': pick the part to hold first, then the part it rides on.", said
+    assert said == ("'Knob part' already rides on 'Door part': pick the part to hold first, then the part it "
+                    "rides on."), said
     assert len([o for o in doc.Objects if joints.is_joint(o)]) == 1
 
 

@@ -133,7 +133,8 @@ class ConfigurationsPanel:
         for row, joint in enumerate(self.joints):
             for box, what, unit in ((self.angles[row], "angle", "Angle"), (self.offsets[row], "offset", "Length")):
                 largest = box.property("largest")
-                if self.moves[row].isChecked() and box.isVisible() and not editing.readable(box, unit, (-largest, largest)):
+                used = self.moves[row].isChecked() and box.isVisible()
+                if used and not editing.readable(box, unit, (-largest, largest)):
                     return "The {} of {}: \"{}\" is not {} from {:g} to {:g}; type it again.".format(
                         what, joint.Label, box.text(), "an angle" if unit == "Angle" else "a length", -largest,
                         largest)

@@ -70,9 +70,9 @@ class EnterKeys(QtCore.QObject):
 
 def readable(box, unit="Length", limits=None):
     """Whether a quantity spin box holds a quantity of `unit` (FreeCAD.Units' name; a plain number is in the
-    box's unit) within `limits` (low, high; by default its range), or an expression (FreeCAD judges those). The box's own validity flag calls a
-    plain "0.3" unfinished, and a value out of range is not emitted: a field typed "1e9" still holds the 1 on its
-    way there."""
+    box's unit) within `limits` (low, high; by default its range), or an expression (FreeCAD judges those). The
+    box's own validity flag calls a plain "0.3" unfinished, and a value out of range is not emitted: a field typed
+    "1e9" still holds the 1 on its way there."""
     text = box.text().strip()
     if text.startswith("="):
         return True

@@ -58,7 +58,8 @@ class LayoutPanel:
         self.pending.stop()
         if not editing.showing(self):  # closed meanwhile (its fields change as they go)
             return
-        refused = [self.refuse(name) for name in SETTINGS if not editing.readable(getattr(self.form, name.lower()), limits=self.limits[name])]
+        refused = [self.refuse(name) for name in SETTINGS
+                   if not editing.readable(getattr(self.form, name.lower()), limits=self.limits[name])]
         self.typed_from = {}
         self.layout.Document.recompute()
         self.show()

@@ -105,8 +105,8 @@ class Layout(properties.Proxy):
                 "Laying out {} ({} boards)".format(obj.Label, sum(p.get("quantity", 1) for p in problem["parts"])),
                 lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
-            raise LayoutError("Layout '{}': {}{}".format(obj.Label, messages.in_words(str(error), problem, messages.PACK),
-                                                         master_board.shared(obj.MasterBoards, obj)))
+            said = messages.in_words(str(error), problem, messages.PACK)
+            raise LayoutError("Layout '{}': {}{}".format(obj.Label, said, master_board.shared(obj.MasterBoards, obj)))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
         obj.Usage = result["usage"]
