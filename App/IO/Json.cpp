@@ -191,19 +191,20 @@ size_t editDistance(const std::string& a, const std::string& b)
 
 void Fields::only(const std::vector<std::string>& known) const
 {
-    for (const auto& [key, value] : object_.items()) {
+    for (const auto& item : object_.items()) {
+        const std::string& key = item.key();
         if (std::find(known.begin(), known.end(), key) != known.end())
             continue;
         const auto closest = std::min_element(known.begin(), known.end(), [&](const auto& a, const auto& b) {
             return editDistance(key, a) < editDistance(key, b);
         });
-        std::string known_list;
+        std::string knownList;
         for (const std::string& k : known)
-            known_list += (known_list.empty() ? "" : ", ") + k;
+            knownList += (knownList.empty() ? "" : ", ") + k;
         throw FormatError(pathOf(key) + ": no such key" +
                           (closest != known.end() && editDistance(key, *closest) <= 2
                                ? "; did you mean \"" + *closest + "\"?"
-                               : " (known: " + known_list + ")"));
+                               : " (known: " + knownList + ")"));
     }
 }
 
