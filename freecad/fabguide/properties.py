@@ -91,7 +91,7 @@ class Proxy(Stateless):
         stamp(obj)
 
     def onBeforeChange(self, obj, prop):
-        if prop in self.VALID:
+        if prop in self.VALID or typed_in(obj, prop):
             self.before = prop, getattr(obj, prop)  # on the proxy only: never saved
 
     def onChanged(self, obj, prop):
@@ -102,9 +102,15 @@ class Proxy(Stateless):
             setattr(obj, prop, before[1])
 
     def invalid(self, obj, prop):
-        """What is wrong with property `prop`'s value, as a sentence; "" when it is valid."""
+        """What is wrong with property `prop`'s value, as a sentence; "" when it is valid. Every number must be
+        finite (a script can set inf or nan, which no spin box types)."""
+        if prop not in obj.PropertiesList:
+            return ""
+        value = getattr(obj, prop)
+        if typed_in(obj, prop) and not abs(number(value)) < 1e100:  # a length keeps inf as the largest double
+            return "{} '{}': {} must be a finite number".format(self.NOUN, obj.Label, prop)
         test, must = self.VALID.get(prop, (None, ""))
-        if test is None or prop not in obj.PropertiesList or test(obj, getattr(obj, prop)):
+        if test is None or test(obj, value):
             return ""
         return "{} '{}': {} must be {}".format(self.NOUN, obj.Label, prop, must)
 
@@ -135,6 +141,12 @@ def mistakes():
     except ImportError:
         return (ValueError,)
     return (ValueError, fabguide_core.PackingError)
+
+
+def typed_in(obj, prop):
+    """Whether `prop` is a number the user (or a script) sets: not a result FabGuide writes (read-only, hidden)."""
+    return (prop in obj.PropertiesList and obj.getTypeIdOfProperty(prop) in NUMBERS and
+            not {"ReadOnly", "Hidden"} & set(obj.getEditorMode(prop)))
 
 
 def failed(obj):

@@ -402,6 +402,10 @@ def test_core_errors_name_what_the_user_named(doc):
      "Master board 'MasterBoard': Thickness must be greater than 0; kept 12"),
     (lambda doc: layout.create(doc, *shelf_unit(doc)), "RotationStep", 7,
      "Layout 'Layout': RotationStep must be 0 or a divisor of 90 (e.g. 15, 30, 45); kept 0"),
+    (lambda doc: master_board.create(doc, 1000, 600, 12), "Width", float("inf"),  # from a script: issue 35
+     "Master board 'MasterBoard': Width must be a finite number; kept 1"),
+    (lambda doc: layout.create(doc, *shelf_unit(doc)), "TimeLimit", float("nan"),
+     "Layout 'Layout': TimeLimit must be a finite number; kept"),
 ])
 def test_a_bad_value_is_refused_as_it_is_typed(doc, make, prop, bad, message, monkeypatch):
     obj = make(doc)
