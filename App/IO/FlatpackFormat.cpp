@@ -376,6 +376,7 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};
+    checkGrid(result.settings, result.boards);
     if (result.settings.cuts == material::Cuts::Guillotine)
         throw FormatError(
             "settings.cuts: the zero-waste design search lays its parts out for free cuts (CNC, laser); "

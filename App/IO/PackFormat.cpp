@@ -277,6 +277,16 @@ std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& docume
     return result;
 }
 
+void checkGrid(const material::PackSettings& settings, const std::vector<material::MasterBoard>& boards)
+{
+    for (size_t i = 0; i < boards.size(); ++i)
+        if (settings.resolution > std::min(boards[i].width, boards[i].height))
+            throw FormatError("settings.resolution: a cell of " + show(settings.resolution) +
+                              " mm is larger than master board '" + boards[i].name + "' (" +
+                              show(boards[i].width) + " x " + show(boards[i].height) + " mm, boards[" +
+                              std::to_string(i) + "])");
+}
+
 material::PackProblem readPackProblem(const nlohmann::json& document)
 {
     checkNumbers(document);
@@ -285,6 +295,7 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
     material::PackProblem problem;
     problem.settings = readSettings(document);
     problem.boards = readMasterBoards(document);
+    checkGrid(problem.settings, problem.boards);
     const nlohmann::json& parts = root.array("parts");
     std::map<std::string, size_t> ids;
     for (size_t i = 0; i < parts.size(); ++i) {

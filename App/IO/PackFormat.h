@@ -27,6 +27,10 @@ material::PackSettings readSettings(const nlohmann::json& document);
 /// The "boards" (master boards) of a `*.pack.json` or `*.flatpack.json` document; at least one.
 std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& document);
 
+/// Throws FormatError naming settings.resolution when a grid cell is larger than a master board's side: that
+/// board would hold no cell, and nothing could be laid on it (issue 35).
+void checkGrid(const material::PackSettings& settings, const std::vector<material::MasterBoard>& boards);
+
 /// Reads a `*.pack.json` document. Throws FormatError naming the offending field.
 material::PackProblem readPackProblem(const nlohmann::json& document);
 

@@ -107,6 +107,17 @@ TEST(PackFormat, ErrorsNameTheOffendingField)
     EXPECT_EQ(errorOf(json::array()), "document: must be a JSON object");
 }
 
+TEST(PackFormat, AGridCellLargerThanABoardIsRefused)
+{
+    json d = goodProblem();
+    d["settings"]["resolution"] = 500;  // the board is 600 x 400: not one cell across it
+    EXPECT_EQ(errorOf(d),
+              "settings.resolution: a cell of 500 mm is larger than master board 'poplar' (600 x 400 mm, "
+              "boards[0])");
+    d["settings"]["resolution"] = 400;
+    EXPECT_EQ(errorOf(d).find("settings.resolution"), std::string::npos) << "one cell fits";
+}
+
 TEST(PackFormat, AMisspeltKeyIsNamedWithTheKeyMeant)
 {
     json d = goodProblem();
