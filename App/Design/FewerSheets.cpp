@@ -1,5 +1,6 @@
 #include "Design/FewerSheets.h"
 
+#include "Layout/Deadline.h"
 #include "Layout/OrderingSearch.h"
 
 #include <algorithm>
@@ -25,10 +26,10 @@ GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& 
 SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
                         std::uint64_t seed, Clock::time_point deadline, const std::atomic<bool>* cancel)
 {
-    const auto going = [&] { return Clock::now() < deadline && !(cancel && cancel->load()); };
+    const Deadline stop(deadline, cancel);
     constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
     // Each fresh layout gets an even share of the time: the least design, then the bisections.
-    const auto share = [&](int layoutsLeft) { return secondsUntil(deadline) / std::max(1, layoutsLeft); };
+    const auto share = [&](int layoutsLeft) { return stop.secondsLeft() / std::max(1, layoutsLeft); };
     const auto laidOut = [&](const Eigen::VectorXd& X, double seconds) {
         Eigen::VectorXd sizes = design.sizes(X);
         GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
@@ -48,7 +49,7 @@ SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material
     for (int sheets = start.figures.sheets - 1; sheets >= smallest.figures.sheets; --sheets) {
         DesignLayout fits = smallest;
         double hi = 1;
-        for (int k = 0; k < halvings && going(); ++k) {
+        for (int k = 0; k < halvings && !stop.passed(); ++k) {
             const double t = (lo + hi) / 2;
             const auto X = design.between(start.X, least, t);
             if (!X) {

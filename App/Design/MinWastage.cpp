@@ -2,6 +2,7 @@
 
 #include "Core/Parallel.h"
 #include "Design/FewerSheets.h"
+#include "Layout/Deadline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -186,12 +187,11 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
+    const Deadline stop(Clock::time_point::max(), cancel);
     GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
-    const bool stopped = cancel && cancel->load();
-    if (!layout.unplaced.empty() && seconds < kSearchOn &&
-        !stopped)  // a short share of a time limit: search on
+    if (!layout.unplaced.empty() && seconds < kSearchOn && !stop.cancelled())  // a short share: search on
         layout = searchedLayout(material, sizes, seed, kSearchOn, cancel);
-    if (!layout.unplaced.empty() && cancel && cancel->load())
+    if (!layout.unplaced.empty() && stop.cancelled())
         throw PackingError("stopped before the design as it is was laid out: nothing to compare with");
     if (!layout.unplaced.empty())
         throw PackingError("the design does not fit on the master boards: part '" +

@@ -211,12 +211,12 @@ std::vector<std::pair<int, int>> drawnInside(const Model& model)
             for (int k = 0; k < 6; ++k)
                 within[k] = k % 2 ? std::min(within[k], box[k]) : std::max(within[k], box[k]);
         }
-        double volume = common(within, within);
+        double left = volume(within);
         for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c)
             for (int s : solids)
                 if (model.cuboids[c].within == s)
-                    volume -= common(within, boxOf(model, c, -1));
-        return std::max(0.0, volume);
+                    left -= common(within, boxOf(model, c, -1));
+        return std::max(0.0, left);
     };
     std::vector<std::pair<int, int>> found;
     for (const auto& [a, b] : nearPairs(model, -1, 0)) {  // overlapping pairs that nothing lets overlap

@@ -63,9 +63,13 @@ TEST(Raster, ADenseCircleAndAPlateOfPinHolesRasteriseCoveringTheirMaterial)
     Outline plate{{{0, 0}, {500, 0}, {500, 500}, {0, 500}}, {}};
     for (int k = 0; k < 10000; ++k) {
         const double x = 2 + 5 * (k % 100), y = 2 + 5 * (k / 100);
-        plate.holes.push_back({{x, y}, {x + 2, y}, {x + 2, y + 2}, {x, y + 2}});
+        plate.holes.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});  // clockwise, as read
     }
     const Footprint g = rasterise(plate, 0.5, 0);
     EXPECT_EQ(g.width(), 1000);
     EXPECT_TRUE(g.filled(0, 0) && g.filled(999, 999));
+    EXPECT_FALSE(g.filled(5, 5)) << "inside the first hole (2..4 mm): free";
+    // Every hole frees at least the 3 x 3 cells wholly inside it and at most its 4 x 4: kept, conservatively.
+    EXPECT_LE(g.area(), 1000 * 1000 - 10000 * 3 * 3);
+    EXPECT_GE(g.area(), 1000 * 1000 - 10000 * 4 * 4);
 }

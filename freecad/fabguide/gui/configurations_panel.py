@@ -16,15 +16,13 @@ NEW = "New configuration"
 
 def quantity_box(unit, largest):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
-    the user's units. Its own range is wide: a box limited to ±360 drops the last keystroke of "-400" (the user
-    sees -40); `largest` is checked on OK instead (editing.readable), and a value beyond it refused whole."""
+    the user's units; a value beyond ±`largest` is refused whole on OK (editing.widened)."""
     box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
     box.setProperty("unit", unit)
-    box.setProperty("minimum", -1e12)
-    box.setProperty("maximum", 1e12)
-    box.setProperty("largest", largest)
+    box.setProperty("minimum", -largest)
+    box.setProperty("maximum", largest)
     box.setButtonSymbols(QtGui.QAbstractSpinBox.NoButtons)  # room for "-180.00 °" in a narrow combo view
-    return box
+    return editing.widened(box)
 
 
 def value(box):
@@ -132,12 +130,10 @@ class ConfigurationsPanel:
         """What is typed wrong in a used field, as a sentence; "" when every field reads."""
         for row, joint in enumerate(self.joints):
             for box, what, unit in ((self.angles[row], "angle", "Angle"), (self.offsets[row], "offset", "Length")):
-                largest = box.property("largest")
-                used = self.moves[row].isChecked() and box.isVisible()
-                if used and not editing.readable(box, unit, (-largest, largest)):
+                if self.moves[row].isChecked() and box.isVisible() and not editing.readable(box, unit):
                     return "The {} of {}: \"{}\" is not {} from {:g} to {:g}; type it again.".format(
-                        what, joint.Label, box.text(), "an angle" if unit == "Angle" else "a length", -largest,
-                        largest)
+                        what, joint.Label, box.text(), "an angle" if unit == "Angle" else "a length",
+                        *editing.limits(box))
         return ""
 
     def accept(self):

@@ -68,11 +68,26 @@ class EnterKeys(QtCore.QObject):
         return False
 
 
-def readable(box, unit="Length", limits=None):
+def widened(box):
+    """Lets a quantity spin box take any number as it is typed, its range kept as its "limits" for `readable` to
+    judge the whole value once typed: a box held to its range drops the keystroke that leaves it ("-400" shows
+    -40, "1e9" shows "1e"), and a value passing through 1 on its way to "1e9" would be applied."""
+    low, high = box.property("minimum"), box.property("maximum")
+    box.setProperty("limits", [low, high])
+    box.setProperty("minimum", -1e12 if low < 0 else low)
+    box.setProperty("maximum", 1e12)
+    return box
+
+
+def limits(box):
+    """(low, high): the range a `widened` box's value must be in."""
+    return tuple(box.property("limits") or (box.property("minimum"), box.property("maximum")))
+
+
+def readable(box, unit="Length"):
     """Whether a quantity spin box holds a quantity of `unit` (FreeCAD.Units' name; a plain number is in the
-    box's unit) within `limits` (low, high; by default its range), or an expression (FreeCAD judges those). The
-    box's own validity flag calls a plain "0.3" unfinished, and a value out of range is not emitted: a field typed
-    "1e9" still holds the 1 on its way there."""
+    box's unit) within its `limits`, or an expression (FreeCAD judges those). The box's own validity flag calls a
+    plain "0.3" unfinished."""
     text = box.text().strip()
     if text.startswith("="):
         return True
@@ -82,7 +97,7 @@ def readable(box, unit="Length", limits=None):
         return False
     if typed.Unit not in (FreeCAD.Units.Unit(), getattr(FreeCAD.Units, unit)):  # "2 kg"
         return False
-    low, high = limits or (box.property("minimum"), box.property("maximum"))
+    low, high = limits(box)
     return low <= typed.Value <= high
 
 

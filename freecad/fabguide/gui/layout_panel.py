@@ -22,12 +22,9 @@ class LayoutPanel:
         self.pending.setSingleShot(True)
         self.pending.setInterval(PAUSE)
         self.pending.timeout.connect(self.lay_out)
-        self.bindings, self.typed_from, self.limits = [], {}, {}  # typed_from: each setting before this typing
+        self.bindings, self.typed_from = [], {}  # typed_from: each setting before this bout of typing
         for name in SETTINGS:  # quantity spin boxes in mm that take expressions (=), bound to the layout's lengths
-            box = getattr(self.form, name.lower())
-            # The range is checked when typing pauses: a box limited to it drops keystrokes ("1e9" shows "1e").
-            self.limits[name] = (box.property("minimum"), box.property("maximum"))
-            box.setProperty("maximum", 1e12)
+            box = editing.widened(getattr(self.form, name.lower()))  # its range judged when typing pauses
             box.setProperty("rawValue", getattr(layout, name).Value)
             binding = FreeCADGui.ExpressionBinding(box)
             binding.bind(layout, name)
@@ -59,7 +56,7 @@ class LayoutPanel:
         if not editing.showing(self):  # closed meanwhile (its fields change as they go)
             return
         refused = [self.refuse(name) for name in SETTINGS
-                   if not editing.readable(getattr(self.form, name.lower()), limits=self.limits[name])]
+                   if not editing.readable(getattr(self.form, name.lower()))]
         self.typed_from = {}
         self.layout.Document.recompute()
         self.show()
@@ -70,7 +67,7 @@ class LayoutPanel:
         box = getattr(self.form, name.lower())
         kept = self.typed_from.get(name, getattr(self.layout, name).Value)
         said = "{}: \"{}\" is not a length from {:g} to {:g} mm; it stays {:g} mm.".format(
-            name, box.text(), *self.limits[name], kept)
+            name, box.text(), *editing.limits(box), kept)
         setattr(self.layout, name, kept)
         box.setProperty("rawValue", kept)
         return said
