@@ -36,6 +36,7 @@ struct Cuboid {
     std::string name;                     ///< unique in the model
     std::array<double, 6> coordinates{};  ///< indexed by Side
     int within = -1;                      ///< a cavity: the solid cuboid it is cut from; -1: solid
+    std::array<double, 3> drawn{};        ///< sizes the user drew, before any solve (0: unknown)
     double at(Side side) const { return coordinates[static_cast<int>(side)]; }
     bool cavity() const { return within >= 0; }
 };

@@ -546,23 +546,26 @@ void addNotes(std::vector<std::string>& notes, const std::string& name, const In
 /// Stage 1 of thesis 4.4, the least change of the coordinates, except that it does not collapse a part: the
 /// least change would rather thin a part than move it (a laptop's 8 mm screen made 1 mm thick so that its
 /// hinge edge moves 8 mm back; then no hinge fits it). A size it cuts to less than half of what the user drew
-/// is held as drawn, all such sizes at once or, when the relationships cannot have that, one at a time (the
-/// thinnest first), and the parts move instead.
-LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& rows,
-                              const Eigen::VectorXd* start)
+/// is held as it was before this solve, all such sizes at once or, when the relationships cannot have that,
+/// one at a time (the thinnest first), and the parts move instead. What the user drew is `drawn` (a size per
+/// axis of each cuboid), so that successive solves cannot halve a size again and again (issue 36: a door 20
+/// mm, then 10.2, then 5.1).
+LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+                              const std::vector<LinearConstraint>& rows, const Eigen::VectorXd* start)
 {
     LeastChangeResult least = solveLeastChange(target, rows, start);
     std::vector<std::pair<double, int>> collapsed;  // (size left / size drawn, the axis' low variable)
     for (int i = 0; least.solved && i + 1 < target.size(); i += 2)
-        if (const double drawn = target[i + 1] - target[i], now = least.x[i + 1] - least.x[i];
-            now < drawn / 2)
-            collapsed.push_back({now / drawn, i});
+        if (const double was = std::max(drawn[i / 2], target[i + 1] - target[i]),
+            now = least.x[i + 1] - least.x[i];
+            now < was / 2)
+            collapsed.push_back({now / was, i});
     if (collapsed.empty())
         return least;
     std::sort(collapsed.begin(), collapsed.end());
-    auto asDrawn = [&](int i) {  // the row holding the size of the axis whose low variable is i
-        const double drawn = target[i + 1] - target[i];
-        return LinearConstraint{{{i + 1, 1.0}, {i, -1.0}}, drawn, drawn, ""};
+    auto asDrawn = [&](int i) {  // the row holding the size of the axis whose low variable is i as it was
+        const double was = target[i + 1] - target[i];
+        return LinearConstraint{{{i + 1, 1.0}, {i, -1.0}}, was, was, ""};
     };
     std::vector<LinearConstraint> all = rows;
     for (const auto& [left, i] : collapsed)
@@ -585,8 +588,9 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<L
 /// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
 /// out of the conflict (a door and a drawer front side by side in one plane, not one in front of the other:
 /// the least overlap as drawn chose wrong).
-LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& relationships,
-                            const Model& moving, Apart& apart, const Eigen::VectorXd& start, int& tries)
+LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+                            const std::vector<LinearConstraint>& relationships, const Model& moving,
+                            Apart& apart, const Eigen::VectorXd& start, int& tries)
 {
     const auto solveApart = [&] {
         std::vector<LinearConstraint> rows = relationships;
@@ -594,7 +598,7 @@ LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<Lin
             separate(rows, moving, s);
         if (violation(start, rows) <= 1e-6)
             return LeastChangeResult{true, start, violation(start, rows), {}};
-        return leastChange(target, rows, &start);
+        return leastChange(target, drawn, rows, &start);
     };
     LeastChangeResult r = solveApart();
     for (bool revised = true; !r.solved && revised;) {
@@ -708,11 +712,15 @@ SolveResult solve(const Model& model)
     if (SolveResult inside = refusedDrawnInside(model); !inside.conflict.empty())
         return inside;
     Eigen::VectorXd target(6 * model.cuboids.size());
-    for (size_t c = 0; c < model.cuboids.size(); ++c)
+    std::vector<double> drawn;
+    for (size_t c = 0; c < model.cuboids.size(); ++c) {
         for (int k = 0; k < 6; ++k)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
+        for (int a = 0; a < 3; ++a)
+            drawn.push_back(model.cuboids[c].drawn[a]);
+    }
     const std::vector<LinearConstraint> relationships = constraints(model);
-    LeastChangeResult r = leastChange(target, relationships, nullptr);
+    LeastChangeResult r = leastChange(target, drawn, relationships, nullptr);
     // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
     // in that solution, the arrangement the relationships give; pairs the solve then brings together are
     // added round by round (constraint generation: the pairs stay few).
@@ -724,7 +732,7 @@ SolveResult solve(const Model& model)
     separateNear(arranged, arranged, model.minimumSize, static_cast<int>(model.configurations.size()), apart);
     int tries = kRevisions;
     for (int round = 0; r.solved; ++round) {
-        r = keptApart(target, relationships, moving, apart, r.x, tries);
+        r = keptApart(target, drawn, relationships, moving, apart, r.x, tries);
         if (!r.solved ||
             separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;

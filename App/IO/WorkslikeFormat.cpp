@@ -88,6 +88,16 @@ std::array<double, 3> point(const Fields& fields, const std::string& key)
     return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
 }
 
+/// A cuboid's sizes as the user drew them, before any solve: three positive numbers.
+std::array<double, 3> drawnSizes(const Fields& cuboid)
+{
+    const std::array<double, 3> sizes = point(cuboid, "drawn");
+    for (double size : sizes)
+        if (!(size > 0))
+            throw FormatError(cuboid.pathOf("drawn") + ": sizes must be more than 0");
+    return sizes;
+}
+
 int partNamed(const function::Model& model, const std::string& name, const std::string& path)
 {
     for (size_t p = 0; p < model.parts.size(); ++p)
@@ -585,6 +595,8 @@ function::Model readWorkslike(const nlohmann::json& document)
                     throw FormatError(cuboid.pathOf("max") + ": must exceed min along every axis");
             built.cuboids.push_back(static_cast<int>(model.cuboids.size()));
             model.cuboids.push_back({name, {low[0], high[0], low[1], high[1], low[2], high[2]}});
+            if (cuboid.has("drawn"))
+                model.cuboids.back().drawn = drawnSizes(cuboid);
             if (cuboid.flag("cavity", false)) {
                 if (c == 0)
                     throw FormatError(cuboid.pathOf("cavity") +
@@ -638,6 +650,8 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                 {"name", model.cuboids[c].name}, {"min", {k[0], k[2], k[4]}}, {"max", {k[1], k[3], k[5]}}};
             if (model.cuboids[c].cavity())
                 cuboid["cavity"] = true;
+            if (model.cuboids[c].drawn[0] > 0)
+                cuboid["drawn"] = model.cuboids[c].drawn;
             cuboids.push_back(cuboid);
         }
         parts.push_back({{"name", part.name}, {"cuboids", cuboids}});

@@ -60,6 +60,31 @@ TEST(Solve, APartIsMovedRatherThanThinnedToNothing)
     EXPECT_NEAR(screen.at(Side::Top) - screen.at(Side::Bottom), 230, 1e-6);  // as deep as the base, shut
 }
 
+TEST(Solve, SuccessiveSolvesDoNotThinAPartAgainAndAgain)
+{
+    // A door drawn 20 mm thick, thinned to 10.2 mm by an earlier solve (just above half), now made flush with
+    // a stop 5 mm nearer: thinned again it would be 5.2 mm, a quarter of what the user drew (issue 36: 20
+    // -> 10.2
+    // -> 5.1 mm). Held against its drawn 20 mm it keeps its 10.2 mm and moves instead.
+    json d = json::parse(R"({"format": "fabguide.workslike", "version": 1,
+      "parts": [{"name": "door", "cuboids": [{"name": "door", "min": [0, 0, 0], "max": [100, 10.2, 200]}]},
+                {"name": "stop", "cuboids": [{"name": "stop", "min": [0, 5.2, 0], "max": [100, 30, 10]}]}],
+      "relationships": [{"type": "flush", "name": "door on the stop", "faces": ["door.far", "stop.near"]}],
+      "locks": ["stop.left", "stop.right", "stop.near", "stop.far", "stop.bottom", "stop.top"]})");
+    const auto thickness = [](const function::SolveResult& r) {
+        EXPECT_TRUE(r.solved);
+        return r.model.cuboids[0].at(Side::Far) - r.model.cuboids[0].at(Side::Near);
+    };
+    EXPECT_NEAR(thickness(function::solve(io::readWorkslike(d))), 5.2, 1e-6);  // as if 10.2 were drawn
+    d["parts"][0]["cuboids"][0]["drawn"] = {100, 20, 200};
+    const function::SolveResult drawn = function::solve(io::readWorkslike(d));
+    EXPECT_NEAR(thickness(drawn), 10.2, 1e-6);
+    EXPECT_NEAR(drawn.model.cuboids[0].at(Side::Far), 5.2, 1e-6);
+    EXPECT_EQ(io::workslikeToJson(drawn.model, nullptr)["parts"][0]["cuboids"][0]["drawn"],
+              d["parts"][0]["cuboids"][0]["drawn"])
+        << "a solved model still says what was drawn";
+}
+
 TEST(Solve, ALockedCoordinateStaysAndTheRestFollows)
 {
     json d = boxWithLid();

@@ -477,3 +477,35 @@ def test_a_solve_that_changes_nothing_lists_no_changes(doc):
     mech.Locks = [(body, "left"), (body, "right")]
     doc.recompute()
     assert mech.Status.startswith("Conflict: ") and mech.Changes == []  # nothing written back
+
+
+def test_successive_solves_do_not_thin_a_part_below_half_of_what_was_drawn(doc, tmp_path):
+    """Issue 36: a door drawn 20 mm thick, made flush with one stop (thinned to 10.2 mm, just above half), then
+    with a stop 5 mm nearer: it keeps its 10.2 mm and moves, rather than thinning to 5.2 (a quarter of what was
+    drawn). The drawn size is saved with the document, and written to the exported model."""
+    door, stop = box(doc, "Door", (0, 0, 0), (100, 20, 200)), box(doc, "Stop", (0, 10.2, 0), (100, 30, 10))
+    doc.recompute()
+    mech = mechanism.create(doc)
+    door_part, stop_part = parts.create(doc, [door], "Door part"), parts.create(doc, [stop], "Stop part")
+    flush = relationships.create(doc, "flush", "Door on the stop", Faces=[(door, "Face4"), (stop, "Face3")])
+    mech.Group = [door_part, stop_part, flush]
+    mech.Locks = [(stop, side) for side in cuboids.SIDES]
+    doc.recompute()
+    assert mech.Status == "Solved" and door.Width.Value == pytest.approx(10.2, abs=1e-6)
+    doc.openTransaction("Move the stop")
+    stop.Placement.Base.y = 5.2
+    doc.commitTransaction()
+    doc.recompute()
+    assert mech.Status == "Solved", mech.Status
+    assert door.Width.Value == pytest.approx(10.2, abs=1e-6), "moved rather than thinned below half of 20 mm"
+    assert door.Placement.Base.y + door.Width.Value == pytest.approx(5.2, abs=1e-6)
+    path = str(tmp_path / "doors.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    mech = reopened.getObjectsByLabel("Mechanism")[0]
+    assert json.loads(mech.Drawn)[reopened.getObjectsByLabel("Door")[0].Name] == pytest.approx([100, 20, 200])
+    workslike_file.write(mech, str(tmp_path / "doors.workslike.json"))
+    written = json.load(open(str(tmp_path / "doors.workslike.json")))
+    assert written["parts"][0]["cuboids"][0]["drawn"] == pytest.approx([100, 20, 200])
+    FreeCAD.closeDocument(reopened.Name)

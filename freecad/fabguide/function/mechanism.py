@@ -41,6 +41,7 @@ class Mechanism(properties.Proxy):
         add(obj, "App::PropertyStringList", "Changes", "Result",
             "What the last solve changed: box, size old → new, how far it moved", mode=1)
         add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
+        add(obj, "App::PropertyString", "Drawn", "Data", "Box sizes as you drew them, before solves (JSON)", mode=2)
 
     def recompute(self, obj):
         try:
@@ -80,13 +81,40 @@ def edits(obj):
             if any(abs(w - n) > 1e-7 for w, n in zip(before[box.Name][2 * a:2 * a + 2], now)) for high in (0, 1)]
 
 
-def model(obj, locks=()):
-    """The mechanism as a *.workslike.json dict."""
+def sizes(coordinates):
+    return [high - low for low, high in zip(coordinates[0::2], coordinates[1::2])]
+
+
+def drawn(obj):
+    """Each box's sizes as the user drew them, {box name: [x, y, z]}: a size as the last solve wrote it is the
+    one drawn before that solve; a size changed since (or a box new to the mechanism) is drawn as it is now.
+    The solve holds sizes against them, so that successive solves cannot thin a part again and again."""
+    solved, before = (json.loads(text) if text else {} for text in (obj.Solved, obj.Drawn))
+    out = {}
+    for box in boxes(obj):
+        now = sizes(cuboids.coordinates(box))
+        wrote = sizes(solved[box.Name]) if box.Name in solved else [None] * 3
+        was = before.get(box.Name, now)
+        out[box.Name] = [d if w is not None and abs(n - w) <= 1e-7 else n for n, w, d in zip(now, wrote, was)]
+    return out
+
+
+def model(obj, locks=(), drawn_sizes=None):
+    """The mechanism as a *.workslike.json dict; a cuboid whose sizes differ from those the user drew
+    (`drawn_sizes`, drawn(obj) by default) says them."""
+    drawn_sizes = drawn(obj) if drawn_sizes is None else drawn_sizes
+    names = {box.Label: box.Name for box in boxes(obj)}
     try:
+        made = [parts.as_dict(p) for p in members(obj, parts.is_part)]
+        for cuboid in (c for p in made for c in p["cuboids"]):
+            was = drawn_sizes.get(names.get(cuboid["name"]))
+            now = [high - low for low, high in zip(cuboid["min"], cuboid["max"])]
+            if was and any(abs(d - n) > 1e-7 for d, n in zip(was, now)):
+                cuboid["drawn"] = was
         return {
             "format": "fabguide.workslike", "version": 1, "minimum_size": obj.MinimumSize.Value,
             "minimum_wall": obj.MinimumWall.Value,
-            "parts": [parts.as_dict(p) for p in members(obj, parts.is_part)],
+            "parts": made,
             "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
             "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
             "relationships": [relationships.as_dict(r) for r in members(obj, relationships.is_relationship)],
@@ -101,7 +129,8 @@ def solve(obj):
     (and locks) that cannot hold together; one the user's latest edit takes part in refuses the edit: the
     boxes go back to the last solve, exactly."""
     edited = edits(obj)
-    data = model(obj, edited)
+    drawn_sizes = drawn(obj)
+    data = model(obj, edited, drawn_sizes)
     try:
         solved = background.run("Solving " + obj.Label, lambda cancel: fabguide_core.solve(data), stoppable=False)
     except fabguide_core.FormatError as error:
@@ -134,6 +163,7 @@ def solve(obj):
         say_changes(obj, [])
         return solved
     say_changes(obj, write_back(obj, solved))
+    obj.Drawn = json.dumps(drawn_sizes)
     place_pivots(obj, solved)
     obj.Status = "Solved"
     return solved

@@ -22,6 +22,10 @@ def import_model(doc, data, label="Mechanism"):
             box.Label = c["name"]  # FreeCAD may make it unique: the links hold
             cuboids.set_coordinates(box, [v for a in range(3) for v in (c["min"][a], c["max"][a])])
             boxes[c["name"]] = box
+    drawn = {boxes[c["name"]].Name: c["drawn"] for p in data.get("parts", []) for c in p["cuboids"] if "drawn" in c}
+    if drawn:  # sizes a solve wrote, and what the user drew before it
+        mech.Solved = json.dumps({box.Name: cuboids.coordinates(box) for box in boxes.values()})
+        mech.Drawn = json.dumps(drawn)
     for p in data.get("parts", []):  # FreeCAD labels are unique: a part named like its box is "… part"
         taken = doc.getObjectsByLabel(p["name"])
         made_parts[p["name"]] = parts.create(
