@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -543,44 +544,123 @@ void addNotes(std::vector<std::string>& notes, const std::string& name, const In
         notes.push_back(name + ": " + note);
 }
 
-/// Stage 1 of thesis 4.4, the least change of the coordinates, except that it does not collapse a part: the
-/// least change would rather thin a part than move it (a laptop's 8 mm screen made 1 mm thick so that its
-/// hinge edge moves 8 mm back; then no hinge fits it). A size it cuts to less than half of what the user drew
-/// is held as it was before this solve, all such sizes at once or, when the relationships cannot have that,
-/// one at a time (the thinnest first), and the parts move instead. What the user drew is `drawn` (a size per
-/// axis of each cuboid), so that successive solves cannot halve a size again and again (issue 36: a door 20
-/// mm, then 10.2, then 5.1).
-LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+/// `least` (a least change under `rows`) with `holds` added to `rows` where the relationships allow them: all
+/// at once or, when they cannot have that, one at a time in their order.
+LeastChangeResult heldWhereAllowed(const Eigen::VectorXd& target, std::vector<LinearConstraint>& rows,
+                                   LeastChangeResult least, const std::vector<LinearConstraint>& holds)
+{
+    if (holds.empty())
+        return least;
+    std::vector<LinearConstraint> all = rows;
+    all.insert(all.end(), holds.begin(), holds.end());
+    if (LeastChangeResult kept = solveLeastChange(target, all, &least.x); kept.solved) {
+        rows = std::move(all);
+        return kept;
+    }
+    for (const LinearConstraint& hold : holds) {
+        rows.push_back(hold);
+        if (LeastChangeResult kept = solveLeastChange(target, rows, &least.x); kept.solved)
+            least = std::move(kept);
+        else
+            rows.pop_back();
+    }
+    return least;
+}
+
+/// The row holding the size of the axis whose low variable is i to `size`.
+LinearConstraint sizeHeld(int i, double size)
+{
+    return {{{i + 1, 1.0}, {i, -1.0}}, size, size, ""};
+}
+
+/// Sizes the least change `x` cuts to less than half of the larger of what the user drew (`drawn`, a size per
+/// axis of each cuboid) and what they are now, the thinnest first, each held as it is now.
+std::vector<LinearConstraint> collapsed(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+                                        const Eigen::VectorXd& x)
+{
+    std::vector<std::pair<double, int>> thinned;  // (size left / size drawn, the axis' low variable)
+    for (int i = 0; i + 1 < target.size(); i += 2)
+        if (const double was = std::max(drawn[i / 2], target[i + 1] - target[i]), now = x[i + 1] - x[i];
+            now < was / 2)
+            thinned.push_back({now / was, i});
+    std::sort(thinned.begin(), thinned.end());
+    std::vector<LinearConstraint> holds;
+    for (const auto& [left, i] : thinned)
+        holds.push_back(sizeHeld(i, target[i + 1] - target[i]));
+    return holds;
+}
+
+/// What the solve holds the least change to, where the relationships allow (leastChange).
+struct Drawing {
+    std::vector<double> sizes;               ///< what the user drew: a size per axis of each cuboid
+    std::vector<std::pair<int, int>> twins;  ///< cuboids that stay alike
+};
+
+/// Pairs of cuboids alike now (the same three sizes, to 1e-6 mm: a pair of doors, a row of shelves) that one
+/// relationship names both of (its rows touch both). A relationship that names one of them only (a's width
+/// 25) may set them apart.
+std::vector<std::pair<int, int>> twins(const Model& model, const std::vector<LinearConstraint>& rows)
+{
+    std::set<std::string> relationships;
+    const auto named = [&](const auto& all) {
+        for (const auto& r : all)
+            relationships.insert(r.name);
+    };
+    named(model.flush), named(model.geometric), named(model.support), named(model.fitInside),
+        named(model.cover);
+    std::map<std::string, std::set<int>> touched;  // relationship → the cuboids its rows touch
+    for (const LinearConstraint& row : rows)
+        if (relationships.count(row.source))
+            for (const auto& [variable, coefficient] : row.terms)
+                touched[row.source].insert(variable / 6);
+    std::set<std::pair<int, int>> pairs;
+    for (const auto& [name, cuboids] : touched) {
+        std::map<std::array<long long, 3>, int> first;  // sizes to 1e-6 mm → the first cuboid that has them
+        for (int c : cuboids) {
+            const auto& k = model.cuboids[c].coordinates;
+            const auto [at, fresh] =
+                first.insert({{std::llround(1e6 * (k[1] - k[0])), std::llround(1e6 * (k[3] - k[2])),
+                               std::llround(1e6 * (k[5] - k[4]))},
+                              c});
+            if (!fresh)
+                pairs.insert({at->second, c});
+        }
+    }
+    return {pairs.begin(), pairs.end()};
+}
+
+/// Rows holding each twin's size to its first one's along the axes where the least change `x` sizes them
+/// apart.
+std::vector<LinearConstraint> twinsApart(const std::vector<std::pair<int, int>>& twins,
+                                         const Eigen::VectorXd& x)
+{
+    std::vector<LinearConstraint> holds;
+    for (const auto& [c, d] : twins)
+        for (int a = 0; a < 3; ++a)
+            if (const int i = 6 * c + 2 * a, j = 6 * d + 2 * a;
+                std::abs((x[j + 1] - x[j]) - (x[i + 1] - x[i])) > 1e-6)
+                holds.push_back({{{j + 1, 1.0}, {j, -1.0}, {i + 1, -1.0}, {i, 1.0}}, 0, 0, ""});
+    return holds;
+}
+
+/// Stage 1 of thesis 4.4, the least change of the coordinates, except that it does not collapse a part, nor
+/// tell twins apart. The least change would rather thin a part than move it (a laptop's 8 mm screen made 1 mm
+/// thick so that its hinge edge moves 8 mm back; then no hinge fits it): a size it cuts to less than half of
+/// what the user drew is held as it was before this solve, and the parts move instead. What the user drew is
+/// `drawn`, so that successive solves cannot halve a size again and again (issue 36: a door 20 mm, then 10.2,
+/// then 5.1). Twins stay alike (issue 36: the left door thinned, the right not). Both where the relationships
+/// allow.
+LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& drawing,
                               const std::vector<LinearConstraint>& rows, const Eigen::VectorXd* start)
 {
     LeastChangeResult least = solveLeastChange(target, rows, start);
-    std::vector<std::pair<double, int>> collapsed;  // (size left / size drawn, the axis' low variable)
-    for (int i = 0; least.solved && i + 1 < target.size(); i += 2)
-        if (const double was = std::max(drawn[i / 2], target[i + 1] - target[i]),
-            now = least.x[i + 1] - least.x[i];
-            now < was / 2)
-            collapsed.push_back({now / was, i});
-    if (collapsed.empty())
+    if (!least.solved)
         return least;
-    std::sort(collapsed.begin(), collapsed.end());
-    auto asDrawn = [&](int i) {  // the row holding the size of the axis whose low variable is i as it was
-        const double was = target[i + 1] - target[i];
-        return LinearConstraint{{{i + 1, 1.0}, {i, -1.0}}, was, was, ""};
-    };
-    std::vector<LinearConstraint> all = rows;
-    for (const auto& [left, i] : collapsed)
-        all.push_back(asDrawn(i));
-    if (LeastChangeResult kept = solveLeastChange(target, all, &least.x); kept.solved)
-        return kept;
-    std::vector<LinearConstraint> some = rows;
-    for (const auto& [left, i] : collapsed) {
-        some.push_back(asDrawn(i));
-        if (LeastChangeResult kept = solveLeastChange(target, some, &least.x); kept.solved)
-            least = std::move(kept);
-        else
-            some.pop_back();
-    }
-    return least;
+    std::vector<LinearConstraint> held = rows;
+    const std::vector<LinearConstraint> thinned = collapsed(target, drawing.sizes, least.x);
+    least = heldWhereAllowed(target, held, std::move(least), thinned);
+    const std::vector<LinearConstraint> twins = twinsApart(drawing.twins, least.x);
+    return heldWhereAllowed(target, held, std::move(least), twins);
 }
 
 /// The least change that keeps the pairs apart as chosen, from `start` (kept when it does already). Where
@@ -588,7 +668,7 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const std::vector<d
 /// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
 /// out of the conflict (a door and a drawer front side by side in one plane, not one in front of the other:
 /// the least overlap as drawn chose wrong).
-LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawing,
                             const std::vector<LinearConstraint>& relationships, const Model& moving,
                             Apart& apart, const Eigen::VectorXd& start, int& tries)
 {
@@ -598,7 +678,7 @@ LeastChangeResult keptApart(const Eigen::VectorXd& target, const std::vector<dou
             separate(rows, moving, s);
         if (violation(start, rows) <= 1e-6)
             return LeastChangeResult{true, start, violation(start, rows), {}};
-        return leastChange(target, drawn, rows, &start);
+        return leastChange(target, drawing, rows, &start);
     };
     LeastChangeResult r = solveApart();
     for (bool revised = true; !r.solved && revised;) {
@@ -712,15 +792,16 @@ SolveResult solve(const Model& model)
     if (SolveResult inside = refusedDrawnInside(model); !inside.conflict.empty())
         return inside;
     Eigen::VectorXd target(6 * model.cuboids.size());
-    std::vector<double> drawn;
+    Drawing drawing;
     for (size_t c = 0; c < model.cuboids.size(); ++c) {
         for (int k = 0; k < 6; ++k)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
         for (int a = 0; a < 3; ++a)
-            drawn.push_back(model.cuboids[c].drawn[a]);
+            drawing.sizes.push_back(model.cuboids[c].drawn[a]);
     }
     const std::vector<LinearConstraint> relationships = constraints(model);
-    LeastChangeResult r = leastChange(target, drawn, relationships, nullptr);
+    drawing.twins = twins(model, relationships);
+    LeastChangeResult r = leastChange(target, drawing, relationships, nullptr);
     // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
     // in that solution, the arrangement the relationships give; pairs the solve then brings together are
     // added round by round (constraint generation: the pairs stay few).
@@ -732,7 +813,7 @@ SolveResult solve(const Model& model)
     separateNear(arranged, arranged, model.minimumSize, static_cast<int>(model.configurations.size()), apart);
     int tries = kRevisions;
     for (int round = 0; r.solved; ++round) {
-        r = keptApart(target, drawn, relationships, moving, apart, r.x, tries);
+        r = keptApart(target, drawing, relationships, moving, apart, r.x, tries);
         if (!r.solved ||
             separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;

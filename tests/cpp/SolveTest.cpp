@@ -85,6 +85,29 @@ TEST(Solve, SuccessiveSolvesDoNotThinAPartAgainAndAgain)
         << "a solved model still says what was drawn";
 }
 
+TEST(Solve, TwinsThatARelationshipNamesTogetherStayAlike)
+{
+    // Two doors drawn alike and kept level by one relationship; a stop then thins the left one from 20 to 12
+    // mm. The right door, its twin, is thinned alike (issue 36: the left door 5.1 mm, the right one 13.7). A
+    // part drawn alike that no relationship names with them (the shelf) stays as drawn.
+    json d = json::parse(R"({"format": "fabguide.workslike", "version": 1,
+      "parts": [{"name": "left", "cuboids": [{"name": "left", "min": [0, 0, 0], "max": [100, 20, 200]}]},
+                {"name": "right", "cuboids": [{"name": "right", "min": [110, 0, 0], "max": [210, 20, 200]}]},
+                {"name": "shelf", "cuboids": [{"name": "shelf", "min": [300, 0, 0], "max": [400, 20, 200]}]},
+                {"name": "stop", "cuboids": [{"name": "stop", "min": [0, 12, 210], "max": [100, 30, 220]}]}],
+      "relationships": [{"type": "flush", "name": "doors level", "faces": ["left.near", "right.near"]},
+                        {"type": "flush", "name": "left door on the stop", "faces": ["left.far", "stop.near"]}],
+      "locks": ["stop.left", "stop.right", "stop.near", "stop.far", "stop.bottom", "stop.top", "left.near"]})");
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    ASSERT_TRUE(r.solved);
+    const auto depth = [&](int c) {
+        return r.model.cuboids[c].at(Side::Far) - r.model.cuboids[c].at(Side::Near);
+    };
+    EXPECT_NEAR(depth(0), 12, 1e-6);
+    EXPECT_NEAR(depth(1), 12, 1e-6);
+    EXPECT_NEAR(depth(2), 20, 1e-6);
+}
+
 TEST(Solve, ALockedCoordinateStaysAndTheRestFollows)
 {
     json d = boxWithLid();
