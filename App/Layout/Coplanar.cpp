@@ -37,6 +37,16 @@ bool samePlane(const Board3& i, const Board3& j, double tolerance)
            std::abs(std::max(low, high) - i.thickness) < tolerance;
 }
 
+/// Outlines sharing more than half of the smaller one's area: boards drawn on top of each other (each panel
+/// modelled at the origin), two boards to cut rather than one piece. An L of two rectangles shares a corner.
+bool stacked(const Polygon& a, const Polygon& b)
+{
+    double shared = 0;
+    for (const Polygon& common : geometry::intersect(a, geometry::Outline{b, {}}))
+        shared += std::abs(geometry::signedArea(common));
+    return shared > 0.5 * std::min(std::abs(geometry::signedArea(a)), std::abs(geometry::signedArea(b)));
+}
+
 int root(std::vector<int>& parent, int i)
 {
     return parent[i] == i ? i : parent[i] = root(parent, parent[i]);
@@ -54,9 +64,11 @@ std::vector<Piece> coplanarPieces(const std::vector<Board3>& boards, const Joine
         for (int j = i + 1; j < count; ++j) {
             if (!samePlane(boards[i], boards[j], tolerance))
                 continue;
+            const Polygon other = into(boards[i], boards[j], joined.outlines[j].outer);
+            if (stacked(joined.outlines[i].outer, other))
+                continue;
             try {  // touching or overlapping outlines unite into one piece
-                geometry::unite(geometry::Outline{joined.outlines[i].outer, {}},
-                                {into(boards[i], boards[j], joined.outlines[j].outer)});
+                geometry::unite(geometry::Outline{joined.outlines[i].outer, {}}, {other});
             } catch (const std::runtime_error&) {
                 continue;  // apart
             }

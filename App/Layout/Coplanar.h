@@ -17,8 +17,9 @@ struct Piece {
 };
 
 /// Groups the joined boards into pieces: boards whose slabs share a plane and whose outlines touch or
-/// overlap become one piece (the union of their outlines, less their holes); every other board is a
-/// piece of its own. Pieces are ordered by their first board.
+/// overlap (by at most half the smaller one: more is boards drawn on top of each other) become one piece (the
+/// union of their outlines, less their holes); every other board is a piece of its own. Pieces are ordered by
+/// their first board.
 std::vector<Piece> coplanarPieces(const std::vector<Board3>& boards, const JoinedBoards& joined,
                                   double tolerance);
 

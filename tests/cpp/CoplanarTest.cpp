@@ -53,3 +53,17 @@ TEST(Coplanar, BoardsApartOrInOtherPlanesStayPiecesOfTheirOwn)
     for (size_t i = 0; i < result.size(); ++i)
         EXPECT_EQ(result[i].boards, (std::vector<int>{static_cast<int>(i)}));
 }
+
+TEST(Coplanar, BoardsDrawnOnTopOfEachOtherAreBoardsOfTheirOwn)
+{
+    // Panels each modelled at the origin (a PartDesign habit) are two sides and a top, not one piece of the
+    // three; an L-shaped desk top drawn as two rectangles overlapping at a corner is one piece.
+    const std::vector<Board3> stacked{flat("side L", 400, 600, {0, 0, 0}),
+                                      flat("side R", 400, 600, {0, 0, 0}), flat("top", 450, 400, {0, 0, 0})};
+    EXPECT_EQ(pieces(stacked).size(), 3u);
+    const std::vector<Board3> desk{flat("long", 1600, 600, {0, 0, 0}),
+                                   flat("return", 600, 1200, {1000, 0, 0})};
+    const std::vector<Piece> l = pieces(desk);
+    ASSERT_EQ(l.size(), 1u);
+    EXPECT_NEAR(area(l[0].outline), 1600 * 600 + 600 * 600, 1e-6);
+}
