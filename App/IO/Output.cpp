@@ -109,12 +109,13 @@ void removeLeftovers(const std::filesystem::path& folder)
     static std::mutex once;
     static std::vector<std::string> cleaned;
     const std::lock_guard<std::mutex> guard(once);
-    const std::string key = std::filesystem::absolute(folder).lexically_normal().string();
+    const std::filesystem::path here = folder.empty() ? "." : folder;  // a bare file name: the working folder
+    const std::string key = std::filesystem::absolute(here).lexically_normal().string();
     if (std::find(cleaned.begin(), cleaned.end(), key) != cleaned.end())
         return;
     cleaned.push_back(key);
     std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, error)) {
+    for (const auto& entry : std::filesystem::directory_iterator(here, error)) {
         const std::string name = entry.path().filename().string();
         const size_t at = name.rfind(".partial-");
         if (name[0] != '.' || at == std::string::npos || name.size() < at + 9 + 8)

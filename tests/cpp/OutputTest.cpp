@@ -162,3 +162,14 @@ TEST(Output, TemporariesARunThatEndedLeftAreRemovedByTheNextAndALiveRunsAreKept)
     EXPECT_TRUE(fs::exists(out / ".notes.partial-draft"));
     EXPECT_EQ(readText(out / "new.svg"), "new");
 }
+
+TEST(Output, ABareFileNameIsWrittenInTheWorkingFolder)
+{
+    // `fabguide solve in.json -o out.json`, the commonest call, failed: its folder is "".
+    const fs::path here = folder("bare"), was = fs::current_path();
+    fs::current_path(here);
+    EXPECT_NO_THROW(
+        writeAtomically("out.json", [](const std::string& temporary) { writeText(temporary, "written"); }));
+    fs::current_path(was);
+    EXPECT_EQ(readText(here / "out.json"), "written");
+}

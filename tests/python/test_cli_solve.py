@@ -2,6 +2,8 @@
 import json
 import subprocess
 
+import pytest
+
 
 def solve(cli, *args):
     return subprocess.run([cli, "solve", *args], capture_output=True, text=True, timeout=60)
@@ -40,3 +42,15 @@ def test_malformed_model_names_the_field(fabguide_cli, tmp_path):
     path.write_text(json.dumps({"parts": [{"name": "a", "cuboids": [{"min": [0, 0, 0], "max": [1, 1]}]}]}))
     run = solve(fabguide_cli, str(path))
     assert run.returncode == 1 and "parts[0].cuboids[0].max: must be [x, y, z]" in run.stderr
+
+
+@pytest.mark.parametrize("command", [
+    ["solve", "{src}/examples/box-with-lid.workslike.json", "-o", "out.json"],
+    ["pack", "{src}/examples/bookshelf.pack.json", "-o", "layout.json", "--time-limit", "0.3", "--svg", "sheets"],
+])
+def test_bare_output_names_are_written_in_the_working_folder(fabguide_cli, source_dir, tmp_path, command):
+    """`-o out.json` (no folder) is the commonest call; it failed with a filesystem error."""
+    run = subprocess.run([fabguide_cli] + [a.format(src=source_dir) for a in command], cwd=str(tmp_path),
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    assert (tmp_path / command[3]).is_file()
