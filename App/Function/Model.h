@@ -105,6 +105,7 @@ struct Configuration {
     std::string name;
     std::vector<JointPose> poses;
     int along = -1;  ///< the solve's own: a pose on the way to configuration `along` (motionSampled)
+    std::vector<int> poseOfJoint;  ///< joint → its index in poses, -1: not posed (filled by indexed)
 };
 
 /// Flush (thesis 4.2.4): two faces lie in one plane, in a configuration (-1: as modelled).
@@ -193,7 +194,8 @@ struct Model {
     std::vector<int> partOfCuboid, jointOfPart;
 };
 
-/// The model with partOfCuboid and jointOfPart filled in (the reader returns it so).
+/// The model with partOfCuboid, jointOfPart and each configuration's poseOfJoint filled in (the reader
+/// returns it so).
 Model indexed(Model model);
 
 /// "lid.top": how a face is named in files and messages.

@@ -131,7 +131,10 @@ const JointPose* poseOf(const Model& model, int joint, int configuration)
 {
     if (configuration < 0)
         return nullptr;
-    const auto& poses = model.configurations[configuration].poses;
+    const Configuration& c = model.configurations[configuration];
+    if (c.poseOfJoint.size() == model.joints.size())
+        return c.poseOfJoint[joint] < 0 ? nullptr : &c.poses[c.poseOfJoint[joint]];
+    const auto& poses = c.poses;
     const auto found =
         std::find_if(poses.begin(), poses.end(), [&](const JointPose& p) { return p.joint == joint; });
     return found == poses.end() ? nullptr : &*found;
@@ -201,6 +204,11 @@ Model indexed(Model model)
     model.jointOfPart.assign(model.parts.size(), -1);
     for (size_t j = model.joints.size(); j-- > 0;)  // the first joint of each part
         model.jointOfPart[model.joints[j].part] = static_cast<int>(j);
+    for (Configuration& c : model.configurations) {
+        c.poseOfJoint.assign(model.joints.size(), -1);
+        for (size_t p = c.poses.size(); p-- > 0;)  // the first pose of each joint, as poseOf's search finds
+            c.poseOfJoint[c.poses[p].joint] = static_cast<int>(p);
+    }
     return model;
 }
 

@@ -731,7 +731,8 @@ Model motionSampled(Model model)
             const double t = static_cast<double>(i) / kMotionSamples;
             if (t < 0.5 ? !turns || pivots : !slides)
                 continue;
-            Configuration on{model.configurations[k].name, model.configurations[k].poses, k};
+            Configuration on = model.configurations[k];
+            on.along = k;
             for (JointPose& pose : on.poses) {
                 pose.angle *= std::min(1.0, 2 * t);
                 pose.offset *= std::max(0.0, 2 * t - 1);
@@ -739,7 +740,7 @@ Model motionSampled(Model model)
             model.configurations.push_back(on);
         }
     }
-    return model;
+    return indexed(std::move(model));
 }
 
 /// A double pivot's pivots keep their places on their faces as the solve resizes the cuboids under them: each

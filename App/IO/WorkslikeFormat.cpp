@@ -108,6 +108,11 @@ int partNamed(const function::Model& model, const std::string& name, const std::
 
 const char* kAxes[] = {"x", "y", "z"};
 
+/// What `solve` finishes in seconds (issue 35: a 3,000-joint chain took 104 s), far beyond any product (a few
+/// hundred cuboids, joints a few deep, a few configurations): cuboids, joints in a chain to the ground,
+/// cuboids times configurations (each configuration's motion is sampled at up to 63 poses).
+constexpr size_t kMostCuboids = 10000, kDeepestChain = 64, kMostPosedCuboids = 100000;
+
 /// An axis named "x", "y" or "z" as 0, 1, 2; else an error at `path` saying what it must be (`shape`).
 int axisNamed(const nlohmann::json& value, const std::string& path, const char* shape)
 {
@@ -231,7 +236,8 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
 void readConfiguration(function::Model& model, const nlohmann::json& json, const std::string& path)
 {
     const Fields c(json, path);
-    function::Configuration configuration{c.text("name"), {}};
+    function::Configuration configuration;
+    configuration.name = c.text("name");
     for (const function::Configuration& other : model.configurations)
         if (other.name == configuration.name)
             throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
@@ -606,6 +612,9 @@ function::Model readWorkslike(const nlohmann::json& document)
             }
         }
         model.parts.push_back(built);
+        if (model.cuboids.size() > kMostCuboids)
+            throw FormatError(part.pathOf("cuboids") + ": more than " + std::to_string(kMostCuboids) +
+                              " cuboids in the model; FabGuide solves up to that");
     }
     const nlohmann::json& joints = root.array("joints", true);
     for (size_t j = 0; j < joints.size(); ++j)
@@ -615,6 +624,9 @@ function::Model readWorkslike(const nlohmann::json& document)
         for (size_t step = 0; base >= 0; ++step) {
             if (step == model.joints.size())
                 throw FormatError(at("joints", j) + ".base: the joints' bases go round in a circle");
+            if (step == kDeepestChain)
+                throw FormatError(at("joints", j) + ".base: more than " + std::to_string(kDeepestChain) +
+                                  " joints in a chain to the ground; FabGuide solves chains up to that");
             const int carrier = function::jointMoving(model, base);
             base = carrier < 0 ? -1 : model.joints[carrier].base;
         }
@@ -623,6 +635,10 @@ function::Model readWorkslike(const nlohmann::json& document)
     const nlohmann::json& configurations = root.array("configurations", true);
     for (size_t c = 0; c < configurations.size(); ++c)
         readConfiguration(model, configurations[c], at("configurations", c));
+    if (model.cuboids.size() * configurations.size() > kMostPosedCuboids)
+        throw FormatError("configurations: " + std::to_string(configurations.size()) + " configurations of " +
+                          std::to_string(model.cuboids.size()) + " cuboids; FabGuide solves up to " +
+                          std::to_string(kMostPosedCuboids) + " cuboids times configurations");
     const nlohmann::json& relationships = root.array("relationships", true);
     for (size_t r = 0; r < relationships.size(); ++r)
         readRelationship(model, relationships[r], at("relationships", r));

@@ -186,3 +186,46 @@ TEST(Pose, JointAndConfigurationErrorsNameTheField)
     EXPECT_EQ(io::workslikeToJson(io::readWorkslike(io::workslikeToJson(io::readWorkslike(d)))),
               io::workslikeToJson(io::readWorkslike(d)));
 }
+
+TEST(Pose, ModelsSolveCannotFinishAreRefusedByName)
+{
+    // Issue 35: a 3,000-joint chain took 104 s. A chain of 64 reads; 65, more than 10,000 cuboids, or more
+    // than 100,000 cuboids times configurations are refused, each naming where.
+    const auto chain = [](int joints) {
+        json d = {{"format", "fabguide.workslike"},
+                  {"version", 1},
+                  {"parts", json::array()},
+                  {"joints", json::array()}};
+        for (int i = 0; i <= joints; ++i) {
+            const std::string name = "p" + std::to_string(i);
+            d["parts"].push_back(testsupport::cuboidPart(name, {0, 0, 30.0 * i}, {20, 20, 30.0 * i + 20}));
+            if (i > 0)
+                d["joints"].push_back({{"name", "j" + std::to_string(i)},
+                                       {"type", "slide"},
+                                       {"part", name},
+                                       {"base", "p" + std::to_string(i - 1)},
+                                       {"axis", "x"}});
+        }
+        return d;
+    };
+    EXPECT_EQ(testsupport::workslikeError(chain(64)), "");
+    EXPECT_EQ(
+        testsupport::workslikeError(chain(65)),
+        "joints[64].base: more than 64 joints in a chain to the ground; FabGuide solves chains up to that");
+    json many = chain(0);
+    for (int i = 1; i <= 10000; ++i)
+        many["parts"].push_back(
+            testsupport::cuboidPart("q" + std::to_string(i), {30.0 * i, 0, 0}, {30.0 * i + 20, 20, 20}));
+    EXPECT_EQ(testsupport::workslikeError(many),
+              "parts[10000].cuboids: more than 10000 cuboids in the model; FabGuide solves up to that");
+    json posed = chain(1);
+    for (int i = 2; i < 2000; ++i)
+        posed["parts"].push_back(
+            testsupport::cuboidPart("q" + std::to_string(i), {30.0 * i, 0, 0}, {30.0 * i + 20, 20, 20}));
+    posed["configurations"] = json::array();
+    for (int k = 0; k < 51; ++k)
+        posed["configurations"].push_back({{"name", "k" + std::to_string(k)}, {"poses", {{"j1", k}}}});
+    EXPECT_EQ(testsupport::workslikeError(posed),
+              "configurations: 51 configurations of 2000 cuboids; FabGuide solves up "
+              "to 100000 cuboids times configurations");
+}
