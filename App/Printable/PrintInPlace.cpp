@@ -201,6 +201,39 @@ void addBodies(const Model& m, const std::vector<TopoDS_Shape>& shapes, Printabl
     }
 }
 
+/// The model's cuboids' extent along x, y and z, as modelled.
+Size extentOf(const Model& model)
+{
+    Size extent{0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+        double low = 1e300, high = -1e300;
+        for (const Cuboid& c : model.cuboids) {
+            low = std::min(low, c.at(static_cast<Side>(2 * a)));
+            high = std::max(high, c.at(static_cast<Side>(2 * a + 1)));
+        }
+        extent[a] = high - low;
+    }
+    return extent;
+}
+
+/// The largest print FabGuide makes, mm along any side: beyond the largest printers (the thesis' bunk bed is 2.1 m
+/// at 1:1), where meshing curved joints to a printer's precision takes ever longer (issue 35: a model at 1e6 mm,
+/// or --scale 100, did not finish).
+constexpr double kLargestPrint = 5000;
+
+/// std::invalid_argument when a scaled model is longer than kLargestPrint along an axis.
+void checkPrintSize(const Model& scaled)
+{
+    const Size extent = extentOf(scaled);
+    for (int a = 0; a < 3; ++a)
+        if (extent[a] > kLargestPrint)
+            throw std::invalid_argument("the print would be " + std::to_string(std::lround(extent[a])) +
+                                        " mm long along " + std::string(1, "xyz"[a]) +
+                                        "; FabGuide prints up to " +
+                                        std::to_string(std::lround(kLargestPrint)) +
+                                        " mm: print it at a smaller scale, or fitted to your printer");
+}
+
 }  // namespace
 
 Model solvedToPrint(const Model& model, double scale)
@@ -273,15 +306,7 @@ Size sizeOf(const Printable& printable)
 Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
 {
     // First as large as the cuboids allow, then smaller by what joints and links add beyond them.
-    Size extent{0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-        double low = 1e300, high = -1e300;
-        for (const Cuboid& c : solved.cuboids) {
-            low = std::min(low, c.at(static_cast<Side>(2 * a)));
-            high = std::max(high, c.at(static_cast<Side>(2 * a + 1)));
-        }
-        extent[a] = high - low;
-    }
+    const Size extent = extentOf(solved);
     // How much larger it could be in `bed`, 0.01 mm short of each side (meshes are written to a micrometre).
     auto room = [](const Size& size, const Size& bed) {
         double r = 1e300;
@@ -341,6 +366,7 @@ Fitted printed(const Model& model, const Printer& printer, double scale, const s
     if (fit)
         return fitted(solvedToPrint(model, 1), *fit, printer);
     Fitted f{scale, solvedToPrint(model, scale), {}};
+    checkPrintSize(f.model);
     f.printable = makePrintable(f.model, printer);
     return f;
 }

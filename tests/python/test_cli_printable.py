@@ -237,3 +237,13 @@ def test_bodies_whose_names_read_alike_get_files_of_their_own(fabguide_cli, sour
     assert run.returncode == 0, run.stderr
     stems = sorted({f.stem for f in out.glob("*.stl")})
     assert stems == ["a-b", "a-b-2", "assembly", "con-2"], stems
+
+
+def test_a_print_longer_than_5_m_is_refused_before_any_geometry(fabguide_cli, source_dir, tmp_path):
+    """Issue 35: a model at 1e6 mm or --scale 100 did not finish (meshing its joints to 0.01 mm). The cabinet is
+    600 mm wide: at 100 it would be 60 m, refused at once (the 2.1 m sofa bunk prints at 1:1, above)."""
+    run, out = printable(fabguide_cli, source_dir, tmp_path, "cabinet", "--scale", "100")
+    assert run.returncode == 1
+    assert run.stderr.strip() == ("fabguide: error: the print would be 60000 mm long along x; FabGuide prints up "
+                                  "to 5000 mm: print it at a smaller scale, or fitted to your printer")
+    assert not out.exists()
