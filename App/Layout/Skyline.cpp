@@ -507,7 +507,7 @@ double leastStripHeight(const PackProblem& problem)
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget, Deadline deadline)
 {
     const Strip strip = stripOf(problem);
-    if (strip.kinds.empty())
+    if (strip.kinds.empty() || strip.units > kSkylineUnits)
         return std::nullopt;
     const double step = strip.step, least = strip.least;
     const auto nodesFor = [](double units) { return std::max(200L, static_cast<long>(2 * units)); };

@@ -26,9 +26,13 @@ struct SkylineBudget {
     std::uint64_t seed = 1;
 };
 
+/// The most units the skyline search lays: it goes a level deeper per unit, each level with a copy of the
+/// skyline (199,999 units overflowed the stack, issue 35); the largest benchmark instance has 3,152.
+constexpr long kSkylineUnits = 5000;
+
 /// The lowest strip of `problem` (rectangles; kerf + spacing around every part, trim along the strip's
 /// edges, grain kept) the search finds by `deadline` within `budget`; nothing when the time runs out before
-/// a first greedy strip.
+/// a first greedy strip, or for more than kSkylineUnits units.
 std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudget& budget,
                                    Deadline deadline);
 

@@ -66,6 +66,19 @@ def test_pack_refuses_sizes_beyond_a_workshop_at_once(fabguide_cli, tmp_path, na
     assert not (tmp_path / "layout.json").exists()
 
 
+def test_a_strip_of_199999_items_is_laid_out_whole(fabguide_cli, tmp_path):
+    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit)."""
+    source = tmp_path / "many.json"
+    with open(str(source), "w") as f:
+        json.dump({"Name": "many", "Objects": [{"Length": 1000, "Height": 1000, "Stock": None, "Cost": 1}],
+                   "Items": [{"Length": 7, "Height": 6, "Demand": 199999, "DemandMax": None, "Value": 1}]}, f)
+    out = tmp_path / "strip.json"
+    result = run(fabguide_cli, "pack", "--strip", str(source), "-o", str(out), "--time-limit", "2")
+    assert result.returncode == 0, result.stderr
+    with open(str(out)) as f:
+        assert len(json.load(f)["placements"]) == 199999
+
+
 def test_a_number_that_overflows_names_the_file(fabguide_cli, tmp_path):
     source = tmp_path / "overflow.pack.json"
     source.write_text(json.dumps(PACK).replace('"width": 300', '"width": 1e999'))
