@@ -131,8 +131,8 @@ bool allowedOn(const RasterPart& part, int shape, const BoardStock& board)
            grainAllows(part.followsGrain, part.rotations[shape], board.grain);
 }
 
-Docker::Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds)
-    : stock_(stock), criterion_(criterion), bounds_(bounds), left_(stock.size())
+Docker::Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds, Deadline deadline)
+    : stock_(stock), criterion_(criterion), bounds_(bounds), deadline_(deadline), left_(stock.size())
 {
     std::transform(stock.begin(), stock.end(), left_.begin(), [](const BoardStock& b) { return b.count; });
 }
@@ -169,9 +169,9 @@ Placed Docker::bestOn(int sheetIndex, const RasterPart& part) const
             }
         };
         if (fills(criterion_))
-            sheet.forEachFillPosition(shape, consider);
+            sheet.forEachFillPosition(shape, consider, deadline_);
         else
-            sheet.forEachDockingPosition(shape, consider);
+            sheet.forEachDockingPosition(shape, consider, deadline_);
     }
     return choice;
 }
@@ -218,6 +218,11 @@ void Docker::place(const std::vector<RasterPart>& parts, int index)
 {
     const RasterPart& part = parts[index];
     Placed choice = bestPlace(part);
+    if (deadline_.passed()) {  // looked at in part only
+        layout_.unplaced.push_back(index);
+        layout_.finished = false;
+        return;
+    }
     if (choice.sheet < 0) {
         const int sheet = openSheet(part);
         if (sheet < 0) {
@@ -252,16 +257,19 @@ void Docker::commit(const RasterPart& part, const Placed& choice)
 
 GridLayout dock(const std::vector<RasterPart>& parts, const std::vector<int>& order,
                 const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds,
-                const GridLayout* before, size_t same)
+                const GridLayout* before, size_t same, Deadline deadline)
 {
-    Docker docker(stock, criterion, bounds);
+    Docker docker(stock, criterion, bounds, deadline);
     size_t k = 0;
     if (before)
         for (; k < same && k < before->placed.size() && before->placed[k].part == order[k]; ++k)
             docker.replay(parts, before->placed[k], before->stock[before->placed[k].sheet]);
-    for (; k < order.size(); ++k)
+    for (; k < order.size() && !deadline.passed(); ++k)
         docker.place(parts, order[k]);
-    return docker.layout();
+    GridLayout layout = docker.layout();
+    layout.finished = layout.finished && k == order.size();
+    layout.unplaced.insert(layout.unplaced.end(), order.begin() + static_cast<long>(k), order.end());
+    return layout;
 }
 
 }  // namespace fabguide::material

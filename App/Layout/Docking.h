@@ -1,6 +1,7 @@
 // Docking (thesis 5.4.3.1, Algorithm 13) and Bottom-Left (5.3.1) on the material-space grid.
 #pragma once
 
+#include "Layout/Deadline.h"
 #include "Layout/Footprint.h"
 
 #include <cmath>
@@ -67,6 +68,7 @@ struct GridLayout {
     std::vector<long> skylineArea;  ///< per sheet, area under the top height-field A(H^t)
     std::vector<Placed> placed;     ///< in docking order
     std::vector<int> unplaced;      ///< parts left over when the master boards ran out
+    bool finished = true;           ///< false: the deadline passed first, and the parts left are unplaced
 };
 
 /// How a part's position is chosen among the docking positions.
@@ -111,7 +113,7 @@ public:
     /// row where the right height-field steps, and from the top at each column where the top
     /// height-field steps (ComputeDockingPosition in Algorithm 13). Positions are inside the sheet.
     template <class Visit>
-    void forEachDockingPosition(const Footprint& part, Visit&& visit) const;
+    void forEachDockingPosition(const Footprint& part, Visit&& visit, const Deadline& deadline = {}) const;
 
     /// E(L, p, pos) of thesis 5.4.3.2: area newly enclosed behind the part, both directions.
     long enclosedArea(const Footprint& part, Position at) const;
@@ -119,7 +121,7 @@ public:
     /// Calls visit(position) for the lowest place the part fits at each column, inside the sheet (a sheet
     /// made with `holes`).
     template <class Visit>
-    void forEachFillPosition(const Footprint& part, Visit&& visit) const;
+    void forEachFillPosition(const Footprint& part, Visit&& visit, const Deadline& deadline = {}) const;
 
     /// The empty cells between the part's lowest cell in each column and what lies below it (a sheet made
     /// with `holes`).
@@ -153,7 +155,8 @@ private:
 /// Algorithm 13 one part at a time: the sheets being filled and the stock left.
 class Docker {
 public:
-    Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds);
+    /// Past `deadline` a part is looked at no further and left unplaced, the layout not `finished`.
+    Docker(const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds, Deadline deadline = {});
 
     /// Where `part` would go: the best docking position on the first open sheet that has one
     /// (sheet = -1 when it needs a new sheet, or shape = -1 when it has a position nowhere).
@@ -180,6 +183,7 @@ private:
     const std::vector<BoardStock>& stock_;
     Criterion criterion_;
     Bounds bounds_;
+    Deadline deadline_;
     std::vector<int> left_;  ///< boards left per stock
     std::vector<Sheet> sheets_;
     GridLayout layout_;
@@ -188,21 +192,29 @@ private:
 /// Lays the parts out in the given order (Algorithm 13): each part goes to the first open sheet
 /// where it has a docking position, at the best position by `criterion`. The first `same` parts of `order`
 /// that `before` (a docking of an order that begins alike) placed in the same order are put where it put
-/// them. Throws PackingError naming a part larger than every master board.
+/// them. Throws PackingError naming a part larger than every master board. Past `deadline` the parts left
+/// are unplaced and the layout not `finished`.
 GridLayout dock(const std::vector<RasterPart>& parts, const std::vector<int>& order,
                 const std::vector<BoardStock>& stock, Criterion criterion, Bounds bounds = Bounds::Layout,
-                const GridLayout* before = nullptr, size_t same = 0);
+                const GridLayout* before = nullptr, size_t same = 0, Deadline deadline = {});
 
 // ---------------------------------------------------------------------------------------------
 
+/// Whether a loop at step `i` must end: every 1024 steps, the deadline asked (a step scans a part's rows).
+inline bool late(int i, const Deadline& deadline)
+{
+    return (i & 1023) == 1023 && deadline.passed();
+}
+
 template <class Visit>
-void Sheet::forEachDockingPosition(const Footprint& part, Visit&& visit) const
+void Sheet::forEachDockingPosition(const Footprint& part, Visit&& visit, const Deadline& deadline) const
 {
     // Past the used height every row is empty, so only its first row and the board-top-aligned
     // row give distinct positions (likewise for columns past the used width).
     const int w = part.width(), h = part.height();
     const int lastY = height_ - h, lastX = width_ - w;
-    for (int y = 0; y <= lastY; y = y < usedHeight_ ? y + 1 : (y < lastY ? lastY : lastY + 1)) {
+    for (int y = 0; y <= lastY && !late(y, deadline);
+         y = y < usedHeight_ ? y + 1 : (y < lastY ? lastY : lastY + 1)) {
         const bool step = y == 0 || y == lastY || right_[y] != right_[y - 1] ||  // bottom on a step
                           right_[y + h] != right_[y + h - 1];                    // top on a step
         if (!step)
@@ -211,7 +223,8 @@ void Sheet::forEachDockingPosition(const Footprint& part, Visit&& visit) const
         if (x <= lastX)
             visit(Position{x, y});
     }
-    for (int x = 0; x <= lastX; x = x < usedWidth_ ? x + 1 : (x < lastX ? lastX : lastX + 1)) {
+    for (int x = 0; x <= lastX && !late(x, deadline);
+         x = x < usedWidth_ ? x + 1 : (x < lastX ? lastX : lastX + 1)) {
         const bool step = x == 0 || x == lastX || top_[x] != top_[x - 1] || top_[x + w] != top_[x + w - 1];
         if (!step)
             continue;
@@ -222,9 +235,9 @@ void Sheet::forEachDockingPosition(const Footprint& part, Visit&& visit) const
 }
 
 template <class Visit>
-void Sheet::forEachFillPosition(const Footprint& part, Visit&& visit) const
+void Sheet::forEachFillPosition(const Footprint& part, Visit&& visit, const Deadline& deadline) const
 {
-    for (int x = 0; x + part.width() <= width_; ++x) {
+    for (int x = 0; x + part.width() <= width_ && !late(x, deadline); ++x) {
         const int y = lowestFit(part, x);
         if (y + part.height() <= height_)
             visit(Position{x, y});

@@ -95,9 +95,11 @@ std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::v
                 chosen = k;
             }
         }
-        if (chosen == kinds.size())  // out of time: the rest in decreasing extent
-            chosen = std::find_if(kinds.begin(), kinds.end(), [](const auto& k) { return !k.empty(); }) -
-                     kinds.begin();
+        if (chosen == kinds.size()) {  // out of time: the rest in decreasing extent, not docked here
+            for (std::vector<int>& kind : kinds)
+                order.insert(order.end(), kind.rbegin(), kind.rend());
+            break;
+        }
         order.push_back(kinds[chosen].back());
         kinds[chosen].pop_back();
         docker.place(parts, order.back());
@@ -106,7 +108,8 @@ std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::v
 }
 
 GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<int> order,
-                            const std::vector<BoardStock>& stock, const OrderingSearchOptions& options)
+                            const std::vector<BoardStock>& stock, const OrderingSearchOptions& options,
+                            Deadline firstPass)
 {
     using Clock = std::chrono::steady_clock;
     const Deadline deadline(Clock::now() + seconds(options.timeLimit), options.cancel);
@@ -114,7 +117,9 @@ GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<in
     const long iterations = options.iterations >= 0 ? options.iterations : n * n;
 
     const auto started = Clock::now();
-    GridLayout current = dock(parts, order, stock, options.criterion, options.bounds);
+    GridLayout current = dock(parts, order, stock, options.criterion, options.bounds, nullptr, 0, firstPass);
+    if (!current.finished)
+        return current;
     const auto pass = Clock::now() - started;  // never start a docking pass that cannot end in time
     GridLayout best = current;
     LayoutCost bestCost = cost(best, stock, options.bounds);

@@ -65,8 +65,10 @@ std::vector<int> bestFitOrder(const std::vector<RasterPart>& parts, const std::v
 
 /// Starting from `order`, repeatedly swaps two random parts, re-docks, and keeps the swap when the
 /// layout costs no more (thesis 5.4.3). Stops after the iterations, or before a docking pass that would
-/// end past the time limit, or when cancelled. Returns the best layout found.
+/// end past the time limit, or when cancelled. Returns the best layout found; the first docking pass is cut
+/// at `firstPass` (the layout then not `finished`).
 GridLayout exploreOrderings(const std::vector<RasterPart>& parts, std::vector<int> order,
-                            const std::vector<BoardStock>& stock, const OrderingSearchOptions& options);
+                            const std::vector<BoardStock>& stock, const OrderingSearchOptions& options,
+                            Deadline firstPass = {});
 
 }  // namespace fabguide::material

@@ -153,7 +153,7 @@ void checkSettings(const PackProblem& problem)
 }
 
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                            OrderingSearchOptions options)
+                            OrderingSearchOptions options, Deadline firstPasses)
 {
     // Each start wins on some instances: best-fit orders preferring large extents, wide parts and large
     // areas, and the thesis' decreasing extent (5.3.1); a fill starts from each with both its tie-breaks.
@@ -180,15 +180,17 @@ GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vec
                                       until.sooner(Clock::now() + seconds(share / 6)))
                        : decreasingExtentOrder(parts);
         search.timeLimit = until.secondsLeft();
-        found[k] = exploreOrderings(parts, order, stock, search);
+        found[k] = exploreOrderings(parts, order, stock, search, firstPasses);
     };
     runAll(count, threads, start, [](int) {});
-    // The lowest cost, the first start on a tie: the same whichever thread finished first.
+    // The lowest cost of those finished, the first start on a tie: the same whichever thread finished first.
+    const auto rank = [&](const GridLayout& g) {
+        return std::pair{!g.finished, cost(g, stock, options.bounds)};
+    };
     size_t best = 0;
-    LayoutCost least = cost(found[0], stock, options.bounds);
     for (size_t k = 1; k < found.size(); ++k)
-        if (const LayoutCost c = cost(found[k], stock, options.bounds); c < least)
-            best = k, least = c;
+        if (rank(found[k]) < rank(found[best]))
+            best = k;
     return std::move(found[best]);
 }
 
@@ -364,6 +366,18 @@ Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t see
     }
 }
 
+/// MaxRects on the parts' bounding boxes, a strip or on the boards; nothing when the boards run out first.
+std::optional<Layout> boundingBoxes(const PackProblem& problem, Deadline deadline)
+{
+    if (problem.strip)
+        return maxRectsStrip(problem, deadline);
+    try {
+        return maxRects(problem, deadline);
+    } catch (const PackingError&) {
+        return std::nullopt;
+    }
+}
+
 Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -410,6 +424,11 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (lower && units > kDockedUnits)
             return *lower;  // Docking's first layout alone would outlast the time limit at this scale
     }
+    // Irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
+    // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
+    std::optional<Layout> boxed;
+    if (!rectangles)
+        boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;
@@ -425,7 +444,15 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         fillPassSteps(raster) * kFillPasses <= kFillStepsPerSecond * options.timeLimit)
         options.criterion = Criterion::Fill;
     try {
-        GridLayout grid = searchFromStarts(raster.parts, raster.stock, options);
+        GridLayout grid = searchFromStarts(raster.parts, raster.stock, options, deadline);
+        if (!grid.finished) {  // the deadline passed before any first layout: the one in hand
+            if (const std::optional<Layout>& inHand = lower ? lower : exact ? exact : boxed)
+                return *inHand;
+            throw PackingError(deadline.cancelled()
+                                   ? "stopped before a first layout"
+                                   : "the time ran out before a first layout of " + std::to_string(units) +
+                                         " parts: give it more time");
+        }
         if (shrinks)
             grid = shrinkStrip(raster.parts, raster.stock[0], grid,
                                {forTimeLimit(kShrinkWorkPerSecond, search.timeLimit), search.seed,

@@ -171,9 +171,10 @@ RasterProblem rasterise(const PackProblem& problem);
 Layout inMillimetres(const GridLayout& grid, const PackProblem& problem, const RasterProblem& raster);
 
 /// The ordering search of `pack`: swaps from several starting orders sharing `options.timeLimit`
-/// (best-fit orders and the thesis' decreasing extent); the best layout found.
+/// (best-fit orders and the thesis' decreasing extent); the best layout found, of those whose first docking
+/// pass ended by `firstPasses` (none: not `finished`).
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
-                            OrderingSearchOptions options);
+                            OrderingSearchOptions options, Deadline firstPasses = {});
 
 /// Lays the parts out: rasterise at the settings' resolution with kerf + spacing as clearance, order search
 /// with Docking (or Bottom-Left; a strip of irregular parts filled, then shrunk and compacted on the

@@ -79,6 +79,21 @@ def test_a_strip_of_199999_items_is_laid_out_whole(fabguide_cli, tmp_path):
         assert len(json.load(f)["placements"]) == 199999
 
 
+def test_a_strip_of_2000_irregular_pieces_ends_with_every_piece_laid(fabguide_cli, tmp_path):
+    """Issue 35: 2,000 irregular pieces did not finish (Docking's first pass had no deadline, and one part's
+    positions on a tall strip took seconds); past the deadline the pieces' bounding boxes are laid instead."""
+    source = tmp_path / "pieces.json"
+    piece = {"id": 0, "demand": 2000, "allowed_orientations": [0.0, 180.0],
+             "shape": {"type": "simple_polygon", "data": [[0, 0], [2100, 60], [2200, 250], [1000, 200], [100, 240]]}}
+    with open(str(source), "w") as f:
+        json.dump({"name": "pieces", "items": [piece], "strip_height": 4900}, f)
+    out = tmp_path / "strip.json"
+    result = run(fabguide_cli, "pack", "--strip", str(source), "-o", str(out), "--time-limit", "1")
+    assert result.returncode == 0, result.stderr
+    with open(str(out)) as f:
+        assert len(json.load(f)["placements"]) == 2000
+
+
 def test_a_number_that_overflows_names_the_file(fabguide_cli, tmp_path):
     source = tmp_path / "overflow.pack.json"
     source.write_text(json.dumps(PACK).replace('"width": 300', '"width": 1e999'))
