@@ -22,6 +22,8 @@ def coordinates(box):
                           "rotation; joints turn parts in configurations)".format(box.Label))
     base = placement.Base
     sizes = [getattr(box, s).Value for s in SIZES]
+    if not all(abs(v) < 1e100 for v in list(base) + sizes):  # nan or inf, set from a script
+        raise CuboidError("'{}': its Length, Width, Height and Placement must be finite numbers".format(box.Label))
     return [c for a in range(3) for c in (base[a], base[a] + sizes[a])]
 
 

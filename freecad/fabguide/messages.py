@@ -5,7 +5,9 @@ import re
 
 PATH = re.compile(r"\b[a-z_]+\[\d+\](?:\.[a-z_]+(?:\[\d+\])?)*")
 STEP = re.compile(r"([a-z_]+)(?:\[(\d+)\])?")
-SIDES = {"min": ("left", "near", "bottom"), "max": ("right", "far", "top")}
+SIDES = {"min": ("left", "near", "bottom"), "max": ("right", "far", "top"),  # a field's [0..2], in words
+         "drawn": ("width as drawn", "depth as drawn", "height as drawn"), "position": ("x", "y", "z"),
+         "size": ("width", "depth", "height")}
 WORKSLIKE = {"parts": "part", "cuboids": "box", "joints": "joint", "relationships": "relationship",
              "configurations": "configuration", "poses": "pose"}
 FLATPACK = {"parts": "box", "constraints": "constraint", "inner_volumes": "inner volume", "boards": "master board"}

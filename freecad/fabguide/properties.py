@@ -8,6 +8,7 @@ from freecad import fabguide
 READ_ONLY, HIDDEN, OUTPUT = 1, 4, 8  # App::PropertyType flags
 
 NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance")
+TYPED = NUMBERS + ("App::PropertyFloatList",)  # what typed_in judges finite
 
 
 def add(obj, kind, name, group, doc, value=None, mode=0):
@@ -68,6 +69,23 @@ def at_least(limit, meaning=""):
     return lambda obj, v: number(v) >= limit, "{:g}{} or more".format(limit, meaning)
 
 
+def shown(value):
+    """A property's value as the user knows it: a quantity with its unit, objects by their labels."""
+    if isinstance(value, list) and value and hasattr(value[0], "Label"):
+        return ", ".join(shown(v) for v in value)
+    if hasattr(value, "Label"):
+        return "'{}'".format(value.Label)
+    return getattr(value, "UserString", value)
+
+
+def links(test, what):
+    """A link or link list to objects that pass `test`, never to the object itself (a part among its own boxes
+    is a cycle, which crashed FreeCAD)."""
+    def valid(obj, value):
+        return all(o is None or (o != obj and test(o)) for o in (value if isinstance(value, list) else [value]))
+    return valid, what
+
+
 class Proxy(Stateless):
     """Base of FabGuide's FeaturePython proxies. Subclasses list their properties in `define(obj)` with
     `add`; restoring a document calls it again, so documents saved by an older FabGuide gain new properties.
@@ -98,7 +116,7 @@ class Proxy(Stateless):
         before = getattr(self, "before", (None, None))
         problem = self.invalid(obj, prop)
         if problem and before[0] == prop and not obj.Document.Restoring:
-            FreeCAD.Console.PrintError("{}; kept {}\n".format(problem, getattr(before[1], "UserString", before[1])))
+            FreeCAD.Console.PrintError("{}; kept {}\n".format(problem, shown(before[1])))
             setattr(obj, prop, before[1])
 
     def invalid(self, obj, prop):
@@ -107,7 +125,8 @@ class Proxy(Stateless):
         if prop not in obj.PropertiesList:
             return ""
         value = getattr(obj, prop)
-        if typed_in(obj, prop) and not abs(number(value)) < 1e100:  # a length keeps inf as the largest double
+        numbers = value if isinstance(value, list) else [value]
+        if typed_in(obj, prop) and not all(abs(number(v)) < 1e100 for v in numbers):  # a length keeps inf as 1e308
             return "{} '{}': {} must be a finite number".format(self.NOUN, obj.Label, prop)
         test, must = self.VALID.get(prop, (None, ""))
         if test is None or test(obj, value):
@@ -145,7 +164,7 @@ def mistakes():
 
 def typed_in(obj, prop):
     """Whether `prop` is a number the user (or a script) sets: not a result FabGuide writes (read-only, hidden)."""
-    return (prop in obj.PropertiesList and obj.getTypeIdOfProperty(prop) in NUMBERS and
+    return (prop in obj.PropertiesList and obj.getTypeIdOfProperty(prop) in TYPED and
             not {"ReadOnly", "Hidden"} & set(obj.getEditorMode(prop)))
 
 

@@ -97,7 +97,7 @@ def test_conflicts_are_named_and_leave_the_boxes_alone(doc):
                           [(d.getObjectsByLabel("Lid")[0], "bottom"), (d.getObjectsByLabel("Body")[0], "near")]),
      "Body.near and Lid.bottom are linked but not parallel"),
     (lambda d, m: setattr(d.getObjectsByLabel("Lid")[0], "Height", 5e9),  # said in the user's words
-     r"Mechanism 'Mechanism': part 'Top' box 'Lid' top: .*beyond"),
+     r"Mechanism 'Mechanism': part 'Top' box 'Lid' height as drawn: .*beyond"),
 ])
 def test_bad_input_is_an_error_naming_the_object(doc, spoil, message):
     mech, body, lid, cover = clamshell(doc)

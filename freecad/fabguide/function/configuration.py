@@ -6,7 +6,8 @@ from freecad.fabguide.function import joints
 
 
 class Configuration(properties.Proxy):
-    TYPE = "FabGuide::Configuration"
+    TYPE, NOUN = "FabGuide::Configuration", "Configuration"
+    VALID = dict(Joints=properties.links(joints.is_joint, "joints"))
 
     def define(self, obj):
         add = properties.add

@@ -4,12 +4,15 @@ of its Base by a rigid link (the solve places both pivots, 4.3.6); a fixed joint
 (no poses; print-in-place fuses the two). A joint may hang on another moving part (its Base), which carries it."""
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
+from freecad.fabguide.function import parts
 
 AXES = ["x", "y", "z"]
 
 
 class Joint(properties.Proxy):
-    KIND = None  # as *.workslike.json names it
+    KIND, NOUN = None, "Joint"  # KIND as *.workslike.json names it
+    VALID = dict(Part=properties.links(parts.is_part, "a FabGuide part"),
+                 Base=properties.links(parts.is_part, "a FabGuide part (empty: the ground)"))
 
     def define(self, obj):
         add = properties.add
@@ -112,7 +115,10 @@ def as_dict(obj):
         if box not in obj.Part.Cuboids:
             raise JointError("Joint '{}': its edge is on '{}', which is not a box of part '{}'"
                              .format(obj.Label, box.Label, obj.Part.Label))
-        out["edge"] = ["{}.{}".format(box.Label, side) for side in cuboids.edge_sides(box, elements[0])]
+        try:
+            out["edge"] = ["{}.{}".format(box.Label, side) for side in cuboids.edge_sides(box, elements[0])]
+        except cuboids.CuboidError as error:
+            raise JointError("Joint '{}': {}".format(obj.Label, error))
     if slides(obj):
         out["axis"] = obj.Axis
     if kind(obj) == "fixed" and obj.Base is None:

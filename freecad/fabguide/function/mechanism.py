@@ -21,7 +21,8 @@ class MechanismError(ValueError):
 
 class Mechanism(properties.Proxy):
     TYPE, NOUN = "FabGuide::Mechanism", "Mechanism"
-    VALID = dict(MinimumSize=properties.more_than(0))
+    VALID = dict(MinimumSize=properties.at_least(0.01, " mm"),
+                 ShownConfiguration=properties.links(configuration.is_configuration, "a configuration"))
 
     def define(self, obj):
         add = properties.add
@@ -144,8 +145,9 @@ def solve(obj):
         return solved
     by_name = {r["name"]: r for r in solved["relationships"]}
     for rel in members(obj, relationships.is_relationship):
+        others = ", ".join(n for n in conflict if n != rel.Label) or "it cannot hold as the boxes are drawn"
         status = (satisfied(rel, report["notes"]) if report["solved"] else
-                  "Conflict: " + ", ".join(n for n in conflict if n != rel.Label) if rel.Label in conflict else "")
+                  "Conflict: " + others if rel.Label in conflict else "")
         if rel.Status != status:
             rel.Status = status
         relationships.keep_pairs(rel, by_name.get(rel.Label, {}), {box.Label: box for box in boxes(obj)})

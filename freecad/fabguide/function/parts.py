@@ -4,7 +4,9 @@ from freecad.fabguide import cuboids
 
 
 class FunctionalPart(properties.Proxy):
-    TYPE = "FabGuide::Part"
+    TYPE, NOUN = "FabGuide::Part", "Part"
+    VALID = dict(Cuboids=properties.links(cuboids.is_box, "Part::Box objects"),
+                 Cavities=properties.links(cuboids.is_box, "Part::Box objects"))
 
     def define(self, obj):
         properties.add(obj, "App::PropertyLinkList", "Cuboids", "Part",

@@ -17,7 +17,8 @@ class PrintableError(ValueError):
 
 class Printable(properties.Proxy):
     TYPE = "FabGuide::Printable"
-    NOUN, VALID = "Printable", dict(Scale=properties.more_than(0))
+    NOUN, VALID = "Printable", dict(Scale=properties.more_than(0),
+                                    Mechanism=properties.links(mechanism.is_mechanism, "a Mechanism"))
 
     def define(self, obj):
         add = properties.add

@@ -138,6 +138,8 @@ class Command:
             self.run(FreeCAD.ActiveDocument)
         except properties.mistakes() as error:
             tell(str(error))
+        except OSError as error:  # a file picked that cannot be read or written: a folder, a missing one
+            tell("{}: cannot use '{}': {}.".format(self.MENU, error.filename, error.strerror or error))
         except Exception as error:  # noqa: B902  (a user meets a sentence, whatever went wrong)
             unforeseen(self.MENU, error)
 

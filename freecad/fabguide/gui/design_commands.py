@@ -293,6 +293,8 @@ class OuterVolume(Command):
         if target is None:
             return
         coords = [cuboids.coordinates(b) for b in design.boxes(target)]
+        if not coords:
+            return tell("Design '{}' has no boxes to put an envelope round.".format(target.Label))
         low = [min(c[2 * a] for c in coords) for a in range(3)]
         high = [max(c[2 * a + 1] for c in coords) for a in range(3)]
         margin = [0.05 * (h - l) for l, h in zip(low, high)]

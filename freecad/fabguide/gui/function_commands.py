@@ -82,6 +82,8 @@ class NewMechanism(Command):
 
     def run(self, doc):
         boxes = usable([o for o in selected(cuboids.is_box) if parts.part_of(doc.Objects, o) is None])
+        if not boxes:
+            return tell("Every picked box is already in a part: pick boxes that are not.")
         with transaction(doc, "New mechanism"):
             mech = vp.attach(mechanism.create(doc))
             mech.Group = [vp.attach(parts.create(doc, [b])) for b in boxes]
@@ -134,7 +136,7 @@ class AddJoint(Command):
 
     def run(self, doc):
         chosen = picks()
-        edges, faces = picked_elements("Edge"), picked_elements("Face")
+        edges, faces = picked_elements("Edge") if self.KIND != "slide" else [], picked_elements("Face")
         if self.KIND != "slide" and len(edges) != 1:
             return tell("Pick the one edge of a box the {} turns about.".format(self.MENU.lower()[4:]))
         if self.KIND != "hinge" and not faces:
@@ -297,8 +299,11 @@ class AddFlush(AddRelationship):
     NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def check(self):
-        if len(picked_elements("Face")) != 2:
+        faces = picked_elements("Face")
+        if len(faces) != 2:
             return "Pick exactly two faces of boxes."
+        if faces[0][0] == faces[1][0]:
+            return "Pick faces of two different boxes: two faces of one box never lie in one plane."
 
     def fields(self, doc, found):
         return {"Faces": picked_elements("Face")}

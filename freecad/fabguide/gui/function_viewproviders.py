@@ -2,6 +2,7 @@
 in the 3-D view, conflicting parts shown in red, and the task panels opened by double-click."""
 import FreeCADGui
 
+from freecad.fabguide import cuboids
 from freecad.fabguide.function import configuration, joints, mechanism, parts, printable, relationships
 from freecad.fabguide.gui import editing
 from freecad.fabguide.gui.viewproviders import EditedByDoubleClick, ViewProvider
@@ -46,7 +47,7 @@ class ViewProviderPart(ViewProvider):
     ICON = "FabGuide_Part.svg"
 
     def claimChildren(self):
-        return parts.boxes(self.Object)
+        return [b for b in parts.boxes(self.Object) if cuboids.is_box(b)]
 
 
 class ViewProviderConfiguration(ViewProvider):
@@ -142,6 +143,7 @@ def axis_points(joint):
     the hinge's edge (points on it stay on it as the part turns), the slide's axis through its part, the double
     pivot's link (a pivot on each part), the fixed joint's hold."""
     import FreeCAD
+    import Part
 
     points = []
     try:
@@ -158,7 +160,7 @@ def axis_points(joint):
             points += [(joint.Pivot, part), (joint.BasePivot, base)]
         if joints.kind(joint) == "fixed" and part and base:  # from the part to what holds it
             points += [(part.Cuboids[0].Shape.BoundBox.Center, part), (base.Cuboids[0].Shape.BoundBox.Center, base)]
-    except (AttributeError, IndexError, ValueError, ReferenceError):  # half-made or deleted input
+    except (AttributeError, IndexError, ValueError, ReferenceError, Part.OCCError):  # half-made, deleted, no such edge
         return []
     return points
 

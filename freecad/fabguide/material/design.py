@@ -25,7 +25,8 @@ class DesignError(ValueError):
 
 class FlatpackDesign(properties.Proxy):
     TYPE, NOUN = "FabGuide::FlatpackDesign", "Design"
-    VALID = dict(Resolution=properties.more_than(0))
+    VALID = dict(Resolution=properties.more_than(0),
+                 MasterBoards=properties.links(master_board.is_master_board, "master boards"))
 
     def define(self, obj):
         add = properties.add

@@ -16,10 +16,10 @@ def parameters(obj):
     """[(sheet, alias, low, high)] from the design's Parameters ("Sheet.alias min max")."""
     found = []
     for entry in obj.Parameters:
-        words = entry.split()
+        words = entry.split()  # a sheet's label may hold spaces: the range is the last two words
         try:
-            name, low, high = words[0], float(words[1]), float(words[2])
-            sheet_name, alias = name.split(".", 1)
+            name, low, high = " ".join(words[:-2]), float(words[-2]), float(words[-1])
+            sheet_name, alias = name.rsplit(".", 1)
         except (IndexError, ValueError):
             raise ParameterError("Design '{}': parameter '{}' must read 'Sheet.alias min max'".format(obj.Label, entry))
         sheets = obj.Document.getObjectsByLabel(sheet_name) or [obj.Document.getObject(sheet_name)]
@@ -35,8 +35,13 @@ def parameters(obj):
 
 
 def value(sheet, alias):
-    v = sheet.get(alias)
-    return float(getattr(v, "Value", v))
+    """The alias' number; ParameterError when its cell holds none (empty, text, an expression in error)."""
+    try:
+        v = sheet.get(alias)
+        return float(getattr(v, "Value", v))
+    except (ValueError, TypeError) as error:
+        raise ParameterError("Spreadsheet '{}': '{}' holds no number ({})".format(
+            sheet.Label, alias, str(error).splitlines()[0]))
 
 
 def set_values(obj, params, values, boxes_only=False):
