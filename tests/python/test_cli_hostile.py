@@ -84,7 +84,8 @@ def test_a_strip_of_2000_irregular_pieces_ends_with_every_piece_laid(fabguide_cl
     positions on a tall strip took seconds); past the deadline the pieces' bounding boxes are laid instead."""
     source = tmp_path / "pieces.json"
     piece = {"id": 0, "demand": 2000, "allowed_orientations": [0.0, 180.0],
-             "shape": {"type": "simple_polygon", "data": [[0, 0], [2100, 60], [2200, 250], [1000, 200], [100, 240]]}}
+             "shape": {"type": "simple_polygon",
+                       "data": [[0, 0], [2100, 60], [3000, 700], [2800, 1400], [1000, 1200], [100, 1440]]}}
     with open(str(source), "w") as f:
         json.dump({"name": "pieces", "items": [piece], "strip_height": 4900}, f)
     out = tmp_path / "strip.json"
