@@ -216,9 +216,9 @@ Size extentOf(const Model& model)
     return extent;
 }
 
-/// The largest print FabGuide makes, mm along any side: beyond the largest printers (the thesis' bunk bed is 2.1 m
-/// at 1:1), where meshing curved joints to a printer's precision takes ever longer (issue 35: a model at 1e6 mm,
-/// or --scale 100, did not finish).
+/// The largest print FabGuide makes, mm along any side: beyond the largest printers (the thesis' bunk bed
+/// is 2.1 m at 1:1), where meshing curved joints to a printer's precision takes ever longer (issue 35: a
+/// model at 1e6 mm, or --scale 100, did not finish).
 constexpr double kLargestPrint = 5000;
 
 /// std::invalid_argument when a scaled model is longer than kLargestPrint along an axis.

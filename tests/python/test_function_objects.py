@@ -451,6 +451,8 @@ def test_the_preview_moves_parts_as_the_print_does_turns_first_then_slides(doc, 
     assert whole.Rotation.Angle == pytest.approx(math.pi / 2)
     assert (whole.Base - half.Base).Length == pytest.approx(60)  # then the 60 mm slide, along y
     assert abs((whole.Base - half.Base).y) == pytest.approx(60)
+    with pytest.raises(ValueError, match=r"^joint 'left door hinge' angle: 1000000000.0 is beyond"):  # said, not a path
+        posing.part_motions(model, mech, {door.Name: (1e9, 0, FreeCAD.Vector())})
 
 
 def test_a_length_typed_stays_a_length_or_is_refused_by_name_never_a_move(doc):

@@ -154,7 +154,11 @@ def is_printable(obj):
 def export(obj, folder):
     """assembly.stl/.3mf/.step and one of each per body into folder, the bodies as made (turned a quarter on the
     bed when the fit says so); the paths written."""
-    stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State or properties.failed(o)]
+    failed = [o for o in [obj] + obj.OutListRecursive if properties.failed(o)]
+    if failed:  # recomputing does not mend it
+        raise PrintableError("Printable '{}': {}; mend that first".format(
+            obj.Label, getattr(failed[0], "Error", "") or "'{}' is in error".format(failed[0].Label)))
+    stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State]
     if stale:
         raise PrintableError("Printable '{}': not made from the mechanism as it stands ({} changed); recompute first"
                              .format(obj.Label, ", ".join(stale)))

@@ -3,9 +3,12 @@ Coin transform. The motion is the core's (thesis 4.1.2, J(Θ): a part moves by i
 joint, out to the ground), the one the print's sweeps and clearance check follow: part of the way there,
 everything that turns does so in the first half and everything that slides in the second; a double pivot
 follows its four-bar motion."""
+import re
+
 import FreeCAD
 
 from freecad.fabguide.core import fabguide_core
+from freecad.fabguide import messages
 from freecad.fabguide.function import configuration, joints, mechanism, parts
 
 PREVIEW = "FabGuide preview"  # the configuration being shown, added to the model for the core
@@ -16,8 +19,14 @@ def part_motions(model, mech, poses, fraction=1.0):
     mechanism's `model` (mechanism.model); unposed joints stay as modelled."""
     by_name = {j.Name: j for j in mechanism.members(mech, joints.is_joint)}
     preview = {by_name[n].Label: configuration.pose_dict(by_name[n], *pose) for n, pose in poses.items()}
-    rows = fabguide_core.part_motions(dict(model, configurations=model["configurations"] + [
-        {"name": PREVIEW, "poses": preview}]), PREVIEW, fraction)
+    shown = dict(model, configurations=model["configurations"] + [{"name": PREVIEW, "poses": preview}])
+    try:
+        rows = fabguide_core.part_motions(shown, PREVIEW, fraction)
+    except fabguide_core.FormatError as error:  # "configuration 'FabGuide preview' poses.Lid hinge: ..."
+        said = messages.in_words(str(error), shown, messages.WORKSLIKE)
+        raise ValueError(re.sub(r"configuration '{}' poses[. ](.+?)(\.angle|\.offset|\.pole)?: ".format(PREVIEW),
+                                lambda m: "joint '{}'{}: ".format(m.group(1), (m.group(2) or "").replace(".", " ")),
+                                said))
     return {name: FreeCAD.Placement(FreeCAD.Matrix(*r[0], *r[1], *r[2], 0, 0, 0, 1)) for name, r in rows.items()}
 
 
