@@ -15,19 +15,10 @@ boxes = None  # guitest.MessageBoxes, from the first step: what message boxes sa
 
 
 def box(label, low, high):
-    b = state["doc"].addObject("Part::Box", "Box")
-    b.Label = label
-    cuboids.set_coordinates(b, [v for a in range(3) for v in (low[a], high[a])])
-    return b
+    return guitest.box(state["doc"], label, low, high)
 
 
-def pick(*picked):
-    Gui.Selection.clearSelection()
-    for obj, element in picked:
-        if element:
-            Gui.Selection.addSelection(obj, element)
-        else:
-            Gui.Selection.addSelection(obj)
+pick = guitest.pick
 
 
 def heights():

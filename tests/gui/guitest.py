@@ -38,6 +38,26 @@ def new_document(name):
     return doc
 
 
+def box(doc, label, low, high):
+    """A Part::Box labelled `label` from corner `low` to corner `high`."""
+    from freecad.fabguide import cuboids
+
+    made = doc.addObject("Part::Box", "Box")
+    made.Label = label
+    cuboids.set_coordinates(made, [v for a in range(3) for v in (low[a], high[a])])
+    return made
+
+
+def pick(*picked):
+    """The selection as a user clicks it: (object, element) pairs, element None for the whole object."""
+    FreeCADGui.Selection.clearSelection()
+    for obj, element in picked:
+        if element:
+            FreeCADGui.Selection.addSelection(obj, element)
+        else:
+            FreeCADGui.Selection.addSelection(obj)
+
+
 def told(command):
     """Runs `command`, which should tell the user something in a message box; closes the box and returns its
     text (None when no box came)."""

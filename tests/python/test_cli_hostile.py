@@ -66,33 +66,32 @@ def test_pack_refuses_sizes_beyond_a_workshop_at_once(fabguide_cli, tmp_path, na
     assert not (tmp_path / "layout.json").exists()
 
 
-def test_a_strip_of_199999_items_is_laid_out_whole(fabguide_cli, tmp_path):
-    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit)."""
-    source = tmp_path / "many.json"
+def strip_placements(cli, folder, instance, seconds):
+    """How many parts `pack --strip` lays of `instance` (OR-Datasets or ESICUP) within `seconds`; it must end well."""
+    source, out = folder / "instance.json", folder / "strip.json"
     with open(str(source), "w") as f:
-        json.dump({"Name": "many", "Objects": [{"Length": 1000, "Height": 1000, "Stock": None, "Cost": 1}],
-                   "Items": [{"Length": 7, "Height": 6, "Demand": 199999, "DemandMax": None, "Value": 1}]}, f)
-    out = tmp_path / "strip.json"
-    result = run(fabguide_cli, "pack", "--strip", str(source), "-o", str(out), "--time-limit", "2")
+        json.dump(instance, f)
+    result = run(cli, "pack", "--strip", str(source), "-o", str(out), "--time-limit", seconds)
     assert result.returncode == 0, result.stderr
     with open(str(out)) as f:
-        assert len(json.load(f)["placements"]) == 199999
+        return len(json.load(f)["placements"])
+
+
+def test_a_strip_of_199999_items_is_laid_out_whole(fabguide_cli, tmp_path):
+    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit)."""
+    assert strip_placements(fabguide_cli, tmp_path, {
+        "Name": "many", "Objects": [{"Length": 1000, "Height": 1000, "Stock": None, "Cost": 1}],
+        "Items": [{"Length": 7, "Height": 6, "Demand": 199999, "DemandMax": None, "Value": 1}]}, "2") == 199999
 
 
 def test_a_strip_of_2000_irregular_pieces_ends_with_every_piece_laid(fabguide_cli, tmp_path):
     """Issue 35: 2,000 irregular pieces did not finish (Docking's first pass had no deadline, and one part's
     positions on a tall strip took seconds); past the deadline the pieces' bounding boxes are laid instead."""
-    source = tmp_path / "pieces.json"
     piece = {"id": 0, "demand": 2000, "allowed_orientations": [0.0, 180.0],
              "shape": {"type": "simple_polygon",
                        "data": [[0, 0], [2100, 60], [3000, 700], [2800, 1400], [1000, 1200], [100, 1440]]}}
-    with open(str(source), "w") as f:
-        json.dump({"name": "pieces", "items": [piece], "strip_height": 4900}, f)
-    out = tmp_path / "strip.json"
-    result = run(fabguide_cli, "pack", "--strip", str(source), "-o", str(out), "--time-limit", "1")
-    assert result.returncode == 0, result.stderr
-    with open(str(out)) as f:
-        assert len(json.load(f)["placements"]) == 2000
+    assert strip_placements(fabguide_cli, tmp_path, {"name": "pieces", "items": [piece], "strip_height": 4900},
+                            "1") == 2000
 
 
 def test_a_number_that_overflows_names_the_file(fabguide_cli, tmp_path):
