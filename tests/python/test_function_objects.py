@@ -511,3 +511,14 @@ def test_successive_solves_do_not_thin_a_part_below_half_of_what_was_drawn(doc, 
     written = json.load(open(str(tmp_path / "doors.workslike.json")))
     assert written["parts"][0]["cuboids"][0]["drawn"] == pytest.approx([100, 20, 200])
     FreeCAD.closeDocument(reopened.Name)
+
+
+@pytest.mark.parametrize("solved, drawn", [("null", "garbage"), ('{"Box": "x"}', "[1, 2]"), ("{", '{"Box": [1e999]}')])
+def test_nonsense_in_the_hidden_memory_of_solves_is_forgotten_not_a_traceback(doc, solved, drawn):
+    """A script (or Show all in the property editor) can write anything into Solved and Drawn: the mechanism then
+    solves as a new one would, without a traceback (issue 36)."""
+    mech, body, lid, cover = clamshell(doc)
+    mech.Solved, mech.Drawn = solved, drawn
+    body.Length = 70
+    doc.recompute()
+    assert mech.Status == "Solved" and not mech.Error, (mech.Status, mech.Error)

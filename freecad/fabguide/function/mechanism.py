@@ -71,12 +71,25 @@ def boxes(obj):
     return [box for part in members(obj, parts.is_part) for box in parts.boxes(part) if cuboids.is_box(box)]
 
 
+def remembered(text, size):
+    """{box name: `size` numbers} from a hidden JSON property; what is not that (a script wrote nonsense) is
+    forgotten, as in a new mechanism."""
+    try:
+        stored = json.loads(text) if text else {}
+    except ValueError:
+        return {}
+    if not isinstance(stored, dict):
+        return {}
+    return {name: v for name, v in stored.items() if isinstance(v, list) and len(v) == size and
+            all(isinstance(x, (int, float)) and abs(x) < 1e100 for x in v)}
+
+
 def edits(obj):
     """Box coordinates changed since the last solve, as lock names ("Lid.top"): both sides along an axis the
     user changed, so a Length typed stays a length with the box's corner where it was, never becomes a move."""
-    if not obj.KeepEdits or not obj.Solved:
+    before = remembered(obj.Solved, 6)
+    if not obj.KeepEdits or not before:
         return []
-    before = json.loads(obj.Solved)
     return ["{}.{}".format(box.Label, cuboids.SIDES[2 * a + high]) for box in boxes(obj) if box.Name in before
             for a, now in enumerate(zip(*[iter(cuboids.coordinates(box))] * 2))
             if any(abs(w - n) > 1e-7 for w, n in zip(before[box.Name][2 * a:2 * a + 2], now)) for high in (0, 1)]
@@ -90,7 +103,7 @@ def drawn(obj):
     """Each box's sizes as the user drew them, {box name: [x, y, z]}: a size as the last solve wrote it is the
     one drawn before that solve; a size changed since (or a box new to the mechanism) is drawn as it is now.
     The solve holds sizes against them, so that successive solves cannot thin a part again and again."""
-    solved, before = (json.loads(text) if text else {} for text in (obj.Solved, obj.Drawn))
+    solved, before = remembered(obj.Solved, 6), remembered(obj.Drawn, 3)
     out = {}
     for box in boxes(obj):
         now = sizes(cuboids.coordinates(box))
@@ -195,7 +208,7 @@ def say_changes(obj, changes):
 def refuse(obj, report):
     """The user's edit cannot hold with the rest: every box back where the last solve left it, the parts that
     would clash blamed (red), the relationships' statuses as they were."""
-    before = json.loads(obj.Solved)
+    before = remembered(obj.Solved, 6)
     for box in boxes(obj):
         if box.Name in before:
             cuboids.place(box, before[box.Name])
