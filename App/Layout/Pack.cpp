@@ -424,10 +424,11 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (lower && units > kDockedUnits)
             return *lower;  // Docking's first layout alone would outlast the time limit at this scale
     }
-    // Irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
+    // Many irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
     // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
+    const bool cut = rectangles || units > kBoxedUnits;  // first passes cut at the deadline: a layout in hand
     std::optional<Layout> boxed;
-    if (!rectangles)
+    if (!rectangles && cut)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
@@ -444,7 +445,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         fillPassSteps(raster) * kFillPasses <= kFillStepsPerSecond * options.timeLimit)
         options.criterion = Criterion::Fill;
     try {
-        GridLayout grid = searchFromStarts(raster.parts, raster.stock, options, deadline);
+        GridLayout grid = searchFromStarts(raster.parts, raster.stock, options, cut ? deadline : Deadline());
         if (!grid.finished) {  // the deadline passed before any first layout: the one in hand
             if (const std::optional<Layout>& inHand = lower ? lower : exact ? exact : boxed)
                 return *inHand;

@@ -135,6 +135,10 @@ constexpr double kRasterCellsPerSecond = 5e8;
 /// Jobs of rectangles with more units than this are laid out by MaxRects alone: Docking's search would spend
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;
+/// Irregular jobs of more units (twice the largest ESICUP instance) have MaxRects on their bounding boxes in
+/// hand and Docking's first passes cut at the deadline; smaller ones dock whole, as the benchmarks are
+/// measured.
+constexpr long kBoxedUnits = 200;
 
 /// Jobs of rectangles with at most this many units are also laid out by the guillotine search (a saw's layout
 /// is a free one too), in this share of the time limit; the better layout is kept.
