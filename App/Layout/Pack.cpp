@@ -426,9 +426,10 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     }
     // Many irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
     // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
-    const bool cut = rectangles || units > kBoxedUnits;  // first passes cut at the deadline: a layout in hand
+    const bool many = !rectangles && units > kBoxedUnits;
+    const bool cut = rectangles || many;  // first passes cut at the deadline: a layout is in hand
     std::optional<Layout> boxed;
-    if (!rectangles && cut)
+    if (many)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;

@@ -28,9 +28,8 @@ def heights():
 
 def a_part_made_before_its_cavity_changes_nothing():
     global boxes
-    boxes = guitest.MessageBoxes()
-    Gui.activateWorkbench("FabGuideWorkbench")
-    doc = state["doc"] = guitest.new_document("Drawer")
+    doc, boxes = guitest.session("Drawer")
+    state["doc"] = doc
     carcass, top = box("Carcass", (0, 0, 0), (600, 400, 800)), box("Top", (0, 0, 800), (600, 400, 830))
     front, tray = box("Front", (20, -20, 600), (580, 0, 780)), box("Tray", (30, 0, 610), (570, 380, 770))
     doc.recompute()

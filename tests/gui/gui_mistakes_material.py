@@ -44,9 +44,8 @@ def design_from(boxes):
 
 def two_designs_get_a_master_board_each():
     global boxes
-    boxes = guitest.MessageBoxes()
-    Gui.activateWorkbench("FabGuideWorkbench")
-    doc = state["doc"] = guitest.new_document("Bookcases")
+    doc, boxes = guitest.session("Bookcases")
+    state["doc"] = doc
     bookcase_design = design_from(bookcase(doc, "Bookcase", 0))
     cabinet = design_from(bookcase(doc, "Cabinet", 1500))
     bookcase_design.Label, cabinet.Label = "Bookcase", "Cabinet"

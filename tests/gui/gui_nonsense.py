@@ -60,9 +60,8 @@ def told(command, *picked):
 
 def a_clamshell():
     global boxes
-    boxes = guitest.MessageBoxes()
-    Gui.activateWorkbench("FabGuideWorkbench")
-    doc = state["doc"] = guitest.new_document("Nonsense")
+    doc, boxes = guitest.session("Nonsense")
+    state["doc"] = doc
     body, lid = box("Body", (0, 0, 0), (100, 60, 40)), box("Lid", (0, 0, 40), (100, 60, 50))
     doc.recompute()
     pick((body, None), (lid, None))

@@ -98,6 +98,14 @@ class MessageBoxes:
             box.accept()
 
 
+def session(name):
+    """A session of a user's mistakes begins: the workbench active, a new document `name`, every message box
+    answered as a user reading it would. Returns (the document, its MessageBoxes)."""
+    boxes = MessageBoxes()
+    FreeCADGui.activateWorkbench("FabGuideWorkbench")
+    return new_document(name), boxes
+
+
 def isometric(direction="Isometric"):
     """The active 3-D view from a direction (Isometric, Right, Top, ...), fitted, with no camera animation (on by
     default in 1.0: a render right after viewIsometric would catch the camera half-way)."""
