@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -65,6 +66,8 @@ void checkNumbers(const nlohmann::json& document, double largest)
 
 nlohmann::json readJsonFile(const std::string& path)
 {
+    completeInterruptedRuns(
+        std::filesystem::path(path).parent_path().string());  // a set cut short read whole
     std::ifstream in(path);
     if (!in)
         throw FormatError(path + ": cannot open file");

@@ -10,10 +10,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <mutex>
 #include <vector>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fabguide::io {
@@ -101,31 +104,95 @@ extern "C" void onInterrupt(int signal)
     _exit(128 + signal);
 }
 
-/// Removes, once per folder and process, the temporaries that runs since ended left in `folder` (killed by
-/// SIGKILL, or the machine stopped): `.NAME.partial-PID-XXXXXX` whose process no longer exists. One still
-/// running (another run writing there now) keeps its own.
+/// The process id a leftover's name carries after `marker` (`.NAME.partial-PID-XXXXXX`,
+/// `.fabguide-commit-PID-XXXXXX`), or 0 when the name is not one of ours.
+pid_t leftoverOf(const std::string& name, const std::string& marker)
+{
+    const size_t at = name.rfind(marker);
+    if (name.empty() || name[0] != '.' || at == std::string::npos || name.size() < at + marker.size() + 8)
+        return 0;
+    const std::string pid = name.substr(at + marker.size(), name.size() - at - marker.size() - 7);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9)
+        return 0;
+    return static_cast<pid_t>(std::stol(pid));
+}
+
+/// Whether `path` is a regular file of this user that a process since ended left: only those are touched,
+/// so a file someone else planted in a shared folder never is.
+bool leftByEndedRun(const std::filesystem::path& path, pid_t pid)
+{
+    struct stat status = {};
+    return pid > 0 && kill(pid, 0) != 0 && errno == ESRCH && lstat(path.c_str(), &status) == 0 &&
+           S_ISREG(status.st_mode) && status.st_uid == geteuid();
+}
+
+const std::string kJournal = ".fabguide-commit-";
+
+/// A plain file name in the journal's folder (no folder part, not `.` or `..`).
+bool plainName(const nlohmann::json& name)
+{
+    if (!name.is_string())
+        return false;
+    const std::string text = name.get<std::string>();
+    return !text.empty() && text != "." && text != ".." && text.find('/') == std::string::npos;
+}
+
+/// Completes the commit a killed run's journal describes: its temporaries still there are renamed into place
+/// and its leftovers removed, so the folder holds the whole new set, as if the kill had come a moment later.
+void rollForward(const std::filesystem::path& folder, const std::filesystem::path& journal, pid_t pid)
+{
+    std::ifstream in(journal);
+    nlohmann::json listed = nlohmann::json::parse(in, nullptr, false);  // discarded when it does not read
+    if (!listed.is_object())
+        listed = nlohmann::json::object();
+    for (const nlohmann::json& rename : listed.value("renames", nlohmann::json::array())) {
+        if (!rename.is_array() || rename.size() != 2 || !plainName(rename[0]) || !plainName(rename[1]))
+            continue;
+        const std::filesystem::path from = folder / rename[0].get<std::string>();
+        const std::filesystem::path to = folder / rename[1].get<std::string>();
+        if (leftoverOf(from.filename().string(), ".partial-") == pid && leftByEndedRun(from, pid) &&
+            replaceable(to.string()))
+            std::rename(from.c_str(), to.c_str());
+    }
+    std::error_code error;
+    for (const nlohmann::json& name : listed.value("removes", nlohmann::json::array()))
+        if (plainName(name) && std::filesystem::is_regular_file(
+                                   std::filesystem::symlink_status(folder / name.get<std::string>(), error)))
+            std::filesystem::remove(folder / name.get<std::string>(), error);
+    std::filesystem::remove(journal, error);
+    rmdir(folder.c_str());  // a folder its removals left empty goes too
+}
+
+/// Tidies what runs since ended left in `folder` (killed by SIGKILL, or the machine stopped): first a commit
+/// cut short is completed (rollForward), then the temporaries `.NAME.partial-PID-XXXXXX` of ended processes
+/// are removed. A run still going keeps its own.
 void removeLeftovers(const std::filesystem::path& folder)
+{
+    std::error_code error;
+    for (const std::string& marker : {kJournal, std::string(".partial-")})
+        for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+            const std::string name = entry.path().filename().string();
+            const pid_t pid = leftoverOf(name, marker);
+            if (name.rfind(marker == kJournal ? kJournal : ".", 0) != 0 || !leftByEndedRun(entry.path(), pid))
+                continue;
+            if (marker == kJournal)
+                rollForward(folder, entry.path(), pid);
+            else
+                std::filesystem::remove(entry.path(), error);
+        }
+}
+
+/// removeLeftovers before the first file this process writes in `folder`.
+void removeLeftoversOnce(const std::filesystem::path& folder)
 {
     static std::mutex once;
     static std::vector<std::string> cleaned;
     const std::lock_guard<std::mutex> guard(once);
-    const std::filesystem::path here = folder.empty() ? "." : folder;  // a bare file name: the working folder
-    const std::string key = std::filesystem::absolute(here).lexically_normal().string();
-    if (std::find(cleaned.begin(), cleaned.end(), key) != cleaned.end())
-        return;
-    cleaned.push_back(key);
     std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(here, error)) {
-        const std::string name = entry.path().filename().string();
-        const size_t at = name.rfind(".partial-");
-        if (name[0] != '.' || at == std::string::npos || name.size() < at + 9 + 8)
-            continue;
-        const std::string pid = name.substr(at + 9, name.size() - at - 9 - 7);  // PID of PID-XXXXXX
-        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9)
-            continue;
-        if (kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH &&
-            entry.is_regular_file(error))
-            std::filesystem::remove(entry.path(), error);
+    const std::string key = std::filesystem::absolute(folder, error).lexically_normal().string();
+    if (std::find(cleaned.begin(), cleaned.end(), key) == cleaned.end()) {
+        cleaned.push_back(key);
+        removeLeftovers(folder);
     }
 }
 
@@ -135,7 +202,7 @@ void removeLeftovers(const std::filesystem::path& folder)
 std::string temporaryFor(const std::string& path)
 {
     const std::filesystem::path p(path);
-    removeLeftovers(p.parent_path());
+    removeLeftoversOnce(p.parent_path().empty() ? "." : p.parent_path());  // a bare name: the working folder
     std::string name =
         (p.parent_path() / ("." + p.filename().string() + ".partial-" + std::to_string(getpid()) + "-XXXXXX"))
             .string();
@@ -144,6 +211,55 @@ std::string temporaryFor(const std::string& path)
         throw FormatError(path + ": cannot write beside it (" + std::strerror(errno) + ")");
     close(fd);
     return name;
+}
+
+/// Writes, in each folder the commit touches, a journal `.fabguide-commit-PID-XXXXXX` of what it renames
+/// and removes there, before the first rename; removed after the last. A run killed between them leaves it,
+/// and the next run to use the folder completes the commit (rollForward): the set is then all new.
+std::vector<std::filesystem::path> writeJournals(const std::vector<File>& renames,
+                                                 const std::vector<std::string>& removes)
+{
+    std::map<std::filesystem::path, nlohmann::json> byFolder;
+    const auto inFolder = [&](const std::string& path) -> std::pair<nlohmann::json&, std::string> {
+        const std::filesystem::path normal = std::filesystem::absolute(path).lexically_normal();
+        nlohmann::json& journal = byFolder[normal.parent_path()];
+        journal["format"] = "fabguide.commit";
+        return {journal, normal.filename().string()};
+    };
+    for (const File& file : renames) {
+        auto [journal, name] = inFolder(file.path);
+        journal["renames"].push_back({std::filesystem::path(file.temporary).filename().string(), name});
+    }
+    for (const std::string& path : removes) {
+        auto [journal, name] = inFolder(path);
+        journal["removes"].push_back(name);
+    }
+    std::vector<std::filesystem::path> journals;
+    for (const auto& [folder, journal] : byFolder) {
+        const std::string temporary = temporaryFor((folder / kJournal).string());
+        std::ofstream(temporary) << journal.dump();
+        const std::filesystem::path named =
+            folder / (kJournal + std::to_string(getpid()) + temporary.substr(temporary.size() - 7));
+        if (std::filesystem::file_size(temporary) == 0 ||
+            std::rename(temporary.c_str(), named.c_str()) != 0) {
+            std::remove(temporary.c_str());
+            for (const std::filesystem::path& made : journals)
+                std::remove(made.c_str());
+            throw FormatError(folder.string() +
+                              ": cannot write there (no room for the list of files to replace)");
+        }
+        journals.push_back(named);
+    }
+    return journals;
+}
+
+/// Whether `inner` is `folder` or a folder in it, links followed (a link out of the folder is not in it).
+bool within(const std::filesystem::path& inner, const std::filesystem::path& folder)
+{
+    std::error_code error;
+    const std::filesystem::path real = std::filesystem::weakly_canonical(inner, error);
+    const auto [end, at] = std::mismatch(folder.begin(), folder.end(), real.begin(), real.end());
+    return !error && end == folder.end();
 }
 
 }  // namespace
@@ -209,21 +325,37 @@ OutputBatch::~OutputBatch()
 void OutputBatch::commit()
 {
     Changing changing;
-    std::vector<std::string> written;
+    std::vector<File> renames;
+    std::vector<std::string> written, removes;
     for (const File& file : pending().files)
         if (file.written) {
-            if (!rename(file)) {
-                const std::string path = file.path;  // removeAll frees `file`
-                removeAll();
-                throw FormatError(path + ": cannot write file");
-            }
+            renames.push_back(file);
             written.push_back(std::filesystem::absolute(file.path).lexically_normal().string());
         }
-    pending().files.clear();
     for (const std::string& path : pending().stale)
         if (std::find(written.begin(), written.end(), path) == written.end())
-            std::remove(path.c_str());
+            removes.push_back(path);
+    std::vector<std::filesystem::path> journals;
+    try {
+        if (renames.size() + removes.size() > 1)  // one rename is whole by itself
+            journals = writeJournals(renames, removes);
+    } catch (...) {
+        removeAll();
+        throw;
+    }
+    for (const File& file : renames)
+        if (!rename(file)) {
+            removeAll();
+            throw FormatError(file.path + ": cannot write file");
+        }
+    pending().files.clear();
+    for (const std::string& path : removes)
+        std::remove(path.c_str());
     pending().stale.clear();
+    for (const std::filesystem::path& journal : journals)
+        std::remove(journal.c_str());
+    for (const std::string& path : removes)
+        rmdir(std::filesystem::path(path).parent_path().c_str());  // a folder they leave empty goes too
 }
 
 void removeWhenCommitted(const std::string& path)
@@ -239,7 +371,8 @@ void removeWhenCommitted(const std::string& path)
 void replaceSetOf(const std::string& manifest)
 {
     std::error_code error;
-    const std::filesystem::path folder = std::filesystem::absolute(manifest).lexically_normal().parent_path();
+    const std::filesystem::path folder =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(manifest).parent_path(), error);
     nlohmann::json listed;
     try {
         listed = readJsonFile(manifest);
@@ -261,11 +394,16 @@ void replaceSetOf(const std::string& manifest)
         const std::filesystem::path named(node.get<std::string>());
         for (const std::filesystem::path& file : {folder / named, std::filesystem::absolute(named)}) {
             const std::filesystem::path normal = file.lexically_normal();
-            if (normal.parent_path() == folder &&
+            if (within(normal.parent_path(), folder) &&
                 std::filesystem::is_regular_file(std::filesystem::symlink_status(normal, error)))
                 removeWhenCommitted(normal.string());
         }
     }
+}
+
+void completeInterruptedRuns(const std::string& folder)
+{
+    removeLeftovers(folder.empty() ? "." : folder);
 }
 
 void removeTemporariesOnInterrupt()

@@ -1,6 +1,7 @@
 // Output files that are never seen half-written: each is written under a temporary name beside its final one
 // and renamed into place, at once, or, while an OutputBatch is open, all together when the batch commits, so
-// a run stopped at any moment leaves the files of the run before it, never a truncated or mixed set.
+// a run stopped at any moment leaves the files of the run before it, never a truncated or mixed set. A batch
+// killed during its renames leaves a journal that the next run completes (completeInterruptedRuns).
 #pragma once
 
 #include <functional>
@@ -34,6 +35,11 @@ void removeWhenCommitted(const std::string& path);
 /// leftovers (a body since renamed, a suggestion not found again). A manifest that is missing or does not
 /// read names none.
 void replaceSetOf(const std::string& manifest);
+
+/// Tidies what runs since ended left in `folder`: a commit a kill cut short is completed (its journal's
+/// renames done, so the set is all new), then their temporaries are removed. Done before a file in it is
+/// read, and before the first file a process writes there.
+void completeInterruptedRuns(const std::string& folder);
 
 /// On SIGINT or SIGTERM: removes every temporary file not yet renamed and exits with 128 + the signal
 /// (130, 143). Installed by the command-line tool.

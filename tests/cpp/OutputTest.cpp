@@ -7,6 +7,9 @@
 #include <fstream>
 #include <string>
 
+#include <csignal>
+
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -35,6 +38,46 @@ std::string readText(const fs::path& path)
 {
     std::ifstream in(path);
     return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Writes `count` files sheet-N.svg holding `text` into `out`, as one batch.
+void writeSet(const fs::path& out, int count, const std::string& text)
+{
+    OutputBatch batch;
+    for (int n = 1; n <= count; ++n)
+        writeAtomically((out / ("sheet-" + std::to_string(n) + ".svg")).string(),
+                        [&](const std::string& temporary) { writeText(temporary, text); });
+    batch.commit();
+}
+
+/// "old" or "new" when all `count` files hold that, "mixed" otherwise.
+std::string setIn(const fs::path& out, int count)
+{
+    const std::string first = readText(out / "sheet-1.svg");
+    for (int n = 2; n <= count; ++n)
+        if (readText(out / ("sheet-" + std::to_string(n) + ".svg")) != first)
+            return "mixed";
+    return first;
+}
+
+bool startsWith(const std::string& text, const std::string& start)
+{
+    return text.rfind(start, 0) == 0;
+}
+
+/// Waits for the first file to be renamed into `watch`'s folder.
+void awaitRenamed(int watch)
+{
+    alignas(inotify_event) char events[4096];
+    for (;;) {
+        const ssize_t got = read(watch, events, sizeof events);
+        for (ssize_t at = 0; at < got;) {
+            const auto* event = reinterpret_cast<const inotify_event*>(events + at);
+            if (event->len > 0)
+                return;
+            at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+        }
+    }
 }
 
 }  // namespace
@@ -123,6 +166,26 @@ TEST(Output, ThePreviousSetsLeftoversGoOnlyOnceTheNewSetIsInPlace)
         << "written again, or never ours";
 }
 
+TEST(Output, ASubfolderOfThePreviousSetGoesWithItsFilesButNoLinkIsFollowed)
+{
+    // optimise's fourth suggestion has its sheets in suggestion-4/: a run finding three left them.
+    const fs::path out = folder("subfolders"), elsewhere = folder("linked");
+    fs::create_directories(out / "suggestion-4");
+    writeText((out / "suggestion-4" / "sheet-1.svg").string(), "old");
+    writeText((elsewhere / "sheet-1.svg").string(), "kept");
+    fs::create_directory_symlink(elsewhere, out / "link");
+    writeText((out / "summary.json").string(),
+              R"({"suggestions": [{"svg": ["suggestion-4/sheet-1.svg", "link/sheet-1.svg"]}]})");
+    {
+        OutputBatch batch;
+        replaceSetOf((out / "summary.json").string());
+        writeAtomically((out / "summary.json").string(), [](const std::string& t) { writeText(t, "{}"); });
+        batch.commit();
+    }
+    EXPECT_FALSE(fs::exists(out / "suggestion-4"));
+    EXPECT_EQ(readText(elsewhere / "sheet-1.svg"), "kept");
+}
+
 TEST(Output, AManifestNotOursOrNamingFilesElsewhereRemovesNothing)
 {
     const fs::path out = folder("foreign"), elsewhere = folder("elsewhere");
@@ -172,4 +235,55 @@ TEST(Output, ABareFileNameIsWrittenInTheWorkingFolder)
         writeAtomically("out.json", [](const std::string& temporary) { writeText(temporary, "written"); }));
     fs::current_path(was);
     EXPECT_EQ(readText(here / "out.json"), "written");
+}
+
+TEST(Output, ASetAKillCutShortDuringItsRenamesIsCompletedWholeByTheNextRun)
+{
+    // SIGKILL cannot be held off: a run killed while renaming its batch left some files old, some new.
+    const fs::path out = folder("killed");
+    const int count = 3000;
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        writeSet(out, count, "old");
+        const int watch = inotify_init1(0);
+        inotify_add_watch(watch, out.c_str(), IN_MOVED_TO);
+        const pid_t run = fork();
+        if (run == 0) {
+            writeSet(out, count, "new");
+            _exit(0);
+        }
+        awaitRenamed(watch);  // the commit has begun
+        kill(run, SIGKILL);
+        int status = 0;
+        waitpid(run, &status, 0);
+        close(watch);
+        if (!WIFSIGNALED(status))
+            continue;  // the run had finished before the kill: try again
+        completeInterruptedRuns(out.string());
+        EXPECT_EQ(setIn(out, count), "new");
+        for (const auto& entry : fs::directory_iterator(out))
+            EXPECT_FALSE(startsWith(entry.path().filename().string(), ".")) << entry.path();
+        return;
+    }
+    GTEST_SKIP() << "every run finished its renames before the kill reached it";
+}
+
+TEST(Output, AJournalSomeoneElsePlantedOrOfALiveRunIsNotFollowed)
+{
+    const fs::path out = folder("planted");
+    writeText((out / "report.json").string(), "mine");
+    writeText((out / ".x.partial-1-Ab12Cd").string(), "planted");  // process 1 is alive: never a leftover
+    writeText((out / ".fabguide-commit-1-Ab12Cd").string(),
+              R"({"renames": [[".x.partial-1-Ab12Cd", "report.json"]], "removes": ["report.json"]})");
+    const pid_t ended = fork();
+    if (ended == 0)
+        _exit(0);
+    waitpid(ended, nullptr, 0);
+    const std::string pid = std::to_string(ended);
+    writeText((out / (".fabguide-commit-" + pid + "-Ef34Gh")).string(),
+              R"({"renames": [["../elsewhere", "report.json"], [".y.partial-)" + pid +
+                  R"(-Ef34Gh", "/etc/passwd"]], "removes": ["../report.json", "/etc/passwd"]})");
+    completeInterruptedRuns(out.string());
+    EXPECT_EQ(readText(out / "report.json"), "mine");
+    EXPECT_TRUE(fs::exists(out / ".fabguide-commit-1-Ab12Cd"));
+    EXPECT_FALSE(fs::exists(out / (".fabguide-commit-" + pid + "-Ef34Gh")));
 }
