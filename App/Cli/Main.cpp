@@ -1,17 +1,66 @@
 #include "Cli/Main.h"
 
+#include "Core/Memory.h"
 #include "Core/Version.h"
 #include "IO/Output.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <new>
+
+#include <sys/resource.h>
 
 namespace fabguide::cli {
 
 namespace {
 
 const auto started = std::chrono::steady_clock::now();  // set as the program starts, before main
+
+/// Memory set aside at the start and given back when an allocation first fails: the unwinding that follows
+/// allocates too (a JSON value's destructor does), and without room it would end in std::terminate.
+constexpr size_t kReserve = 32 << 20;
+char* reserve = nullptr;
+
+void outOfMemory()
+{
+    std::free(reserve);
+    reserve = nullptr;
+    std::set_new_handler(nullptr);
+    throw std::bad_alloc();
+}
+
+/// The memory limit, and the process' data limit with it: an allocation past it fails as std::bad_alloc
+/// (reported in a sentence) rather than the system stopping the run without a word.
+void limitMemory(double bytes)
+{
+    setMemoryLimit(bytes);
+    const rlimit data{static_cast<rlim_t>(bytes), RLIM_INFINITY};
+    setrlimit(RLIMIT_DATA, &data);
+    if (!reserve) {
+        reserve = static_cast<char*>(std::malloc(kReserve));
+        std::set_new_handler(outOfMemory);
+    }
+}
+
+/// `--memory SIZE` on every subcommand (2G, 500M; at least 64 MB).
+void addMemoryOption(CLI::App& app)
+{
+    for (CLI::App* command : app.get_subcommands({}))
+        command
+            ->add_option_function<double>(
+                "--memory", limitMemory,
+                "memory the run may use, e.g. 2G or 500M (default: what is free when it begins); what needs "
+                "more is refused, naming what makes it large")
+            ->transform(CLI::AsSizeValue(true))
+            ->check(CLI::Validator(
+                [](std::string& bytes) -> std::string {
+                    return std::stod(bytes) >= 64e6 ? "" : "at least 64M (a plain number is bytes: 2G, 500M)";
+                },
+                ""));
+}
 
 }  // namespace
 
@@ -23,12 +72,20 @@ double secondsSinceStart()
 int runCommandLine(CLI::App& app, int argc, char** argv)
 {
     io::removeTemporariesOnInterrupt();  // SIGINT / SIGTERM: exit 130 / 143, no half-written file
+    limitMemory(memoryLimit());
+    addMemoryOption(app);
     try {
         app.set_version_flag("--version", version());
         app.require_subcommand(1);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    } catch (const std::bad_alloc&) {
+        std::cerr
+            << "fabguide: error: out of memory: the run needed more than the " << inBytes(memoryLimit())
+            << " it may use (the memory free when it began, or --memory); a coarser settings.resolution, "
+               "fewer or smaller parts need less\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "fabguide: error: " << e.what() << "\n";
         return 1;

@@ -172,7 +172,7 @@ void addPackCommand(CLI::App& app)
                     "threads of the search: its starts, a strip's skyline searches, run at once")
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
-    cmd->add_option("--memory", args->search.memory, "late-acceptance history of the ordering search")
+    cmd->add_option("--history", args->search.memory, "late-acceptance history of the ordering search")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->callback([args] { run(*args); });

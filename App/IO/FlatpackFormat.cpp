@@ -65,6 +65,11 @@ std::vector<Linear> references(const Design& design, const Fields& c, const std:
     const nlohmann::json& list = c.array(key);
     if (list.size() < least)
         throw FormatError(c.pathOf(key) + ": needs at least " + std::to_string(least) + " references");
+    const size_t distinct = 12 * design.boards.size();  // size, centre, min and max on three axes
+    if (list.size() > distinct)
+        throw FormatError(c.pathOf(key) + ": " + std::to_string(list.size()) + " references, more than the " +
+                          std::to_string(distinct) + " different ones a design of " +
+                          std::to_string(design.boards.size()) + " boards has");
     std::vector<Linear> refs;
     for (size_t k = 0; k < list.size(); ++k)
         refs.push_back(reference(design, list[k], at(c.pathOf(key), k)));
@@ -86,11 +91,16 @@ std::vector<int> partsOf(const Design& design, const Fields& c, size_t least)
     return parts;
 }
 
+/// The first few of `list` joined, "a = b = c = … (40 in all)": a name every equality of the constraint
+/// carries (100,000 references joined in full, once per equality, took all the memory).
 std::string joined(const nlohmann::json& list, const std::string& separator)
 {
+    constexpr size_t kNamed = 4;
     std::string text;
-    for (size_t k = 0; k < list.size(); ++k)
+    for (size_t k = 0; k < list.size() && k < kNamed; ++k)
         text += (k ? separator : "") + (list[k].is_string() ? list[k].get<std::string>() : list[k].dump());
+    if (list.size() > kNamed)
+        text += separator + "… (" + std::to_string(list.size()) + " in all)";
     return text;
 }
 

@@ -28,13 +28,13 @@ Footprint Footprint::rectangle(int width, int height)
 Footprint::Footprint(int width, int height, std::vector<std::uint8_t> cells)
     : width_(width),
       height_(height),
-      cells_(std::move(cells)),
+      cells_(std::make_shared<const std::vector<std::uint8_t>>(std::move(cells))),
       left_(height, width),
       right_(height, 0),
       bottom_(width, height),
       top_(width, 0)
 {
-    if (width <= 0 || height <= 0 || cells_.size() != static_cast<size_t>(width) * height)
+    if (width <= 0 || height <= 0 || cells_->size() != static_cast<size_t>(width) * height)
         throw std::invalid_argument("footprint bitmap does not match its size");
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x)
@@ -57,19 +57,19 @@ Footprint::Footprint(int width, int height, std::vector<std::uint8_t> cells)
     }
     runStart_.push_back(static_cast<int>(runs_.size()));
     if (area_ == static_cast<long>(width_) * height_)
-        cells_.clear();  // solid: one representation for every full rectangle
+        cells_.reset();  // solid: one representation for every full rectangle
 }
 
 Footprint Footprint::rotated90() const
 {
-    if (cells_.empty())
+    if (!cells_)
         return rectangle(height_, width_);
     // Counter-clockwise: cell (x, y) goes to (height - 1 - y, x).
-    std::vector<std::uint8_t> turned(cells_.size());
+    std::vector<std::uint8_t> turned(cells_->size());
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x)
             turned[static_cast<size_t>(x) * height_ + (height_ - 1 - y)] =
-                cells_[static_cast<size_t>(y) * width_ + x];
+                (*cells_)[static_cast<size_t>(y) * width_ + x];
     return Footprint(height_, width_, std::move(turned));
 }
 

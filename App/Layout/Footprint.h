@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -24,7 +25,7 @@ public:
     long area() const { return area_; }
     bool filled(int x, int y) const
     {
-        return cells_.empty() || cells_[static_cast<std::size_t>(y) * width_ + x] != 0;
+        return !cells_ || (*cells_)[static_cast<std::size_t>(y) * width_ + x] != 0;
     }
 
     const std::vector<int>& left() const { return left_; }
@@ -46,14 +47,17 @@ public:
 
     bool operator==(const Footprint& other) const
     {
-        return width_ == other.width_ && height_ == other.height_ && cells_ == other.cells_;
+        return width_ == other.width_ && height_ == other.height_ &&
+               (cells_ == other.cells_ || (cells_ && other.cells_ && *cells_ == *other.cells_));
     }
 
 private:
     Footprint() = default;
     int width_ = 0;
     int height_ = 0;
-    std::vector<std::uint8_t> cells_;  ///< row-major; empty when every cell is filled (a rectangle)
+    /// Row-major; none when every cell is filled (a rectangle). Shared by copies: a part's copies (its
+    /// quantity) take its bitmap's memory once.
+    std::shared_ptr<const std::vector<std::uint8_t>> cells_;
     long area_ = 0;
     std::vector<int> left_, right_, bottom_, top_;
     std::vector<std::pair<int, int>> runs_;  ///< every column's runs, column by column

@@ -361,11 +361,14 @@ std::pair<double, double> orderKey(Order order, const PartSpec& p)
     return {std::max(w, h), w * h};
 }
 
+bool rectangular(const PartSpec& part)
+{
+    return part.outline.holes.empty() && geometry::isRectangle(part.outline);
+}
+
 bool allRectangles(const PackProblem& problem)
 {
-    return std::all_of(problem.parts.begin(), problem.parts.end(), [](const PartSpec& p) {
-        return p.outline.holes.empty() && geometry::isRectangle(p.outline);
-    });
+    return std::all_of(problem.parts.begin(), problem.parts.end(), rectangular);
 }
 
 Layout maxRects(const PackProblem& problem, Deadline deadline)

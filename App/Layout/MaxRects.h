@@ -46,6 +46,9 @@ enum class Order { LongestSide, Area, Perimeter, ShortestSide };
 /// What a part is sorted by in `order` (ties by the second), largest first.
 std::pair<double, double> orderKey(Order order, const PartSpec& p);
 
+/// Whether the part is a rectangle without holes.
+bool rectangular(const PartSpec& part);
+
 /// Whether every part is a plain rectangle without holes, which MaxRects lays out exactly.
 bool allRectangles(const PackProblem& problem);
 

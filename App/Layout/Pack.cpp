@@ -1,5 +1,8 @@
 #include "Layout/Pack.h"
 
+#include "Core/Memory.h"
+#include "Core/Parallel.h"
+
 #include "Core/Parallel.h"
 #include "Layout/Compaction.h"
 #include "Layout/Guillotine.h"
@@ -81,6 +84,47 @@ PackingError notEnoughBoards(const std::string& part, long more, const std::stri
                         where);
 }
 
+/// The cells of `part`'s bitmaps, one per orientation (a turn off the quarters takes its diagonal's square),
+/// with its clearance.
+double gridCells(const PartSpec& part, const PackSettings& s)
+{
+    const double clearance = s.kerf + s.spacing, w = part.width() + clearance, h = part.height() + clearance;
+    double cells = 0;
+    for (int rotation : part.orientations)
+        cells += rotation % 90 == 0 ? w * h : w * w + h * h;
+    return cells / (s.resolution * s.resolution);
+}
+
+/// The memory Docking's grid takes: the bitmaps of irregular parts, shared by a part's copies; every unit's
+/// profiles, four per orientation, as long as its sides in cells; and a strip's height-fields, which grow
+/// with its height in cells, on every thread.
+double gridBytes(const PackProblem& problem)
+{
+    const PackSettings& s = problem.settings;
+    double bitmaps = 0, profiles = 0, stripCells = 0;
+    for (const PartSpec& part : problem.parts) {
+        const double sides = (part.width() + part.height()) / s.resolution;
+        stripCells += part.quantity * std::max(part.width(), part.height()) / s.resolution;
+        profiles += part.quantity * part.orientations.size() * sides;
+        if (!rectangular(part))
+            bitmaps += gridCells(part, s);
+    }
+    return bitmaps * kBytesPerCell + profiles * kBytesPerProfileCell +
+           (problem.strip ? stripCells * kBytesPerStripCell * cores() : 0);
+}
+
+/// Refuses an irregular job whose grid would pass the memory limit (issue 35), before anything is rasterised;
+/// a job of rectangles is laid out without the grid then.
+void checkMemory(const PackProblem& problem)
+{
+    if (!allRectangles(problem))
+        needMemory(gridBytes(problem),
+                   "parts: the grid of their outlines at settings.resolution " +
+                       mm(problem.settings.resolution) + " mm" +
+                       (problem.strip ? " on a strip as long as the parts laid end to end" : "") + " needs",
+                   ": a resolution twice as coarse needs a quarter as much");
+}
+
 }  // namespace
 
 void checkSettings(const PackProblem& problem)
@@ -150,6 +194,7 @@ void checkSettings(const PackProblem& problem)
     if (over)
         throw notEnoughBoards(first->id, over - 1,
                               "in the boards' " + mm(boardArea(first->thickness) / 1e6) + " m²");
+    checkMemory(problem);
 }
 
 GridLayout searchFromStarts(const std::vector<RasterPart>& parts, const std::vector<BoardStock>& stock,
@@ -214,13 +259,12 @@ RasterProblem rasterise(const PackProblem& problem)
     const double clearance = settings.kerf + settings.spacing;
     RasterProblem raster;
     long stripCells = 0;
-    for (size_t i = 0; i < problem.parts.size(); ++i)
-        for (int q = 0; q < problem.parts[i].quantity; ++q) {
-            raster.parts.push_back(rasterPart(problem.parts[i], settings));
-            raster.specOf.push_back(static_cast<int>(i));
-            stripCells +=
-                std::max(raster.parts.back().shapes[0].width(), raster.parts.back().shapes[0].height());
-        }
+    for (size_t i = 0; i < problem.parts.size(); ++i) {
+        const RasterPart part = rasterPart(problem.parts[i], settings);  // its copies share its bitmaps
+        raster.parts.insert(raster.parts.end(), problem.parts[i].quantity, part);
+        raster.specOf.insert(raster.specOf.end(), problem.parts[i].quantity, static_cast<int>(i));
+        stripCells += problem.parts[i].quantity * std::max(part.shapes[0].width(), part.shapes[0].height());
+    }
     for (const MasterBoard& board : problem.boards)
         raster.stock.push_back(
             {cellsWithin(board.width - 2 * settings.trim + clearance, settings.resolution),
@@ -348,6 +392,17 @@ double rasterSeconds(const PackProblem& problem)
     return cells / kRasterCellsPerSecond;
 }
 
+/// About how long rasterising the irregular parts' outlines takes, every orientation, at
+/// kOutlineCellsPerSecond.
+double outlineSeconds(const PackProblem& problem)
+{
+    double cells = 0;
+    for (const PartSpec& part : problem.parts)
+        if (!rectangular(part))
+            cells += gridCells(part, problem.settings);
+    return cells / kOutlineCellsPerSecond;
+}
+
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
 /// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking (issue 31). Its saw cuts
 /// are dropped: the cuts are free.
@@ -405,7 +460,8 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (exact && units <= kSawnUnits)
             exact = sawnIfBetter(problem, std::move(*exact), search.seed,
                                  deadline.sooner(started + seconds(kSawShare * search.timeLimit)));
-        if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > deadline.secondsLeft()))
+        if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > deadline.secondsLeft() ||
+                      gridBytes(problem) > memoryLimit()))
             return *exact;
     }
     // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
@@ -421,8 +477,10 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             maxRectsStrip(problem, deadline.sooner(started + seconds(0.95 * search.timeLimit)));
         if (bisected && (!lower || bisected->stripHeight < lower->stripHeight))
             lower = std::move(bisected);
-        if (lower && units > kDockedUnits)
-            return *lower;  // Docking's first layout alone would outlast the time limit at this scale
+        if (lower && (units > kDockedUnits || rasterSeconds(problem) > deadline.secondsLeft() ||
+                      gridBytes(problem) > memoryLimit()))
+            return *lower;  // Docking's first layout alone would outlast the time limit, or its grid the
+                            // memory
     }
     // Many irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
     // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
@@ -431,6 +489,17 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     std::optional<Layout> boxed;
     if (many)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
+    // Rasterising the outlines alone would outlast the time limit (issue 35: 100 parts of 10^8 cells took
+    // minutes): the bounding boxes' layout is the one in hand.
+    if (!rectangles && outlineSeconds(problem) > deadline.secondsLeft()) {
+        if (!boxed)
+            boxed = boundingBoxes(problem, deadline);
+        if (boxed)
+            return *boxed;
+        throw PackingError("rasterising the parts' outlines at settings.resolution " +
+                           mm(problem.settings.resolution) + " mm takes ~" + mm(outlineSeconds(problem)) +
+                           " s, more than the time limit: give it more time or a coarser resolution");
+    }
     const RasterProblem raster = rasterise(problem);
     OrderingSearchOptions options = search;
     options.bounds = problem.strip ? Bounds::Strip : Bounds::Layout;

@@ -132,6 +132,16 @@ constexpr long kMostUnits = 200000;
 /// left.
 constexpr double kRasterCellsPerSecond = 5e8;
 
+/// Cells of irregular parts' outlines rasterised a second (a part of 3·10^7 cells in four orientations took
+/// 1.1 s): past the time limit, their bounding boxes are laid out instead.
+constexpr double kOutlineCellsPerSecond = 1e8;
+
+/// Bytes a grid cell of an irregular part's bitmap takes (a part of 3·10^7 cells in four orientations took
+/// 156 MB), a part's profiles per cell of its sides (five arrays of ints along them), and a strip's
+/// height-fields per cell of its height, per search thread; checked against the memory limit before anything
+/// is rasterised.
+constexpr double kBytesPerCell = 1.5, kBytesPerProfileCell = 20, kBytesPerStripCell = 24;
+
 /// Jobs of rectangles with more units than this are laid out by MaxRects alone: Docking's search would spend
 /// the time limit rasterising and docking them once.
 constexpr long kDockedUnits = 400;

@@ -1,5 +1,7 @@
 #include "Layout/Pack.h"
 
+#include "Core/Memory.h"
+
 #include "PackingTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -341,4 +343,35 @@ TEST(Pack, FreeRotationTurnsAStickThatFitsTheBoardOnlyAcrossIt)
     EXPECT_THROW(pack(problem, quick()), PackingError);
     problem.settings.rotationStep = 7;
     EXPECT_THROW(pack(problem, quick()), std::invalid_argument);
+}
+
+namespace {
+
+/// The memory limit set for one test, the old one back after it.
+class MemoryLimit {
+public:
+    explicit MemoryLimit(double bytes) : before_(fabguide::memoryLimit()) { fabguide::setMemoryLimit(bytes); }
+    ~MemoryLimit() { fabguide::setMemoryLimit(before_); }
+    MemoryLimit(const MemoryLimit&) = delete;
+    MemoryLimit& operator=(const MemoryLimit&) = delete;
+
+private:
+    double before_;
+};
+
+}  // namespace
+
+TEST(Pack, IrregularGridsPastTheMemoryLimitAreRefusedNamingTheResolution)
+{
+    PackProblem problem;
+    problem.boards.push_back({"ply", "", 600, 400, 6, 1});
+    problem.settings = {0.5, 0.2, 2, 5};
+    addEllsAndTriangles(problem, 2, 3);
+    const MemoryLimit tight(1e6);  // the ell's four bitmaps of 400 x 400 cells need ~1 MB
+    try {
+        pack(problem, quick());
+        FAIL() << "expected MemoryError";
+    } catch (const fabguide::MemoryError& e) {
+        EXPECT_NE(std::string(e.what()).find("settings.resolution 0.5 mm"), std::string::npos) << e.what();
+    }
 }
