@@ -261,6 +261,33 @@ std::pair<int, int> selfCrossing(const Polygon& polygon)
     return {-1, -1};
 }
 
+int holeTouchingOuter(const Outline& outline)
+{
+    struct Edge {
+        Point2 a, b;
+        int hole;  // -1: the outer contour
+        double left() const { return std::min(a.x, b.x); }
+        double right() const { return std::max(a.x, b.x); }
+    };
+    std::vector<Edge> edges;
+    const auto add = [&](const Polygon& polygon, int hole) {
+        for (size_t i = 0; i < polygon.size(); ++i)
+            edges.push_back({polygon[i], polygon[(i + 1) % polygon.size()], hole});
+    };
+    add(outline.outer, -1);
+    for (size_t h = 0; h < outline.holes.size(); ++h)
+        add(outline.holes[h], static_cast<int>(h));
+    std::sort(edges.begin(), edges.end(), [](const Edge& e, const Edge& f) { return e.left() < f.left(); });
+    for (size_t u = 0; u < edges.size(); ++u)  // a sweep along x: only edges whose boxes overlap are met
+        for (size_t v = u + 1; v < edges.size() && edges[v].left() <= edges[u].right(); ++v) {
+            const Edge &e = edges[u], &f = edges[v];
+            if ((e.hole < 0) != (f.hole < 0) && std::min(e.a.y, e.b.y) <= std::max(f.a.y, f.b.y) &&
+                std::min(f.a.y, f.b.y) <= std::max(e.a.y, e.b.y) && meet(e.a, e.b, f.a, f.b))
+                return std::max(e.hole, f.hole);
+        }
+    return -1;
+}
+
 bool contains(const Polygon& polygon, Point2 p)
 {
     bool inside = false;  // a ray to the right crosses the boundary an odd number of times

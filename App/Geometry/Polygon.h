@@ -46,6 +46,9 @@ Box2 bounds(const Polygon& polygon);
 /// thousand points.
 std::pair<int, int> selfCrossing(const Polygon& polygon);
 
+/// The first hole whose contour touches or crosses the outer contour, or -1: a sweep along x over both.
+int holeTouchingOuter(const Outline& outline);
+
 /// True when the outline is a hole-free axis-aligned rectangle.
 bool isRectangle(const Outline& outline);
 

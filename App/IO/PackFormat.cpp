@@ -82,6 +82,11 @@ geometry::Outline readOutline(const Fields& part)
             throw FormatError(path + (inside > 0 ? ": crosses the outline" : ": lies outside the outline") +
                               "; a hole must be inside the part");
     }
+    if (const int touching = geometry::holeTouchingOuter(outline); touching >= 0)
+        throw FormatError(
+            at(part.pathOf("holes"), touching) +
+            ": touches the outline; a hole must lie inside the part with material all round it (a "
+            "notch is part of the outline)");
     return outline;
 }
 

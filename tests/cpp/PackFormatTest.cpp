@@ -234,6 +234,13 @@ TEST(PackFormat, OutlinesThatCrossThemselvesHolesOutsideAndTwinIdsAreNamed)
     EXPECT_EQ(errorOf(doc), "parts[0].holes[1]: crosses the outline; a hole must be inside the part");
     doc["parts"][0]["holes"][1] = json::parse("[[400, 100], [450, 100], [450, 200], [400, 200]]");
     EXPECT_EQ(errorOf(doc), "parts[0].holes[1]: lies outside the outline; a hole must be inside the part");
+    const std::string touching =
+        "parts[0].holes[1]: touches the outline; a hole must lie inside the part with "
+        "material all round it (a notch is part of the outline)";
+    doc["parts"][0]["holes"][1] = json::parse("[[250, 100], [300, 100], [300, 200], [250, 200]]");  // an edge
+    EXPECT_EQ(errorOf(doc), touching);
+    doc["parts"][0]["holes"][1] = json::parse("[[250, 0], [280, 50], [220, 50]]");  // a corner
+    EXPECT_EQ(errorOf(doc), touching);
     doc["parts"][0]["holes"].erase(1);
     EXPECT_EQ(errorOf(doc), "");
     doc["parts"][1]["id"] = "seat";
