@@ -79,7 +79,10 @@ int runCommandLine(CLI::App& app, int argc, char** argv)
         app.require_subcommand(1);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == 0 || dynamic_cast<const CLI::RuntimeError*>(&e))  // --help; a status said
+            return app.exit(e);
+        std::cerr << "fabguide: error: " << e.what() << " (--help lists the options)\n";
+        return 1;
     } catch (const std::bad_alloc&) {
         std::cerr
             << "fabguide: error: out of memory: the run needed more than the " << inBytes(memoryLimit())

@@ -86,7 +86,8 @@ int chooseVariable(const System& system, const Eigen::VectorXd& r, const Eigen::
 
 /// Algorithm 6 on a prepared system.
 std::optional<Eigen::VectorXd> correct(const System& system, const Eigen::VectorXd& X,
-                                       const Eigen::VectorXd& u, std::vector<std::string>* broken)
+                                       const Eigen::VectorXd& u, std::vector<std::string>* broken,
+                                       const Deadline& deadline = {})
 {
     const int n = static_cast<int>(X.size());
     const Eigen::VectorXd changed = X + u;
@@ -101,6 +102,8 @@ std::optional<Eigen::VectorXd> correct(const System& system, const Eigen::Vector
     std::vector<int> freed;  // Λ
     while (r.norm() >= kResidual) {
         const int v = chooseVariable(system, r, changed + d, fixed, minimum);
+        if (v >= 0 && deadline.passed())
+            return std::nullopt;
         if (v < 0) {
             if (broken)
                 for (int i = 0; i < r.size(); ++i)
@@ -168,14 +171,15 @@ std::vector<DesignConstraint> heldAtFirstBreak(const Design& design, const Eigen
 
 }  // namespace
 
-CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, const Eigen::VectorXd& u)
+CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, const Eigen::VectorXd& u,
+                              const Deadline& deadline)
 {
     std::vector<DesignConstraint> held;
     std::vector<std::string> broken;  // the design constraints the last failed attempt could not keep
     System system = systemOf(design, held, static_cast<int>(X.size()));
     const auto attempt = [&](double alpha) -> std::optional<Eigen::VectorXd> {
         broken.clear();
-        auto d = correct(system, X, alpha * u, &broken);
+        auto d = correct(system, X, alpha * u, &broken, deadline);
         if (!d)
             return std::nullopt;
         return X + alpha * u + *d;
@@ -192,7 +196,7 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
         double l = best.alpha, r = 1.0;
         Eigen::VectorXd atL = best.X, atR = X + u;
         const double step = std::max(1e-12, u.lpNorm<Eigen::Infinity>());
-        while ((r - l) * step > 1e-4) {  // to a tenth of a micrometre along the change
+        while ((r - l) * step > 1e-4 && !deadline.passed()) {  // to a tenth of a micrometre along the change
             const double m = (l + r) / 2;
             const auto at = attempt(m);
             if (at && effective(design, *at)) {
@@ -213,7 +217,7 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
                 ++added;
             }
         system = systemOf(design, held, static_cast<int>(X.size()));
-        if (added == 0) {
+        if (added == 0 || deadline.passed()) {
             for (const DesignConstraint& c : held)
                 best.limits.push_back(c.name);
             for (const std::string& name : broken.empty() ? ineffective(design, atR) : broken)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "Design/Design.h"
+#include "Layout/Deadline.h"
 
 #include <optional>
 
@@ -30,7 +31,9 @@ struct CorrectedChange {
 /// Algorithm 5, DYNAMICEFFECTIVENESSCONSTRAINTS: applies change u to the valid design X. When the corrected
 /// design breaks an effectiveness constraint, bisects on alpha for the first break, holds the constraints
 /// that broke there as equalities and goes on; when nothing more can be held, returns the best partial
-/// change (thesis 5.3.5.3: the solver's callers accept partial solutions).
-CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, const Eigen::VectorXd& u);
+/// change (thesis 5.3.5.3: the solver's callers accept partial solutions). Past `deadline`, the partial
+/// change reached so far (none at first): one correction of a large design takes seconds (issue 35).
+CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, const Eigen::VectorXd& u,
+                              const Deadline& deadline = {});
 
 }  // namespace fabguide::material

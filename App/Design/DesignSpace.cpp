@@ -45,12 +45,13 @@ Eigen::VectorXd ConstrainedDesign::sizes(const Eigen::VectorXd& X) const
 }
 
 std::optional<Eigen::VectorXd> ConstrainedDesign::changePartSizes(const Eigen::VectorXd& X,
-                                                                  const Eigen::VectorXd& change) const
+                                                                  const Eigen::VectorXd& change,
+                                                                  const Deadline& deadline) const
 {
     Eigen::VectorXd u = Eigen::VectorXd::Zero(X.size());
     for (int i = 0; i < change.size(); ++i)
         u[variableOfSize(i)] = change[i];
-    const CorrectedChange corrected = correctChange(design_, X, u);
+    const CorrectedChange corrected = correctChange(design_, X, u, deadline);
     if (corrected.alpha <= 0)
         return std::nullopt;
     return corrected.X;
@@ -95,7 +96,8 @@ Eigen::VectorXd ParametricDesign::sizes(const Eigen::VectorXd& X) const
 }
 
 std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::VectorXd& X,
-                                                                 const Eigen::VectorXd& change) const
+                                                                 const Eigen::VectorXd& change,
+                                                                 const Deadline&) const
 {
     // Gradients ds/dx_j by forward differences, stepping away from a bound when at the upper one.
     const Eigen::VectorXd s = sizes(X);

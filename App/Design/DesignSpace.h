@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Design/Design.h"
+#include "Layout/Deadline.h"
 
 #include <chrono>
 #include <functional>
@@ -29,9 +30,11 @@ public:
     /// s(X): part i's width in material space at 2i, its height at 2i + 1, in mm.
     virtual Eigen::VectorXd sizes(const Eigen::VectorXd& X) const = 0;
     /// CHANGEPARTSIZES: parameters whose part sizes change by about `change` (one entry per size), the other
-    /// sizes kept where the design allows; nullopt when the design cannot move that way at all.
+    /// sizes kept where the design allows; nullopt when the design cannot move that way at all, or not before
+    /// `deadline`.
     virtual std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
-                                                           const Eigen::VectorXd& change) const = 0;
+                                                           const Eigen::VectorXd& change,
+                                                           const Deadline& deadline = {}) const = 0;
     /// The design a fraction t of the way from valid design `from` to valid design `to` (t in [0, 1]);
     /// nullopt when it breaks a constraint (the design space need not be convex).
     virtual std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
@@ -51,8 +54,8 @@ public:
     const std::vector<PartKind>& parts() const override { return parts_; }
     Eigen::VectorXd start() const override { return design_.variables(); }
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
-    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
-                                                   const Eigen::VectorXd& change) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X, const Eigen::VectorXd& change,
+                                                   const Deadline& deadline = {}) const override;
     /// Linear constraints hold on the way; an inner volume may not (a board passing by it).
     std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
                                            double t) const override;
@@ -82,8 +85,8 @@ public:
     const std::vector<PartKind>& parts() const override { return parts_; }
     Eigen::VectorXd start() const override { return start_; }
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
-    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X,
-                                                   const Eigen::VectorXd& change) const override;
+    std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X, const Eigen::VectorXd& change,
+                                                   const Deadline& deadline = {}) const override;
     /// Parameter bounds are a box: every point on the way is within them.
     std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
                                            double t) const override

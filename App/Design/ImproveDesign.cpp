@@ -50,7 +50,7 @@ std::optional<Eigen::VectorXd> changePartSize(const Explorer& explorer, const Ei
     Eigen::VectorXd change =
         Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(explorer.design.parts().size()));
     change[size] = cells * explorer.material.resolution();
-    return explorer.design.changePartSizes(X, change);
+    return explorer.design.changePartSizes(X, change, explorer.until());
 }
 
 }  // namespace
@@ -260,7 +260,7 @@ DesignLayout improveDesign(Explorer& explorer, const DesignLayout& start, int it
         Eigen::VectorXd change = Eigen::VectorXd::Zero(best.sizes.size());
         for (int size : shrink)
             change[size] = -explorer.material.resolution();
-        const auto X = explorer.design.changePartSizes(best.X, change);
+        const auto X = explorer.design.changePartSizes(best.X, change, explorer.until());
         if (!X)
             break;
         current = explorer.slid(best, *X);

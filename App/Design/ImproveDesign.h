@@ -46,10 +46,9 @@ struct Explorer {
     bool guided =
         true;  ///< false: shrink random part sizes instead of the locking chains (Fig. 5.20 baseline)
 
-    bool stopped() const
-    {
-        return (stop && stop->load(std::memory_order_relaxed)) || std::chrono::steady_clock::now() > deadline;
-    }
+    bool stopped() const { return until().passed(); }
+    /// The deadline and the stop together, for the steps that check them inside (a correction).
+    Deadline until() const { return Deadline(deadline, stop); }
     /// DOCKING(D(X), O).
     DesignLayout docked(const Eigen::VectorXd& X) const;
     /// SLIDE(L, D(X)): `from`'s layout updated to the part sizes of X.

@@ -313,8 +313,18 @@ void readOuterVolume(Design& design, const nlohmann::json& json)
 void readParts(const Fields& root, const std::vector<double>& thicknesses, Design& design)
 {
     const nlohmann::json& parts = root.array("parts");
+    long units = 0;
     for (size_t i = 0; i < parts.size(); ++i) {
+        if (static_cast<long>(i) >= kMostDesignBoards)
+            throw FormatError("parts: more than " + std::to_string(kMostDesignBoards) +
+                              " boards; FabGuide explores designs of up to that (lay a larger job out with "
+                              "`fabguide pack`)");
         design.boards.push_back(readPart(parts[i], at("parts", i), thicknesses));
+        if ((units += design.boards.back().quantity) > kMostDesignBoards)
+            throw FormatError(
+                at("parts", i) + ".quantity: more than " + std::to_string(kMostDesignBoards) +
+                " boards to cut in all; FabGuide explores designs of up to that (lay a larger job "
+                "out with `fabguide pack`)");
         for (size_t j = 0; j < i; ++j)
             if (design.boards[j].id == design.boards[i].id)
                 throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");

@@ -209,6 +209,12 @@ std::string temporaryFor(const std::string& path)
     const int fd = mkstemp(name.data());
     if (fd < 0)
         throw FormatError(path + ": cannot write beside it (" + std::strerror(errno) + ")");
+    static const mode_t mask = [] {  // read once: umask can only be read by setting it
+        const mode_t was = umask(0);
+        umask(was);
+        return was;
+    }();
+    fchmod(fd, 0666 & ~mask);  // as any file the user makes: mkstemp's are private (0600)
     close(fd);
     return name;
 }

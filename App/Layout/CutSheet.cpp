@@ -10,13 +10,27 @@ namespace fabguide::material {
 
 namespace {
 
+/// The text a label can carry: an id of more than 60 bytes is cut (at a character, not inside one) and ends
+/// in "..." (a 1 MB id drawn in strokes took 41 s and a DXF of hundreds of MB, issue 35).
+std::string labelText(const std::string& id)
+{
+    constexpr size_t kLongest = 60;
+    if (id.size() <= kLongest)
+        return id;
+    size_t cut = kLongest - 3;
+    while (cut > 0 && (static_cast<unsigned char>(id[cut]) & 0xC0) == 0x80)  // inside a UTF-8 character
+        --cut;
+    return id.substr(0, cut) + "...";
+}
+
 /// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
 /// longer side (a freely turned part's own, kept within a quarter turn of upright), as large as fits the
 /// circle free there (a text n characters long is about 0.6 n of its height wide) between 2 and 12 mm.
 Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Placement& p, size_t k)
 {
     const auto [at, room] = geometry::deepestPoint(placed);
-    const double n = static_cast<double>(std::max<size_t>(spec.id.size(), 1));
+    const std::string text = labelText(spec.id);
+    const double n = static_cast<double>(std::max<size_t>(text.size(), 1));
     const double fits = room / std::sqrt(0.09 * n * n + 0.25);  // half-diagonal of the text box = room
     double angle = p.height > p.width ? 90.0 : 0.0;
     if (p.rotation % 90 != 0) {
@@ -24,7 +38,7 @@ Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Place
         if (angle > 90)
             angle -= 180;
     }
-    return {spec.id, at, std::clamp(fits, 2.0, 12.0), angle, k};
+    return {text, at, std::clamp(fits, 2.0, 12.0), angle, k};
 }
 
 }  // namespace

@@ -84,6 +84,14 @@ PackingError notEnoughBoards(const std::string& part, long more, const std::stri
                         where);
 }
 
+/// Whether `part`'s bitmaps are made cell by cell: an irregular part, or one turned off the quarters (a
+/// rectangle on the quarters is its profiles).
+bool byCells(const PartSpec& part)
+{
+    return !rectangular(part) ||
+           std::any_of(part.orientations.begin(), part.orientations.end(), [](int r) { return r % 90 != 0; });
+}
+
 /// The cells of `part`'s bitmaps, one per orientation (a turn off the quarters takes its diagonal's square),
 /// with its clearance.
 double gridCells(const PartSpec& part, const PackSettings& s)
@@ -106,7 +114,7 @@ double gridBytes(const PackProblem& problem)
         const double sides = (part.width() + part.height()) / s.resolution;
         stripCells += part.quantity * std::max(part.width(), part.height()) / s.resolution;
         profiles += part.quantity * part.orientations.size() * sides;
-        if (!rectangular(part))
+        if (byCells(part))
             bitmaps += gridCells(part, s);
     }
     return bitmaps * kBytesPerCell + profiles * kBytesPerProfileCell +
@@ -378,29 +386,21 @@ std::optional<Layout> skylineOnThreads(const PackProblem& problem, const Orderin
     return lowest;
 }
 
-/// About how long rasterising `problem` takes: its parts' bounding boxes with their clearance, two turns
-/// each, and its boards, at kRasterCellsPerSecond.
+/// About how long rasterising `problem` takes: a part whose bitmap is made cell by cell (an irregular one, or
+/// one turned off the quarters) in every orientation at kOutlineCellsPerSecond, a rectangle by its profiles
+/// in two turns and the boards at kRasterCellsPerSecond.
 double rasterSeconds(const PackProblem& problem)
 {
     const PackSettings& s = problem.settings;
     const double cell = s.resolution * s.resolution, clearance = s.kerf + s.spacing;
-    double cells = 0;
+    double seconds = 0;
     for (const PartSpec& part : problem.parts)
-        cells += 2 * (part.width() + clearance) * (part.height() + clearance) / cell;
+        seconds += byCells(part) ? gridCells(part, s) / kOutlineCellsPerSecond
+                                 : 2 * (part.width() + clearance) * (part.height() + clearance) / cell /
+                                       kRasterCellsPerSecond;
     for (const MasterBoard& board : problem.boards)
-        cells += board.width * board.height / cell;
-    return cells / kRasterCellsPerSecond;
-}
-
-/// About how long rasterising the irregular parts' outlines takes, every orientation, at
-/// kOutlineCellsPerSecond.
-double outlineSeconds(const PackProblem& problem)
-{
-    double cells = 0;
-    for (const PartSpec& part : problem.parts)
-        if (!rectangular(part))
-            cells += gridCells(part, problem.settings);
-    return cells / kOutlineCellsPerSecond;
+        seconds += board.width * board.height / cell / kRasterCellsPerSecond;
+    return seconds;
 }
 
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
@@ -491,13 +491,13 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
     // Rasterising the outlines alone would outlast the time limit (issue 35: 100 parts of 10^8 cells took
     // minutes): the bounding boxes' layout is the one in hand.
-    if (!rectangles && outlineSeconds(problem) > deadline.secondsLeft()) {
+    if (!rectangles && rasterSeconds(problem) > deadline.secondsLeft()) {
         if (!boxed)
             boxed = boundingBoxes(problem, deadline);
         if (boxed)
             return *boxed;
         throw PackingError("rasterising the parts' outlines at settings.resolution " +
-                           mm(problem.settings.resolution) + " mm takes ~" + mm(outlineSeconds(problem)) +
+                           mm(problem.settings.resolution) + " mm takes ~" + mm(rasterSeconds(problem)) +
                            " s, more than the time limit: give it more time or a coarser resolution");
     }
     const RasterProblem raster = rasterise(problem);

@@ -102,6 +102,18 @@ TEST(Output, TheTemporaryIsNewAndUnguessableSoAPlantedLinkIsNeverWrittenThrough)
     EXPECT_FALSE(fs::exists(used));
 }
 
+TEST(Output, AFileIsReadableAsAnyTheUserMakes)
+{
+    // mkstemp makes its files 0600: cut sheets a workshop's other accounts could not read.
+    const fs::path out = folder("mode");
+    const mode_t mask = umask(022);
+    writeAtomically((out / "sheet.svg").string(), [](const std::string& t) { writeText(t, "<svg/>"); });
+    umask(mask);
+    struct stat status = {};
+    ASSERT_EQ(stat((out / "sheet.svg").c_str(), &status), 0);
+    EXPECT_EQ(status.st_mode & 0777, 0644u);
+}
+
 TEST(Output, ADeviceOrPipeIsNeverReplaced)
 {
     const fs::path dir = folder("pipe");
