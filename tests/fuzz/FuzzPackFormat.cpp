@@ -1,4 +1,4 @@
-// libFuzzer harness: *.pack.json and OR-Datasets strip instances, read and, when small, laid out.
+// libFuzzer harness: *.pack.json, OR-Datasets and ESICUP strip instances, read and, when small, laid out.
 #include "FuzzSupport.h"
 #include "IO/PackFormat.h"
 

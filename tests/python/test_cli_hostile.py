@@ -16,6 +16,7 @@ import time
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gen"))
+import hostile  # noqa: E402
 import kills  # noqa: E402
 
 PACK = {"format": "fabguide.pack", "version": 1, "boards": [{"width": 2440, "height": 1220}],
@@ -63,7 +64,7 @@ HOSTILE_PACKS = [
     ("a part 10 km long", changed(PACK, ["parts", 0, "width"], 1e7), "parts[0].width: 10000000.0 is beyond"),
     ("a quantity of 2^31-1", changed(PACK, ["parts", 0, "quantity"], 2**31 - 1), "parts[0].quantity: 2147483647"),
     ("a quantity of 2^32+1", changed(PACK, ["parts", 0, "quantity"], 2**32 + 1), "parts[0].quantity: 4294967297"),
-    ("more parts than the boards hold", changed(PACK, ["parts", 0, "quantity"], 150000), "not enough master boards"),
+    ("more parts than the boards hold", changed(PACK, ["parts", 0, "quantity"], 40000), "not enough master boards"),
     ("a 100 m board", changed(changed(PACK, ["boards", 0, "width"], 1e5), ["boards", 0, "height"], 1e5),
      "boards[0] ('board'): 100000 x 100000 mm"),
     ("a 1 µm grid", changed(PACK, ["settings"], {"resolution": 0.001}), "grid cells at settings.resolution 0.001"),
@@ -95,11 +96,12 @@ def strip_placements(cli, folder, instance, seconds):
         return len(json.load(f)["placements"])
 
 
-def test_a_strip_of_199999_items_is_laid_out_whole(fabguide_cli, tmp_path):
-    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit)."""
+def test_a_strip_of_49999_items_is_laid_out_whole(fabguide_cli, tmp_path):
+    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit);
+    50,000 parts are the most accepted now."""
     assert strip_placements(fabguide_cli, tmp_path, {
         "Name": "many", "Objects": [{"Length": 1000, "Height": 1000, "Stock": None, "Cost": 1}],
-        "Items": [{"Length": 7, "Height": 6, "Demand": 199999, "DemandMax": None, "Value": 1}]}, "2") == 199999
+        "Items": [{"Length": 7, "Height": 6, "Demand": 49999, "DemandMax": None, "Value": 1}]}, "2") == 49999
 
 
 def test_a_strip_of_2000_irregular_pieces_ends_with_every_piece_laid(fabguide_cli, tmp_path):
@@ -272,7 +274,7 @@ def test_a_run_out_of_memory_says_so_in_a_sentence(fabguide_cli, tmp_path):
     """An allocation past --memory is reported, not `terminate called after throwing std::bad_alloc`."""
     source = tmp_path / "many.json"
     source.write_text(json.dumps({"Objects": [{"Length": 1000, "Height": 1000}],
-                                  "Items": [{"Length": 7, "Height": 1000000, "Demand": 199999}]}))
+                                  "Items": [{"Length": 7, "Height": 1000000, "Demand": 49999}]}))
     result = run(fabguide_cli, "pack", "--strip", str(source), "-o", str(tmp_path / "o.json"), "--memory", "100M",
                  "--time-limit", "5")
     assert result.returncode == 1 and result.stderr.count("\n") == 1, result.stderr
@@ -291,3 +293,12 @@ def test_an_equality_of_100000_references_is_refused_by_name(fabguide_cli, sourc
     assert result.returncode == 1 and result.stderr.count("\n") == 1, result.stderr
     assert "constraints[{}].refs: 100000 references, more than the 108 different ones".format(index) in result.stderr
     assert result.peak_kb < 200_000
+
+
+def test_sixty_near_limit_and_hostile_inputs_finish_or_are_refused_by_name(fabguide_cli):
+    """Issue 35: tests/gen/hostile.py's cases across pack, solve, printable and optimise each end with exit 0, or
+    exit 1 naming the field, under 2 GB. Their time is judged by the benchmark run of the same script, not here:
+    a test does not assert on wall time."""
+    rows = list(hostile.results(fabguide_cli, limit=2.0, timed=False))
+    assert len(rows) >= 60
+    assert [(row[0], row[6]) for row in rows if row[6]] == []
