@@ -203,14 +203,21 @@ void addEllsAndTriangles(PackProblem& problem, int ells, int triangles)
     problem.parts.push_back({"tri", triangle, triangles, {0, 90, 180, 270}, {}, {}});
 }
 
-}  // namespace
-
-TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
+/// Two ells and three triangles on a plywood board at 0.5 mm.
+PackProblem ellsAndTrianglesOnPly()
 {
     PackProblem problem;
     problem.boards.push_back({"ply", "", 600, 400, 6, 1});
     problem.settings = {0.5, 0.2, 2, 5};
     addEllsAndTriangles(problem, 2, 3);
+    return problem;
+}
+
+}  // namespace
+
+TEST(Pack, IrregularOutlinesNestWithoutOverlapKeepingTheClearance)
+{
+    const PackProblem problem = ellsAndTrianglesOnPly();
     const Layout layout = pack(problem, quick());
     ASSERT_EQ(layout.placements.size(), 5u);
     EXPECT_NEAR(layout.partArea, 2 * fabguide::geometry::area(problem.parts[0].outline) + 3 * 7200, 1e-6);
@@ -363,10 +370,7 @@ private:
 
 TEST(Pack, IrregularGridsPastTheMemoryLimitAreRefusedNamingTheResolution)
 {
-    PackProblem problem;
-    problem.boards.push_back({"ply", "", 600, 400, 6, 1});
-    problem.settings = {0.5, 0.2, 2, 5};
-    addEllsAndTriangles(problem, 2, 3);
+    const PackProblem problem = ellsAndTrianglesOnPly();
     const MemoryLimit tight(1e6);  // the ell's four bitmaps of 400 x 400 cells need ~1 MB
     try {
         pack(problem, quick());
