@@ -104,14 +104,16 @@ extern "C" void onInterrupt(int signal)
     _exit(128 + signal);
 }
 
-/// The process id a leftover's name carries after `marker` (`.NAME.partial-PID-XXXXXX`,
-/// `.fabguide-commit-PID-XXXXXX`), or 0 when the name is not one of ours.
+/// The process id a leftover's name carries after `marker` (`.NAME.partial-PID-XXXXXX`, and libzip's
+/// temporary of it `.NAME.partial-PID-XXXXXX.abcdef`; `.fabguide-commit-PID-XXXXXX`), or 0 when the name is
+/// not ours.
 pid_t leftoverOf(const std::string& name, const std::string& marker)
 {
-    const size_t at = name.rfind(marker);
-    if (name.empty() || name[0] != '.' || at == std::string::npos || name.size() < at + marker.size() + 8)
+    const size_t at = name.rfind(marker), start = at + marker.size();
+    if (name.empty() || name[0] != '.' || at == std::string::npos)
         return 0;
-    const std::string pid = name.substr(at + marker.size(), name.size() - at - marker.size() - 7);
+    const size_t end = name.find('-', start);  // then XXXXXX, and what a writer adds (libzip's own temporary)
+    const std::string pid = name.substr(start, end == std::string::npos ? 0 : end - start);
     if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9)
         return 0;
     return static_cast<pid_t>(std::stol(pid));

@@ -226,13 +226,16 @@ TEST(Output, TemporariesARunThatEndedLeftAreRemovedByTheNextAndALiveRunsAreKept)
         _exit(0);
     waitpid(ended, nullptr, 0);  // its id names no process now
     const std::string dead = ".old.svg.partial-" + std::to_string(ended) + "-Ab12Cd";
+    const std::string zipped = ".old.3mf.partial-" + std::to_string(ended) + "-Ab12Cd.xY34zW";  // libzip's
     const std::string alive =
         ".old.svg.partial-" + std::to_string(getppid()) + "-Ef34Gh";  // a run still going
     writeText((out / dead).string(), "left by a SIGKILL");
+    writeText((out / zipped).string(), "left by a SIGKILL");
     writeText((out / alive).string(), "being written");
     writeText((out / ".notes.partial-draft").string(), "someone's");
     writeAtomically((out / "new.svg").string(), [](const std::string& t) { writeText(t, "new"); });
     EXPECT_FALSE(fs::exists(out / dead));
+    EXPECT_FALSE(fs::exists(out / zipped));
     EXPECT_TRUE(fs::exists(out / alive));
     EXPECT_TRUE(fs::exists(out / ".notes.partial-draft"));
     EXPECT_EQ(readText(out / "new.svg"), "new");

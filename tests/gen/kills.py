@@ -70,14 +70,16 @@ def without_times(value):
     return value
 
 
-def content(path):
-    """What a file says, less what changes from run to run (times, dates, zip timestamps)."""
+def content(path, name=None):
+    """What a file says, less what changes from run to run (times, dates, zip timestamps); `name`, the name it is
+    read as, tells its kind (a temporary's own name does not)."""
     data = open(path, "rb").read()
-    if path.endswith(".json"):
+    name = name or path
+    if name.endswith(".json"):
         return json.dumps(without_times(json.loads(data)), sort_keys=True)
-    if path.endswith(".step"):
+    if name.endswith(".step"):
         return b"".join(line for line in io.BytesIO(data) if not line.startswith(b"FILE_NAME"))
-    if path.endswith(".3mf"):
+    if name.endswith(".3mf"):
         with zipfile.ZipFile(io.BytesIO(data)) as archive:
             return {name: archive.read(name) for name in sorted(archive.namelist())}
     return data
@@ -103,7 +105,7 @@ def as_read(folder):
                         files[os.path.join(root, target)] = files.pop(os.path.join(root, source))
                 for gone in journal.get("removes", []):
                     files.pop(os.path.join(root, gone), None)
-    return {os.path.relpath(path, folder): content(real) for path, real in files.items()
+    return {os.path.relpath(path, folder): content(real, path) for path, real in files.items()
             if not os.path.basename(path).startswith(".")}
 
 
@@ -117,17 +119,20 @@ def start(cli, argv, slowed):
 
 
 def worker(run, slowed):
-    """The fabguide process itself (strace's child when slowed): signals go to it, not to strace."""
+    """The fabguide process itself (strace's child when slowed): signals go to it, not to strace, nor to the
+    children strace forks at its start to try what the kernel allows."""
     if not slowed:
         return run.pid
     children = "/proc/{0}/task/{0}/children".format(run.pid)
-    for _ in range(2000):
+    for _ in range(5000):
         try:
-            found = open(children).read().split()
+            for pid in open(children).read().split():
+                with open("/proc/{}/cmdline".format(pid), "rb") as cmdline:
+                    if b"fabguide" in cmdline.read().split(b"\0")[0]:
+                        return int(pid)
         except OSError:
-            return None
-        if found:
-            return int(found[0])
+            if run.poll() is not None:
+                return None
         time.sleep(0.001)
     return None
 
