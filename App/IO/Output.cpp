@@ -42,6 +42,16 @@ Pending& pending()
     return instance;
 }
 
+/// Takes `changing` (false to true), waiting while another holder has it: a change of the list, or the
+/// signal handler, which never gives it back. So a handler in another thread cannot remove temporaries a
+/// commit is renaming, and a commit cannot begin once a handler has begun (a kill during the renames left a
+/// journal naming temporaries the handler had removed: a mixed set).
+void takeChanging()
+{
+    for (bool free = false; !pending().changing.compare_exchange_weak(free, true); free = false)
+        ;
+}
+
 /// The list taken for a change: other threads wait on the mutex, the signal handler on `changing`, and
 /// SIGINT / SIGTERM are held in this thread (its handler would wait on itself).
 class Changing {
@@ -53,7 +63,7 @@ public:
         sigaddset(&both, SIGINT);
         sigaddset(&both, SIGTERM);
         pthread_sigmask(SIG_BLOCK, &both, &before_);
-        pending().changing = true;
+        takeChanging();
     }
     ~Changing()
     {
@@ -97,8 +107,7 @@ void removeAll()
 
 extern "C" void onInterrupt(int signal)
 {
-    while (pending().changing)  // another thread is changing the list: it finishes soon
-        ;
+    takeChanging();  // another thread changing the list finishes first; none begins after
     for (const File& file : pending().files)  // unlink and _exit are async-signal-safe
         unlink(file.temporary.c_str());
     _exit(128 + signal);
