@@ -411,8 +411,10 @@ void replaceSetOf(const std::string& manifest)
         const std::filesystem::path named(node.get<std::string>());
         for (const std::filesystem::path& file : {folder / named, std::filesystem::absolute(named)}) {
             const std::filesystem::path normal = file.lexically_normal();
-            if (within(normal.parent_path(), folder) &&
-                std::filesystem::is_regular_file(std::filesystem::symlink_status(normal, error)))
+            if (!within(normal.parent_path(), folder))
+                continue;
+            removeLeftoversOnce(normal.parent_path());  // a set a kill cut short there, completed first
+            if (std::filesystem::is_regular_file(std::filesystem::symlink_status(normal, error)))
                 removeWhenCommitted(normal.string());
         }
     }

@@ -302,3 +302,27 @@ TEST(Output, AJournalSomeoneElsePlantedOrOfALiveRunIsNotFollowed)
     EXPECT_TRUE(fs::exists(out / ".fabguide-commit-1-Ab12Cd"));
     EXPECT_FALSE(fs::exists(out / (".fabguide-commit-" + pid + "-Ef34Gh")));
 }
+
+TEST(Output, ASetCutShortInASubfolderTheNextRunNoLongerWritesIsCompletedThenReplaced)
+{
+    // optimise killed while renaming a third suggestion's sheets; the next run finds two: suggestion-3/ kept
+    // its journal and temporary, as no run wrote there again.
+    const fs::path out = folder("subfolder-journal");
+    const pid_t ended = fork();
+    if (ended == 0)
+        _exit(0);
+    waitpid(ended, nullptr, 0);
+    const std::string temporary = ".sheet-1.svg.partial-" + std::to_string(ended) + "-Ab12Cd";
+    fs::create_directories(out / "suggestion-3");
+    writeText((out / "suggestion-3" / temporary).string(), "new");
+    writeText((out / "suggestion-3" / (".fabguide-commit-" + std::to_string(ended) + "-Ab12Cd")).string(),
+              R"({"renames": [[")" + temporary + R"(", "sheet-1.svg"]]})");
+    writeText((out / "summary.json").string(), R"({"suggestions": [{"svg": ["suggestion-3/sheet-1.svg"]}]})");
+    {
+        OutputBatch batch;
+        replaceSetOf((out / "summary.json").string());
+        writeAtomically((out / "summary.json").string(), [](const std::string& t) { writeText(t, "{}"); });
+        batch.commit();
+    }
+    EXPECT_FALSE(fs::exists(out / "suggestion-3"));
+}
