@@ -5,7 +5,6 @@
 #include "IO/Output.h"
 
 #include <chrono>
-#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <iostream>

@@ -184,8 +184,8 @@ void removeLeftovers(const std::filesystem::path& folder)
         for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
             const std::string name = entry.path().filename().string();
             const pid_t pid = leftoverOf(name, marker);
-            if (name.rfind(marker == kJournal ? kJournal : ".", 0) != 0 || !leftByEndedRun(entry.path(), pid))
-                continue;
+            if ((marker == kJournal && name.rfind(kJournal, 0) != 0) || !leftByEndedRun(entry.path(), pid))
+                continue;  // a journal's name begins with its marker; leftoverOf checked the rest
             if (marker == kJournal)
                 rollForward(folder, entry.path(), pid);
             else
@@ -254,11 +254,12 @@ std::vector<std::filesystem::path> writeJournals(const std::vector<File>& rename
     std::vector<std::filesystem::path> journals;
     for (const auto& [folder, journal] : byFolder) {
         const std::string temporary = temporaryFor((folder / kJournal).string());
-        std::ofstream(temporary) << journal.dump();
+        std::ofstream out(temporary);
+        out << journal.dump();
+        out.close();
         const std::filesystem::path named =
             folder / (kJournal + std::to_string(getpid()) + temporary.substr(temporary.size() - 7));
-        if (std::filesystem::file_size(temporary) == 0 ||
-            std::rename(temporary.c_str(), named.c_str()) != 0) {
+        if (!out || std::rename(temporary.c_str(), named.c_str()) != 0) {
             std::remove(temporary.c_str());
             for (const std::filesystem::path& made : journals)
                 std::remove(made.c_str());

@@ -2,8 +2,6 @@
 
 #include "Core/Memory.h"
 #include "Core/Parallel.h"
-
-#include "Core/Parallel.h"
 #include "Layout/Compaction.h"
 #include "Layout/Guillotine.h"
 #include "Layout/HoleFill.h"
@@ -403,6 +401,15 @@ double rasterSeconds(const PackProblem& problem)
     return seconds;
 }
 
+/// Whether Docking's grid is out of reach for a job of rectangles, whose MaxRects or skyline layout is in
+/// hand: too many units, rasterising would outlast the time left at the `share` of a core this process gets,
+/// or the grid would pass the memory limit.
+bool gridOutOfReach(const PackProblem& problem, long units, const Deadline& deadline, double share = 1.0)
+{
+    return units > kDockedUnits || rasterSeconds(problem) / share > deadline.secondsLeft() ||
+           gridBytes(problem) > memoryLimit();
+}
+
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
 /// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking (issue 31). Its saw cuts
 /// are dropped: the cuts are free.
@@ -460,8 +467,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         if (exact && units <= kSawnUnits)
             exact = sawnIfBetter(problem, std::move(*exact), search.seed,
                                  deadline.sooner(started + seconds(kSawShare * search.timeLimit)));
-        if (exact && (units > kDockedUnits || rasterSeconds(problem) / share > deadline.secondsLeft() ||
-                      gridBytes(problem) > memoryLimit()))
+        if (exact && gridOutOfReach(problem, units, deadline, share))
             return *exact;
     }
     // A strip of rectangles: the skyline search on each thread within its work (by 85 % of the time), done
@@ -477,10 +483,8 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             maxRectsStrip(problem, deadline.sooner(started + seconds(0.95 * search.timeLimit)));
         if (bisected && (!lower || bisected->stripHeight < lower->stripHeight))
             lower = std::move(bisected);
-        if (lower && (units > kDockedUnits || rasterSeconds(problem) > deadline.secondsLeft() ||
-                      gridBytes(problem) > memoryLimit()))
-            return *lower;  // Docking's first layout alone would outlast the time limit, or its grid the
-                            // memory
+        if (lower && gridOutOfReach(problem, units, deadline))
+            return *lower;
     }
     // Many irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
     // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
@@ -491,13 +495,14 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
     // Rasterising the outlines alone would outlast the time limit (issue 35: 100 parts of 10^8 cells took
     // minutes): the bounding boxes' layout is the one in hand.
-    if (!rectangles && rasterSeconds(problem) > deadline.secondsLeft()) {
+    if (const double rasterising = rectangles ? 0 : rasterSeconds(problem);
+        rasterising > deadline.secondsLeft()) {
         if (!boxed)
             boxed = boundingBoxes(problem, deadline);
         if (boxed)
             return *boxed;
         throw PackingError("rasterising the parts' outlines at settings.resolution " +
-                           mm(problem.settings.resolution) + " mm takes ~" + mm(rasterSeconds(problem)) +
+                           mm(problem.settings.resolution) + " mm takes ~" + mm(rasterising) +
                            " s, more than the time limit: give it more time or a coarser resolution");
     }
     const RasterProblem raster = rasterise(problem);

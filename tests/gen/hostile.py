@@ -4,6 +4,7 @@ Each case states what a run must do: finish (exit 0) or refuse in one line namin
 given words); either way within its seconds and under 2 GB (`--memory 2G` is passed too).
     python3 tests/gen/hostile.py [--only WORD] [--time-limit 2]     prints the table; exit 1 on any failure"""
 import argparse
+import copy
 import json
 import math
 import os
@@ -81,12 +82,13 @@ def example(name):
 
 
 def changed(document, path, value):
-    document = json.loads(json.dumps(document))
-    node = document
+    """document with the field at path (a list of keys and indices) set to value."""
+    result = copy.deepcopy(document)
+    target = result
     for key in path[:-1]:
-        node = node[key]
-    node[path[-1]] = value
-    return document
+        target = target[key]
+    target[path[-1]] = value
+    return result
 
 
 def flatpack_row(parts, touching=True):

@@ -2,11 +2,9 @@
 a workshop could use, numbers that overflow, unwritable outputs, and interruptions at any moment. Each ends
 with exit 1 and one line naming the file and field, within a second and a little memory, or (SIGINT/SIGTERM)
 with 130/143 and the files of the run before it untouched."""
-import copy
 import json
 import os
 import random
-import shutil
 import signal
 import subprocess
 import sys
@@ -17,20 +15,11 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gen"))
 import hostile  # noqa: E402
+from hostile import changed  # noqa: E402
 import kills  # noqa: E402
 
 PACK = {"format": "fabguide.pack", "version": 1, "boards": [{"width": 2440, "height": 1220}],
         "parts": [{"id": "shelf", "width": 300, "height": 400}]}
-
-
-def changed(document, path, value):
-    """document with the field at path (a list of keys and indices) set to value."""
-    result = copy.deepcopy(document)
-    target = result
-    for key in path[:-1]:
-        target = target[key]
-    target[path[-1]] = value
-    return result
 
 
 def run(cli, *args, timeout=60):
