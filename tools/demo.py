@@ -108,8 +108,8 @@ for p in design.parts_of(table):
 if abs(table.Usage - best["usage"]) > 0.02 or "Broken" in "".join(c.Status for c in table.Group
                                                                   if design.is_constraint(c)):
     sys.exit("the accepted coffee table does not lay out as suggested: " + table.Status)
-for path in fabguide_core.write_cut_sheets(best["problem"], best["layout"],
-                                           os.path.join(OUT, "coffee-table"), "", ""):
+for path in fabguide_core.write_layout_files(best["problem"], best["layout"],
+                                             svg_folder=os.path.join(OUT, "coffee-table")):
     print("  wrote " + os.path.relpath(path, ROOT))
 doc.saveAs(os.path.join(OUT, "coffee-table", "coffee-table.FCStd"))
 print("  wrote " + os.path.relpath(doc.FileName, ROOT))

@@ -2,11 +2,10 @@
 #include "Cli/Commands.h"
 #include "Cli/Main.h"
 #include "Core/Parallel.h"
-#include "IO/CutSheetFiles.h"
 #include "IO/Json.h"
+#include "IO/LayoutFiles.h"
 #include "IO/Output.h"
 #include "IO/PackFormat.h"
-#include "IO/Report.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,12 +23,9 @@ namespace {
 struct PackArguments {
     std::string input;
     std::string output;
-    std::string svgFolder, dxfFolder, csvFile, reportFile, labelsFile, optiCutterFile;
-    std::pair<double, double> labelSize{62, 29};
+    io::LayoutFiles files;
     bool strip = false;
     bool bottomLeft = false;
-    bool asDesigned = false;
-    bool textLabels = false;
     int rotationStep = -1;               // -1: as the file's settings say
     std::optional<material::Cuts> cuts;  // unset: as the file's settings say
     std::optional<int> stages;
@@ -40,10 +36,11 @@ struct PackArguments {
 void run(const PackArguments& args)
 {
     io::checkWritableFile(args.output);
-    for (const std::string* folder : {&args.svgFolder, &args.dxfFolder})
+    const io::LayoutFiles& out = args.files;
+    for (const std::string* folder : {&out.svgFolder, &out.dxfFolder})
         if (!folder->empty())
             io::checkWritableFolder(*folder);
-    for (const std::string* file : {&args.csvFile, &args.reportFile, &args.labelsFile, &args.optiCutterFile})
+    for (const std::string* file : {&out.csvFile, &out.reportFile, &out.labelsFile, &out.optiCutterFile})
         if (!file->empty())
             io::checkWritableFile(*file);
     io::OutputBatch files;
@@ -78,21 +75,10 @@ void run(const PackArguments& args)
         std::printf("saw cuts      %zu, %.1f m\n", count, length / 1000);
     }
     std::printf("layout        %s\n", args.output.c_str());
-    for (const std::string& path : io::writeCutSheets(layout, problem, args.svgFolder, args.dxfFolder,
-                                                      args.csvFile, "", {args.asDesigned, args.textLabels}))
-        std::printf("%s %s\n", path == args.csvFile ? "cut list     " : "cut sheet    ", path.c_str());
-    const std::string title = std::filesystem::path(args.input).stem().stem().string();  // job.pack.json: job
-    if (!args.reportFile.empty()) {
-        io::writeReport(layout, problem, title, args.reportFile);
-        std::printf("report        %s\n", args.reportFile.c_str());
-    }
-    if (!args.optiCutterFile.empty())
-        for (const std::string& path : io::writeOptiCutter(problem, args.optiCutterFile, title))
-            std::printf("optiCutter    %s\n", path.c_str());
-    if (!args.labelsFile.empty()) {
-        io::writeLabels(layout, problem, args.labelsFile, args.labelSize.first, args.labelSize.second);
-        std::printf("labels        %s\n", args.labelsFile.c_str());
-    }
+    io::LayoutFiles named = out;
+    named.title = std::filesystem::path(args.input).stem().stem().string();  // job.pack.json: job
+    for (const io::WrittenFile& file : io::writeLayoutFiles(layout, problem, named))
+        std::printf("%-13s %s\n", file.what.c_str(), file.path.c_str());
     files.commit();
 }
 
@@ -106,28 +92,29 @@ void addPackCommand(CLI::App& app)
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "layout JSON to write")->required();
-    cmd->add_option("--svg", args->svgFolder,
+    cmd->add_option("--svg", args->files.svgFolder,
                     "folder for one SVG cut sheet per board (an Inkscape layer per operation)");
-    cmd->add_option("--dxf", args->dxfFolder,
+    cmd->add_option("--dxf", args->files.dxfFolder,
                     "folder for one DXF R2000 cut sheet per board (a layer per operation)");
-    cmd->add_option("--csv", args->csvFile, "CSV cut list to write");
+    cmd->add_option("--csv", args->files.csvFile, "CSV cut list to write");
     cmd->add_option(
-        "--report", args->reportFile,
+        "--report", args->files.reportFile,
         "PDF report to write: each sheet with its parts numbered and sized, grain, edge banding and "
         "saw cuts, then the cut list and the totals");
     cmd->add_option(
-        "--opticutter", args->optiCutterFile,
+        "--opticutter", args->files.optiCutterFile,
         "the job as optiCutter's CSV import (parts, sheets, kerf), to compare or optimise there; one "
         "file per thickness");
-    cmd->add_option("--labels", args->labelsFile, "PDF of labels for a label printer, one page per part cut");
-    cmd->add_option("--label-size", args->labelSize, "label width and height in mm")
+    cmd->add_option("--labels", args->files.labelsFile,
+                    "PDF of labels for a label printer, one page per part cut");
+    cmd->add_option("--label-size", args->files.labelSize, "label width and height in mm")
         ->delimiter('x')
         ->capture_default_str();
     cmd->add_flag(
-        "--text-labels", args->textLabels,
+        "--text-labels", args->files.options.textLabels,
         "labels as text in a font (default: as single strokes to engrave, which laser software, CAM "
         "and FreeCAD's DXF import take as they are)");
-    cmd->add_flag("--as-designed", args->asDesigned,
+    cmd->add_flag("--as-designed", args->files.options.asDesigned,
                   "cut sheets for CAM software that offsets by its tool itself: the parts' nominal outlines, "
                   "closed, no dogbones, the holding tabs on a layer of their own (default: tool paths as the "
                   "machine cuts them, offset by half the kerf)");

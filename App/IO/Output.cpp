@@ -343,6 +343,8 @@ OutputBatch::~OutputBatch()
 void OutputBatch::commit()
 {
     Changing changing;
+    if (pending().batches > 1)  // a batch within another: the outermost renames the whole set
+        return;
     std::vector<File> renames;
     std::vector<std::string> written, removes;
     for (const File& file : pending().files)

@@ -15,7 +15,8 @@ namespace fabguide::io {
 void writeAtomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
 
 /// The output of one command: files written while it is open are renamed when it commits; those not
-/// committed are removed when it closes (an error, an exception).
+/// committed are removed when it closes (an error, an exception). Within another batch it adds to that one's
+/// set: only the outermost commits and removes.
 class OutputBatch {
 public:
     OutputBatch();

@@ -4,6 +4,7 @@
 #include "IO/CutSheetFiles.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
+#include "IO/LayoutFiles.h"
 #include "IO/PackFormat.h"
 #include "IO/Report.h"
 #include "Json.h"
@@ -44,13 +45,15 @@ std::pair<material::PackProblem, material::Layout> readLayout(const py::object& 
     return {std::move(problem), std::move(layout)};
 }
 
-std::vector<std::string> writeCutSheets(const py::object& problemDict, const py::object& layoutDict,
-                                        const std::string& svgFolder, const std::string& dxfFolder,
-                                        const std::string& csvFile, const std::string& name, bool asDesigned,
-                                        bool textLabels)
+/// Every file of a layout as one set (io::writeLayoutFiles); the paths written.
+std::vector<std::string> writeLayoutFiles(const py::object& problemDict, const py::object& layoutDict,
+                                          const io::LayoutFiles& files)
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    return io::writeCutSheets(layout, problem, svgFolder, dxfFolder, csvFile, name, {asDesigned, textLabels});
+    std::vector<std::string> paths;
+    for (const io::WrittenFile& file : io::writeLayoutFiles(layout, problem, files))
+        paths.push_back(file.path);
+    return paths;
 }
 
 py::tuple point(const geometry::Point2& p)
@@ -147,31 +150,11 @@ py::list cutSheetsOf(const py::object& problemDict, const py::object& layoutDict
     return out;
 }
 
-void writeReport(const py::object& problemDict, const py::object& layoutDict, const std::string& title,
-                 const std::string& path)
-{
-    const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    io::writeReport(layout, problem, title, path);
-}
-
 std::vector<std::string> reportSvgs(const py::object& problemDict, const py::object& layoutDict,
                                     const std::string& title)
 {
     const auto [problem, layout] = readLayout(problemDict, layoutDict);
     return io::reportSvgs(layout, problem, title);
-}
-
-std::vector<std::string> writeOptiCutter(const py::object& problemDict, const std::string& path,
-                                         const std::string& name)
-{
-    return io::writeOptiCutter(io::readPackProblem(toJson(problemDict)), path, name);
-}
-
-void writeLabels(const py::object& problemDict, const py::object& layoutDict, const std::string& path,
-                 double width, double height)
-{
-    const auto [problem, layout] = readLayout(problemDict, layoutDict);
-    io::writeLabels(layout, problem, path, width, height);
 }
 
 /// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names.
@@ -231,25 +214,38 @@ void bindMaterial(py::module_& m)
         "[(from, to)], 'drills': [{'at', 'diameter', 'depth'}], 'lettering': per label its strokes, "
         "'labels': "
         "[{'text', 'at', 'height', 'angle'}], 'engraved'}; as designed (default): nominal outlines, closed.");
-    m.def("write_report", &writeReport, py::arg("problem"), py::arg("layout"), py::arg("title"),
-          py::arg("path"),
-          "Write the shop's PDF report: a page per sheet (parts numbered and sized, grain, edge banding, saw "
-          "cuts), the cut list and the totals.");
     m.def("report_svgs", &reportSvgs, py::arg("problem"), py::arg("layout"), py::arg("title"),
           "The report's pages as SVG texts, 297 x 210 mm each.");
-    m.def("write_opticutter", &writeOptiCutter, py::arg("problem"), py::arg("path"), py::arg("name"),
-          "Write the problem in optiCutter's CSV import format, one file per thickness; returns the paths.");
-    m.def("write_labels", &writeLabels, py::arg("problem"), py::arg("layout"), py::arg("path"),
-          py::arg("width") = 62.0, py::arg("height") = 29.0,
-          "Write a PDF of labels for a label printer, a page of width x height mm per part cut.");
     m.def(
-        "write_cut_sheets", &writeCutSheets, py::arg("problem"), py::arg("layout"),
-        py::arg("svg_folder") = "", py::arg("dxf_folder") = "", py::arg("csv_file") = "",
-        py::arg("name") = "", py::arg("as_designed") = false, py::arg("text_labels") = false,
-        "Write SVG/DXF cut sheets per board (NAME-sheet-N.svg when a name is given; sheets of an earlier, "
-        "longer set removed) and a CSV cut list for a layout of the problem; returns the paths. as_designed: "
-        "the parts' nominal outlines, closed, no dogbones, the holding tabs on their own layer (for CAM "
-        "software that offsets by its tool itself). text_labels: labels as text in a font, not strokes.");
+        "write_layout_files",
+        [](const py::object& problem, const py::object& layout, const std::string& svgFolder,
+           const std::string& dxfFolder, const std::string& csvFile, const std::string& reportFile,
+           const std::string& labelsFile, const std::string& optiCutterFile, const std::string& name,
+           const std::string& title, std::pair<double, double> labelSize, bool asDesigned, bool textLabels) {
+            return writeLayoutFiles(problem, layout,
+                                    {svgFolder,
+                                     dxfFolder,
+                                     csvFile,
+                                     reportFile,
+                                     labelsFile,
+                                     optiCutterFile,
+                                     name,
+                                     title,
+                                     labelSize,
+                                     {asDesigned, textLabels}});
+        },
+        py::arg("problem"), py::arg("layout"), py::arg("svg_folder") = "", py::arg("dxf_folder") = "",
+        py::arg("csv_file") = "", py::arg("report_file") = "", py::arg("labels_file") = "",
+        py::arg("opticutter_file") = "", py::arg("name") = "", py::arg("title") = "",
+        py::arg("label_size") = std::pair{62.0, 29.0}, py::arg("as_designed") = false,
+        py::arg("text_labels") = false,
+        "Write a layout's files as one set, renamed into place together (each skipped when its path is "
+        "empty): SVG/DXF cut sheets per board (NAME-sheet-N.* when a name is given; sheets of an earlier, "
+        "longer set removed), the CSV cut list, the shop's PDF report (sheets, cut list, totals) titled "
+        "`title`, PDF labels of label_size (width, height) mm, optiCutter's CSV import (one file per "
+        "thickness); returns the paths. as_designed: the parts' nominal outlines, closed, no dogbones, the "
+        "holding tabs on their own layer (for CAM software that offsets by its tool itself). text_labels: "
+        "labels as text in a font, not strokes.");
 }
 
 }  // namespace fabguide::bindings

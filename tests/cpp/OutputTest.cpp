@@ -178,6 +178,32 @@ TEST(Output, ThePreviousSetsLeftoversGoOnlyOnceTheNewSetIsInPlace)
         << "written again, or never ours";
 }
 
+TEST(Output, ABatchWithinAnotherAddsToItsSetWhichOnlyTheOutermostCommits)
+{
+    const fs::path out = folder("nested");
+    writeSet(out, 2, "old");
+    {
+        OutputBatch command;
+        writeAtomically((out / "sheet-1.svg").string(), [](const std::string& t) { writeText(t, "new"); });
+        {
+            OutputBatch files;  // e.g. a layout's files, written within the command's batch
+            writeAtomically((out / "sheet-2.svg").string(),
+                            [](const std::string& t) { writeText(t, "new"); });
+            files.commit();
+        }
+        EXPECT_EQ(setIn(out, 2), "old") << "renamed before the command commits";
+    }
+    EXPECT_EQ(setIn(out, 2), "old") << "the command ended without committing: nothing of it stays";
+    EXPECT_EQ(std::distance(fs::directory_iterator(out), {}), 2) << "its temporaries are removed";
+    {
+        OutputBatch command;
+        writeAtomically((out / "sheet-1.svg").string(), [](const std::string& t) { writeText(t, "new"); });
+        writeSet(out, 2, "new");
+        command.commit();
+    }
+    EXPECT_EQ(setIn(out, 2), "new");
+}
+
 TEST(Output, ASubfolderOfThePreviousSetGoesWithItsFilesButNoLinkIsFollowed)
 {
     // optimise's fourth suggestion has its sheets in suggestion-4/: a run finding three left them.

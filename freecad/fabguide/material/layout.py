@@ -249,11 +249,10 @@ def export_cut_sheets(obj, folder):
     os.makedirs(folder, exist_ok=True)
     stem = file_stem(obj.Label)
     problem, result = json.loads(obj.ProblemJson), json.loads(obj.LayoutJson)
-    written = fabguide_core.write_cut_sheets(problem, result, svg_folder=folder, dxf_folder=folder,
-                                             csv_file=os.path.join(folder, stem + "-cutlist.csv"), name=stem,
-                                             as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
-    report, labels = (os.path.join(folder, "{}-{}.pdf".format(stem, what)) for what in ("report", "labels"))
-    fabguide_core.write_report(problem, result, obj.Label, report)
-    fabguide_core.write_labels(problem, result, labels, obj.LabelWidth.Value, obj.LabelHeight.Value)
-    return written + [report, labels] + fabguide_core.write_opticutter(
-        problem, os.path.join(folder, stem + "-opticutter.csv"), obj.Label)
+    def file(what):
+        return os.path.join(folder, stem + what)
+    return fabguide_core.write_layout_files(
+        problem, result, svg_folder=folder, dxf_folder=folder, csv_file=file("-cutlist.csv"),
+        report_file=file("-report.pdf"), labels_file=file("-labels.pdf"), opticutter_file=file("-opticutter.csv"),
+        name=stem, title=obj.Label, label_size=(obj.LabelWidth.Value, obj.LabelHeight.Value),
+        as_designed=obj.AsDesigned, text_labels=obj.TextLabels)
