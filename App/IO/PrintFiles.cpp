@@ -247,6 +247,7 @@ void writeStep(const std::vector<printable::Body>& bodies, const std::string& pa
 std::vector<std::string> writePrintFiles(const printable::Printable& printable, const std::string& folder)
 {
     std::filesystem::create_directories(folder);
+    OutputBatch batch;  // one set, whether the CLI or FreeCAD's export writes it
     std::vector<std::string> written;
     auto write = [&](const std::vector<printable::Body>& bodies, const std::string& stem) {
         for (const char* extension : {".stl", ".3mf", ".step"}) {
@@ -272,6 +273,7 @@ std::vector<std::string> writePrintFiles(const printable::Printable& printable, 
             unique = stem + "-" + std::to_string(k);
         write({b}, unique);
     }
+    batch.commit();
     return written;
 }
 

@@ -17,7 +17,8 @@ void write3mf(const std::vector<printable::Body>& bodies, const std::string& pat
 void writeStep(const std::vector<printable::Body>& bodies, const std::string& path);
 
 /// The assembly and each body in each format into `folder`: assembly.stl/.3mf/.step and
-/// <body>.stl/.3mf/.step. Returns the paths written.
+/// <body>.stl/.3mf/.step, renamed into place together (within the caller's OutputBatch when one is open).
+/// Returns the paths written.
 std::vector<std::string> writePrintFiles(const printable::Printable& printable, const std::string& folder);
 
 }  // namespace fabguide::io
