@@ -125,7 +125,7 @@ bool addSnapping(Design& design, int a, int b)
 struct ConstraintReader {
     Design& design;
     const nlohmann::json& json;
-    Fields c;
+    const Fields& c;
     std::string kind;
     Eigen::VectorXd X;
 
@@ -246,6 +246,7 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
     else
         throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + r.kind +
                           "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
+    c.noOthers();
 }
 
 material::DesignBoard readPart(const nlohmann::json& json, const std::string& path,
@@ -290,6 +291,7 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
         throw FormatError(part.pathOf("size") + ": its thinnest side " + show(board.size[board.normal]) +
                           " must be the thickness of a master board (" + all + ")");
     }
+    part.noOthers();
     return board;
 }
 
@@ -298,6 +300,7 @@ void readOuterVolume(Design& design, const nlohmann::json& json)
 {
     const Fields outer(json, "outer_volume");
     const Eigen::Vector3d low = outer.vector3("min"), high = outer.vector3("max");
+    outer.noOthers();
     const char* axes = "xyz";
     for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
         for (int axis = 0; axis < 3; ++axis) {
@@ -366,6 +369,7 @@ void readInnerVolumes(const Fields& root, Design& design)
         if (v.size.minCoeff() <= 0)  // a space no part could be kept out of (issue 32)
             throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
         v.offset = volume.vector3("position") - design.boards[v.on].centre;
+        volume.noOthers();
         design.innerVolumes.push_back(v);
     }
 }
@@ -421,6 +425,9 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
         readOuterVolume(design, document["outer_volume"]);
     const std::vector<material::DesignConstraint> apart = material::keptApart(design);
     design.bounds.insert(design.bounds.end(), apart.begin(), apart.end());
+    // The title names the design in FreeCAD; a suggestion's usage and path are written for people.
+    root.text("title", "");
+    root.noOthers({"settings", "boards", "usage", "path"});
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
     return result;

@@ -106,6 +106,7 @@ Fields::Fields(const nlohmann::json& object, std::string path) : object_(object)
 
 const nlohmann::json* Fields::find(const std::string& key) const
 {
+    has(key);
     auto it = object_.find(key);
     return it == object_.end() || it->is_null() ? nullptr : &*it;
 }
@@ -211,6 +212,20 @@ void Fields::only(const std::vector<std::string>& known) const
     }
 }
 
+bool Fields::has(const std::string& key) const
+{
+    if (std::find(asked_.begin(), asked_.end(), key) == asked_.end())
+        asked_.push_back(key);
+    return object_.contains(key);
+}
+
+void Fields::noOthers(const std::vector<std::string>& alsoKnown) const
+{
+    std::vector<std::string> known = asked_;
+    known.insert(known.end(), alsoKnown.begin(), alsoKnown.end());
+    only(known);
+}
+
 void Fields::header(const std::string& format, int version) const
 {
     if (text("format", format) != format)
@@ -218,6 +233,7 @@ void Fields::header(const std::string& format, int version) const
     if (const int given = integer("version", version); given != version)
         throw FormatError("version: this FabGuide reads version " + std::to_string(version) +
                           ", the file is version " + std::to_string(given));
+    text("description", "");  // free text for people, in any document
 }
 
 Eigen::Vector3d Fields::vector3(const std::string& key) const

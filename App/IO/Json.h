@@ -49,7 +49,8 @@ public:
     std::string text(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
     /// true or false; `fallback` when absent.
     bool flag(const std::string& key, bool fallback) const;
-    /// A document's "format" (when given) must be `format` and its "version" (when given) `version`.
+    /// A document's "format" (when given) must be `format` and its "version" (when given) `version`; its
+    /// "description" (when given) is free text.
     void header(const std::string& format, int version) const;
     /// A vector [x, y, z].
     Eigen::Vector3d vector3(const std::string& key) const;
@@ -58,13 +59,17 @@ public:
     /// Refuses a key not in `known` (a misspelt "kerff" would otherwise be ignored without a word), naming it
     /// and the known key it is closest to.
     void only(const std::vector<std::string>& known) const;
+    /// Once the object is read: refuses a key its reader did not ask for nor list in `alsoKnown` (keys
+    /// FabGuide writes for people, such as a solve's report), as only() does. What is read is what is known.
+    void noOthers(const std::vector<std::string>& alsoKnown = {}) const;
     std::string pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-    bool has(const std::string& key) const { return object_.contains(key); }
+    bool has(const std::string& key) const;
 
 private:
     const nlohmann::json* find(const std::string& key) const;
     const nlohmann::json& object_;
     std::string path_;
+    mutable std::vector<std::string> asked_;  ///< every key read or looked for, for noOthers
 };
 
 }  // namespace fabguide::io

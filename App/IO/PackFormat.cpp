@@ -111,6 +111,7 @@ void readShape(const Fields& part, material::PartSpec& p)
         const Fields drill(drills[k], at(part.pathOf("drills"), k));
         p.drills.push_back(
             {{drill.number("x"), drill.number("y")}, drill.positive("diameter"), drill.positive("depth")});
+        drill.noOthers();
     }
     const nlohmann::json& marks = part.array("marks", true);
     for (size_t k = 0; k < marks.size(); ++k)
@@ -125,12 +126,13 @@ void readShape(const Fields& part, material::PartSpec& p)
 }
 
 /// "edge_banding": {"L1": "oak 1 mm", ...}, the band on each named side.
-std::array<std::string, 4> readEdgeBanding(const nlohmann::json& part, const std::string& path)
+std::array<std::string, 4> readEdgeBanding(const Fields& part, const nlohmann::json& json)
 {
     std::array<std::string, 4> banding;
-    const auto found = part.find("edge_banding");
-    if (found == part.end())
+    const std::string path = part.pathOf("edge_banding");
+    if (!part.has("edge_banding"))
         return banding;
+    const auto found = json.find("edge_banding");
     if (!found->is_object())
         throw FormatError(path + ": must map sides (L1, L2, W1, W2) to band names, got " + found->dump());
     const Fields bands(*found, path);
@@ -162,7 +164,8 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     p.orientations = readOrientations(part);
     p.followsGrain = part.flag("follow_grain", p.followsGrain);
     p.thickness = part.number("thickness", 0.0, 0.0);
-    p.edgeBanding = readEdgeBanding(json, part.pathOf("edge_banding"));
+    p.edgeBanding = readEdgeBanding(part, json);
+    part.noOthers();
     return p;
 }
 
@@ -311,6 +314,7 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
     }
     if (problem.parts.empty())
         throw FormatError("parts: at least one part is needed");
+    root.noOthers({"settings", "boards"});  // read by readSettings and readMasterBoards
     return problem;
 }
 
@@ -404,6 +408,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
 {
     checkNumbers(document, kLargestArea);  // its metrics are areas
     const Fields root(document, "");
+    root.header("fabguide.layout", kPackFormatVersion);
     material::Layout layout;
     const nlohmann::json& boards = root.array("boards");
     for (size_t i = 0; i < boards.size(); ++i) {
@@ -432,6 +437,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
         placement.rotation = p.integer("rotation");
         placement.width = p.positive("width");
         placement.height = p.positive("height");
+        p.noOthers();
         layout.placements.push_back(placement);
         layout.partArea += geometry::area(problem.parts[placement.part].outline);
     }
@@ -444,8 +450,9 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
             const Fields c(sawn[i][k], at(at("saw_cuts", i), k));
             layout.sawCuts.back().push_back(
                 {c.text("number"), c.integer("stage"), c.flag("trim", false),
-                 readPoint(sawn[i][k].value("from", nlohmann::json()), c.pathOf("from")),
-                 readPoint(sawn[i][k].value("to", nlohmann::json()), c.pathOf("to"))});
+                 readPoint(c.has("from") ? sawn[i][k]["from"] : nlohmann::json(), c.pathOf("from")),
+                 readPoint(c.has("to") ? sawn[i][k]["to"] : nlohmann::json(), c.pathOf("to"))});
+            c.noOthers({"length"});  // written for people
         }
     }
     if (!sawn.empty() && sawn.size() != layout.sheets.size())
@@ -453,6 +460,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
                           std::to_string(sawn.size()));
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
+    root.noOthers({"sheet_utilisation", "waste_area"});  // written for people
     return layout;
 }
 

@@ -71,10 +71,16 @@ function::Expression sum(const function::Model& model, const nlohmann::json& val
     const nlohmann::json items = value.is_array() ? value : nlohmann::json::array({value});
     for (size_t k = 0; k < items.size(); ++k) {
         const std::string here = value.is_array() ? at(path, k) : path;
+        if (!items[k].is_object()) {
+            const function::Expression e = quantity(model, items[k], here);
+            total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
+            continue;
+        }
+        const Fields term(items[k], here);
         const function::Expression e =
-            items[k].is_object() ? quantity(model, items[k].value("quantity", nlohmann::json()),
-                                            here + ".quantity", Fields(items[k], here).number("times", 1.0))
-                                 : quantity(model, items[k], here);
+            quantity(model, term.has("quantity") ? items[k]["quantity"] : nlohmann::json(),
+                     here + ".quantity", term.number("times", 1.0));
+        term.noOthers();
         total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
     }
     return total;
@@ -230,6 +236,7 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
     if (joint.slides()) {
         joint.axis = axisNamed(j.text("axis"), j.pathOf("axis"), "\"x\", \"y\" or \"z\"");
     }
+    j.noOthers();
     model.joints.push_back(joint);
 }
 
@@ -241,7 +248,7 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
     for (const function::Configuration& other : model.configurations)
         if (other.name == configuration.name)
             throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
-    if (!json.contains("poses") || !json["poses"].is_object())
+    if (!c.has("poses") || !json["poses"].is_object())
         throw FormatError(c.pathOf("poses") + ": must map joint names to angles (degrees) or offsets (mm)");
     for (const auto& item : json["poses"].items()) {
         const std::string& name = item.key();
@@ -259,10 +266,12 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             const Fields both(value, here);
             pose.angle = both.number("angle");
             pose.offset = both.number("offset");
+            both.noOthers();
         } else if (joint->type == function::Joint::Type::DoublePivot) {
             const Fields turn(value, here);
             pose.angle = turn.number("angle");
             pose.pole = point(turn, "pole");
+            turn.noOthers();
         } else if (!value.is_number()) {
             throw FormatError(here + ": must be a number, got " + value.dump());
         } else {
@@ -272,6 +281,7 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             throw FormatError(here + ": an angle of at most 360 degrees either way, got " + show(pose.angle));
         configuration.poses.push_back(pose);
     }
+    c.noOthers();
     model.configurations.push_back(configuration);
     const int k = static_cast<int>(model.configurations.size()) - 1;
     for (const function::JointPose& a : configuration.poses) {
@@ -354,8 +364,8 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
 {
     function::Support s{
         name, partList(model, r, "supporting"), partList(model, r, "supported"), {}, configuration, {}};
+    const double distance = r.number("distance", 100.0, 0.0);  // how far apart inferred pairs may be
     if (!r.has("pairs")) {
-        const double distance = r.number("distance", 100.0, 0.0);
         function::InferredSupport inferred =
             function::inferSupport(model, s.supporting, s.supported, configuration, distance);
         if (!inferred.unlinked.empty())
@@ -439,6 +449,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
             if (std::find(f.inner.begin(), f.inner.end(), part) == f.inner.end())
                 throw FormatError(each.pathOf("part") + ": '" + each.text("part") + "' is not an inner part");
             const auto inferred = function::inferJust(model, f, {part}, axisList(each, "axes"));
+            each.noOthers();
             f.just.insert(f.just.end(), inferred.begin(), inferred.end());
         } else if (just[k].is_array() && just[k].size() == 2) {
             f.just.push_back({face(model, just[k][0], here + "[0]"), face(model, just[k][1], here + "[1]")});
@@ -536,6 +547,7 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
             r.pathOf("type") + ": \"" + type +
             "\" is not a relationship this FabGuide knows (cover, fit_inside, support, flush, geometric)");
     }
+    r.noOthers();
 }
 
 /// The solid cuboid of the part that a cavity overlaps most (thesis 4.1.1: cavities are cut from solids).
@@ -610,7 +622,9 @@ function::Model readWorkslike(const nlohmann::json& document)
                 model.cuboids.back().within =
                     solidAround(model, built, model.cuboids.back(), cuboid.pathOf("min"));
             }
+            cuboid.noOthers();
         }
+        part.noOthers();
         model.parts.push_back(built);
         if (model.cuboids.size() > kMostCuboids)
             throw FormatError(part.pathOf("cuboids") + ": more than " + std::to_string(kMostCuboids) +
@@ -645,6 +659,7 @@ function::Model readWorkslike(const nlohmann::json& document)
     const nlohmann::json& locks = root.array("locks", true);
     for (size_t l = 0; l < locks.size(); ++l)
         model.locks.push_back({face(model, locks[l], at("locks", l))});
+    root.noOthers({"report"});  // what a solve wrote for people
     return function::indexed(std::move(model));
 }
 

@@ -1,0 +1,157 @@
+// Every object of every FabGuide format refuses a key it does not know, naming it (issue 35, deliver 6): a
+// generator takes each example and test file, adds a misspelt key to one object at a time, and expects the
+// reader to refuse exactly that key. Objects whose keys are names the user chose (a configuration's poses)
+// are the only ones that take any key.
+#include "IO/FlatpackFormat.h"
+#include "IO/Json.h"
+#include "IO/PackFormat.h"
+#include "IO/WorkslikeFormat.h"
+#include "Layout/Docking.h"
+#include "Layout/Pack.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace fabguide;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Objects whose keys the user names: any key is a name there.
+const std::regex kNamedKeys(R"(configurations\[\d+\]\.poses|parameters)");
+
+using Reader = std::function<void(const json&)>;
+
+/// The path of every object in `document`, as the readers' messages write it ("parts[2].cuboids[0]").
+void objectsIn(const json& value, const std::string& path, std::vector<std::string>& paths)
+{
+    if (value.is_object()) {
+        if (!std::regex_match(path, kNamedKeys))
+            paths.push_back(path);
+        for (const auto& item : value.items())
+            objectsIn(item.value(), path.empty() ? item.key() : path + "." + item.key(), paths);
+    } else if (value.is_array())
+        for (size_t i = 0; i < value.size(); ++i)
+            objectsIn(value[i], path + "[" + std::to_string(i) + "]", paths);
+}
+
+/// The value at `path` in `document` (a path objectsIn gave).
+json& at(json& document, const std::string& path)
+{
+    json* value = &document;
+    const std::regex step(R"(([^.\[\]]+)|\[(\d+)\])");
+    for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it)
+        value = (*it)[1].matched ? &(*value)[(*it)[1].str()] : &(*value)[std::stoul((*it)[2].str())];
+    return *value;
+}
+
+/// A key the object does not have, a slip of one of its own keys ("kerf" -> "kerff") when it has any.
+std::string misspelt(const json& object)
+{
+    std::string key = object.empty() ? std::string("colour") : object.begin().key() + "x";
+    while (object.contains(key))
+        key += "x";
+    return key;
+}
+
+/// For each object of `document` (which `read` takes), the paths of those that took a misspelt key
+/// without a word, or refused it naming something else.
+std::vector<std::string> takingUnknownKeys(const json& document, const Reader& read)
+{
+    std::vector<std::string> paths, taking;
+    objectsIn(document, "", paths);
+    for (const std::string& path : paths) {
+        json spoilt = document;
+        json& object = at(spoilt, path);
+        const std::string key = misspelt(object);
+        object[key] = 1;
+        const std::string named = path.empty() ? key : path + "." + key;
+        try {
+            read(spoilt);
+            taking.push_back(named + " (taken)");
+        } catch (const io::FormatError& e) {
+            if (std::string(e.what()).rfind(named + ": no such key", 0) != 0)
+                taking.push_back(named + " (refused as: " + e.what() + ")");
+        }
+    }
+    return taking;
+}
+
+std::vector<fs::path> filesEndingIn(const std::string& suffix)
+{
+    std::vector<fs::path> files;
+    for (const char* folder : {"examples", "tests/data"})
+        for (const auto& entry : fs::recursive_directory_iterator(fs::path(FABGUIDE_SOURCE_DIR) / folder)) {
+            const std::string name = entry.path().filename().string();
+            if (name.size() > suffix.size() &&
+                name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+                files.push_back(entry.path());
+        }
+    return files;
+}
+
+/// Every file ending in `suffix` (each must read as it is), spoilt object by object.
+void expectEveryObjectRefusesUnknownKeys(const std::string& suffix, const Reader& read)
+{
+    size_t files = 0;
+    for (const fs::path& file : filesEndingIn(suffix)) {
+        const json document = io::readJsonFile(file.string());
+        try {
+            read(document);
+        } catch (const io::FormatError& e) {
+            ADD_FAILURE() << file.filename().string() << " does not read: " << e.what();
+            continue;
+        }
+        ++files;
+        for (const std::string& taken : takingUnknownKeys(document, read))
+            ADD_FAILURE() << file.filename().string() << ": " << taken;
+    }
+    EXPECT_GT(files, 0u) << suffix;
+}
+
+}  // namespace
+
+TEST(UnknownKeys, EveryObjectOfAPackProblemRefusesAKeyItDoesNotKnow)
+{
+    expectEveryObjectRefusesUnknownKeys(".pack.json", [](const json& d) { io::readPackProblem(d); });
+}
+
+TEST(UnknownKeys, EveryObjectOfAWorkslikeModelRefusesAKeyItDoesNotKnow)
+{
+    expectEveryObjectRefusesUnknownKeys(".workslike.json", [](const json& d) { io::readWorkslike(d); });
+}
+
+TEST(UnknownKeys, EveryObjectOfAFlatpackDesignRefusesAKeyItDoesNotKnow)
+{
+    expectEveryObjectRefusesUnknownKeys(
+        ".flatpack.json", [](const json& d) { io::readFlatpack(d, io::Satisfied::NotRequired); });
+}
+
+TEST(UnknownKeys, EveryObjectOfALayoutRefusesAKeyItDoesNotKnow)
+{
+    size_t sawn = 0;
+    for (const fs::path& file : filesEndingIn(".pack.json"))
+        for (const material::Cuts cuts : {material::Cuts::Free, material::Cuts::Guillotine}) {
+            material::PackProblem problem = io::readPackProblem(io::readJsonFile(file.string()));
+            problem.settings.cuts = cuts;
+            material::OrderingSearchOptions search;
+            search.iterations = 0;
+            json layout;
+            try {
+                layout = io::layoutToJson(material::pack(problem, search), problem, io::PartNames::Ids);
+            } catch (const std::runtime_error&) {
+                continue;  // a job kept to show a part too large, or not rectangular for a saw
+            }
+            sawn += layout.contains("saw_cuts");
+            for (const std::string& taken : takingUnknownKeys(
+                     layout, [&](const json& d) { io::readLayout(d, problem, io::PartNames::Ids); }))
+                ADD_FAILURE() << file.filename().string() << " laid out: " << taken;
+        }
+    EXPECT_GT(sawn, 0u) << "no layout with saw cuts was spoilt";
+}
