@@ -123,11 +123,17 @@ double gridBytes(const PackProblem& problem)
 /// a job of rectangles is laid out without the grid then.
 void checkMemory(const PackProblem& problem)
 {
-    if (!allRectangles(problem))
+    if (allRectangles(problem))
+        return;
+    if (problem.strip)  // an ESICUP instance: its grid follows from the strip, not from a setting
+        needMemory(gridBytes(problem),
+                   "items: the strip, gridded at " + mm(problem.settings.resolution) +
+                       " mm a cell and as long as the pieces laid end to end, needs",
+                   ": fewer or shorter pieces need less");
+    else
         needMemory(gridBytes(problem),
                    "parts: the grid of their outlines at settings.resolution " +
-                       mm(problem.settings.resolution) + " mm" +
-                       (problem.strip ? " on a strip as long as the parts laid end to end" : "") + " needs",
+                       mm(problem.settings.resolution) + " mm needs",
                    ": a resolution twice as coarse needs a quarter as much");
 }
 

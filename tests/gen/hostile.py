@@ -220,7 +220,7 @@ def cases(limit):
     yield "pack: a 1 km ESICUP piece on a thin strip", strip, \
         {"items": [{"demand": 2, "allowed_orientations": [0],
                     "shape": {"type": "simple_polygon", "data": [[0, 0], [1e6, 0], [1e6, 5], [0, 10]]}}],
-         "strip_height": 20}, (OK, "items[0]", "the grid of their outlines"), within
+         "strip_height": 20}, (OK, "items[0]", "items: the strip, gridded at"), within
 
     yield "solve: 10,000 cuboids", solve, row(10000), OK, 11
     yield "solve: 10,001 cuboids", solve, row(10001), "more than 10000 cuboids", 11
