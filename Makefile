@@ -77,11 +77,11 @@ test-clang: clang-deps
 
 test-sanitize: clang-deps
 	$(SANITIZE_CONFIGURE)
-	$(call CPP_CHECK,build-sanitize,fuzz_pack fuzz_workslike fuzz_flatpack)
+	$(call CPP_CHECK,build-sanitize,fuzz_pack fuzz_workslike fuzz_flatpack fuzz_printable)
 
 fuzz: clang-deps
 	$(SANITIZE_CONFIGURE)
-	cmake --build build-sanitize -j$(JOBS) --target fuzz_pack fuzz_workslike fuzz_flatpack
+	cmake --build build-sanitize -j$(JOBS) --target fuzz_pack fuzz_workslike fuzz_flatpack fuzz_printable
 	tests/fuzz/run $(FUZZ_SECONDS) build-sanitize
 
 fuzz-products: all
