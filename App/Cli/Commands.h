@@ -3,10 +3,27 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+
 namespace fabguide::cli {
 
 /// A search's --seed: a whole number a double holds exactly (-1 and 2^64 were taken and wrapped, issue 35).
 inline const CLI::Range kSeeds(0LL, 9007199254740991LL);
+
+/// A number from `min` to `max`. CLI::Range alone lets "nan" through: it compares false both ways (found by
+/// tests/gen/cli_options.py).
+inline CLI::Validator between(double min, double max)
+{
+    const CLI::Validator aNumber(
+        [](std::string& text) {
+            double x = 0;
+            return CLI::detail::lexical_cast(text, x) && std::isnan(x)
+                       ? std::string("must be a number, got ") + text
+                       : std::string();
+        },
+        "");
+    return CLI::Range(min, max) & aNumber;
+}
 
 void addVersionCommand(CLI::App& app);
 void addPackCommand(CLI::App& app);

@@ -132,7 +132,7 @@ void addOptimiseCommand(CLI::App& app)
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
     cmd->add_option("--time-limit", args->options.timeLimit, "seconds")
-        ->check(CLI::Range(0.0, 86400.0))
+        ->check(between(0.0, 86400.0))
         ->capture_default_str();
     cmd->add_option("--rounds", args->options.rounds,
                     "G: rounds of ordering exploration and design improvement")

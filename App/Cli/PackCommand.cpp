@@ -109,6 +109,7 @@ void addPackCommand(CLI::App& app)
                     "PDF of labels for a label printer, one page per part cut");
     cmd->add_option("--label-size", args->files.labelSize, "label width and height in mm")
         ->delimiter('x')
+        ->check(between(10.0, 1000.0))
         ->capture_default_str();
     cmd->add_flag(
         "--text-labels", args->files.options.textLabels,
@@ -148,7 +149,7 @@ void addPackCommand(CLI::App& app)
     cmd->add_option(
            "--time-limit", args->search.timeLimit,
            "seconds for the run, from start-up to the files written (most of it the ordering search)")
-        ->check(CLI::Range(0.0, 86400.0))
+        ->check(between(0.0, 86400.0))
         ->capture_default_str();
     args->search.iterations = std::numeric_limits<long>::max();
     cmd->add_option("--iterations", args->search.iterations,

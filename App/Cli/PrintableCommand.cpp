@@ -141,16 +141,16 @@ void addPrintableCommand(CLI::App& app)
         ->check(CLI::IsMember({"fdm", "resin"}))
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
-        ->check(CLI::Range(0.01, 10.0));
+        ->check(between(0.01, 10.0));
     cmd->add_option(
            "--part-seconds", args->partSeconds,
            "what OpenCASCADE may take on one part or joint at each step before the run stops with an "
            "error naming it")
-        ->check(CLI::Range(0.001, 86400.0))
+        ->check(between(0.001, 86400.0))
         ->capture_default_str();
     auto* scale =
         cmd->add_option("--scale", args->scale, "print at this scale, e.g. 0.2 for 1:5 (the gap stays in mm)")
-            ->check(CLI::Range(0.001, 100.0))
+            ->check(between(0.001, 100.0))
             ->capture_default_str();
     cmd->add_option("--fit", args->fit,
                     "print at the largest scale (at most 1) that fits this build volume, WxDxH in mm, e.g. "

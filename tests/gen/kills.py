@@ -1,5 +1,5 @@
-"""Kills at random moments (issue 35): a command writes its set of files over the set an earlier run of another
-job left in the same folder and is killed, by SIGKILL or SIGTERM, at a random moment, its writes and renames
+"""Kills at random moments (issue 35): a command, or FreeCAD's Export Cut Sheets, writes its set of files over the
+set an earlier run of another job left in the same folder and is killed, by SIGKILL or SIGTERM, at a random moment, its writes and renames
 slowed by strace half of the time. Then the folder, read as fabguide reads it (a commit journal the kill left is
 completed first: this file's own reading of the journal), must hold one whole set, the old or the new; and after
 the next run, exactly that run's set and no stray file.
@@ -44,21 +44,23 @@ def pack_job(folder, quantity):
     return path
 
 
-def commands(work):
-    """Per command, the two jobs and how to run one into a folder."""
+def commands(cli, work):
+    """Per command, the two jobs and the command line that runs one into a folder."""
     return {
         "pack": ([pack_job(work, 40), pack_job(work, 60)],
-                 lambda job, out: ["pack", job, "-o", os.path.join(out, "layout.json"),
+                 lambda job, out: [cli, "pack", job, "-o", os.path.join(out, "layout.json"),
                                    "--svg", os.path.join(out, "svg"), "--dxf", os.path.join(out, "dxf"),
                                    "--csv", os.path.join(out, "cutlist.csv"), "--iterations", "3000",
                                    "--time-limit", "60"]),
         "optimise": ([os.path.join(EXAMPLES, name) for name in ("coffee-table.flatpack.json",
                                                                 "chest.flatpack.json")],
-                     lambda job, out: ["optimise", job, "-o", out, "--rounds", "1", "--threads", "1",
+                     lambda job, out: [cli, "optimise", job, "-o", out, "--rounds", "1", "--threads", "1",
                                        "--time-limit", "120"]),
         "printable": ([os.path.join(EXAMPLES, name) for name in ("box-with-lid.workslike.json",
                                                                  "sliding-box.workslike.json")],
-                      lambda job, out: ["printable", job, "-o", out]),
+                      lambda job, out: [cli, "printable", job, "-o", out]),
+        "FreeCAD export": ([os.path.join(EXAMPLES, name) for name in ("bookshelf.FCStd", "coffee-table.FCStd")],
+                           lambda job, out: [sys.executable, os.path.join(HERE, "export_layout.py"), job, out]),
     }
 
 
@@ -79,6 +81,8 @@ def content(path, name=None):
         return json.dumps(without_times(json.loads(data)), sort_keys=True)
     if name.endswith(".step"):
         return b"".join(line for line in io.BytesIO(data) if not line.startswith(b"FILE_NAME"))
+    if name.endswith(".pdf"):
+        return b"".join(line for line in io.BytesIO(data) if b"/CreationDate" not in line)
     if name.endswith(".3mf"):
         with zipfile.ZipFile(io.BytesIO(data)) as archive:
             return {name: archive.read(name) for name in sorted(archive.namelist())}
@@ -113,22 +117,22 @@ def whole(folder):
     return {path: content(os.path.join(folder, path)) for path in listing(folder)}
 
 
-def start(cli, argv, slowed):
-    return subprocess.Popen((SLOWED if slowed else []) + [cli] + argv,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+def start(argv, slowed):
+    return subprocess.Popen((SLOWED if slowed else []) + argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
 
-def worker(run, slowed):
-    """The fabguide process itself (strace's child when slowed): signals go to it, not to strace, nor to the
+def worker(run, argv, slowed):
+    """The process that writes (strace's child when slowed): signals go to it, not to strace, nor to the
     children strace forks at its start to try what the kernel allows."""
     if not slowed:
         return run.pid
     children = "/proc/{0}/task/{0}/children".format(run.pid)
+    program = os.path.basename(argv[0]).encode()
     for _ in range(5000):
         try:
             for pid in open(children).read().split():
                 with open("/proc/{}/cmdline".format(pid), "rb") as cmdline:
-                    if b"fabguide" in cmdline.read().split(b"\0")[0]:
+                    if os.path.basename(cmdline.read().split(b"\0")[0]) == program:
                         return int(pid)
         except OSError:
             if run.poll() is not None:
@@ -137,10 +141,10 @@ def worker(run, slowed):
     return None
 
 
-def reference(cli, argv, slowed=False):
-    """Runs `argv` to its end: (seconds taken, its error output)."""
+def reference(argv, slowed=False):
+    """Runs `argv` to its end: the seconds it took."""
     began = time.monotonic()
-    run = start(cli, argv, slowed)
+    run = start(argv, slowed)
     _, error = run.communicate(timeout=600)
     assert run.returncode == 0, error.decode()
     return time.monotonic() - began
@@ -154,16 +158,16 @@ def trials(cli, kills, seed, names=None):
     work = tempfile.mkdtemp(prefix="fabguide-kills-")
     rows = []
     try:
-        chosen = {name: spec for name, spec in commands(work).items() if names is None or name in names}
+        chosen = {name: spec for name, spec in commands(cli, work).items() if names is None or name in names}
         sets = {}
         for name, (jobs, argv) in chosen.items():
             sets[name] = []
             for k, job in enumerate(jobs):
                 out = os.path.join(work, "{}-{}".format(name, k))
-                plain = reference(cli, argv(job, out))
+                plain = reference(argv(job, out))
                 slow = plain
                 if slowable:
-                    slow = reference(cli, argv(job, os.path.join(work, "slow")), slowed=True)
+                    slow = reference(argv(job, os.path.join(work, "slow")), slowed=True)
                     shutil.rmtree(os.path.join(work, "slow"))
                 sets[name].append((out, whole(out), plain, slow))
             assert sets[name][0][1] != sets[name][1][1], name + ": the two jobs write the same set"
@@ -176,8 +180,8 @@ def trials(cli, kills, seed, names=None):
             moment = rng.uniform(0, 1.1 * (slow if slowed else plain))
             folder = os.path.join(work, "trial-{}".format(trial))
             shutil.copytree(old_folder, folder)
-            run = start(cli, argv(jobs[1], folder), slowed)
-            pid = worker(run, slowed)
+            run = start(argv(jobs[1], folder), slowed)
+            pid = worker(run, argv(jobs[1], folder), slowed)
             time.sleep(moment)
             try:
                 if pid:
@@ -196,7 +200,7 @@ def trials(cli, kills, seed, names=None):
                 failure = "a mixed or broken set: {} files differ from the old, {} from the new".format(
                     sum(seen.get(p) != old.get(p) for p in set(seen) | set(old)),
                     sum(seen.get(p) != new.get(p) for p in set(seen) | set(new)))
-            reference(cli, argv(jobs[0], folder))  # the next run
+            reference(argv(jobs[0], folder))  # the next run
             if not failure and whole(folder) != old:
                 strays = sorted(set(listing(folder)) - set(old))
                 failure = "after the next run: " + (", ".join(strays[:5]) if strays else "not its set")

@@ -14,6 +14,7 @@ import time
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gen"))
+import cli_options  # noqa: E402
 import hostile  # noqa: E402
 from hostile import changed  # noqa: E402
 import kills  # noqa: E402
@@ -186,10 +187,12 @@ def test_an_interrupted_search_leaves_the_last_results_and_exits_130_or_143(fabg
 
 
 def test_runs_killed_at_random_moments_leave_one_whole_set_and_no_stray_file(fabguide_cli):
-    """Issue 35: pack, optimise and printable killed (SIGKILL or SIGTERM) at random moments, their writes and
-    renames slowed half of the time: the folder always reads as the old set or the new one, never mixed, and
-    after the next run holds that run's set and nothing else (tests/gen/kills.py; 100 kills in the benchmark)."""
-    rows = kills.trials(fabguide_cli, 9, seed=35)
+    """Issue 35: pack, optimise, printable and FreeCAD's Export Cut Sheets killed (SIGKILL or SIGTERM) at random
+    moments, their writes and renames slowed half of the time: the folder always reads as the old set or the new
+    one, never mixed, and after the next run holds that run's set and nothing else (tests/gen/kills.py; 100 kills
+    in the benchmark)."""
+    rows = kills.trials(fabguide_cli, 12, seed=35)
+    assert {row[0] for row in rows} == {"pack", "optimise", "printable", "FreeCAD export"}
     assert [row for row in rows if row[5]] == []
 
 
@@ -246,6 +249,19 @@ def test_irregular_grids_past_the_memory_limit_are_refused_before_they_are_made(
     assert "2.0 GB of memory" in result.stderr and result.peak_kb < 200_000
 
 
+def test_an_esicup_strip_past_the_memory_limit_is_refused_naming_its_pieces_not_a_setting(fabguide_cli, tmp_path):
+    """An ESICUP instance has no settings.resolution to coarsen: its grid follows from the strip."""
+    piece = [[0, 0], [3000, 0], [3000, 40], [1500, 80], [0, 40]]
+    document = {"items": [{"demand": 400, "allowed_orientations": [0, 180],
+                           "shape": {"type": "simple_polygon", "data": piece}}], "strip_height": 100}
+    source = tmp_path / "long.json"
+    source.write_text(json.dumps(document))
+    result = run(fabguide_cli, "pack", str(source), "--strip", "-o", str(tmp_path / "out.json"), "--memory", "64M")
+    assert result.returncode == 1 and result.stderr.count("\n") == 1, result.stderr
+    assert "items: the strip, gridded at" in result.stderr and "fewer or shorter pieces" in result.stderr
+    assert "settings.resolution" not in result.stderr
+
+
 def test_a_strip_of_tall_rectangles_is_laid_out_within_the_memory_without_the_grid(fabguide_cli, tmp_path):
     """Issue 35: 300 items up to 1 km tall on a strip at 1 mm took 4.6 GB of grid and 21 s of a 5 s limit."""
     rng = random.Random(1)
@@ -291,3 +307,13 @@ def test_sixty_near_limit_and_hostile_inputs_finish_or_are_refused_by_name(fabgu
     rows = list(hostile.results(fabguide_cli, limit=2.0, timed=False))
     assert len(rows) >= 60
     assert [(row[0], row[6]) for row in rows if row[6]] == []
+
+
+def test_random_command_lines_finish_or_are_refused_in_one_line(fabguide_cli):
+    """Issue 35: every command's options (read from its --help) given values valid, at their limits and nonsense,
+    and output paths that are folders, links out of the folder or pipes: each run exits 0, or 1 with one line
+    'fabguide: error: ...', under 2 GB, writing nothing through the link (tests/gen/cli_options.py; ten minutes of
+    it in the benchmark)."""
+    rows = list(cli_options.runs(fabguide_cli, seed=35, count=40, minutes=0, timed=False))
+    assert len(rows) == 40 and {row[2] for row in rows} >= {0, 1}
+    assert [(row[1], row[4]) for row in rows if row[4]] == []
