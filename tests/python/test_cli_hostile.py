@@ -144,6 +144,20 @@ def test_command_line_ranges_are_checked_in_plain_numbers(fabguide_cli, source_d
     assert len(result.stderr) < 300, result.stderr  # not DBL_MAX in 300 digits
 
 
+@pytest.mark.parametrize("command, example, option", [
+    ("pack", "bookshelf.pack.json", "--time-limit"), ("pack", "bookshelf.pack.json", "--label-size"),
+    ("optimise", "coffee-table.flatpack.json", "--time-limit"), ("printable", "box-with-lid.workslike.json", "--gap"),
+    ("printable", "box-with-lid.workslike.json", "--scale"),
+    ("printable", "box-with-lid.workslike.json", "--part-seconds")])
+def test_nan_is_no_number_for_any_option(fabguide_cli, source_dir, tmp_path, command, example, option):
+    """CLI::Range compares nan false both ways and let it through: `--time-limit nan` ran (found by
+    tests/gen/cli_options.py)."""
+    value = "nanxnan" if option == "--label-size" else "nan"
+    result = run(fabguide_cli, command, os.path.join(source_dir, "examples", example), "-o", str(tmp_path / "x"),
+                 option, value)
+    assert result.returncode == 1 and "{}: must be a number, got nan".format(option) in result.stderr, result.stderr
+
+
 @pytest.mark.parametrize("option, value", [("--seed", "-1"), ("--seed", "18446744073709551616"),
                                            ("--iterations", "-5")])
 def test_seeds_and_iterations_out_of_range_are_refused_not_wrapped(fabguide_cli, source_dir, tmp_path, option, value):
