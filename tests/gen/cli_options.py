@@ -4,7 +4,6 @@ valid, at their limits, and nonsense. Whatever the line, the run must finish (ex
 (exit 1, "fabguide: error: ..."): no crash, no traceback, no hang, under 2 GB, nothing written outside its folder.
     python3 tests/gen/cli_options.py [--runs N | --minutes M] [--seed S]     exit 1 on a failure, its line kept"""
 import argparse
-import glob
 import os
 import random
 import re
@@ -144,8 +143,9 @@ def runs(cli, seed, count, minutes, timed=True):
         outside = folder + "-outside"
         try:
             argv = command_line(cli, options, folder, rng)
-            status, error, seconds, peak = hostile.run(cli, argv + ["--memory", "2G"], 90)
-            wrong = judge(status, error, seconds, peak, outside, timed)
+            r = hostile.run(cli, argv + ["--memory", "2G"], 90)
+            status, seconds = r.returncode, r.seconds
+            wrong = judge(status, r.stderr, seconds, r.peak_kb, outside, timed)
         finally:
             shutil.rmtree(folder, ignore_errors=True)
             shutil.rmtree(outside, ignore_errors=True)

@@ -289,13 +289,17 @@ def cases(limit):
 # --- running them -------------------------------------------------------------------------------------------
 
 def run(cli, argv, timeout):
-    """(exit status, stderr, seconds, peak KB) of one run. The peak is the process's own high-water mark, read
-    while it runs: wait4's includes what it had before exec, a copy of this script."""
+    """One run, killed past `timeout` seconds: a CompletedProcess with its `seconds` (wall), `cpu_seconds` (work,
+    which a busy machine does not stretch as it does wall time) and `peak_kb`, the process's own high-water mark
+    read while it runs (wait4's includes what it had before exec, a copy of this script; it stands in for a run
+    too short to be read)."""
     began = time.monotonic()
-    process = subprocess.Popen([cli] + argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    error = []
-    reader = threading.Thread(target=lambda: error.append(process.stderr.read()))
-    reader.start()
+    process = subprocess.Popen([cli] + argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    streams = {}
+    readers = [threading.Thread(target=lambda name=name: streams.__setitem__(name, getattr(process, name).read()))
+               for name in ("stdout", "stderr")]
+    for reader in readers:
+        reader.start()
     peak = 0
     while os.waitid(os.P_PID, process.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is None:
         try:
@@ -306,9 +310,15 @@ def run(cli, argv, timeout):
         if time.monotonic() - began > timeout:
             process.kill()
         time.sleep(0.005)
-    _, status, _ = os.wait4(process.pid, 0)
-    reader.join()
-    return os.waitstatus_to_exitcode(status), error[0], time.monotonic() - began, peak
+    _, status, usage = os.wait4(process.pid, 0)
+    for reader in readers:
+        reader.join()
+    result = subprocess.CompletedProcess([cli] + argv, os.waitstatus_to_exitcode(status), streams["stdout"],
+                                         streams["stderr"])
+    result.seconds = time.monotonic() - began
+    result.cpu_seconds = usage.ru_utime + usage.ru_stime
+    result.peak_kb = peak or usage.ru_maxrss
+    return result
 
 
 def judge(expect, status, error, seconds, peak, budget, timed):
@@ -340,7 +350,8 @@ def results(cli, limit=2.0, timed=True, only=""):
             with open(source, "w") as out:
                 out.write(document if isinstance(document, str) else json.dumps(document))
             argv = [a.replace("{in}", source).replace("{out}", folder) for a in command] + ["--memory", "2G"]
-            status, error, seconds, peak = run(cli, argv, budget + 60)
+            r = run(cli, argv, budget + 60)
+            status, error, seconds, peak = r.returncode, r.stderr, r.seconds, r.peak_kb
             wrong = judge(expect, status, error, seconds, peak, budget, timed)
         finally:
             shutil.rmtree(folder, ignore_errors=True)

@@ -8,7 +8,6 @@ import random
 import signal
 import subprocess
 import sys
-import threading
 import time
 
 import pytest
@@ -24,28 +23,8 @@ PACK = {"format": "fabguide.pack", "version": 1, "boards": [{"width": 2440, "hei
 
 
 def run(cli, *args, timeout=60):
-    """The command's result, with the processor time it took (`cpu_seconds`: work, which a busy machine does not
-    stretch as it does wall time) and its peak memory (`peak_kb`), both of that process alone."""
-    process = subprocess.Popen([cli, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    streams = {}
-    readers = [threading.Thread(target=lambda name=name: streams.__setitem__(name, getattr(process, name).read()))
-               for name in ("stdout", "stderr")]
-    for reader in readers:
-        reader.start()
-    ends = time.monotonic() + timeout
-    while os.waitid(os.P_PID, process.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is None:
-        if time.monotonic() > ends:
-            process.kill()
-            raise subprocess.TimeoutExpired([cli, *args], timeout)
-        time.sleep(0.01)
-    _, status, usage = os.wait4(process.pid, 0)
-    process.returncode = os.waitstatus_to_exitcode(status)
-    for reader in readers:
-        reader.join()
-    result = subprocess.CompletedProcess([cli, *args], process.returncode, streams["stdout"], streams["stderr"])
-    result.cpu_seconds = usage.ru_utime + usage.ru_stime
-    result.peak_kb = usage.ru_maxrss
-    return result
+    """The command's result with its `cpu_seconds` and `peak_kb`, of that process alone (hostile.run)."""
+    return hostile.run(cli, list(args), timeout)
 
 
 # (name, document, words the error must contain). Sizes a workshop cannot use, counts that once took GBs.
