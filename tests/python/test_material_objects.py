@@ -431,3 +431,54 @@ def test_free_rotation_lays_a_slat_across_an_offcut_it_fits_only_diagonally(doc)
     placed = json.loads(lay.LayoutJson)["placements"][0]
     assert placed["rotation"] % 90 != 0 and placed["rotation"] % 15 == 0
     assert placed["width"] <= 500 and placed["height"] <= 500
+
+
+# Labels a user (or a script) can give: line breaks, control characters, markup, unicode, a 20,000-character name,
+# paths and a Windows device name.
+HOSTILE_LABELS = ["line\nbreak", "bell\u0007 del\u007f", 'quote " & <tag>', "comma, semicolon; pipe|",
+                  "Tür – 棚 🪚", "x" * 20000, "../../escape", "CON"]
+
+
+def test_export_of_hostile_labels_gives_files_real_parsers_read_inside_the_folder(doc, tmp_path):
+    """Issue 35, the FreeCAD exports: boards and a layout labelled as users and scripts label them export files
+    that XML, DXF and CSV parsers read, named inside the folder given."""
+    import csv
+    import ezdxf
+
+    boards, masters = shelf_unit(doc)
+    for b, label in zip(boards, HOSTILE_LABELS):
+        b.Label = label
+    for label in ("../../escape", "CON", "line\nbreak"):
+        lay = layout.create(doc, boards, masters, label=label)
+        doc.recompute()
+        folder = tmp_path / "sheets"
+        written = layout.export_cut_sheets(lay, str(folder))
+        assert all(os.path.dirname(os.path.abspath(p)) == str(folder) for p in written), written
+        for path in written:
+            if path.endswith(".svg"):
+                ET.parse(path)
+            elif path.endswith(".dxf"):
+                ezdxf.readfile(path)
+            elif path.endswith("-cutlist.csv"):
+                with open(path, newline="", encoding="utf-8") as f:
+                    assert len(list(csv.reader(f))) == 1 + len(boards)
+    assert sorted(os.listdir(tmp_path)) == ["sheets"], "nothing beside the folder"
+
+
+def test_export_into_what_is_no_folder_is_refused_by_name_and_writes_nowhere(doc, tmp_path):
+    """A file, a pipe, or a link planted to a folder elsewhere: refused naming it, nothing written through."""
+    boards, masters = shelf_unit(doc)
+    lay = layout.create(doc, boards, masters)
+    doc.recompute()
+    (tmp_path / "a file").write_text("mine")
+    os.mkfifo(str(tmp_path / "a pipe"))
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    (tmp_path / "out").mkdir()
+    os.symlink(str(elsewhere / "victim.svg"), str(tmp_path / "out" / "Layout-sheet-1.svg"))
+    for folder in ("a file", "a pipe"):
+        with pytest.raises(Exception, match=folder):
+            layout.export_cut_sheets(lay, str(tmp_path / folder))
+    layout.export_cut_sheets(lay, str(tmp_path / "out"))
+    assert (tmp_path / "a file").read_text() == "mine" and os.listdir(str(elsewhere)) == []
+    assert not os.path.islink(str(tmp_path / "out" / "Layout-sheet-1.svg")), "the link is replaced, not followed"
