@@ -89,8 +89,9 @@ def run(seed, out):
         if properties.failed(lay):
             return {"seed": seed, "outcome": "layout refused", "error": lay.Error}
         post = rng.choice(["grbl", "linuxcnc"])
+        through = rng.choice([0.0, cam.THROUGH, 0.5])
         try:
-            jobs = cam.make_jobs(lay, bit=user_bit(out, diameter), post=post)
+            jobs = cam.make_jobs(lay, bit=user_bit(out, diameter), post=post, through=through)
         except cam.CamError as error:
             return {"seed": seed, "outcome": "refused", "error": str(error), "too_close": too_close}
         problem, result = json.loads(lay.ProblemJson), json.loads(lay.LayoutJson)
@@ -106,6 +107,7 @@ def run(seed, out):
                 roles.setdefault(shape, []).append(controller.ToolNumber)
             with open(stem + ".json", "w") as spec:
                 json.dump({"seed": seed, "post": post, "thickness": sheet["thickness"], "radius": diameter / 2,
+                           "through": through,
                            "parts": [dict(p, id=p["part"]) for p in placed if p["board"] == n],
                            "drills": sheet["drills"], "tools": roles, "dogbones": lay.Dogbone.Value > 0,
                            "tabbed": sorted({c["part"] for c in sheet["cuts"] if c["tabbed"] and not c["hole"]}),

@@ -131,12 +131,12 @@ def first_reach(targets, centres, order, reach):
 
 
 def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_tool=None, drills=(), strokes=(),
-             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, tol=0.025, step=0.5):
+             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, through=0.0, tol=0.025, step=0.5):
     """What is wrong with the G-code of one sheet. parts: [{'id', 'outline', 'holes'}] as designed, in sheet
     millimetres; tabbed: ids of parts whose outline may keep `tags` holding tags at most tab_width (plus the
     tool) long; drills: [{'at', 'diameter', 'depth'}]; strokes: the labels' strokes to engrave, [[(x, y)...]].
-    tol: CAM's geometry tolerance (a job's default 0.01 mm) on the model and on the path, and the G-code's
-    rounding."""
+    through: how far below the sheet the profiles must cut, and the mill may go. tol: CAM's geometry tolerance
+    (a job's default 0.01 mm) on the model and on the path, and the G-code's rounding."""
     found = []
     all_moves = moves(gcode)
     cut = [(i, m) for i, m in enumerate(all_moves) if m[0] == mill and m[1] in (1, 2, 3)]
@@ -144,7 +144,7 @@ def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_to
         return ["no feed moves of the mill (T{})".format(mill)]
     points = np.vstack([samples(m, step) for _, m in cut])
     order = np.concatenate([np.full(len(samples(m, step)), i) for i, m in cut])
-    if points[:, 2].min() < -tol:
+    if points[:, 2].min() < -through - tol:
         found.append("the mill cuts {:.3f} mm below the sheet".format(-points[:, 2].min()))
     in_board = points[:, 2] < thickness - tol
     for part in parts:
@@ -159,8 +159,8 @@ def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_to
             k = int(np.argmax(gouge))
             found.append("part '{}': the mill cuts into it at ({:.2f}, {:.2f}, {:.2f}), {:.3f} mm too close".format(
                 part["id"], *points[k], radius - near[k]))
-    through = points[:, 2] <= tol
-    deep, deep_order = points[through], order[through]
+    cut_through = points[:, 2] <= -through + tol
+    deep, deep_order = points[cut_through], order[cut_through]
     for part in parts:
         completed, corners = [], inside_corners(part)
         for n, contour in enumerate([part["outline"]] + list(part["holes"])):

@@ -196,6 +196,7 @@ def cam_job_from_the_layout_writes_checked_gcode():
     import gcode_checker
     from freecad.fabguide.core import fabguide_core
     from freecad.fabguide.gui import material_commands
+    from freecad.fabguide.material import cam
 
     doc, lay = state["doc"], state["layout"]
     kerf, spacing = lay.Kerf.Value, lay.Spacing.Value
@@ -224,7 +225,7 @@ def cam_job_from_the_layout_writes_checked_gcode():
     for n, sheet in enumerate(fabguide_core.cut_sheets(problem, result)):
         with open(os.path.join(folder, written[n])) as gcode:
             found = gcode_checker.problems(gcode.read(), [dict(p, id=p["part"]) for p in placed if p["board"] == n],
-                                           sheet["thickness"], 2.5)
+                                           sheet["thickness"], 2.5, through=cam.THROUGH)
         assert not found, found
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(jobs[0])

@@ -38,7 +38,8 @@ def check(spec, gcode):
     return gcode_checker.problems(
         gcode, spec["parts"], spec["thickness"], spec["radius"], mill=tools["endmill"][0],
         drill_tools=tools.get("drill", []), engrave_tool=(tools.get("v-bit") or [None])[0] if spec["labels"] else None,
-        drills=spec["drills"], strokes=spec["strokes"], tabbed=set(spec["tabbed"]), tab_width=spec["tab_width"], dogbones=spec["dogbones"])
+        drills=spec["drills"], strokes=spec["strokes"], tabbed=set(spec["tabbed"]), tab_width=spec["tab_width"],
+        dogbones=spec["dogbones"], through=spec["through"])
 
 
 def sheets(out):
@@ -88,8 +89,14 @@ def test_the_checker_finds_spoiled_gcode(posted):
     name, spec, gcode = next(iter(sheets(out)))
     assert check(spec, gcode) == [], name
     assert any("cuts into" in p for p in check(spec, spoiled(gcode, lambda x: x + 1.0)))  # shifted 1 mm
-    shallow = gcode.replace("Z0.000", "Z1.000")  # the last pass 1 mm short of the sheet's underside
+    import re
+    low = min(float(z) for z in re.findall(r"Z(-?\d+\.\d+)", gcode))
+    assert abs(low + spec["through"]) < 0.01, "the profiles cut to the allowance below the sheet"
+    shallow = gcode.replace("Z{:.3f}".format(low), "Z{:.3f}".format(low + 1))  # the last pass 1 mm short
     assert any("not cut through" in p for p in check(spec, shallow))
+    assert any("not cut through" in p for p in check(dict(spec, through=spec["through"] + 0.3), gcode))
+    deep = gcode.replace("Z{:.3f}".format(low), "Z{:.3f}".format(low - 1))  # 1 mm into the machine's bed
+    assert any("below the sheet" in p for p in check(spec, deep))
     assert check(dict(spec, radius=spec["radius"] + 1), gcode)  # a fatter tool than the one used
     cut = gcode.splitlines()
     assert check(spec, "\n".join(cut[: len(cut) // 2]))  # half the program

@@ -1,4 +1,5 @@
-"""Task panel of Make CAM Job: the user's tool bit, post-processor, feed and speed, and where the G-code goes. OK
+"""Task panel of Make CAM Job: the user's tool bit, post-processor, feed and speed, how far the profiles cut into
+the spoilboard, and where the G-code goes. OK
 makes one CAM job per master board of the layout (one undo step) and posts each; a refusal is said in the panel,
 which stays open to change what it names."""
 import json
@@ -27,6 +28,7 @@ class CamJobPanel:
         self.form.post.setCurrentText("grbl")
         self.form.feed.setValue(cam.FEED)
         self.form.spindle.setValue(cam.SPINDLE)
+        self.form.through.setValue(cam.THROUGH)
         doc = lay.Document
         self.form.folder.setText(os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~"))
         self.form.browseBit.clicked.connect(self.browse_bit)
@@ -53,7 +55,8 @@ class CamJobPanel:
         try:
             with transaction(doc, "Make CAM Job"):
                 jobs = cam.make_jobs(lay, bit=self.form.bit.currentData(), post=self.form.post.currentText(),
-                                     feed=self.form.feed.value(), spindle=self.form.spindle.value())
+                                     feed=self.form.feed.value(), spindle=self.form.spindle.value(),
+                                     through=self.form.through.value())
             written = (cam.write_gcode(jobs, self.form.folder.text(), layout.file_stem(lay.Label))
                        if self.form.gcodeBox.isChecked() else [])
         except (cam.CamError, layout.LayoutError, OSError) as error:

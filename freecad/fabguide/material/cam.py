@@ -19,6 +19,7 @@ FEED = 1500.0  # mm/min across the sheet: a router in plywood or MDF
 PLUNGE = 300.0  # mm/min down
 SPINDLE = 18000.0  # rpm
 ENGRAVE_DEPTH = 0.5  # mm below the face
+THROUGH = 0.2  # mm the profiles cut below the sheet, into the spoilboard, so that the parts come free
 TAGS = 2  # holding tags per tabbed outline
 BITS = {"end mill": "5mm_Endmill.fctb", "drill": "5mm_Drill.fctb", "v-bit": "60degree_Vbit.fctb"}
 
@@ -80,10 +81,13 @@ def jobs_of(lay):
     return [o for o in lay.Document.Objects if getattr(o, "FabGuideLayout", None) == lay and hasattr(o, "Operations")]
 
 
-def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE):
+def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=THROUGH):
     """Replaces the layout's CAM jobs with one per master board; `bit` = a tool bit file (*.fctb) for the
-    profiles (default: FreeCAD's 5 mm end mill). Returns the jobs."""
+    profiles (default: FreeCAD's 5 mm end mill); `through`: mm the profiles cut below the sheet. Returns the
+    jobs."""
     layout.current(lay)
+    if not 0 <= through <= 5:
+        raise CamError("cut through by {:g} mm: from 0 to 5 mm below the sheet".format(through))
     cam = workbench()
     if post not in cam.Preferences.allAvailablePostProcessors():
         raise CamError("no post-processor '{}' in FreeCAD (there are: {})".format(
@@ -99,7 +103,8 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE):
     remove_jobs(lay)
     sheets = fabguide_core.cut_sheets(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson))
     with plain_bits(cam):
-        jobs = [make_job(cam, lay, number, sheet, bit, post, feed, spindle) for number, sheet in enumerate(sheets, 1)]
+        jobs = [make_job(cam, lay, number, sheet, bit, post, feed, spindle, through)
+                for number, sheet in enumerate(sheets, 1)]
     lay.Document.recompute()
     return jobs
 
@@ -135,7 +140,7 @@ def remove_jobs(lay):
         doc.removeObject(obj.Name)  # the parts and labels the jobs were made from
 
 
-def make_job(cam, lay, number, sheet, bit, post, feed, spindle):
+def make_job(cam, lay, number, sheet, bit, post, feed, spindle, through):
     doc = lay.Document
     title = "{} sheet {}".format(lay.Label, number)
     parts, faces = part_solids(sheet)
@@ -150,7 +155,7 @@ def make_job(cam, lay, number, sheet, bit, post, feed, spindle):
     set_stock(cam, doc, job, sheet)
     base = job.Model.Group[0]
     mill = tool(cam, job, job.Tools.Group[0] if job.Tools.Group else None, bit, 1, feed, spindle)
-    profiles(cam, job, base, sheet, faces, mill, lay)
+    profiles(cam, job, base, sheet, faces, mill, lay, through)
     drillings(cam, job, base, sheet, feed, spindle)
     engraving(cam, job, lay, sheet, title, feed, spindle)
     return job
@@ -238,9 +243,9 @@ def tool_bit(cam, doc, bit_file):
     return cam.ToolBit.from_file(bit_file).attach_to_doc(doc=doc)
 
 
-def profiles(cam, job, base, sheet, faces, mill, lay):
+def profiles(cam, job, base, sheet, faces, mill, lay, through):
     """One profile per part outline, and one for each part's holes, in the core's cut order; the cut goes
-    through the board (to z = 0); holding tags and dogbones dress them as the layout asks."""
+    through the board, `through` mm below it; holding tags and dogbones dress them as the layout asks."""
     previous = None
     for cut in sheet["cuts"]:
         key = (cut["placement"], cut["hole"])
@@ -255,7 +260,7 @@ def profiles(cam, job, base, sheet, faces, mill, lay):
         op.processHoles, op.processPerimeter = cut["hole"], not cut["hole"]
         op.processCircles = cut["hole"]
         op.UseComp = True
-        depth(op, sheet["thickness"], 0.0)
+        depth(op, sheet["thickness"], -through)
         dressed = op
         if lay.Dogbone.Value > 0:
             job.Document.recompute()
