@@ -10,8 +10,7 @@ namespace fabguide::cli {
 /// A search's --seed: a whole number a double holds exactly (-1 and 2^64 were taken and wrapped, issue 35).
 inline const CLI::Range kSeeds(0LL, 9007199254740991LL);
 
-/// A number from `min` to `max`. CLI::Range alone lets "nan" through: it compares false both ways (found by
-/// tests/gen/cli_options.py).
+/// A number from `min` to `max`. CLI::Range alone lets "nan" through: it compares false both ways.
 inline CLI::Validator between(double min, double max)
 {
     const CLI::Validator aNumber(

@@ -129,8 +129,7 @@ def test_command_line_ranges_are_checked_in_plain_numbers(fabguide_cli, source_d
     ("printable", "box-with-lid.workslike.json", "--scale"),
     ("printable", "box-with-lid.workslike.json", "--part-seconds")])
 def test_nan_is_no_number_for_any_option(fabguide_cli, source_dir, tmp_path, command, example, option):
-    """CLI::Range compares nan false both ways and let it through: `--time-limit nan` ran (found by
-    tests/gen/cli_options.py)."""
+    """CLI::Range compares nan false both ways and let it through: `--time-limit nan` ran."""
     value = "nanxnan" if option == "--label-size" else "nan"
     result = run(fabguide_cli, command, os.path.join(source_dir, "examples", example), "-o", str(tmp_path / "x"),
                  option, value)
