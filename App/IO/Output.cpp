@@ -441,8 +441,13 @@ void checkWritableFolder(const std::string& folder)
 {
     std::error_code error;
     std::filesystem::path p = std::filesystem::absolute(folder, error);
-    while (p.has_relative_path() && !std::filesystem::exists(p, error))
+    while (p.has_relative_path() && !std::filesystem::exists(std::filesystem::symlink_status(p, error)))
         p = p.parent_path();  // the nearest folder that exists is where the new ones would be made
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(p, error)) &&
+        !std::filesystem::exists(p, error))
+        throw FormatError(folder + ": " + p.string() + " is a link to " +
+                          std::filesystem::read_symlink(p, error).string() +
+                          ", which does not exist; make that folder, or name another");
     if (!std::filesystem::is_directory(p, error))
         throw FormatError(folder + ": not a folder (" + p.string() + " is a file)");
     if (access(p.c_str(), W_OK | X_OK) != 0)

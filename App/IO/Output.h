@@ -46,7 +46,8 @@ void completeInterruptedRuns(const std::string& folder);
 /// (130, 143). Installed by the command-line tool.
 void removeTemporariesOnInterrupt();
 
-/// Throws FormatError naming `folder` unless it exists as a folder we may write in, or can be made.
+/// Throws FormatError naming `folder` unless it exists as a folder we may write in, or can be made (a link to
+/// nothing cannot).
 void checkWritableFolder(const std::string& folder);
 
 /// Throws FormatError naming `file` unless it is not a folder and its folder passes checkWritableFolder.

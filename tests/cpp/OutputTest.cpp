@@ -178,6 +178,24 @@ TEST(Output, ThePreviousSetsLeftoversGoOnlyOnceTheNewSetIsInPlace)
         << "written again, or never ours";
 }
 
+TEST(Output, AFolderThatIsALinkToNothingIsRefusedBeforeTheRunNamingWhereItLeads)
+{
+    const fs::path out = folder("dangling");
+    fs::create_symlink(out / "nowhere", out / "link");
+    for (const fs::path& asked : {out / "link", out / "link" / "sheets"}) {
+        try {
+            checkWritableFolder(asked.string());
+            ADD_FAILURE() << asked << " taken";
+        } catch (const FormatError& e) {
+            EXPECT_NE(std::string(e.what()).find("is a link to " + (out / "nowhere").string() +
+                                                 ", which does not exist"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    checkWritableFolder((out / "new" / "sheets").string());  // a folder to be made is fine
+}
+
 TEST(Output, ABatchWithinAnotherAddsToItsSetWhichOnlyTheOutermostCommits)
 {
     const fs::path out = folder("nested");

@@ -127,8 +127,10 @@ def judge(status, error, seconds, peak, outside, timed):
     """What is wrong with a run, or '' (its time judged only when `timed`: a test does not judge wall time)."""
     if os.path.exists(os.path.join(outside, "victim")):
         return "wrote through a link out of its folder"
-    if status == 1 and not error.startswith("fabguide: error: ") and "--help" not in error:
-        return "refused without 'fabguide: error:': " + error[:200]
+    said = error.strip().split("\n")[-1] if error.strip() else ""
+    if status == 1 and said.startswith("fabguide: error: ") and not any(
+            word in error for word in ("terminate", "Traceback", "internal error", "bad_alloc")):
+        error = said  # a search's progress lines may come before its refusal
     return hostile.judge((hostile.OK, "fabguide: error: "), status, error, seconds, peak, 60, timed)
 
 
