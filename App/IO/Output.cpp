@@ -148,14 +148,19 @@ bool plainName(const nlohmann::json& name)
     return !text.empty() && text != "." && text != ".." && text.find('/') == std::string::npos;
 }
 
-/// Completes the commit a killed run's journal describes: its temporaries still there are renamed into place
-/// and its leftovers removed, so the folder holds the whole new set, as if the kill had come a moment later.
-void rollForward(const std::filesystem::path& folder, const std::filesystem::path& journal, pid_t pid)
+nlohmann::json readJournal(const std::filesystem::path& journal)
 {
     std::ifstream in(journal);
-    nlohmann::json listed = nlohmann::json::parse(in, nullptr, false);  // discarded when it does not read
-    if (!listed.is_object())
-        listed = nlohmann::json::object();
+    const nlohmann::json listed =
+        nlohmann::json::parse(in, nullptr, false);  // discarded when it does not read
+    return listed.is_object() ? listed : nlohmann::json::object();
+}
+
+/// The renames and removals one journal lists in its own folder, done where its temporaries remain.
+void applyJournal(const std::filesystem::path& journal, pid_t pid)
+{
+    const std::filesystem::path folder = journal.parent_path();
+    const nlohmann::json listed = readJournal(journal);
     for (const nlohmann::json& rename : listed.value("renames", nlohmann::json::array())) {
         if (!rename.is_array() || rename.size() != 2 || !plainName(rename[0]) || !plainName(rename[1]))
             continue;
@@ -170,8 +175,37 @@ void rollForward(const std::filesystem::path& folder, const std::filesystem::pat
         if (plainName(name) && std::filesystem::is_regular_file(
                                    std::filesystem::symlink_status(folder / name.get<std::string>(), error)))
             std::filesystem::remove(folder / name.get<std::string>(), error);
-    std::filesystem::remove(journal, error);
-    rmdir(folder.c_str());  // a folder its removals left empty goes too
+}
+
+/// Completes the commit a killed run's journals describe, in every folder it touched: the temporaries still
+/// there are renamed into place and the leftovers removed, so the set is whole and new, as if the kill had
+/// come a moment later. Each journal names the batch's journals in every folder; unless all are there (this
+/// user's, of the ended run), the commit either had not begun its renames (its journals were being written)
+/// or had done them all (they were being removed), so nothing is renamed and the journal just goes.
+void rollForward(const std::filesystem::path& journal, pid_t pid)
+{
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::absolute(journal, error).lexically_normal();
+    std::vector<std::filesystem::path> batch;
+    for (const nlohmann::json& sibling : readJournal(journal).value(
+             "batch", nlohmann::json::array({self.string()})))  // one folder's, earlier
+        if (sibling.is_string())
+            batch.emplace_back(sibling.get<std::string>());
+    const std::string named = kJournal + std::to_string(pid) + "-";
+    const bool whole = std::find(batch.begin(), batch.end(), self) != batch.end() &&
+                       std::all_of(batch.begin(), batch.end(), [&](const std::filesystem::path& sibling) {
+                           return sibling.is_absolute() && sibling.filename().string().rfind(named, 0) == 0 &&
+                                  leftByEndedRun(sibling, pid);
+                       });
+    if (!whole)
+        batch = {self};
+    else
+        for (const std::filesystem::path& sibling : batch)
+            applyJournal(sibling, pid);
+    for (const std::filesystem::path& sibling : batch) {
+        std::filesystem::remove(sibling, error);
+        rmdir(sibling.parent_path().c_str());  // a folder its removals left empty goes too
+    }
 }
 
 /// Tidies what runs since ended left in `folder` (killed by SIGKILL, or the machine stopped): first a commit
@@ -187,7 +221,7 @@ void removeLeftovers(const std::filesystem::path& folder)
             if ((marker == kJournal && name.rfind(kJournal, 0) != 0) || !leftByEndedRun(entry.path(), pid))
                 continue;  // a journal's name begins with its marker; leftoverOf checked the rest
             if (marker == kJournal)
-                rollForward(folder, entry.path(), pid);
+                rollForward(entry.path(), pid);
             else
                 std::filesystem::remove(entry.path(), error);
         }
@@ -231,8 +265,9 @@ std::string temporaryFor(const std::string& path)
 }
 
 /// Writes, in each folder the commit touches, a journal `.fabguide-commit-PID-XXXXXX` of what it renames
-/// and removes there, before the first rename; removed after the last. A run killed between them leaves it,
-/// and the next run to use the folder completes the commit (rollForward): the set is then all new.
+/// and removes there, and the names of the batch's journals in all folders ("batch"), before the first
+/// rename; removed after the last. A run killed between them leaves them, and the next run to use any of the
+/// folders completes the commit in all of them (rollForward): the set is then all new.
 std::vector<std::filesystem::path> writeJournals(const std::vector<File>& renames,
                                                  const std::vector<std::string>& removes)
 {
@@ -251,16 +286,26 @@ std::vector<std::filesystem::path> writeJournals(const std::vector<File>& rename
         auto [journal, name] = inFolder(path);
         journal["removes"].push_back(name);
     }
-    std::vector<std::filesystem::path> journals;
+    std::vector<std::string> temporaries;
+    nlohmann::json batch = nlohmann::json::array();
     for (const auto& [folder, journal] : byFolder) {
-        const std::string temporary = temporaryFor((folder / kJournal).string());
+        temporaries.push_back(temporaryFor((folder / kJournal).string()));
+        batch.push_back((folder / (kJournal + std::to_string(getpid()) +
+                                   temporaries.back().substr(temporaries.back().size() - 7)))
+                            .string());
+    }
+    std::vector<std::filesystem::path> journals;
+    size_t k = 0;
+    for (auto& [folder, journal] : byFolder) {
+        const std::string& temporary = temporaries[k];
+        const std::filesystem::path named = batch[k++].get<std::string>();
+        journal["batch"] = batch;
         std::ofstream out(temporary);
         out << journal.dump();
         out.close();
-        const std::filesystem::path named =
-            folder / (kJournal + std::to_string(getpid()) + temporary.substr(temporary.size() - 7));
         if (!out || std::rename(temporary.c_str(), named.c_str()) != 0) {
-            std::remove(temporary.c_str());
+            for (const std::string& left : temporaries)
+                std::remove(left.c_str());
             for (const std::filesystem::path& made : journals)
                 std::remove(made.c_str());
             throw FormatError(folder.string() +

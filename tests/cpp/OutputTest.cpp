@@ -347,6 +347,53 @@ TEST(Output, AJournalSomeoneElsePlantedOrOfALiveRunIsNotFollowed)
     EXPECT_FALSE(fs::exists(out / (".fabguide-commit-" + pid + "-Ef34Gh")));
 }
 
+/// A batch's journals in folders a and b of `out`, as an ended run left them: each lists its temporary for
+/// sheet.svg and the batch; the journal of b only when `bothWritten`.
+pid_t twoFolderBatch(const fs::path& out, bool bothWritten)
+{
+    const pid_t ended = fork();
+    if (ended == 0)
+        _exit(0);
+    waitpid(ended, nullptr, 0);
+    const std::string pid = std::to_string(ended);
+    const fs::path a = out / "a", b = out / "b";
+    const std::string batch = "[\"" + (a / (".fabguide-commit-" + pid + "-Ab12Cd")).string() + "\", \"" +
+                              (b / (".fabguide-commit-" + pid + "-Ef34Gh")).string() + "\"]";
+    for (const auto& [folder, suffix] : {std::pair{a, "Ab12Cd"}, std::pair{b, "Ef34Gh"}}) {
+        fs::create_directories(folder);
+        writeText((folder / "sheet.svg").string(), "old");
+        const std::string temporary = ".sheet.svg.partial-" + pid + "-" + suffix;
+        writeText((folder / temporary).string(), "new");
+        if (folder == a || bothWritten)
+            writeText((folder / (".fabguide-commit-" + pid + "-" + suffix)).string(),
+                      R"({"renames": [[")" + temporary + R"(", "sheet.svg"]], "batch": )" + batch + "}");
+    }
+    return ended;
+}
+
+TEST(Output, ABatchKilledWhileWritingItsJournalsIsNotCompletedInAnyFolder)
+{
+    // The kill came after folder a's journal and before folder b's: no rename had begun, so the old set stays
+    // (completing a alone left a mixed set: found by the kill test, an optimise run of several folders).
+    const fs::path out = folder("half-journalled");
+    twoFolderBatch(out, false);
+    completeInterruptedRuns((out / "a").string());
+    completeInterruptedRuns((out / "b").string());
+    EXPECT_EQ(readText(out / "a" / "sheet.svg"), "old");
+    EXPECT_EQ(readText(out / "b" / "sheet.svg"), "old");
+    EXPECT_EQ(std::distance(fs::directory_iterator(out / "a"), {}), 1) << "journal and temporary gone";
+}
+
+TEST(Output, ABatchWhoseJournalsAreAllWrittenIsCompletedInEveryFolderByTheFirstRunToFindOne)
+{
+    const fs::path out = folder("journalled");
+    twoFolderBatch(out, true);
+    completeInterruptedRuns((out / "b").string());  // a run that only reads folder b
+    EXPECT_EQ(readText(out / "a" / "sheet.svg"), "new");
+    EXPECT_EQ(readText(out / "b" / "sheet.svg"), "new");
+    EXPECT_EQ(std::distance(fs::directory_iterator(out / "a"), {}), 1) << "a's journal went with b's";
+}
+
 TEST(Output, ASetCutShortInASubfolderTheNextRunNoLongerWritesIsCompletedThenReplaced)
 {
     // optimise killed while renaming a third suggestion's sheets; the next run finds two: suggestion-3/ kept

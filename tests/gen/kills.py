@@ -96,7 +96,8 @@ def listing(folder):
 
 def as_read(folder):
     """The set as fabguide reads it: a journal `.fabguide-commit-*` (JSON: renames [from, to] and removes, in
-    its own folder) is completed first, and the temporaries `.NAME.partial-*` are nobody's files."""
+    its own folder; batch: the commit's journals in every folder) is completed first when all its batch's
+    journals are there, and the temporaries `.NAME.partial-*` are nobody's files."""
     files = {}
     for root, _, names in os.walk(folder):
         for name in names:
@@ -104,6 +105,8 @@ def as_read(folder):
         for name in names:
             if name.startswith(".fabguide-commit-"):
                 journal = json.load(open(os.path.join(root, name)))
+                if not all(os.path.exists(sibling) for sibling in journal.get("batch", [])):
+                    continue  # its commit had not begun its renames, or had done them all
                 for source, target in journal.get("renames", []):
                     if os.path.join(root, source) in files:
                         files[os.path.join(root, target)] = files.pop(os.path.join(root, source))
