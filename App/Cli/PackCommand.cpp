@@ -109,7 +109,7 @@ void addPackCommand(CLI::App& app)
                     "PDF of labels for a label printer, one page per part cut");
     cmd->add_option("--label-size", args->files.labelSize, "label width and height in mm")
         ->delimiter('x')
-        ->check(between(10.0, 1000.0))
+        ->check(between(1.0, 1000.0))
         ->capture_default_str();
     cmd->add_flag(
         "--text-labels", args->files.options.textLabels,

@@ -73,16 +73,16 @@ def without_times(value):
 
 
 def content(path, name=None):
-    """What a file says, less what changes from run to run (times, dates, zip timestamps); `name`, the name it is
-    read as, tells its kind (a temporary's own name does not)."""
+    """What a file says, less what changes from run to run (times, dates, zip timestamps, a PDF's streams); `name`,
+    the name it is read as, tells its kind (a temporary's own name does not)."""
     data = open(path, "rb").read()
     name = name or path
     if name.endswith(".json"):
         return json.dumps(without_times(json.loads(data)), sort_keys=True)
     if name.endswith(".step"):
         return b"".join(line for line in io.BytesIO(data) if not line.startswith(b"FILE_NAME"))
-    if name.endswith(".pdf"):
-        return b"".join(line for line in io.BytesIO(data) if b"/CreationDate" not in line)
+    if name.endswith(".pdf"):  # its text: cairo's streams differ from run to run (dates, font subset tags)
+        return subprocess.run(["pdftotext", "-layout", path, "-"], capture_output=True).stdout
     if name.endswith(".3mf"):
         with zipfile.ZipFile(io.BytesIO(data)) as archive:
             return {name: archive.read(name) for name in sorted(archive.namelist())}
