@@ -9,13 +9,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    const auto document = fabguide::fuzz::parsed(data, size);
-    if (!document)
-        return 0;
-    fabguide::fuzz::runNamed([&] {
+    return fabguide::fuzz::onDocument(data, size, [](const nlohmann::json& document) {
         namespace m = fabguide::material;
         const fabguide::io::FlatpackDesign flatpack =
-            fabguide::io::readFlatpack(*document, fabguide::io::Satisfied::NotRequired);
+            fabguide::io::readFlatpack(document, fabguide::io::Satisfied::NotRequired);
         const Eigen::VectorXd X = flatpack.design.variables();
         m::unsatisfied(flatpack.design, X);
         m::ineffective(flatpack.design, X);
@@ -31,5 +28,4 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         for (Eigen::Index k = 0; k < sizes.size(); ++k)
             design.changePartSizes(design.start(), Eigen::VectorXd::Unit(sizes.size(), k) * 0.5);
     });
-    return 0;
 }

@@ -13,11 +13,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    const auto document = fabguide::fuzz::parsed(data, size);
-    if (!document)
-        return 0;
-    fabguide::fuzz::runNamed([&] {
-        const fabguide::function::Model model = fabguide::io::readWorkslike(*document);
+    return fabguide::fuzz::onDocument(data, size, [](const nlohmann::json& document) {
+        const fabguide::function::Model model = fabguide::io::readWorkslike(document);
         if (model.cuboids.size() > 8 || model.joints.size() > 3)
             return;
         const fabguide::printable::Printer printer{0.4, 5};
@@ -30,5 +27,4 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                                       folder.string());
         std::filesystem::remove_all(folder);
     });
-    return 0;
 }

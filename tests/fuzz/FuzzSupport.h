@@ -32,4 +32,14 @@ void runNamed(F&& f)
     }
 }
 
+/// A harness's body: `f` on the input parsed as JSON, its named errors let through; anything else is a
+/// finding.
+template <typename F>
+int onDocument(const uint8_t* data, size_t size, F&& f)
+{
+    if (const auto document = parsed(data, size))
+        runNamed([&] { f(*document); });
+    return 0;
+}
+
 }  // namespace fabguide::fuzz

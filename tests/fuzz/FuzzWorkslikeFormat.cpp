@@ -4,15 +4,11 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    const auto document = fabguide::fuzz::parsed(data, size);
-    if (!document)
-        return 0;
-    fabguide::fuzz::runNamed([&] {
-        const fabguide::function::Model model = fabguide::io::readWorkslike(*document);
+    return fabguide::fuzz::onDocument(data, size, [](const nlohmann::json& document) {
+        const fabguide::function::Model model = fabguide::io::readWorkslike(document);
         if (model.cuboids.size() > 24)
             return;
         const fabguide::function::SolveResult result = fabguide::function::solve(model);
         fabguide::io::workslikeToJson(result.model, &result);
     });
-    return 0;
 }

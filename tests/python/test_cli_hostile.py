@@ -306,6 +306,6 @@ def test_random_command_lines_finish_or_are_refused_in_one_line(fabguide_cli):
     and output paths that are folders, links out of the folder or pipes: each run exits 0, or 1 with one line
     'fabguide: error: ...', under 2 GB, writing nothing through the link (tests/gen/cli_options.py; ten minutes of
     it in the benchmark)."""
-    rows = list(cli_options.runs(fabguide_cli, seed=35, count=40, minutes=0, timed=False))
-    assert len(rows) == 40 and {row[2] for row in rows} >= {0, 1}
+    rows = list(cli_options.runs(fabguide_cli, seed=35, count=30, minutes=0, timed=False))
+    assert len(rows) == 30 and {row[2] for row in rows} >= {0, 1}
     assert [(row[1], row[4]) for row in rows if row[4]] == []
