@@ -131,10 +131,7 @@ struct ConstraintReader {
 
     std::string named(const std::string& fallback) const { return c.text("name", kind + " " + fallback); }
     void equal(const std::string& name, const Linear& e) { design.equalities.push_back({name, e}); }
-    Linear ref() const
-    {
-        return reference(design, c.has("ref") ? json["ref"] : nlohmann::json(), c.pathOf("ref"));
-    }
+    Linear ref() const { return reference(design, c.value("ref"), c.pathOf("ref")); }
     std::string refText() const { return json["ref"].get<std::string>(); }
 
     void equalKind()

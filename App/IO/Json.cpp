@@ -236,6 +236,13 @@ void Fields::header(const std::string& format, int version) const
     text("description", "");  // free text for people, in any document
 }
 
+const nlohmann::json& Fields::value(const std::string& key) const
+{
+    static const nlohmann::json absent;
+    const nlohmann::json* found = find(key);
+    return found ? *found : absent;
+}
+
 Eigen::Vector3d Fields::vector3(const std::string& key) const
 {
     const nlohmann::json& value = array(key);

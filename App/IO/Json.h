@@ -54,6 +54,8 @@ public:
     void header(const std::string& format, int version) const;
     /// A vector [x, y, z].
     Eigen::Vector3d vector3(const std::string& key) const;
+    /// The value at key as written, null when absent: for what the reader of that value checks itself.
+    const nlohmann::json& value(const std::string& key) const;
     /// The array at key (required unless `optional`, then empty when absent).
     const nlohmann::json& array(const std::string& key, bool optional = false) const;
     /// Refuses a key not in `known` (a misspelt "kerff" would otherwise be ignored without a word), naming it

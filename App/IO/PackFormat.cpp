@@ -126,17 +126,17 @@ void readShape(const Fields& part, material::PartSpec& p)
 }
 
 /// "edge_banding": {"L1": "oak 1 mm", ...}, the band on each named side.
-std::array<std::string, 4> readEdgeBanding(const Fields& part, const nlohmann::json& json)
+std::array<std::string, 4> readEdgeBanding(const Fields& part)
 {
     std::array<std::string, 4> banding;
     const std::string path = part.pathOf("edge_banding");
     if (!part.has("edge_banding"))
         return banding;
-    const auto found = json.find("edge_banding");
-    if (!found->is_object())
-        throw FormatError(path + ": must map sides (L1, L2, W1, W2) to band names, got " + found->dump());
-    const Fields bands(*found, path);
-    for (const auto& [side, band] : found->items()) {
+    const nlohmann::json& found = part.value("edge_banding");
+    if (!found.is_object())
+        throw FormatError(path + ": must map sides (L1, L2, W1, W2) to band names, got " + found.dump());
+    const Fields bands(found, path);
+    for (const auto& [side, band] : found.items()) {
         const auto& names = sideNames();
         const auto at = std::find(names.begin(), names.end(), side);
         if (at == names.end())
@@ -164,7 +164,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     p.orientations = readOrientations(part);
     p.followsGrain = part.flag("follow_grain", p.followsGrain);
     p.thickness = part.number("thickness", 0.0, 0.0);
-    p.edgeBanding = readEdgeBanding(part, json);
+    p.edgeBanding = readEdgeBanding(part);
     part.noOthers();
     return p;
 }
@@ -448,10 +448,9 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
         layout.sawCuts.emplace_back();
         for (size_t k = 0; k < sawn[i].size(); ++k) {
             const Fields c(sawn[i][k], at(at("saw_cuts", i), k));
-            layout.sawCuts.back().push_back(
-                {c.text("number"), c.integer("stage"), c.flag("trim", false),
-                 readPoint(c.has("from") ? sawn[i][k]["from"] : nlohmann::json(), c.pathOf("from")),
-                 readPoint(c.has("to") ? sawn[i][k]["to"] : nlohmann::json(), c.pathOf("to"))});
+            layout.sawCuts.back().push_back({c.text("number"), c.integer("stage"), c.flag("trim", false),
+                                             readPoint(c.value("from"), c.pathOf("from")),
+                                             readPoint(c.value("to"), c.pathOf("to"))});
             c.noOthers({"length"});  // written for people
         }
     }

@@ -78,8 +78,7 @@ function::Expression sum(const function::Model& model, const nlohmann::json& val
         }
         const Fields term(items[k], here);
         const function::Expression e =
-            quantity(model, term.has("quantity") ? items[k]["quantity"] : nlohmann::json(),
-                     here + ".quantity", term.number("times", 1.0));
+            quantity(model, term.value("quantity"), here + ".quantity", term.number("times", 1.0));
         term.noOthers();
         total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
     }
