@@ -93,8 +93,7 @@ def paths(folder, rng):
 
 def value(option, kind, folder, rng):
     """Mostly a value the option takes, else nonsense; an output path as people and attackers give them."""
-    if option in ("-o", "--output", "--svg", "--dxf", "--csv", "--report", "--opticutter", "--labels") or \
-            option.endswith("-folder"):
+    if option in ("--svg", "--dxf", "--csv", "--report", "--opticutter", "--labels"):  # -o: command_line's
         return paths(folder, rng)
     taken = valid(option, kind, rng)
     if taken is not None and rng.random() < 0.7:
