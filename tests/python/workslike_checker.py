@@ -363,6 +363,7 @@ class Model:
             self.configuration_order.append(c["name"])
         self.relationships = data.get("relationships", [])
         self.locks = data.get("locks", [])
+        self.material = {}  # posed_material's, per part and transform
 
     # ---- names
     def face(self, text):
@@ -527,9 +528,14 @@ def where(configuration, fraction=1.0):
 
 
 def posed_material(model, part, transform):
-    """Each solid cuboid of a part under a transform, with the cavities cut from it."""
-    return [(s, Oriented(s.lo, s.hi, transform), [Oriented(c.lo, c.hi, transform) for c in model.cavities_of(s)])
-            for s in model.solids(part)]
+    """Each solid cuboid of a part under a transform, with the cavities cut from it (kept: in most poses along
+    a motion most parts stand still)."""
+    key = (part, tuple(v for row in transform[0] for v in row), tuple(transform[1]))
+    if key not in model.material:
+        model.material[key] = [(s, Oriented(s.lo, s.hi, transform),
+                             [Oriented(c.lo, c.hi, transform) for c in model.cavities_of(s)])
+                            for s in model.solids(part)]
+    return model.material[key]
 
 
 def material_overlap(mp, mq, tol):
