@@ -245,6 +245,25 @@ def suggest_changes_the_spreadsheet_of_a_parametric_design():
     assert boards[2].Length.Value == sheet.get("side") - 24
 
 
+def a_design_the_search_refuses_is_said_with_the_boxes_labels():
+    """A box thinner than every master board: the search refuses it as the design's Status would, by the box's
+    label, not by its place in the core's document ("parts[1].size")."""
+    doc, shelf = state["doc"], state["parts"]["shelf"]
+    thickness = shelf.Height.Value
+    shelf.Height = 0.5
+    Gui.runCommand("FabGuide_Suggest")
+    from freecad.fabguide.gui import design_commands
+
+    panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
+    panel.wait()
+    said = panel.message.text()
+    assert "box 'shelf' size: its thinnest side 0.5" in said and "parts[" not in said, said
+    panel.reject()
+    guitest.settle(0.3)
+    shelf.Height = thickness
+    doc.recompute()
+
+
 def cancel_while_searching_leaves_nothing_running():
     doc = state["doc"]
     Gui.runCommand("FabGuide_Suggest")
@@ -263,6 +282,7 @@ guitest.run([
     constraints_from_picked_edges_faces_and_boxes,
     an_edit_keeps_the_constraints,
     suggest_shows_three_suggestions_and_applies_one_as_one_step,
+    a_design_the_search_refuses_is_said_with_the_boxes_labels,
     import_and_export_a_flatpack_design,
     suggest_changes_the_spreadsheet_of_a_parametric_design,
     cancel_while_searching_leaves_nothing_running,

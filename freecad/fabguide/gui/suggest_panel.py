@@ -11,7 +11,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from freecad.fabguide.core import fabguide_core
-from freecad.fabguide import cuboids
+from freecad.fabguide import cuboids, messages
 from freecad.fabguide.material import design, parametric
 from freecad.fabguide.gui import resources, viewproviders
 
@@ -77,7 +77,12 @@ class Boxes:
         return self.start["parts"]
 
     def search(self, progress, cancel, **options):
-        return fabguide_core.optimise(design.flatpack(self.obj), progress=progress, cancel=cancel, **options)
+        problem = design.flatpack(self.obj)
+        try:
+            return fabguide_core.optimise(problem, progress=progress, cancel=cancel, **options)
+        except fabguide_core.FormatError as error:  # said with the boxes' labels, as the design's Status says it
+            raise design.DesignError("Design '{}': {}".format(
+                self.obj.Label, messages.in_words(str(error), problem, messages.FLATPACK)))
 
     def path(self, suggestion):
         return [(step["parts"], step["usage"]) for step in suggestion["design"]["path"]]
