@@ -146,6 +146,21 @@ def nothing_is_made_from_a_layout_in_error():
     assert not lay.Error, lay.Error
 
 
+def no_board_is_made_from_a_layout():
+    """Make Board on the layout (its sheets are faces): refused by name, nothing made, no undo step."""
+    doc, lay = state["doc"], state["layout"]
+    objects, undo_steps = [o.Name for o in doc.Objects], doc.UndoCount
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(lay)
+    del boxes.told[:]
+    Gui.runCommand("FabGuide_MakeBoard")
+    guitest.settle(0.3)
+    assert boxes.told == ["Nothing made: 'Layout': is FabGuide's layout, not a part of your model (pick a sketch, a "
+                          "planar face or a thin solid)."], boxes.told
+    assert [o.Name for o in doc.Objects] == objects and doc.UndoCount == undo_steps
+    Gui.Selection.clearSelection()
+
+
 def pages_made_twice_are_redrawn_one_for_one():
     doc = state["doc"]
     mdi = Gui.getMainWindow().findChild(QtGui.QMdiArea)
@@ -181,6 +196,7 @@ guitest.run([
     a_second_panel_is_refused_in_one_sentence,
     a_kerf_typed_out_of_range_is_refused_whole_and_enter_keeps_the_panel,
     nothing_is_made_from_a_layout_in_error,
+    no_board_is_made_from_a_layout,
     pages_made_twice_are_redrawn_one_for_one,
     saved_is_unmodified,
 ])

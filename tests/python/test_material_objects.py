@@ -84,6 +84,9 @@ def test_selection_names_of_freecad_1_are_understood():
     assert board.element_name("Face12") == "Face12"
 
 
+SQUARE = [(0, 0), (100, 0), (100, 100), (0, 100), (0, 0)]
+
+
 @pytest.mark.parametrize("make, message", [
     (lambda doc: Part.makeSphere(50), "has no planar face"),
     (lambda doc: Part.makeCone(50, 20, 80), "not a flat board"),
@@ -91,8 +94,12 @@ def test_selection_names_of_freecad_1_are_understood():
     (lambda doc: Part.makeBox(150, 150, 150), "150 mm thick and 150 mm wide, a block or a post"),
     (lambda doc: Part.makeBox(50, 50, 700), "50 mm thick and 50 mm wide, a block or a post"),
     (lambda doc: Part.makeCylinder(20, 40), "40 mm thick and 40 mm wide, a block or a post"),
+    (lambda doc: Part.Compound([Part.makePolygon([FreeCAD.Vector(x, y, z) for x, y in SQUARE]) for z in (0, 50)]),
+     "its closed wires do not lie in one plane"),  # the sheets of a layout, drawn at their heights
+    (lambda doc: Part.makePolygon([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(100, 0, 0), FreeCAD.Vector(0, 0, 9)]),
+     "needs closed wires"),
 ])
-def test_solids_that_are_not_boards_are_refused_by_name(doc, make, message):
+def test_shapes_that_are_not_boards_are_refused_by_name(doc, make, message):
     source = doc.addObject("Part::Feature", "Blob")
     source.Shape = make(doc)
     b = board.create(doc, source, label="Odd")
@@ -100,6 +107,14 @@ def test_solids_that_are_not_boards_are_refused_by_name(doc, make, message):
         b.Proxy.recompute(b)
     doc.recompute()
     assert b.Error
+
+
+def test_fabguides_own_objects_make_no_board(doc):
+    """A master board (a layout, a board) is FabGuide's, not a part of the model: no board is made of it whole."""
+    master = master_board.create(doc, thickness=18)
+    doc.recompute()
+    with pytest.raises(board.BoardError, match="^'MasterBoard': is FabGuide's master board, not a part of your model"):
+        board.slab_of(master, None, 18, "'{}'".format(master.Label))
 
 
 def test_layout_packs_every_board_and_reports_usage(doc):

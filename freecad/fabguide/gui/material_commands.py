@@ -41,6 +41,7 @@ class MakeBoard(Command):
             return tell("Select sketches or planar faces first.")
         masters = all_in(doc, master_board.is_master_board)
         thickness = masters[0].Thickness.Value if masters else preferences.get("SheetThickness")
+        makes_boards(picks, thickness)
         with transaction(doc, "Make board"):
             made = [board.create(doc, source, board.element_name(sub) if sub else None, thickness,
                                  label=source.Label + " board") for source, sub in picks]
@@ -57,6 +58,7 @@ class BoardsFromSolids(Command):
             lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))))
         if not solids:
             return tell("Select the solids of your furniture model (flat boxes, pads, extrusions) first.")
+        makes_boards([(solid, None) for solid in solids], 0)  # a solid's thickness is its own
         with transaction(doc, "Boards from solids"):
             made = [board.create(doc, solid, label=solid.Label + " board") for solid in solids]
             finish_boards(doc, made)
@@ -91,6 +93,19 @@ class BandEdges(Command):
         FreeCAD.Console.PrintMessage("FabGuide: {} on {}\n".format(
             "'{}'".format(BandEdges.last) if BandEdges.last else "no band",
             ", ".join("{} {}".format(obj.Label, side) for obj, side in sides)))
+
+
+def makes_boards(picks, thickness):
+    """Before anything is made: each picked (object, face or None) makes a board, or BoardError says which
+    do not and why."""
+    reasons = []
+    for source, subelement in picks:
+        try:
+            board.slab_of(source, subelement, thickness, "'{}'".format(source.Label))
+        except board.BoardError as error:
+            reasons.append(str(error))
+    if reasons:
+        raise board.BoardError("Nothing made: {}.".format("; ".join(reasons)))
 
 
 def finish_boards(doc, made):

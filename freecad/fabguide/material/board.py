@@ -76,13 +76,22 @@ def make_slab(obj):
     if obj.Source is None:
         raise BoardError("Board '{}': no Source (select a sketch, a planar face or a thin solid)".format(obj.Label))
     source, subs = obj.Source
-    what = "Board '{}' (source '{}')".format(obj.Label, source.Label)
+    return slab_of(source, subs[0] if subs else None, obj.Thickness.Value,
+                   "Board '{}' (source '{}')".format(obj.Label, source.Label))
+
+
+def slab_of(source, subelement, thickness, what):
+    """(slab solid, thickness) of a board made from `source` (with `subelement`, a face of it), or BoardError
+    saying why it makes none, beginning with `what`."""
+    if not subelement and isinstance(getattr(source, "Proxy", None), properties.Proxy):  # a layout, a board
+        raise BoardError("{}: is FabGuide's {}, not a part of your model (pick a sketch, a planar face or a thin "
+                         "solid)".format(what, source.Proxy.NOUN.lower()))
     shape = getattr(source, "Shape", None)
     if shape is None or shape.isNull():
         raise BoardError("{}: the source has no shape".format(what))
-    if subs:
-        face = shape.getElement(element_name(subs[0]))
-        return extrude(face, obj.Thickness.Value, what), obj.Thickness.Value
+    if subelement:
+        face = shape.getElement(element_name(subelement))
+        return extrude(face, thickness, what), thickness
     if shape.Solids:
         if len(shape.Solids) > 1:
             raise BoardError("{}: the source holds {} solids; make one board per solid".format(what, len(shape.Solids)))
@@ -91,11 +100,13 @@ def make_slab(obj):
     closed = [wire for wire in shape.Wires if wire.isClosed()]
     if not closed:
         raise BoardError("{}: needs closed wires, a planar face or a solid".format(what))
+    if Part.Compound(closed).findPlane() is None:
+        raise BoardError("{}: its closed wires do not lie in one plane, so they do not outline a board".format(what))
     try:
         face = Part.makeFace(closed, "Part::FaceMakerBullseye")
     except Part.OCCError as error:
         raise BoardError("{}: its wires do not make a planar face ({})".format(what, error))
-    return extrude(face, obj.Thickness.Value, what), obj.Thickness.Value
+    return extrude(face, thickness, what), thickness
 
 
 def extrude(face, thickness, what):
