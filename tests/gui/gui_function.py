@@ -285,6 +285,28 @@ def a_fixed_joint_from_two_picked_boxes():
     assert said == ("'Knob part' already rides on 'Door part': pick the part to hold first, then the part it "
                     "rides on."), said
     assert len([o for o in doc.Objects if joints.is_joint(o)]) == 1
+    # A part is moved by one joint: a hinge on the knob says where it belongs; the door takes it.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(knob, cuboids.edge_element(knob, ("near", "top")))
+    said = guitest.told("FabGuide_AddHinge")
+    assert said == ("'Knob part' rides on 'Door part' by the fixed joint 'Knob part on Door part', and a part is "
+                    "moved by one joint: add this joint to 'Door part' (they move together), or delete the fixed "
+                    "joint and hold 'Door part' on 'Knob part' instead."), said
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(door, cuboids.edge_element(door, ("near", "left")))
+    Gui.runCommand("FabGuide_AddHinge")
+    hinge = next(o for o in doc.Objects if joints.is_joint(o) and joints.kind(o) == "hinge")
+    assert hinge.Part.Cuboids == [door]
+    plate = doc.addObject("Part::Box", "Plate")
+    cuboids.set_coordinates(plate, [110, 112, 20, 80, 20, 40])
+    doc.recompute()
+    Gui.Selection.clearSelection()  # the door picked first, to be held on the plate: backwards
+    Gui.Selection.addSelection(door)
+    Gui.Selection.addSelection(plate)
+    said = guitest.told("FabGuide_AddFixedJoint")
+    assert said == ("'Door part' is already moved by joint '{}' (a part is moved by one joint): pick the part to "
+                    "hold first, then the part it rides on.".format(hinge.Label)), said
+    assert len([o for o in doc.Objects if joints.is_joint(o)]) == 2
 
 
 def the_cellphone_made_printable_in_its_colours():

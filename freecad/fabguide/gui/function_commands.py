@@ -128,6 +128,24 @@ class MakeCavity(Command):
 
 
 
+def already_moved(doc, box, kind):
+    """Why the part of `box` can take no `kind` joint (a part is moved by one joint, or by double pivots side by
+    side), or None. A part riding on another by a fixed joint picked the wrong way round is said so."""
+    part = parts.part_of(doc.Objects, box)
+    moving = [j for j in all_in(doc, joints.is_joint) if part is not None and j.Part == part and
+              not (kind == joints.kind(j) == "double_pivot")]
+    if not moving:
+        return None
+    joint = moving[0]
+    if joints.kind(joint) == "fixed" and kind != "fixed":
+        return ("'{}' rides on '{}' by the fixed joint '{}', and a part is moved by one joint: add this joint to "
+                "'{}' (they move together), or delete the fixed joint and hold '{}' on '{}' instead.".format(
+                    part.Label, joint.Base.Label, joint.Label, joint.Base.Label, joint.Base.Label, part.Label))
+    return "'{}' is already moved by joint '{}' (a part is moved by one joint){}.".format(
+        part.Label, joint.Label, ": pick the part to hold first, then the part it rides on" if kind == "fixed"
+        else "")
+
+
 class AddJoint(Command):
     """Hinge: pick an edge; slide: a face (its normal is the direction); sliding hinge: an edge and a face.
     A box of another part picked too is the joint's base (it carries the joint)."""
@@ -142,6 +160,8 @@ class AddJoint(Command):
         if self.KIND != "hinge" and not faces:
             return tell("Pick a face of a box: the part slides along its normal.")
         mover = (edges or faces)[0][0]
+        if said := already_moved(doc, mover, self.KIND):
+            return tell(said)
         with transaction(doc, self.MENU):
             part = part_of(doc, mover)
             bases = [part_of(doc, o) for o, _ in chosen if cuboids.is_box(o) and part_of(doc, o) is not part]
@@ -183,6 +203,8 @@ class AddDoublePivot(Command):
         if len(points) != 2 or points[0][0] is points[1][0]:
             return tell("Pick a point on a face of the moving part's box, then one on the face of the part it "
                         "links to.")
+        if said := already_moved(doc, points[0][0], "double_pivot"):
+            return tell(said)
         with transaction(doc, self.MENU):
             part, base = part_of(doc, points[0][0]), part_of(doc, points[1][0])
             joint = vp.attach(joints.create(doc, "double_pivot", part, base=base, pivots=points))
@@ -207,6 +229,8 @@ class AddFixedJoint(Command):
         if owners[0] is not None and owners[1] is not None and rides_on(doc, owners[1], owners[0]):
             return tell("'{}' already rides on '{}': pick the part to hold first, then the part it rides on."
                         .format(owners[1].Label, owners[0].Label))
+        if said := already_moved(doc, boxes[0], "fixed"):
+            return tell(said)
         with transaction(doc, self.MENU):
             part, base = part_of(doc, boxes[0]), part_of(doc, boxes[1])
             joint = vp.attach(joints.create(doc, "fixed", part, base=base,
