@@ -27,3 +27,15 @@ def get(name):
     default = DEFAULTS[name]
     value = FreeCAD.ParamGet(PATH).GetFloat(name, default)
     return value if value > 0 else default
+
+
+def cam_speeds(material, defaults):
+    """(feed mm/min, spindle rpm) Make CAM Job last used for `material`, or `defaults`."""
+    group = FreeCAD.ParamGet(PATH + "/CamSpeeds")
+    return group.GetFloat(material + " feed", defaults[0]), group.GetFloat(material + " spindle", defaults[1])
+
+
+def remember_cam_speeds(material, feed, spindle):
+    group = FreeCAD.ParamGet(PATH + "/CamSpeeds")
+    group.SetFloat(material + " feed", feed)
+    group.SetFloat(material + " spindle", spindle)

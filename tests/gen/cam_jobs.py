@@ -74,8 +74,12 @@ def run(seed, out):
     doc = FreeCAD.newDocument("cam{}".format(seed))
     try:
         boards, t = carcass(doc, rng)
-        master = master_board.create(doc, rng.choice([1220.0, 1250.0]), rng.choice([1220.0, 2440.0, 2500.0]), t, count=0)
-        lay = layout.create(doc, boards, [master])
+        masters = [master_board.create(doc, rng.choice([1220.0, 1250.0]), rng.choice([1220.0, 2440.0, 2500.0]), t,
+                                       count=0)]
+        if rng.random() < 0.4:  # one sheet of plywood, then MDF: each material cut at its own feed and speed
+            masters[0].Count = 1
+            masters.append(master_board.create(doc, 1220.0, 2440.0, t, count=0, material="MDF"))
+        lay = layout.create(doc, boards, masters)
         diameter = rng.choice([3.175, 5.0, 6.0, 6.35])
         too_close = seed % 8 == 7
         lay.Spacing = 0 if too_close else rng.uniform(0, 3)
@@ -90,8 +94,13 @@ def run(seed, out):
             return {"seed": seed, "outcome": "layout refused", "error": lay.Error}
         post = rng.choice(["grbl", "linuxcnc"])
         through = rng.choice([0.0, cam.THROUGH, 0.5])
+        feeds = {m: rng.choice([800.0, cam.FEED, 2400.0]) for m in cam.materials(lay)}  # as the panel gives them
+        if rng.random() < 0.3:
+            feeds = cam.FEED  # a script's one feed for all
+        spindles = {m: rng.choice([12000.0, cam.SPINDLE]) for m in cam.materials(lay)}
         try:
-            jobs = cam.make_jobs(lay, bit=user_bit(out, diameter), post=post, through=through)
+            jobs = cam.make_jobs(lay, bit=user_bit(out, diameter), post=post, through=through, feed=feeds,
+                                 spindle=spindles)
         except cam.CamError as error:
             return {"seed": seed, "outcome": "refused", "error": str(error), "too_close": too_close}
         problem, result = json.loads(lay.ProblemJson), json.loads(lay.LayoutJson)
@@ -107,7 +116,8 @@ def run(seed, out):
                 roles.setdefault(shape, []).append(controller.ToolNumber)
             with open(stem + ".json", "w") as spec:
                 json.dump({"seed": seed, "post": post, "thickness": sheet["thickness"], "radius": diameter / 2,
-                           "through": through,
+                           "through": through, "material": sheet["material"],
+                           "feed": feeds[sheet["material"]] if isinstance(feeds, dict) else feeds,
                            "parts": [dict(p, id=p["part"]) for p in placed if p["board"] == n],
                            "drills": sheet["drills"], "tools": roles, "dogbones": lay.Dogbone.Value > 0,
                            "tabbed": sorted({c["part"] for c in sheet["cuts"] if c["tabbed"] and not c["hole"]}),

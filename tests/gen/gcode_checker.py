@@ -19,9 +19,9 @@ TOOL_CHANGE = re.compile(r"M0?6\s*T(\d+)")
 
 
 def moves(text):
-    """[(tool, kind, start, end, centre)] in machine order: kind 0-3 for G0-G3 (centre for arcs), 81 for a drill
-    cycle (its end is the hole's bottom)."""
-    position, tool, mode, result = [0.0, 0.0, 0.0], 0, 0, []
+    """[(tool, kind, start, end, centre, feed)] in machine order: kind 0-3 for G0-G3 (centre for arcs), 81 for a
+    drill cycle (its end is the hole's bottom); feed: the F in force (mm/min), None before the first."""
+    position, tool, mode, feed, result = [0.0, 0.0, 0.0], 0, 0, None, []
     for raw in text.splitlines():
         changed = TOOL_CHANGE.search(raw)
         if changed:
@@ -30,6 +30,7 @@ def moves(text):
         words = WORD.findall(line)
         codes = [int(float(v)) for k, v in words if k == "G"]
         values = {k: float(v) for k, v in words if k != "G"}
+        feed = values.get("F", feed)
         for code in codes:
             if code in (0, 1, 2, 3, 81, 82, 83):
                 mode = code
@@ -37,20 +38,20 @@ def moves(text):
             continue
         end = [values.get("X", position[0]), values.get("Y", position[1]), values.get("Z", position[2])]
         if mode in (81, 82, 83):
-            result.append((tool, 81, list(position), end, None))
+            result.append((tool, 81, list(position), end, None, feed))
             end = [end[0], end[1], values.get("R", position[2])]  # back to the retract plane
         elif mode in (2, 3):
             centre = (position[0] + values.get("I", 0.0), position[1] + values.get("J", 0.0))
-            result.append((tool, mode, list(position), end, centre))
+            result.append((tool, mode, list(position), end, centre, feed))
         else:
-            result.append((tool, mode, list(position), end, None))
+            result.append((tool, mode, list(position), end, None, feed))
         position = end
     return result
 
 
 def samples(move, step):
     """Points along a feed move, at most `step` apart (its end included)."""
-    _, kind, a, b, centre = move
+    _, kind, a, b, centre, _ = move
     a, b = np.array(a), np.array(b)
     if kind in (2, 3):
         r = math.hypot(a[0] - centre[0], a[1] - centre[1])
@@ -131,11 +132,13 @@ def first_reach(targets, centres, order, reach):
 
 
 def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_tool=None, drills=(), strokes=(),
-             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, through=0.0, tol=0.025, step=0.5):
+             tabbed=(), tab_width=0.0, tags=2, dogbones=False, engrave_depth=0.5, through=0.0, feed=None, tol=0.025,
+             step=0.5):
     """What is wrong with the G-code of one sheet. parts: [{'id', 'outline', 'holes'}] as designed, in sheet
     millimetres; tabbed: ids of parts whose outline may keep `tags` holding tags at most tab_width (plus the
     tool) long; drills: [{'at', 'diameter', 'depth'}]; strokes: the labels' strokes to engrave, [[(x, y)...]].
-    through: how far below the sheet the profiles must cut, and the mill may go. tol: CAM's geometry tolerance
+    through: how far below the sheet the profiles must cut, and the mill may go. feed: the mm/min every move of the
+    mill across the sheet (Z unchanged) must be fed at, if given. tol: CAM's geometry tolerance
     (a job's default 0.01 mm) on the model and on the path, and the G-code's rounding."""
     found = []
     all_moves = moves(gcode)
@@ -144,6 +147,10 @@ def problems(gcode, parts, thickness, radius, mill=1, drill_tools=(), engrave_to
         return ["no feed moves of the mill (T{})".format(mill)]
     points = np.vstack([samples(m, step) for _, m in cut])
     order = np.concatenate([np.full(len(samples(m, step)), i) for i, m in cut])
+    across = [m[5] for _, m in cut if abs(m[3][2] - m[2][2]) < 1e-9 and (m[1] != 1 or m[3][:2] != m[2][:2])]
+    if feed is not None and any(f is None or abs(f - feed) > 0.5 for f in across):
+        found.append("the mill is fed at {} mm/min across the sheet, not {:g}".format(
+            sorted({f for f in across if f is None or abs(f - feed) > 0.5}, key=str), feed))
     if points[:, 2].min() < -through - tol:
         found.append("the mill cuts {:.3f} mm below the sheet".format(-points[:, 2].min()))
     in_board = points[:, 2] < thickness - tol

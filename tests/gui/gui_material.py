@@ -211,6 +211,12 @@ def cam_job_from_the_layout_writes_checked_gcode():
     folder = tempfile.mkdtemp()
     form.findChild(QtGui.QLineEdit, "folder").setText(folder)
     cam_panel = material_commands.COMMANDS["FabGuide_MakeCamJob"].panel
+    speeds = form.findChild(QtGui.QTableWidget, "speeds")
+    assert [speeds.verticalHeaderItem(r).text() for r in range(speeds.rowCount())] == cam.materials(lay) == \
+        ["plywood"], "a row per material of the master boards"
+    assert speeds.cellWidget(0, 0).value() == cam.FEED and speeds.cellWidget(0, 1).value() == cam.SPINDLE
+    speeds.cellWidget(0, 0).setValue(2100)
+    print("screenshot: " + guitest.screenshot("material_cam_panel"))
     assert cam_panel.accept() is False  # parts 1.5 mm apart: too close for a 5 mm end mill
     assert "Kerf" in form.findChild(QtGui.QLabel, "message").text()
     set_cutting(doc, lay, 5.0, 1.0)  # the router's
@@ -225,8 +231,14 @@ def cam_job_from_the_layout_writes_checked_gcode():
     for n, sheet in enumerate(fabguide_core.cut_sheets(problem, result)):
         with open(os.path.join(folder, written[n])) as gcode:
             found = gcode_checker.problems(gcode.read(), [dict(p, id=p["part"]) for p in placed if p["board"] == n],
-                                           sheet["thickness"], 2.5, through=cam.THROUGH)
+                                           sheet["thickness"], 2.5, through=cam.THROUGH, feed=2100)
         assert not found, found
+    Gui.runCommand("FabGuide_MakeCamJob")  # the plywood's feed remembered for the next job
+    QtGui.QApplication.processEvents()
+    again = material_commands.COMMANDS["FabGuide_MakeCamJob"].panel
+    assert again.form.speeds.cellWidget(0, 0).value() == 2100, "remembered"
+    again.reject()
+    QtGui.QApplication.processEvents()
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(jobs[0])
     guitest.isometric()

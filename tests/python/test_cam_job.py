@@ -39,7 +39,7 @@ def check(spec, gcode):
         gcode, spec["parts"], spec["thickness"], spec["radius"], mill=tools["endmill"][0],
         drill_tools=tools.get("drill", []), engrave_tool=(tools.get("v-bit") or [None])[0] if spec["labels"] else None,
         drills=spec["drills"], strokes=spec["strokes"], tabbed=set(spec["tabbed"]), tab_width=spec["tab_width"],
-        dogbones=spec["dogbones"], through=spec["through"])
+        dogbones=spec["dogbones"], through=spec["through"], feed=spec["feed"])
 
 
 def sheets(out):
@@ -75,6 +75,7 @@ def test_the_jobs_cut_drill_engrave_and_tag(posted):
     assert any(s["drills"] for s in specs) and any(s["tabbed"] for s in specs)
     assert any(s["dogbones"] for s in specs) and any(s["labels"] for s in specs)
     assert {s["post"] for s in specs} == {"grbl", "linuxcnc"}
+    assert {s["material"] for s in specs} == {"plywood", "MDF"}, "sheets of two materials, each at its own feed"
     assert any(p["holes"] for s in specs for p in s["parts"])
 
 
@@ -98,5 +99,15 @@ def test_the_checker_finds_spoiled_gcode(posted):
     deep = gcode.replace("Z{:.3f}".format(low), "Z{:.3f}".format(low - 1))  # 1 mm into the machine's bed
     assert any("below the sheet" in p for p in check(spec, deep))
     assert check(dict(spec, radius=spec["radius"] + 1), gcode)  # a fatter tool than the one used
+    assert any("fed at" in p for p in check(dict(spec, feed=spec["feed"] + 100), gcode))  # another material's feed
     cut = gcode.splitlines()
     assert check(spec, "\n".join(cut[: len(cut) // 2]))  # half the program
+
+
+def test_a_feed_is_given_for_all_or_per_material_and_a_missing_one_is_named():
+    from freecad.fabguide.material import cam
+
+    assert cam.for_material(1200, "MDF", "feed") == 1200
+    assert cam.for_material({"MDF": 900, "oak": 1800}, "oak", "feed") == 1800
+    with pytest.raises(cam.CamError, match=r"^no spindle speed for the material 'oak' \(given for 'MDF'\)$"):
+        cam.for_material({"MDF": 18000}, "oak", "spindle speed")

@@ -1,5 +1,5 @@
-"""Task panel of Make CAM Job: the user's tool bit, post-processor, feed and speed, how far the profiles cut into
-the spoilboard, and where the G-code goes. OK
+"""Task panel of Make CAM Job: the user's tool bit, post-processor, feed and spindle speed per material (each
+remembered), how far the profiles cut into the spoilboard, and where the G-code goes. OK
 makes one CAM job per master board of the layout (one undo step) and posts each; a refusal is said in the panel,
 which stays open to change what it names."""
 import json
@@ -8,6 +8,7 @@ import os
 import FreeCAD
 import FreeCADGui
 
+from freecad.fabguide import preferences
 from freecad.fabguide.material import cam, layout
 from freecad.fabguide.gui import resources
 from freecad.fabguide.gui.command_base import transaction
@@ -26,13 +27,36 @@ class CamJobPanel:
         self.form.bit.setCurrentIndex(max(0, self.form.bit.findData(cam.library_bits().get(cam.BITS["end mill"]))))
         self.form.post.addItems(cam.post_processors())
         self.form.post.setCurrentText("grbl")
-        self.form.feed.setValue(cam.FEED)
-        self.form.spindle.setValue(cam.SPINDLE)
+        self.materials = cam.materials(lay)
+        self.show_speeds()
         self.form.through.setValue(cam.THROUGH)
         doc = lay.Document
         self.form.folder.setText(os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~"))
         self.form.browseBit.clicked.connect(self.browse_bit)
         self.form.browseFolder.clicked.connect(self.browse_folder)
+
+    def show_speeds(self):
+        """A row per material: its feed and spindle speed, as last used for it."""
+        from PySide import QtGui
+
+        table = self.form.speeds
+        table.setRowCount(len(self.materials))
+        table.setVerticalHeaderLabels(self.materials)
+        for row, material in enumerate(self.materials):
+            for column, (value, suffix, least, most, step) in enumerate(zip(
+                    preferences.cam_speeds(material, (cam.FEED, cam.SPINDLE)), (" mm/min", " rpm"), (10, 0), (50000, 60000), (100, 1000))):
+                box = QtGui.QDoubleSpinBox()
+                box.setDecimals(0)
+                box.setRange(least, most)
+                box.setSingleStep(step)
+                box.setSuffix(suffix)
+                box.setValue(value)
+                table.setCellWidget(row, column, box)
+        table.horizontalHeader().setSectionResizeMode(QtGui.QHeaderView.Stretch)  # no scrolling sideways
+
+    def speeds(self, column):
+        """{material: value} of the table's `column` (0 feed, 1 spindle speed)."""
+        return {m: self.form.speeds.cellWidget(row, column).value() for row, m in enumerate(self.materials)}
 
     def browse_bit(self):
         from PySide import QtGui
@@ -55,7 +79,7 @@ class CamJobPanel:
         try:
             with transaction(doc, "Make CAM Job"):
                 jobs = cam.make_jobs(lay, bit=self.form.bit.currentData(), post=self.form.post.currentText(),
-                                     feed=self.form.feed.value(), spindle=self.form.spindle.value(),
+                                     feed=self.speeds(0), spindle=self.speeds(1),
                                      through=self.form.through.value())
             written = (cam.write_gcode(jobs, self.form.folder.text(), layout.file_stem(lay.Label))
                        if self.form.gcodeBox.isChecked() else [])
@@ -63,6 +87,8 @@ class CamJobPanel:
             self.form.message.setText("<b>No CAM job made:</b> {}".format(error))
             FreeCAD.Console.PrintWarning("FabGuide: {}\n".format(error))
             return False
+        for material in self.materials:
+            preferences.remember_cam_speeds(material, self.speeds(0)[material], self.speeds(1)[material])
         FreeCAD.Console.PrintMessage("FabGuide: {} CAM job(s) for '{}'{}\n".format(
             len(jobs), lay.Label, "; wrote:\n  " + "\n  ".join(written) if written else ""))
         FreeCADGui.Control.closeDialog()

@@ -81,13 +81,34 @@ def jobs_of(lay):
     return [o for o in lay.Document.Objects if getattr(o, "FabGuideLayout", None) == lay and hasattr(o, "Operations")]
 
 
+def materials(lay):
+    """The materials of the layout's master boards, in their order: each may have its own feed and speed."""
+    return list(dict.fromkeys(board["material"] for board in json.loads(lay.ProblemJson)["boards"]))
+
+
+def for_material(value, material, what):
+    """A feed or spindle speed given as one number for every material, or as {material: number}."""
+    if not isinstance(value, dict):
+        return float(value)
+    if material not in value:
+        raise CamError("no {} for the material '{}' (given for {})".format(
+            what, material, ", ".join("'{}'".format(m) for m in value) or "none"))
+    return float(value[material])
+
+
 def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=THROUGH):
     """Replaces the layout's CAM jobs with one per master board; `bit` = a tool bit file (*.fctb) for the
-    profiles (default: FreeCAD's 5 mm end mill); `through`: mm the profiles cut below the sheet. Returns the
-    jobs."""
+    profiles (default: FreeCAD's 5 mm end mill); `feed` (mm/min) and `spindle` (rpm): one number, or one per
+    material ({material: number}); `through`: mm the profiles cut below the sheet. Returns the jobs."""
     layout.current(lay)
     if not 0 <= through <= 5:
         raise CamError("cut through by {:g} mm: from 0 to 5 mm below the sheet".format(through))
+    for material in materials(lay):
+        feeding, turning = for_material(feed, material, "feed"), for_material(spindle, material, "spindle speed")
+        if not 10 <= feeding <= 50000:
+            raise CamError("feed {:g} mm/min for '{}': from 10 to 50000 mm/min".format(feeding, material))
+        if not 0 <= turning <= 60000:
+            raise CamError("spindle speed {:g} rpm for '{}': from 0 to 60000 rpm".format(turning, material))
     cam = workbench()
     if post not in cam.Preferences.allAvailablePostProcessors():
         raise CamError("no post-processor '{}' in FreeCAD (there are: {})".format(
@@ -103,7 +124,8 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=TH
     remove_jobs(lay)
     sheets = fabguide_core.cut_sheets(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson))
     with plain_bits(cam):
-        jobs = [make_job(cam, lay, number, sheet, bit, post, feed, spindle, through)
+        jobs = [make_job(cam, lay, number, sheet, bit, post, for_material(feed, sheet["material"], "feed"),
+                         for_material(spindle, sheet["material"], "spindle speed"), through)
                 for number, sheet in enumerate(sheets, 1)]
     lay.Document.recompute()
     return jobs
