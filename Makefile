@@ -15,6 +15,7 @@
 #   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
 #   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
 #   make fuzz-products   PRODUCTS generated products (tests/gen) solved and checked, PRINTS of them printed too
+#   make translations    the .ts files of Resources/translations updated from the code and .ui files, and compiled
 SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -29,7 +30,7 @@ SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
 .PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
-	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14
+	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14 translations
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -96,3 +97,8 @@ format:
 
 clean:
 	rm -rf $(BUILD) build-clang build-sanitize
+
+translations:
+	pylupdate5 -noobsolete $$(git ls-files 'freecad/*.py') Resources/ui/*.ui \
+	  -ts Resources/translations/FabGuide.ts $(wildcard Resources/translations/FabGuide_*.ts)
+	for ts in Resources/translations/FabGuide_*.ts; do lrelease -silent $$ts; done

@@ -1,6 +1,7 @@
 """Native Part::Box objects as the core's axis-aligned cuboids (thesis 4.1.1): their coordinates, their faces
 and edges by name, and writing solved coordinates back."""
 import FreeCAD
+from freecad.fabguide.i18n import translate
 
 SIDES = ("left", "right", "near", "far", "bottom", "top")  # Part::Box Face1..Face6, x y z low/high
 SIZES = ("Length", "Width", "Height")  # along x, y, z
@@ -18,12 +19,14 @@ def coordinates(box):
     """[left, right, near, far, bottom, top] of an axis-aligned Part::Box."""
     placement = FreeCAD.Placement(box.Placement)  # a copy: Rotation.isSame on the property touches the box
     if not placement.Rotation.isSame(FreeCAD.Rotation(), 1e-9):
-        raise CuboidError("'{}' is rotated: FabGuide parts are axis-aligned boxes (reset its Placement "
-                          "rotation; joints turn parts in configurations)".format(box.Label))
+        raise CuboidError(translate("FabGuide", "'{}' is rotated: FabGuide parts are axis-aligned boxes (reset its "
+                                                "Placement rotation; joints turn parts in configurations)").format(
+            box.Label))
     base = placement.Base
     sizes = [getattr(box, s).Value for s in SIZES]
     if not all(abs(v) < 1e100 for v in list(base) + sizes):  # nan or inf, set from a script
-        raise CuboidError("'{}': its Length, Width, Height and Placement must be finite numbers".format(box.Label))
+        raise CuboidError(translate("FabGuide", "'{}': its Length, Width, Height and Placement must be finite "
+                                                "numbers").format(box.Label))
     return [c for a in range(3) for c in (base[a], base[a] + sizes[a])]
 
 
@@ -70,7 +73,7 @@ def change(label, before, after, tolerance=1e-6):
 def face_name(box, element):
     """"Face6" of a box → "Box.top" (the core's face name)."""
     if not element.startswith("Face") or not 1 <= int(element[4:]) <= 6:
-        raise CuboidError("'{}.{}' is not a face of the box".format(box.Label, element))
+        raise CuboidError(translate("FabGuide", "'{}.{}' is not a face of the box").format(box.Label, element))
     return "{}.{}".format(box.Label, SIDES[int(element[4:]) - 1])
 
 
@@ -81,7 +84,7 @@ def side_of(box, element):
 def edge_sides(box, element):
     """"Edge3" → the two sides whose faces meet there, e.g. ("left", "far"), from where the edge lies."""
     if not element.startswith("Edge"):
-        raise CuboidError("'{}.{}' is not an edge of the box".format(box.Label, element))
+        raise CuboidError(translate("FabGuide", "'{}.{}' is not an edge of the box").format(box.Label, element))
     centre = box.Shape.getElement(element).CenterOfMass
     bounds, sides = coordinates(box), []
     for a in range(3):
@@ -89,7 +92,7 @@ def edge_sides(box, element):
             if abs(centre[a] - bounds[2 * a + high]) < 1e-6 * max(1.0, abs(bounds[2 * a + high])):
                 sides.append(SIDES[2 * a + high])
     if len(sides) != 2:
-        raise CuboidError("'{}.{}' is not an edge of the box".format(box.Label, element))
+        raise CuboidError(translate("FabGuide", "'{}.{}' is not an edge of the box").format(box.Label, element))
     return tuple(sides)
 
 
@@ -98,4 +101,4 @@ def edge_element(box, sides):
     for n in range(1, len(box.Shape.Edges) + 1):
         if set(edge_sides(box, "Edge{}".format(n))) == set(sides):
             return "Edge{}".format(n)
-    raise CuboidError("'{}' has no edge between its {} and {} faces".format(box.Label, *sides))
+    raise CuboidError(translate("FabGuide", "'{}' has no edge between its {} and {} faces").format(box.Label, *sides))

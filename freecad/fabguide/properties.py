@@ -4,6 +4,7 @@ object, which says a mistake in the model in one plain sentence."""
 import FreeCAD
 
 from freecad import fabguide
+from freecad.fabguide.i18n import translate
 
 READ_ONLY, HIDDEN, OUTPUT = 1, 4, 8  # App::PropertyType flags
 
@@ -116,7 +117,7 @@ class Proxy(Stateless):
         before = getattr(self, "before", (None, None))
         problem = self.invalid(obj, prop)
         if problem and before[0] == prop and not obj.Document.Restoring:
-            FreeCAD.Console.PrintError("{}; kept {}\n".format(problem, shown(before[1])))
+            FreeCAD.Console.PrintError(translate("FabGuide", "{}; kept {}\n").format(problem, shown(before[1])))
             setattr(obj, prop, before[1])
 
     def invalid(self, obj, prop):

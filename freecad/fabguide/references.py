@@ -5,6 +5,7 @@ front for a geometric term ("2*width", "-left"); the formats and the messages re
 import FreeCAD
 
 from freecad.fabguide.properties import add
+from freecad.fabguide.i18n import translate
 
 
 class BrokenReference(ValueError):
@@ -24,7 +25,8 @@ def define(obj, name, group, doc, split=lambda text: [text]):
             try:
                 kept.append(link(by_label, piece, "{} of '{}'".format(name, obj.Label)))
             except BrokenReference as error:
-                FreeCAD.Console.PrintWarning("{}; left out when opening the document\n".format(error))
+                FreeCAD.Console.PrintWarning(translate("FabGuide", "{}; left out when opening the document\n").format(
+                    error))
         setattr(obj, name, kept)
     add(obj, "App::PropertyLinkSubList", name, group, doc)
 

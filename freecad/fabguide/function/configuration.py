@@ -3,6 +3,7 @@ import FreeCAD
 
 from freecad.fabguide import properties
 from freecad.fabguide.function import joints
+from freecad.fabguide.i18n import translate
 
 
 class Configuration(properties.Proxy):
@@ -63,7 +64,8 @@ def as_dict(obj):
     out = {}
     for joint, angle, offset in poses(obj):
         if not joints.is_joint(joint):
-            raise ValueError("Configuration '{}': '{}' is not a joint".format(obj.Label, joint.Label))
+            raise ValueError(translate("FabGuide", "Configuration '{}': '{}' is not a joint").format(
+                obj.Label, joint.Label))
         out[joint.Label] = pose_dict(joint, angle, offset, pole(obj, joint))
     return {"name": obj.Label, "poses": out}
 

@@ -5,6 +5,7 @@ of its Base by a rigid link (the solve places both pivots, 4.3.6); a fixed joint
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import parts
+from freecad.fabguide.i18n import translate
 
 AXES = ["x", "y", "z"]
 
@@ -104,32 +105,35 @@ def moves(obj):
 
 def as_dict(obj):
     if obj.Part is None:
-        raise JointError("Joint '{}': choose the Part it moves".format(obj.Label))
+        raise JointError(translate("FabGuide", "Joint '{}': choose the Part it moves").format(obj.Label))
     out = {"name": obj.Label, "type": kind(obj), "part": obj.Part.Label}
     if obj.Base is not None:
         out["base"] = obj.Base.Label
     if turns(obj):
         if obj.Edge is None or not obj.Edge[1]:
-            raise JointError("Joint '{}': choose the Edge it turns about".format(obj.Label))
+            raise JointError(translate("FabGuide", "Joint '{}': choose the Edge it turns about").format(obj.Label))
         box, elements = obj.Edge
         if box not in obj.Part.Cuboids:
-            raise JointError("Joint '{}': its edge is on '{}', which is not a box of part '{}'"
+            raise JointError(translate("FabGuide", "Joint '{}': its edge is on '{}', which is not a box of part '{}'")
                              .format(obj.Label, box.Label, obj.Part.Label))
         try:
             out["edge"] = ["{}.{}".format(box.Label, side) for side in cuboids.edge_sides(box, elements[0])]
         except cuboids.CuboidError as error:
-            raise JointError("Joint '{}': {}".format(obj.Label, error))
+            raise JointError(translate("FabGuide", "Joint '{}': {}").format(obj.Label, error))
     if slides(obj):
         out["axis"] = obj.Axis
     if kind(obj) == "fixed" and obj.Base is None:
-        raise JointError("Fixed joint '{}': choose the Base part it holds '{}' to".format(obj.Label, obj.Part.Label))
+        raise JointError(translate("FabGuide", "Fixed joint '{}': choose the Base part it holds '{}' to").format(
+            obj.Label, obj.Part.Label))
     if kind(obj) == "double_pivot":
         if obj.Base is None:
-            raise JointError("Double pivot '{}': choose the Base part it links to".format(obj.Label))
+            raise JointError(translate("FabGuide", "Double pivot '{}': choose the Base part it links to").format(
+                obj.Label))
         for key, face, point, part in (("pivot", obj.PivotFace, obj.Pivot, obj.Part),
                                        ("base_pivot", obj.BasePivotFace, obj.BasePivot, obj.Base)):
             if face is None or not face[1] or face[0] not in part.Cuboids:
-                raise JointError("Double pivot '{}': choose a face of a box of '{}' for its {}".format(
+                raise JointError(translate("FabGuide", "Double pivot '{}': choose a face of a box of '{}' for its "
+                                                       "{}").format(
                     obj.Label, part.Label, key.replace("_", " ")))
             out[key] = [cuboids.face_name(face[0], face[1][0]), list(point)]
     return out

@@ -8,6 +8,7 @@ import FreeCAD
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.function import configuration, joints, parts, relationships
+from freecad.fabguide.i18n import translate
 
 SATISFIED = "Satisfied"
 STALE = "Unknown: the mechanism did not solve (see its Status)"
@@ -135,7 +136,7 @@ def model(obj, locks=(), drawn_sizes=None):
             "locks": list(dict.fromkeys(references.names(obj.Locks) + list(locks))),
         }
     except ValueError as error:
-        raise MechanismError("Mechanism '{}': {}".format(obj.Label, error))
+        raise MechanismError(translate("FabGuide", "Mechanism '{}': {}").format(obj.Label, error))
 
 
 def solve(obj):
@@ -148,8 +149,8 @@ def solve(obj):
     try:
         solved = background.run("Solving " + obj.Label, lambda cancel: fabguide_core.solve(data), stoppable=False)
     except fabguide_core.FormatError as error:
-        raise MechanismError("Mechanism '{}': {}".format(obj.Label, messages.in_words(str(error), data,
-                                                                                      messages.WORKSLIKE)))
+        raise MechanismError(translate("FabGuide", "Mechanism '{}': {}").format(
+            obj.Label, messages.in_words(str(error), data, messages.WORKSLIKE)))
     report = solved["report"]
     conflict = report["conflict"]
     if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:
@@ -171,7 +172,7 @@ def solve(obj):
         FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, note))
     if not report["solved"]:
         obj.Status = "Conflict: " + ", ".join(conflict)
-        FreeCAD.Console.PrintWarning("{}: these cannot hold together: {}. {}\n".format(
+        FreeCAD.Console.PrintWarning(translate("FabGuide", "{}: these cannot hold together: {}. {}\n").format(
             obj.Label, ", ".join(conflict), what_to_do(conflict)))
         for note in report.get("notes", []):
             FreeCAD.Console.PrintWarning("  {}\n".format(note))

@@ -1,6 +1,7 @@
 """A works-like part (thesis 4.1.1): one or more native Part::Box objects moving together."""
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
+from freecad.fabguide.i18n import translate
 
 
 class FunctionalPart(properties.Proxy):
@@ -34,11 +35,13 @@ def is_part(obj):
 def as_dict(obj):
     """The part as *.workslike.json names it: cuboids named by their boxes' labels."""
     if not obj.Cuboids:
-        raise cuboids.CuboidError("Part '{}' has no boxes: add a Part::Box to its Cuboids".format(obj.Label))
+        raise cuboids.CuboidError(translate("FabGuide", "Part '{}' has no boxes: add a Part::Box to its "
+                                                        "Cuboids").format(obj.Label))
     out = []
     for box in list(obj.Cuboids) + list(obj.Cavities):
         if not cuboids.is_box(box):
-            raise cuboids.CuboidError("Part '{}': '{}' is not a Part::Box".format(obj.Label, box.Label))
+            raise cuboids.CuboidError(translate("FabGuide", "Part '{}': '{}' is not a Part::Box").format(
+                obj.Label, box.Label))
         c = cuboids.coordinates(box)
         out.append({"name": box.Label, "min": c[0::2], "max": c[1::2]})
         if box in obj.Cavities:

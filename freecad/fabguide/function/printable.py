@@ -7,6 +7,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.function import mechanism
+from freecad.fabguide.i18n import translate
 
 PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
 
@@ -55,7 +56,8 @@ class Printable(properties.Proxy):
         by_name = {child.BodyName: child for child in obj.Group if hasattr(child, "BodyName")}
         missing = [b["name"] for b in data["bodies"] if b["name"] not in by_name]
         if missing:
-            raise PrintableError("Printable '{}': the mechanism has new parts ({}); run Make Printable again"
+            raise PrintableError(translate("FabGuide", "Printable '{}': the mechanism has new parts ({}); run Make "
+                                                       "Printable again")
                                  .format(obj.Label, ", ".join(missing)))
         for b in data["bodies"]:
             shape = Part.Shape()
@@ -75,15 +77,17 @@ class Printable(properties.Proxy):
             obj.MinimumClearance = data["clearance"]
             obj.ClearanceAt = data["where"]
             if data["invalid"]:
-                raise PrintableError("Printable '{}': invalid solids: {}".format(obj.Label, ", ".join(data["invalid"])))
+                raise PrintableError(translate("FabGuide", "Printable '{}': invalid solids: {}").format(
+                    obj.Label, ", ".join(data["invalid"])))
             if data["loose"]:
-                raise PrintableError("Printable '{}': bodies that print in pieces ({}): a cut went through them, a "
-                                     "joint turning the wrong way round or a part in the way".format(
-                                         obj.Label, "; ".join(data["loose"])))
+                raise PrintableError(translate("FabGuide", "Printable '{}': bodies that print in pieces ({}): a cut "
+                                                           "went through them, a joint turning the wrong way round or "
+                                                           "a part in the way").format(
+                    obj.Label, "; ".join(data["loose"])))
             if data["clearance"] < obj.Gap.Value - 0.01:
-                FreeCAD.Console.PrintWarning("{}: parts come within {:.3f} mm of each other ({}), less than the {} mm "
-                                             "gap\n".format(obj.Label, data["clearance"], data["where"],
-                                                            obj.Gap.Value))
+                FreeCAD.Console.PrintWarning(translate("FabGuide", "{}: parts come within {:.3f} mm of each other "
+                                                                   "({}), less than the {} mm gap\n").format(
+                    obj.Label, data["clearance"], data["where"], obj.Gap.Value))
         obj.Notes = data["notes"]
         if obj.FitToBuildVolume:
             obj.Scale = data["scale"]
@@ -97,14 +101,14 @@ CAVITIES = "cavities swept"
 
 def bodies(obj):
     if obj.Mechanism is None:
-        raise PrintableError("Printable '{}': choose the Mechanism to print".format(obj.Label))
+        raise PrintableError(translate("FabGuide", "Printable '{}': choose the Mechanism to print").format(obj.Label))
     try:
         arguments = mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale, fit(obj)
         return background.run("Making {} printable".format(obj.Label),
                               lambda cancel: fabguide_core.printable(*arguments), stoppable=False)
     except (fabguide_core.FormatError, RuntimeError) as error:
-        raise PrintableError("Printable '{}': {}".format(obj.Label, messages.in_words(str(error), arguments[0],
-                                                                                      messages.WORKSLIKE)))
+        raise PrintableError(translate("FabGuide", "Printable '{}': {}").format(
+            obj.Label, messages.in_words(str(error), arguments[0], messages.WORKSLIKE)))
 
 
 def fit(obj):
@@ -113,7 +117,8 @@ def fit(obj):
         return None
     volume = tuple(obj.BuildVolume)
     if min(volume) <= 0:
-        raise PrintableError("Printable '{}': BuildVolume must be greater than 0 in x, y and z (is {:g} x {:g} x {:g})"
+        raise PrintableError(translate("FabGuide", "Printable '{}': BuildVolume must be greater than 0 in x, y and z "
+                                                   "(is {:g} x {:g} x {:g})")
                              .format(obj.Label, *volume))
     return volume
 
@@ -156,15 +161,17 @@ def export(obj, folder):
     bed when the fit says so); the paths written."""
     failed = [o for o in [obj] + obj.OutListRecursive if properties.failed(o)]
     if failed:  # recomputing does not mend it
-        raise PrintableError("Printable '{}': {}; mend that first".format(
+        raise PrintableError(translate("FabGuide", "Printable '{}': {}; mend that first").format(
             obj.Label, getattr(failed[0], "Error", "") or "'{}' is in error".format(failed[0].Label)))
     stale = [o.Label for o in [obj] + obj.OutListRecursive if "Touched" in o.State]
     if stale:
-        raise PrintableError("Printable '{}': not made from the mechanism as it stands ({} changed); recompute first"
+        raise PrintableError(translate("FabGuide", "Printable '{}': not made from the mechanism as it stands ({} "
+                                                   "changed); recompute first")
                              .format(obj.Label, ", ".join(stale)))
     made = [c for c in obj.Group if getattr(c, "BodyName", CAVITIES) != CAVITIES]
     empty = [c.Label for c in made if c.Shape.isNull()]
     if empty:
-        raise PrintableError("Printable '{}': {} not made yet; recompute it first".format(obj.Label, ", ".join(empty)))
+        raise PrintableError(translate("FabGuide", "Printable '{}': {} not made yet; recompute it first").format(
+            obj.Label, ", ".join(empty)))
     bodies = [{"name": c.BodyName, "brep": c.Shape.exportBrepToString()} for c in made]
     return fabguide_core.write_printable(bodies, folder, obj.TurnedOnBed)

@@ -1,6 +1,7 @@
 """Functional relationships (thesis 4.2–4.3): cover, fit inside, support, flush, and geometric relations. Each
 names the configuration it must hold in and shows its Status after the Mechanism solves."""
 from freecad.fabguide import cuboids, properties, references
+from freecad.fabguide.i18n import translate
 
 ARROW = " -> "  # how a pair of the corresponding-faces graph is written in Pairs
 
@@ -48,7 +49,7 @@ class FitInside(Relationship):
 
     def fields(self, obj):
         if obj.Enclosing is None:
-            raise ValueError("Fit inside '{}': choose the Enclosing part".format(obj.Label))
+            raise ValueError(translate("FabGuide", "Fit inside '{}': choose the Enclosing part").format(obj.Label))
         axes = [a.lower() for a in "XYZ" if getattr(obj, "Just" + a)]
         just = [{"part": p, "axes": axes} for p in labels(obj.Inner)] if obj.JustEach and axes else axes
         out = {"inner": labels(obj.Inner), "enclosing": obj.Enclosing.Label, "just": just}
@@ -82,7 +83,8 @@ class Flush(Relationship):
     def fields(self, obj):
         faces = [cuboids.face_name(box, element) for box, elements in obj.Faces for element in elements]
         if len(faces) != 2:
-            raise ValueError("Flush '{}': choose exactly two faces, got {}".format(obj.Label, len(faces)))
+            raise ValueError(translate("FabGuide", "Flush '{}': choose exactly two faces, got {}").format(
+                obj.Label, len(faces)))
         return {"faces": faces}
 
 
@@ -116,7 +118,8 @@ def terms(obj, texts):
         try:
             out.append({"quantity": quantity.strip(), "times": float(factor) if factor else 1.0})
         except ValueError:
-            raise ValueError("Geometric '{}': '{}' must read 'Box.side', 'Box.width' or 'factor*Box.width'"
+            raise ValueError(translate("FabGuide", "Geometric '{}': '{}' must read 'Box.side', 'Box.width' or "
+                                                   "'factor*Box.width'")
                              .format(obj.Label, text))
     return out
 
@@ -137,8 +140,9 @@ def pairs_or_distance(obj):
         return {"distance": obj.Distance.Value}
     faces = references.names(obj.Pairs)
     if len(faces) % 2:
-        raise ValueError("{} '{}': its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or "
-                         "correct them".format(type(obj.Proxy).__name__, obj.Label))
+        raise ValueError(translate("FabGuide", "{} '{}': its Pairs lost a face (a box was deleted?); re-infer them "
+                                               "(clear Pairs) or correct them").format(
+            type(obj.Proxy).__name__, obj.Label))
     return {"pairs": [faces[i:i + 2] for i in range(0, len(faces), 2)]}
 
 
@@ -184,7 +188,7 @@ def pair_links(obj, texts, boxes):
     for text in texts:
         ends = [t.strip() for t in text.split(ARROW.strip())]
         if len(ends) != 2:
-            raise ValueError("{} '{}': pair '{}' must read 'Box.side -> Box.side'".format(
+            raise ValueError(translate("FabGuide", "{} '{}': pair '{}' must read 'Box.side -> Box.side'").format(
                 type(obj.Proxy).__name__, obj.Label, text))
         faces += ends
     return references.links(boxes, faces, "{} '{}' pairs".format(type(obj.Proxy).__name__, obj.Label))

@@ -12,6 +12,7 @@ import FreeCAD
 import FreeCADGui
 
 from freecad.fabguide.gui import resources
+from freecad.fabguide.i18n import translate
 
 SOURCE = resources.ROOT
 PACKAGE = os.path.join(SOURCE, "freecad", "fabguide")
@@ -62,7 +63,7 @@ class BuildDialog:
 
         self.QtCore = QtCore
         self.dialog = QtGui.QDialog(FreeCADGui.getMainWindow())
-        self.dialog.setWindowTitle("Build FabGuide's core")
+        self.dialog.setWindowTitle(translate("FabGuide", "Build FabGuide's core"))
         layout = QtGui.QVBoxLayout(self.dialog)
         self.label = QtGui.QLabel("Building the core for this FreeCAD (Python {}.{}) in {}".format(
             *sys.version_info[:2], build_dir()))
@@ -119,15 +120,15 @@ class BuildDialog:
             self.outcome = "cancelled"
             self.process.kill()
             self.process.waitForFinished(5000)
-            self.label.setText("Cancelled: nothing was installed.")
-            self.button.setText("Close")
+            self.label.setText(translate("FabGuide", "Cancelled: nothing was installed."))
+            self.button.setText(translate("FabGuide", "Close"))
         else:
             self.dialog.close()
 
     def finish(self, outcome, message):
         self.outcome = outcome
         self.label.setText(message)
-        self.button.setText("Close")
+        self.button.setText(translate("FabGuide", "Close"))
         (FreeCAD.Console.PrintMessage if outcome == "built" else FreeCAD.Console.PrintError)(message + "\n")
 
 
@@ -146,9 +147,10 @@ class BuildCoreCommand:
 
         why_not = obstacle()
         if why_not:
-            FreeCAD.Console.PrintError("FabGuide: the core cannot be built: {}.\n".format(why_not))
-            QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "Build FabGuide's core",
-                                      "The core cannot be built: {}.".format(why_not))
+            FreeCAD.Console.PrintError(translate("FabGuide", "FabGuide: the core cannot be built: {}.\n").format(
+                why_not))
+            QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), translate("FabGuide", "Build FabGuide's core"),
+                                      translate("FabGuide", "The core cannot be built: {}.").format(why_not))
             return
         self.running = BuildDialog()
         self.running.start()

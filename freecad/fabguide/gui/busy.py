@@ -8,6 +8,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from freecad.fabguide import background
+from freecad.fabguide.i18n import translate
 
 QUIET = 0.4  # seconds: calls shorter than this show no dialog
 
@@ -35,7 +36,7 @@ def wait(title, thread, cancel, seconds, stoppable):
     """Shows the dialog until the thread ends; False when the user cancelled work that cannot stop early."""
     dialog = QtGui.QProgressDialog(title, "Stop" if stoppable else "Cancel", 0, 100 if seconds else 0,
                                    FreeCADGui.getMainWindow())
-    dialog.setWindowTitle("FabGuide")
+    dialog.setWindowTitle(translate("FabGuide", "FabGuide"))
     dialog.setWindowModality(QtCore.Qt.ApplicationModal)
     dialog.setMinimumDuration(0)
     dialog.setAutoClose(False)

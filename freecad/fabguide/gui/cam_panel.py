@@ -12,6 +12,7 @@ from freecad.fabguide import preferences
 from freecad.fabguide.material import cam, layout
 from freecad.fabguide.gui import resources
 from freecad.fabguide.gui.command_base import transaction
+from freecad.fabguide.i18n import translate
 
 PROFILE_SHAPES = ("endmill.fcstd", "bullnose.fcstd")  # bits that cut a flat-bottomed profile
 
@@ -84,12 +85,12 @@ class CamJobPanel:
             written = (cam.write_gcode(jobs, self.form.folder.text(), layout.file_stem(lay.Label))
                        if self.form.gcodeBox.isChecked() else [])
         except (cam.CamError, layout.LayoutError, OSError) as error:
-            self.form.message.setText("<b>No CAM job made:</b> {}".format(error))
-            FreeCAD.Console.PrintWarning("FabGuide: {}\n".format(error))
+            self.form.message.setText(translate("FabGuide", "<b>No CAM job made:</b> {}").format(error))
+            FreeCAD.Console.PrintWarning(translate("FabGuide", "FabGuide: {}\n").format(error))
             return False
         for material in self.materials:
             preferences.remember_cam_speeds(material, self.speeds(0)[material], self.speeds(1)[material])
-        FreeCAD.Console.PrintMessage("FabGuide: {} CAM job(s) for '{}'{}\n".format(
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: {} CAM job(s) for '{}'{}\n").format(
             len(jobs), lay.Label, "; wrote:\n  " + "\n  ".join(written) if written else ""))
         FreeCADGui.Control.closeDialog()
         return True

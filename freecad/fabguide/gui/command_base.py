@@ -8,6 +8,7 @@ import FreeCADGui
 
 from freecad.fabguide import properties
 from freecad.fabguide.gui import resources
+from freecad.fabguide.i18n import translate
 
 
 @contextlib.contextmanager
@@ -27,7 +28,7 @@ def tell(message):
     from PySide import QtGui
 
     FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
-    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), "FabGuide", message)
+    QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), translate("FabGuide", "FabGuide"), message)
 
 
 def selected(test):
@@ -108,7 +109,7 @@ class Group:
         return 0
 
     def GetResources(self):
-        return {"MenuText": self.menu, "ToolTip": self.tip}
+        return {"MenuText": translate("Workbench", self.menu), "ToolTip": translate("FabGuide", self.tip)}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -122,7 +123,8 @@ class Command:
     NEEDS = None  # a Gate on the active document (selecting, present, both); None: any open document
 
     def GetResources(self):
-        return {"Pixmap": resources.icon(self.ICON), "MenuText": self.MENU, "ToolTip": self.TIP}
+        return {"Pixmap": resources.icon(self.ICON), "MenuText": translate("FabGuide", self.MENU),
+                "ToolTip": translate("FabGuide", self.TIP)}
 
     def IsActive(self):
         doc = FreeCAD.ActiveDocument
@@ -139,7 +141,8 @@ class Command:
         except properties.mistakes() as error:
             tell(str(error))
         except OSError as error:  # a file picked that cannot be read or written: a folder, a missing one
-            tell("{}: cannot use '{}': {}.".format(self.MENU, error.filename, error.strerror or error))
+            tell(translate("FabGuide", "{}: cannot use '{}': {}.").format(
+                self.MENU, error.filename, error.strerror or error))
         except Exception as error:  # noqa: B902  (a user meets a sentence, whatever went wrong)
             unforeseen(self.MENU, error)
 
@@ -150,5 +153,6 @@ def unforeseen(what, error):
     import traceback
 
     FreeCAD.Console.PrintLog(traceback.format_exc())
-    tell("{} did not finish: {} ({}). Please report this, with what you did, at the FabGuide issue tracker.".format(
+    tell(translate("FabGuide", "{} did not finish: {} ({}). Please report this, with what you did, at the FabGuide "
+                               "issue tracker.").format(
         what, error, type(error).__name__))

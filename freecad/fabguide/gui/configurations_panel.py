@@ -10,6 +10,7 @@ from PySide import QtCore, QtGui
 from freecad.fabguide.function import configuration, joints, mechanism
 from freecad.fabguide.gui import editing, function_viewproviders as vp, resources
 from freecad.fabguide.gui.posing import Poser
+from freecad.fabguide.i18n import translate
 
 NEW = "New configuration"
 
@@ -51,8 +52,8 @@ class ConfigurationsPanel:
             moves = QtGui.QCheckBox(joint.Label)
             moves.setToolTip(joint.Label)
             angle, offset = quantity_box("deg", 360), quantity_box("mm", 1e5)
-            angle.setToolTip("Angle: its sign is the way the part swings")
-            offset.setToolTip("Offset along the slide")
+            angle.setToolTip(translate("FabGuide", "Angle: its sign is the way the part swings"))
+            offset.setToolTip(translate("FabGuide", "Offset along the slide"))
             moves.setEnabled(joints.moves(joint))
             grid.addWidget(moves, 2 * row, 0, 1, 3)
             for column, box, used in ((1, angle, joints.kind(joint) not in ("slide", "fixed")),
@@ -114,10 +115,10 @@ class ConfigurationsPanel:
     def animate(self):
         if self.timer.isActive():
             self.timer.stop()
-            self.play.setText("Play")
+            self.play.setText(translate("FabGuide", "Play"))
         else:
             self.timer.start(30)
-            self.play.setText("Stop")
+            self.play.setText(translate("FabGuide", "Stop"))
 
     def step(self):
         position = self.slider.value() + self.direction

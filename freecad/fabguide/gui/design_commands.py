@@ -10,6 +10,7 @@ from freecad.fabguide.material import design, master_board
 from freecad.fabguide.gui import editing, viewproviders
 from freecad.fabguide.gui.command_base import (Command, all_in, ask_open, ask_save, present, selected, selecting,
                                               tell, the_one, transaction)
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 AXES = "xyz"
 
@@ -47,7 +48,7 @@ def one_design(doc, boxes):
     """The one design all `boxes` belong to; tells the user otherwise."""
     designs = {design_of(doc, b) for b in boxes}
     if None in designs or len(designs) != 1:
-        tell("Pick boxes of one flat-pack design (use Flat-pack Design from Boxes first).")
+        tell(translate("FabGuide", "Pick boxes of one flat-pack design (use Flat-pack Design from Boxes first)."))
         return None
     return designs.pop()
 
@@ -62,21 +63,21 @@ def add(doc, kind, boxes, label=None, **values):
         viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
         doc.recompute()
     if "Broken" in obj.Status:
-        tell("{} does not hold for the design as it is: {}".format(obj.Label, obj.Status))
+        tell(translate("FabGuide", "{} does not hold for the design as it is: {}").format(obj.Label, obj.Status))
     return obj
 
 
 class DesignFromBoxes(Command):
-    ICON, MENU = "FabGuide_FlatpackDesign.svg", "Flat-pack Design from Boxes"
-    TIP = ("Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut "
-           "from the master boards selected with them, or a new one of their thickness; its usage updates as you "
-           "edit")
+    ICON, MENU = "FabGuide_FlatpackDesign.svg", QT_TRANSLATE_NOOP("FabGuide", "Flat-pack Design from Boxes")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a flat-pack design of the selected Part boxes (boards, their thinnest "
+                                        "side the thickness), cut from the master boards selected with them, or a new "
+                                        "one of their thickness; its usage updates as you edit")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = selected(cuboids.is_box)
         if not boxes:
-            return tell("Select the Part boxes your furniture is made of first.")
+            return tell(translate("FabGuide", "Select the Part boxes your furniture is made of first."))
         thickness = min(min(b.Length.Value, b.Width.Value, b.Height.Value) for b in boxes)
         try:
             with transaction(doc, "Flat-pack design"):
@@ -92,8 +93,8 @@ class DesignFromBoxes(Command):
 
 
 class ImportFlatpack(Command):
-    ICON, MENU = "FabGuide_ImportFlatpack.svg", "Import Flat-pack Design"
-    TIP = "Open a *.flatpack.json design: boxes, master boards, constraints and volumes"
+    ICON, MENU = "FabGuide_ImportFlatpack.svg", QT_TRANSLATE_NOOP("FabGuide", "Import Flat-pack Design")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Open a *.flatpack.json design: boxes, master boards, constraints and volumes")
 
     def run(self, doc):
         path = ask_open("Import flat-pack design", "Flat-pack designs (*.flatpack.json)")
@@ -105,7 +106,7 @@ class ImportFlatpack(Command):
                 decorate(obj)
                 doc.recompute()
         except (ValueError, RuntimeError, KeyError) as error:
-            return tell("Cannot import {}: {}".format(os.path.basename(path), error))
+            return tell(translate("FabGuide", "Cannot import {}: {}").format(os.path.basename(path), error))
         FreeCADGui.SendMsgToActiveView("ViewFit")
 
 
@@ -124,8 +125,9 @@ def decorate(obj):
 
 
 class ExportFlatpack(Command):
-    ICON, MENU = "FabGuide_ExportFlatpack.svg", "Export Flat-pack Design"
-    TIP = "Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)"
+    ICON, MENU = "FabGuide_ExportFlatpack.svg", QT_TRANSLATE_NOOP("FabGuide", "Export Flat-pack Design")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Write the selected design as *.flatpack.json (for `fabguide optimise` and bug "
+                                        "reports)")
     NEEDS = present(design.is_design)
 
     def run(self, doc):
@@ -154,7 +156,8 @@ class EdgesCommand(Command):
     def run(self, doc):
         edges = [(b, e) for b, e in picked() if e and e.startswith("Edge")]
         if len(edges) < self.LEAST:
-            return tell("Pick {} of boxes for {}.".format("an edge" if self.LEAST == 1 else "edges", self.MENU))
+            return tell((translate("FabGuide", "Pick an edge of a box for {}.") if self.LEAST == 1 else
+                         translate("FabGuide", "Pick edges of boxes for {}.")).format(translate("FabGuide", self.MENU)))
         refs = [edge_length(b, e) for b, e in edges]
         self.make(doc, [b for b, _ in edges], refs)
 
@@ -163,13 +166,13 @@ class EdgesCommand(Command):
 
 
 class EqualLengths(EdgesCommand):
-    ICON, MENU = "FabGuide_EqualLengths.svg", "Equal Lengths"
-    TIP = "The picked edges of boards keep equal lengths"
+    ICON, MENU = "FabGuide_EqualLengths.svg", QT_TRANSLATE_NOOP("FabGuide", "Equal Lengths")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "The picked edges of boards keep equal lengths")
 
 
 class SumOfLengths(EdgesCommand):
-    ICON, MENU = "FabGuide_SumOfLengths.svg", "Sum of Lengths"
-    TIP = "The lengths of the picked edges add up to the length of the last one picked"
+    ICON, MENU = "FabGuide_SumOfLengths.svg", QT_TRANSLATE_NOOP("FabGuide", "Sum of Lengths")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "The lengths of the picked edges add up to the length of the last one picked")
     KIND = "sum"
 
     def make(self, doc, boxes, refs):
@@ -177,8 +180,8 @@ class SumOfLengths(EdgesCommand):
 
 
 class FixedLength(EdgesCommand):
-    ICON, MENU = "FabGuide_FixedLength.svg", "Fixed Length"
-    TIP = "Each picked edge keeps its present length"
+    ICON, MENU = "FabGuide_FixedLength.svg", QT_TRANSLATE_NOOP("FabGuide", "Fixed Length")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Each picked edge keeps its present length")
     KIND, LEAST = "fixed", 1
 
     def make(self, doc, boxes, refs):
@@ -187,8 +190,9 @@ class FixedLength(EdgesCommand):
 
 
 class LengthRange(EdgesCommand):
-    ICON, MENU = "FabGuide_LengthRange.svg", "Length Range"
-    TIP = "Each picked edge may change by at most 25 % (edit Min and Max of the constraint)"
+    ICON, MENU = "FabGuide_LengthRange.svg", QT_TRANSLATE_NOOP("FabGuide", "Length Range")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Each picked edge may change by at most 25 % (edit Min and Max of the "
+                                        "constraint)")
     KIND, LEAST = "range", 1
 
     def make(self, doc, boxes, refs):
@@ -197,15 +201,16 @@ class LengthRange(EdgesCommand):
 
 
 class EqualPosition(Command):
-    ICON, MENU = "FabGuide_EqualPosition.svg", "Equal Position"
-    TIP = "The picked faces of boards stay level with each other (same coordinate along their normal)"
+    ICON, MENU = "FabGuide_EqualPosition.svg", QT_TRANSLATE_NOOP("FabGuide", "Equal Position")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "The picked faces of boards stay level with each other (same coordinate along "
+                                        "their normal)")
     NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def run(self, doc):
         faces = [(b, f) for b, f in picked() if f and f.startswith("Face")]
         refs = [face_position(b, f) for b, f in faces]
         if len(faces) < 2 or len({r[-1] for r in refs}) != 1:
-            return tell("Pick two or more parallel faces of boards for Equal Position.")
+            return tell(translate("FabGuide", "Pick two or more parallel faces of boards for Equal Position."))
         add(doc, "equal", [b for b, _ in faces], "Level " + " = ".join(refs), Refs=refs)
 
 
@@ -221,7 +226,7 @@ class BoxesCommand(Command):
         boxes = list(dict.fromkeys(b for b, _ in picked()))
         if len(boxes) < self.LEAST:
             boards = "a board" if self.LEAST == 1 else "{} or more boards".format(self.LEAST)
-            return tell("Pick {} for {}.".format(boards, self.MENU))
+            return tell(translate("FabGuide", "Pick {} for {}.").format(boards, self.MENU))
         self.make(doc, boxes)
 
     def make(self, doc, boxes):
@@ -229,25 +234,28 @@ class BoxesCommand(Command):
 
 
 class Ground(BoxesCommand):
-    ICON, MENU = "FabGuide_Ground.svg", "Ground Touching"
-    TIP = "The picked boards keep standing on the ground (their lowest face at the lowest board's level)"
+    ICON, MENU = "FabGuide_Ground.svg", QT_TRANSLATE_NOOP("FabGuide", "Ground Touching")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "The picked boards keep standing on the ground (their lowest face at the "
+                                        "lowest board's level)")
 
 
 class Coplanar(BoxesCommand):
-    ICON, MENU = "FabGuide_Coplanar.svg", "Coplanar"
-    TIP = "The picked parallel boards stay in one plane"
+    ICON, MENU = "FabGuide_Coplanar.svg", QT_TRANSLATE_NOOP("FabGuide", "Coplanar")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "The picked parallel boards stay in one plane")
     KIND, LEAST = "coplanar", 2
 
 
 class Snap(BoxesCommand):
-    ICON, MENU = "FabGuide_Snap.svg", "Snap"
-    TIP = "Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)"
+    ICON, MENU = "FabGuide_Snap.svg", QT_TRANSLATE_NOOP("FabGuide", "Snap")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Two touching boards stay touching, flush where they are flush (designs snap "
+                                        "all contacts by default)")
     KIND, LEAST = "snap", 2
 
 
 class Symmetric(BoxesCommand):
-    ICON, MENU = "FabGuide_Symmetric.svg", "Symmetric"
-    TIP = "Two boards stay mirror images about the plane midway between them (along the axis that separates them)"
+    ICON, MENU = "FabGuide_Symmetric.svg", QT_TRANSLATE_NOOP("FabGuide", "Symmetric")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Two boards stay mirror images about the plane midway between them (along the "
+                                        "axis that separates them)")
     KIND, LEAST = "symmetric", 2
 
     def make(self, doc, boxes):
@@ -266,14 +274,15 @@ def add_volume(doc, target, kind, at, size, on=None):
 
 
 class InnerVolume(Command):
-    ICON, MENU = "FabGuide_InnerVolume.svg", "Inner Volume"
-    TIP = "Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place"
+    ICON, MENU = "FabGuide_InnerVolume.svg", QT_TRANSLATE_NOOP("FabGuide", "Inner Volume")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Space that must stay free, resting on the picked board (a shelf for binders); "
+                                        "edit its size and place")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = list(dict.fromkeys(b for b, _ in picked()))
         if len(boxes) != 1:
-            return tell("Pick the one board the free space rests on.")
+            return tell(translate("FabGuide", "Pick the one board the free space rests on."))
         target = one_design(doc, boxes)
         if target is None:
             return
@@ -284,8 +293,9 @@ class InnerVolume(Command):
 
 
 class OuterVolume(Command):
-    ICON, MENU = "FabGuide_OuterVolume.svg", "Outer Volume"
-    TIP = "An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place"
+    ICON, MENU = "FabGuide_OuterVolume.svg", QT_TRANSLATE_NOOP("FabGuide", "Outer Volume")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "An envelope the selected design must stay inside (its box now, 10 % larger); "
+                                        "edit its size and place")
     NEEDS = present(design.is_design)
 
     def run(self, doc):
@@ -294,7 +304,8 @@ class OuterVolume(Command):
             return
         coords = [cuboids.coordinates(b) for b in design.boxes(target)]
         if not coords:
-            return tell("Design '{}' has no boxes to put an envelope round.".format(target.Label))
+            return tell(translate("FabGuide", "Design '{}' has no boxes to put an envelope round.").format(
+                target.Label))
         low = [min(c[2 * a] for c in coords) for a in range(3)]
         high = [max(c[2 * a + 1] for c in coords) for a in range(3)]
         margin = [0.05 * (h - l) for l, h in zip(low, high)]
@@ -304,9 +315,10 @@ class OuterVolume(Command):
 
 
 class Suggest(Command):
-    ICON, MENU = "FabGuide_Suggest.svg", "Suggest"
-    TIP = ("Search for design variations that keep your constraints and waste less material (or, for a design with "
-           "Parameters, spreadsheet values within their ranges); preview and accept")
+    ICON, MENU = "FabGuide_Suggest.svg", QT_TRANSLATE_NOOP("FabGuide", "Suggest")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Search for design variations that keep your constraints and waste less "
+                                        "material (or, for a design with Parameters, spreadsheet values within their "
+                                        "ranges); preview and accept")
     NEEDS = present(design.is_design)
 
     def run(self, doc):

@@ -3,6 +3,7 @@ re-activates the document of the current selection after a new document is made.
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
+from freecad.fabguide.i18n import translate
 
 # A task panel's OK and Cancel buttons as the number FreeCAD takes: PySide6 (FreeCAD 1.1) makes the flags an enum
 # that int() refuses.
@@ -40,7 +41,7 @@ def show(make, doc):
     if FreeCADGui.Control.activeDialog():
         from freecad.fabguide.gui.command_base import tell
 
-        tell("Another task panel is open: finish it with OK or Cancel first.")
+        tell(translate("FabGuide", "Another task panel is open: finish it with OK or Cancel first."))
         return None
     panel = make()
     panel.enter_keys = EnterKeys(panel)
@@ -134,5 +135,5 @@ class Watch:
             FreeCADGui.Control.closeDialog()
         else:
             close_panel(doc)
-        FreeCAD.Console.PrintMessage("FabGuide: the task panel closed: its document {}\n".format(
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: the task panel closed: its document {}\n").format(
             "closed" if closing else "changed by undo or redo"))

@@ -11,6 +11,7 @@ from freecad.fabguide.function import joints, mechanism, parts, printable, relat
 from freecad.fabguide.gui import editing, function_viewproviders as vp
 from freecad.fabguide.gui.command_base import (Command, all_in, ask_open, ask_save, both, present, selected, selecting,
                                               tell, the_one, transaction)
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 
 def picks():
@@ -76,14 +77,14 @@ def usable(boxes):
 
 
 class NewMechanism(Command):
-    ICON, MENU = "FabGuide_Mechanism.svg", "Mechanism from Boxes"
-    TIP = "Make a mechanism; each selected box (Part::Box) becomes one of its parts"
+    ICON, MENU = "FabGuide_Mechanism.svg", QT_TRANSLATE_NOOP("FabGuide", "Mechanism from Boxes")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a mechanism; each selected box (Part::Box) becomes one of its parts")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = usable([o for o in selected(cuboids.is_box) if parts.part_of(doc.Objects, o) is None])
         if not boxes:
-            return tell("Every picked box is already in a part: pick boxes that are not.")
+            return tell(translate("FabGuide", "Every picked box is already in a part: pick boxes that are not."))
         with transaction(doc, "New mechanism"):
             mech = vp.attach(mechanism.create(doc))
             mech.Group = [vp.attach(parts.create(doc, [b])) for b in boxes]
@@ -91,14 +92,14 @@ class NewMechanism(Command):
 
 
 class MakePart(Command):
-    ICON, MENU = "FabGuide_Part.svg", "Part from Boxes"
-    TIP = "Make one part of the selected boxes: they move together"
+    ICON, MENU = "FabGuide_Part.svg", QT_TRANSLATE_NOOP("FabGuide", "Part from Boxes")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make one part of the selected boxes: they move together")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
         boxes = usable(selected(cuboids.is_box))
         if not boxes:
-            return tell("Select the boxes (Part::Box) the part is made of.")
+            return tell(translate("FabGuide", "Select the boxes (Part::Box) the part is made of."))
         owned = [b.Label for b in boxes if parts.part_of(doc.Objects, b)]
         if owned:
             return tell("Already in a part: " + ", ".join(owned))
@@ -108,14 +109,16 @@ class MakePart(Command):
 
 
 class MakeCavity(Command):
-    ICON, MENU = "FabGuide_Cavity.svg", "Cavity"
-    TIP = "Select a box of a part, then boxes to cut out of it: openings and compartments"
+    ICON, MENU = "FabGuide_Cavity.svg", QT_TRANSLATE_NOOP("FabGuide", "Cavity")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Select a box of a part, then boxes to cut out of it: openings and "
+                                        "compartments")
     NEEDS = selecting(cuboids.is_box, least=2)
 
     def run(self, doc):
         boxes = selected(cuboids.is_box)
         if len(boxes) < 2:
-            return tell("Select a box of the part first, then the boxes that are cavities in it.")
+            return tell(translate("FabGuide", "Select a box of the part first, then the boxes that are cavities in "
+                                              "it."))
         owned = [b.Label for b in boxes[1:] if parts.part_of(doc.Objects, b)]
         if owned:
             return tell("Already in a part: " + ", ".join(owned))
@@ -156,9 +159,10 @@ class AddJoint(Command):
         chosen = picks()
         edges, faces = picked_elements("Edge") if self.KIND != "slide" else [], picked_elements("Face")
         if self.KIND != "slide" and len(edges) != 1:
-            return tell("Pick the one edge of a box the {} turns about.".format(self.MENU.lower()[4:]))
+            return tell(translate("FabGuide", "Pick the one edge of a box the {} turns about.").format(
+                self.MENU.lower()[4:]))
         if self.KIND != "hinge" and not faces:
-            return tell("Pick a face of a box: the part slides along its normal.")
+            return tell(translate("FabGuide", "Pick a face of a box: the part slides along its normal."))
         mover = (edges or faces)[0][0]
         if said := already_moved(doc, mover, self.KIND):
             return tell(said)
@@ -174,35 +178,38 @@ class AddJoint(Command):
 
 
 class AddHinge(AddJoint):
-    ICON, MENU, KIND = "FabGuide_Hinge.svg", "Add Hinge", "hinge"
-    TIP = "Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)"
+    ICON, MENU, KIND = "FabGuide_Hinge.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Hinge"), "hinge"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick an edge of a box: its part turns about it (and a box of another part it "
+                                        "hangs on, if any)")
     NEEDS = selecting(cuboids.is_box, "Edge")
 
 
 class AddSlide(AddJoint):
-    ICON, MENU, KIND = "FabGuide_Slide.svg", "Add Slide", "slide"
-    TIP = "Pick a face of a box: its part slides along the face's normal"
+    ICON, MENU, KIND = "FabGuide_Slide.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Slide"), "slide"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick a face of a box: its part slides along the face's normal")
     NEEDS = selecting(cuboids.is_box, "Face")
 
 
 class AddSlidingHinge(AddJoint):
-    ICON, MENU, KIND = "FabGuide_SlidingHinge.svg", "Add Sliding Hinge", "sliding_hinge"
-    TIP = "Pick an edge and a face of a box: its part turns about the edge, which slides along the face's normal"
+    ICON, MENU, KIND = "FabGuide_SlidingHinge.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Sliding Hinge"), "sliding_hinge"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick an edge and a face of a box: its part turns about the edge, which slides "
+                                        "along the face's normal")
     NEEDS = both(selecting(cuboids.is_box, "Edge"), selecting(cuboids.is_box, "Face"))
 
 
 class AddDoublePivot(Command):
-    ICON, MENU = "FabGuide_DoublePivot.svg", "Add Double Pivot"
-    TIP = ("Pick a point on a face of the moving part's box, then one on the face of the part it links to, in the "
-           "same plane: a rigid link joins them (the solve places both pivots)")
+    ICON, MENU = "FabGuide_DoublePivot.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Double Pivot")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick a point on a face of the moving part's box, then one on the face of the "
+                                        "part it links to, in the same plane: a rigid link joins them (the solve "
+                                        "places both pivots)")
     NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def run(self, doc):
         points = [(s.Object, sub, point) for s in FreeCADGui.Selection.getSelectionEx() if cuboids.is_box(s.Object)
                   for sub, point in zip(s.SubElementNames, s.PickedPoints) if sub.startswith("Face")]
         if len(points) != 2 or points[0][0] is points[1][0]:
-            return tell("Pick a point on a face of the moving part's box, then one on the face of the part it "
-                        "links to.")
+            return tell(translate("FabGuide", "Pick a point on a face of the moving part's box, then one on the face "
+                                              "of the part it links to."))
         if said := already_moved(doc, points[0][0], "double_pivot"):
             return tell(said)
         with transaction(doc, self.MENU):
@@ -214,20 +221,22 @@ class AddDoublePivot(Command):
 
 
 class AddFixedJoint(Command):
-    ICON, MENU = "FabGuide_Fixed.svg", "Add Fixed Joint"
-    TIP = ("Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints "
-           "as one body with it")
+    ICON, MENU = "FabGuide_Fixed.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Fixed Joint")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick a box of the part to hold, then a box of the part it rides on: it moves "
+                                        "with that part and prints as one body with it")
     NEEDS = selecting(cuboids.is_box, least=2)
 
     def run(self, doc):
         boxes = [o for o, _ in picks() if cuboids.is_box(o)]
         if len(boxes) != 2:
-            return tell("Pick a box of the part to hold, then a box of the part it rides on.")
+            return tell(translate("FabGuide", "Pick a box of the part to hold, then a box of the part it rides on."))
         owners = [parts.part_of(doc.Objects, b) for b in boxes]
         if boxes[0] is boxes[1] or (owners[0] is not None and owners[0] is owners[1]):
-            return tell("Both boxes are in one part: pick a box of the part to hold, then one of another part.")
+            return tell(translate("FabGuide", "Both boxes are in one part: pick a box of the part to hold, then one of "
+                                              "another part."))
         if owners[0] is not None and owners[1] is not None and rides_on(doc, owners[1], owners[0]):
-            return tell("'{}' already rides on '{}': pick the part to hold first, then the part it rides on."
+            return tell(translate("FabGuide", "'{}' already rides on '{}': pick the part to hold first, then the part "
+                                              "it rides on.")
                         .format(owners[1].Label, owners[0].Label))
         if said := already_moved(doc, boxes[0], "fixed"):
             return tell(said)
@@ -281,8 +290,9 @@ class AddRelationship(Command):
 
 
 class AddCover(AddRelationship):
-    ICON, MENU, KIND, LAST = "FabGuide_Cover.svg", "Add Cover", "cover", "covered"
-    TIP = "These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings"
+    ICON, MENU, KIND, LAST = "FabGuide_Cover.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Cover"), "cover", "covered"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts cover that one (picked last): faces in one plane, packed, "
+                                        "covering its faces or openings")
 
     def fields(self, doc, found):
         return {"Covering": found[:-1], "Covered": found[-1:]}
@@ -300,8 +310,10 @@ def portion(inner):
 
 
 class AddFitInside(AddRelationship):
-    ICON, MENU, KIND, LAST = "FabGuide_FitInside.svg", "Add Fit Inside", "fit_inside", "enclosing"
-    TIP = "These parts fit inside that one (picked last; pick one of its cavities to fit in it)"
+    ICON, KIND, LAST = "FabGuide_FitInside.svg", "fit_inside", "enclosing"
+    MENU = QT_TRANSLATE_NOOP("FabGuide", "Add Fit Inside")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts fit inside that one (picked last; pick one of its cavities to fit "
+                                        "in it)")
 
     def fields(self, doc, found):
         last = picks()[-1][0]
@@ -310,16 +322,18 @@ class AddFitInside(AddRelationship):
 
 
 class AddSupport(AddRelationship):
-    ICON, MENU, KIND, LAST = "FabGuide_Support.svg", "Add Support", "support", "supported"
-    TIP = "These parts support that one (picked last): it rests on their tops; they stand on one ground"
+    ICON, KIND, LAST = "FabGuide_Support.svg", "support", "supported"
+    MENU = QT_TRANSLATE_NOOP("FabGuide", "Add Support")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts support that one (picked last): it rests on their tops; they "
+                                        "stand on one ground")
 
     def fields(self, doc, found):
         return {"Supporting": found[:-1], "Supported": found[-1:]}
 
 
 class AddFlush(AddRelationship):
-    ICON, MENU, KIND = "FabGuide_Flush.svg", "Add Flush", "flush"
-    TIP = "Pick two faces of boxes: they lie in one plane"
+    ICON, MENU, KIND = "FabGuide_Flush.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Flush"), "flush"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick two faces of boxes: they lie in one plane")
     NEEDS = selecting(cuboids.is_box, "Face", least=2)
 
     def check(self):
@@ -334,8 +348,9 @@ class AddFlush(AddRelationship):
 
 
 class AddGeometric(AddRelationship):
-    ICON, MENU, KIND = "FabGuide_Geometric.svg", "Add Geometric", "geometric"
-    TIP = "Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)"
+    ICON, MENU, KIND = "FabGuide_Geometric.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Geometric"), "geometric"
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pick two edges of boxes: their lengths stay equal (one edge: its length stays "
+                                        "as it is now)")
     NEEDS = selecting(cuboids.is_box, "Edge")
 
     def check(self):
@@ -354,14 +369,15 @@ class AddGeometric(AddRelationship):
 
 
 class Solve(Command):
-    ICON, MENU = "FabGuide_Solve.svg", "Solve"
-    TIP = "Solve the selected (or every) mechanism: the least change that makes its relationships hold"
+    ICON, MENU = "FabGuide_Solve.svg", QT_TRANSLATE_NOOP("FabGuide", "Solve")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Solve the selected (or every) mechanism: the least change that makes its "
+                                        "relationships hold")
     NEEDS = present(mechanism.is_mechanism)
 
     def run(self, doc):
         mechs = selected(mechanism.is_mechanism) or all_in(doc, mechanism.is_mechanism)
         if not mechs:
-            return tell("There is no mechanism yet: use Mechanism from Boxes first.")
+            return tell(translate("FabGuide", "There is no mechanism yet: use Mechanism from Boxes first."))
         with transaction(doc, "Solve"):
             for m in mechs:
                 m.touch()
@@ -371,8 +387,8 @@ class Solve(Command):
 
 
 class Configurations(Command):
-    ICON, MENU = "FabGuide_Configurations.svg", "Configurations"
-    TIP = "Pose the joints: name configurations and move the mechanism between them"
+    ICON, MENU = "FabGuide_Configurations.svg", QT_TRANSLATE_NOOP("FabGuide", "Configurations")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Pose the joints: name configurations and move the mechanism between them")
     NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
@@ -385,8 +401,8 @@ class Configurations(Command):
 
 
 class ImportWorkslike(Command):
-    ICON, MENU = "FabGuide_Import.svg", "Import Works-like Model"
-    TIP = "Build a mechanism from a *.workslike.json file"
+    ICON, MENU = "FabGuide_Import.svg", QT_TRANSLATE_NOOP("FabGuide", "Import Works-like Model")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Build a mechanism from a *.workslike.json file")
 
     def run(self, doc):
         path = ask_open("Works-like model", "Works-like models (*.workslike.json)")
@@ -410,8 +426,9 @@ def import_file(doc, path):
 
 
 class ExportWorkslike(Command):
-    ICON, MENU = "FabGuide_Export.svg", "Export Works-like Model"
-    TIP = "Write the selected mechanism as a *.workslike.json file (the CLI's fabguide solve reads it)"
+    ICON, MENU = "FabGuide_Export.svg", QT_TRANSLATE_NOOP("FabGuide", "Export Works-like Model")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Write the selected mechanism as a *.workslike.json file (the CLI's fabguide "
+                                        "solve reads it)")
     NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
@@ -431,9 +448,9 @@ class ExportWorkslike(Command):
 
 
 class MakePrintable(Command):
-    ICON, MENU = "FabGuide_Printable.svg", "Make Printable"
-    TIP = ("Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, "
-           "pivot links; checked along every motion")
+    ICON, MENU = "FabGuide_Printable.svg", QT_TRANSLATE_NOOP("FabGuide", "Make Printable")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, "
+                                        "hinge pins and yokes, pivot links; checked along every motion")
     NEEDS = present(mechanism.is_mechanism)
 
     def IsActive(self):
@@ -450,13 +467,14 @@ class MakePrintable(Command):
             vp.colour_bodies(made, added)
             mech.ViewObject.Visibility = False
             doc.recompute()
-        FreeCAD.Console.PrintMessage("{}: least clearance {:.3f} mm ({})\n".format(
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "{}: least clearance {:.3f} mm ({})\n").format(
             made.Label, made.MinimumClearance.Value, made.ClearanceAt))
 
 
 class ExportPrintable(Command):
-    ICON, MENU = "FabGuide_ExportPrintable.svg", "Export Printable"
-    TIP = "Write the selected printable as STL, 3MF and STEP: the assembly and one file per body"
+    ICON, MENU = "FabGuide_ExportPrintable.svg", QT_TRANSLATE_NOOP("FabGuide", "Export Printable")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Write the selected printable as STL, 3MF and STEP: the assembly and one file "
+                                        "per body")
     NEEDS = present(printable.is_printable)
 
     def IsActive(self):

@@ -7,6 +7,7 @@ from PySide import QtCore
 
 from freecad.fabguide import properties
 from freecad.fabguide.gui import editing, resources
+from freecad.fabguide.i18n import translate
 
 SETTINGS = ("Kerf", "Spacing", "Trim")
 PAUSE = 700  # ms without a change before the layout is made again: not on every keystroke
@@ -47,7 +48,7 @@ class LayoutPanel:
             self.typed_from.setdefault(name, current)
             setattr(self.layout, name, value)
             self.pending.start()
-            self.form.message.setText("<i>The layout is made again when you pause.</i>")
+            self.form.message.setText(translate("FabGuide", "<i>The layout is made again when you pause.</i>"))
 
     def lay_out(self):
         """Once the typing pauses: a value typed out of range or unreadable is refused whole (the keystrokes on
@@ -80,8 +81,8 @@ class LayoutPanel:
         """The layout's figures, or why it could not be made."""
         layout, form = self.layout, self.form
         if properties.failed(layout):
-            form.message.setText("<b>The layout could not be made:</b> {}".format(
-                getattr(layout, "Error", "") or "see the report view"))
+            form.message.setText(translate("FabGuide", "<b>The layout could not be made:</b> {}").format(
+                getattr(layout, "Error", "") or translate("FabGuide", "see the report view")))
             return
         form.message.setText("")
         form.usage.setText("{:.1%}".format(layout.Usage))

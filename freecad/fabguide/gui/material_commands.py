@@ -9,6 +9,7 @@ from freecad.fabguide import preferences, properties
 from freecad.fabguide.material import board, cam, layout, master_board, techdraw
 from freecad.fabguide.gui import editing, viewproviders
 from freecad.fabguide.gui.command_base import Command, all_in, present, selected, selecting, tell, the_one, transaction
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 
 def first_thickness(doc):
@@ -17,8 +18,9 @@ def first_thickness(doc):
 
 
 class NewMasterBoard(Command):
-    ICON, MENU = "FabGuide_MasterBoard.svg", "New Master Board"
-    TIP = "Add a master board (sheet size, thickness, stock, material) to cut boards from"
+    ICON, MENU = "FabGuide_MasterBoard.svg", QT_TRANSLATE_NOOP("FabGuide", "New Master Board")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Add a master board (sheet size, thickness, stock, material) to cut boards "
+                                        "from")
 
     def run(self, doc):
         with transaction(doc, "New master board"):
@@ -30,15 +32,16 @@ class NewMasterBoard(Command):
 
 
 class MakeBoard(Command):
-    ICON, MENU = "FabGuide_Board.svg", "Make Board"
-    TIP = "Make a board from each selected sketch or planar face, as thick as the master boards"
+    ICON, MENU = "FabGuide_Board.svg", QT_TRANSLATE_NOOP("FabGuide", "Make Board")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a board from each selected sketch or planar face, as thick as the master "
+                                        "boards")
     NEEDS = selecting(lambda o: hasattr(o, "Shape"))
 
     def run(self, doc):
         picks = [(board.whole(s.Object), sub) for s in FreeCADGui.Selection.getSelectionEx()
                  for sub in (s.SubElementNames or [None]) if sub is None or board.element_name(sub).startswith("Face")]
         if not picks:
-            return tell("Select sketches or planar faces first.")
+            return tell(translate("FabGuide", "Select sketches or planar faces first."))
         masters = all_in(doc, master_board.is_master_board)
         thickness = masters[0].Thickness.Value if masters else preferences.get("SheetThickness")
         makes_boards(picks, thickness)
@@ -49,15 +52,17 @@ class MakeBoard(Command):
 
 
 class BoardsFromSolids(Command):
-    ICON, MENU = "FabGuide_BoardsFromSolids.svg", "Boards from Solids"
-    TIP = "Turn each selected thin solid into a board, detecting its thickness and outline"
+    ICON, MENU = "FabGuide_BoardsFromSolids.svg", QT_TRANSLATE_NOOP("FabGuide", "Boards from Solids")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Turn each selected thin solid into a board, detecting its thickness and "
+                                        "outline")
     NEEDS = selecting(lambda o: hasattr(o, "Shape") and not board.is_board(o))
 
     def run(self, doc):
         solids = list(dict.fromkeys(board.whole(o) for o in selected(
             lambda o: hasattr(o, "Shape") and o.Shape.Solids and not board.is_board(o))))
         if not solids:
-            return tell("Select the solids of your furniture model (flat boxes, pads, extrusions) first.")
+            return tell(translate("FabGuide", "Select the solids of your furniture model (flat boxes, pads, "
+                                              "extrusions) first."))
         makes_boards([(solid, None) for solid in solids], 0)  # a solid's thickness is its own
         with transaction(doc, "Boards from solids"):
             made = [board.create(doc, solid, label=solid.Label + " board") for solid in solids]
@@ -67,8 +72,9 @@ class BoardsFromSolids(Command):
 
 
 class BandEdges(Command):
-    ICON, MENU = "FabGuide_BandEdges.svg", "Band Edges"
-    TIP = "Glue edge banding on the picked edge faces of boards (asks for the band's name; empty removes it)"
+    ICON, MENU = "FabGuide_BandEdges.svg", QT_TRANSLATE_NOOP("FabGuide", "Band Edges")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Glue edge banding on the picked edge faces of boards (asks for the band's "
+                                        "name; empty removes it)")
     NEEDS = selecting(board.is_board, "Face")
     last = "PVC 1 mm"  # the band named last, offered again
 
@@ -79,7 +85,8 @@ class BandEdges(Command):
                  for sub in s.SubElementNames if board.element_name(sub).startswith("Face")]
         sides = [(obj, board.side_of(obj, sub)) for obj, sub in picks]
         if not sides or not all(side for _, side in sides):
-            return tell("Pick the edge faces of boards (their narrow sides, not the large faces) first.")
+            return tell(translate("FabGuide", "Pick the edge faces of boards (their narrow sides, not the large faces) "
+                                              "first."))
         band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), "Band Edges",
                                               "Band on the {} picked edge(s) (empty: none):".format(len(sides)),
                                               text=BandEdges.last)
@@ -90,7 +97,7 @@ class BandEdges(Command):
             for obj, side in sides:
                 setattr(obj, "Edge" + side, BandEdges.last)
             doc.recompute()
-        FreeCAD.Console.PrintMessage("FabGuide: {} on {}\n".format(
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: {} on {}\n").format(
             "'{}'".format(BandEdges.last) if BandEdges.last else "no band",
             ", ".join("{} {}".format(obj.Label, side) for obj, side in sides)))
 
@@ -105,7 +112,7 @@ def makes_boards(picks, thickness):
         except board.BoardError as error:
             reasons.append(str(error))
     if reasons:
-        raise board.BoardError("Nothing made: {}.".format("; ".join(reasons)))
+        raise board.BoardError(translate("FabGuide", "Nothing made: {}.").format("; ".join(reasons)))
 
 
 def finish_boards(doc, made):
@@ -118,14 +125,15 @@ def finish_boards(doc, made):
 
 
 class MakeLayout(Command):
-    ICON, MENU = "FabGuide_Layout.svg", "Layout"
-    TIP = "Lay the selected (or all) boards out on the master boards and show the material usage"
+    ICON, MENU = "FabGuide_Layout.svg", QT_TRANSLATE_NOOP("FabGuide", "Layout")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Lay the selected (or all) boards out on the master boards and show the "
+                                        "material usage")
     NEEDS = present(board.is_board)
 
     def run(self, doc):
         boards = selected(board.is_board) or all_in(doc, board.is_board)
         if not boards:
-            return tell("There are no boards yet: use Boards from Solids or Make Board first.")
+            return tell(translate("FabGuide", "There are no boards yet: use Boards from Solids or Make Board first."))
         with transaction(doc, "Layout"):
             masters = selected(master_board.is_master_board) or all_in(doc, master_board.is_master_board)
             if not masters:
@@ -138,9 +146,9 @@ class MakeLayout(Command):
 
 
 class ExportCutSheets(Command):
-    ICON, MENU = "FabGuide_ExportCutSheets.svg", "Export Cut Sheets"
-    TIP = ("Write SVG and DXF cut sheets per master board, a CSV cut list, the shop's PDF report and part labels "
-           "for the selected layout")
+    ICON, MENU = "FabGuide_ExportCutSheets.svg", QT_TRANSLATE_NOOP("FabGuide", "Export Cut Sheets")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Write SVG and DXF cut sheets per master board, a CSV cut list, the shop's PDF "
+                                        "report and part labels for the selected layout")
     NEEDS = present(layout.is_layout)
 
     def run(self, doc):
@@ -161,9 +169,10 @@ class ExportCutSheets(Command):
 
 
 class TechDrawPages(Command):
-    ICON, MENU = "FabGuide_TechDrawPages.svg", "TechDraw Pages"
-    TIP = ("Make TechDraw pages of the selected layout's shop report: a page per master board (parts numbered and "
-           "sized, grain, edge banding, saw cuts), then the cut list and the totals")
+    ICON, MENU = "FabGuide_TechDrawPages.svg", QT_TRANSLATE_NOOP("FabGuide", "TechDraw Pages")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make TechDraw pages of the selected layout's shop report: a page per master "
+                                        "board (parts numbered and sized, grain, edge banding, saw cuts), then the cut "
+                                        "list and the totals")
     NEEDS = present(layout.is_layout)
 
     def IsActive(self):
@@ -182,9 +191,10 @@ class TechDrawPages(Command):
 
 
 class MakeCamJob(Command):
-    ICON, MENU = "FabGuide_CamJob.svg", "Make CAM Job"
-    TIP = ("Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, "
-           "engraved labels) with your tool and post-processor, and write its G-code")
+    ICON, MENU = "FabGuide_CamJob.svg", QT_TRANSLATE_NOOP("FabGuide", "Make CAM Job")
+    TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a FreeCAD CAM job per master board of the selected layout (profiles, "
+                                        "tags, dogbones, drilling, engraved labels) with your tool and post-processor, "
+                                        "and write its G-code")
     NEEDS = present(layout.is_layout)
 
     def IsActive(self):

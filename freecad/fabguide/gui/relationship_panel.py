@@ -11,6 +11,7 @@ from freecad.fabguide import cuboids, references
 from freecad.fabguide.function import mechanism, parts, relationships
 from freecad.fabguide.gui import editing, resources
 from freecad.fabguide.gui.function_commands import picked_elements
+from freecad.fabguide.i18n import translate
 
 BLUE, RED = (0.24, 0.49, 0.79), (0.85, 0.33, 0.31)
 
@@ -44,7 +45,7 @@ class RelationshipPanel:
         status = self.rel.Status or "Not solved yet"
         colour = "#b22222" if status.startswith("Conflict") else "#2e7d32"
         changed = "".join("<br>{}".format(c) for c in self.changes)
-        self.status.setText("<b style='color:{}'>{}</b>{}".format(
+        self.status.setText(translate("FabGuide", "<b style='color:{}'>{}</b>{}").format(
             colour, status, "<br>The solve changed:" + changed if changed else ""))
         if self.pairs is not None:
             self.pairs.blockSignals(True)
@@ -63,8 +64,9 @@ class RelationshipPanel:
         """The two faces picked in the 3-D view, first → second, as a new pair."""
         faces = picked_elements("Face")
         if len(faces) != 2:
-            self.status.setText("<b>Pick two faces of boxes in the 3-D view</b> (the first, then the second of "
-                                "the pair) and press Add; {} picked.".format(len(faces)))
+            self.status.setText(translate("FabGuide", "<b>Pick two faces of boxes in the 3-D view</b> (the first, then "
+                                                      "the second of the pair) and press Add; {} picked.").format(
+                len(faces)))
             return
         item = QtGui.QListWidgetItem(relationships.ARROW.join(cuboids.face_name(*face) for face in faces))
         item.setFlags(item.flags() | QtCore.Qt.ItemIsEditable)
@@ -138,7 +140,7 @@ class RelationshipPanel:
                 self.rel.Pairs = relationships.pair_links(self.rel, self.texts(),
                                                           references.boxes_by_label(self.rel.Document))
             except ValueError as error:  # a pair mistyped: say which, keep the panel open
-                self.status.setText("<b style='color:#b22222'>{}</b>".format(error))
+                self.status.setText(translate("FabGuide", "<b style='color:#b22222'>{}</b>").format(error))
                 return False
             self.solve()
         self.abandon()

@@ -14,6 +14,7 @@ from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import cuboids, messages
 from freecad.fabguide.material import design, parametric
 from freecad.fabguide.gui import resources, viewproviders
+from freecad.fabguide.i18n import translate
 
 THUMB = QtCore.QSize(92, 70)  # two side by side fit a default-width task view
 SHEET, PART, EDGE = QtGui.QColor(233, 211, 166), QtGui.QColor(61, 125, 202), QtGui.QColor(29, 63, 107)
@@ -66,9 +67,10 @@ class Boxes:
         driven = [b.Label for b in design.boxes(obj) if driven_by_expressions(b)]
         if driven:
             raise ValueError(
-                "Suggest cannot change {}: their sizes or places are set by expressions. Give Design '{}' the "
-                "spreadsheet aliases that drive them as Parameters ('Sheet.alias min max'), and Suggest changes "
-                "those.".format(", ".join("'{}'".format(label) for label in driven), obj.Label))
+                translate("FabGuide", "Suggest cannot change {}: their sizes or places are set by expressions. Give "
+                                      "Design '{}' the spreadsheet aliases that drive them as Parameters ('Sheet.alias "
+                                      "min max'), and Suggest changes those.").format(
+                    ", ".join("'{}'".format(label) for label in driven), obj.Label))
         self.obj = obj
         self.start = None
 
@@ -81,7 +83,7 @@ class Boxes:
         try:
             return fabguide_core.optimise(problem, progress=progress, cancel=cancel, **options)
         except fabguide_core.FormatError as error:  # said with the boxes' labels, as the design's Status says it
-            raise design.DesignError("Design '{}': {}".format(
+            raise design.DesignError(translate("FabGuide", "Design '{}': {}").format(
                 self.obj.Label, messages.in_words(str(error), problem, messages.FLATPACK)))
 
     def path(self, suggestion):
@@ -146,7 +148,7 @@ class SuggestPanel:
                      "again"):
             setattr(self, name, getattr(form, name))
         self.run_button, self.stop_button = form.run, form.stop
-        self.now.setText("Usage now: {:.3f}".format(self.design.Usage))
+        self.now.setText(translate("FabGuide", "Usage now: {:.3f}").format(self.design.Usage))
         self.threads.setMaximum(max(1, os.cpu_count() or 1))
         self.threads.setValue(min(2, self.threads.maximum()))
         self.run_button.clicked.connect(self.start)
@@ -182,7 +184,7 @@ class SuggestPanel:
 
         self.run_button.setEnabled(False)
         self.stop_button.setEnabled(True)
-        self.message.setText("Searching for designs that waste less...")
+        self.message.setText(translate("FabGuide", "Searching for designs that waste less..."))
         if self.target.background:
             self.thread = threading.Thread(target=work, args=(self.report,), daemon=True)
             self.thread.start()
@@ -217,7 +219,7 @@ class SuggestPanel:
         done, best = self.progress
         self.bar.setValue(int(100 * done))
         if self.thread and self.thread.is_alive():
-            self.message.setText("Searching... best usage so far {:.3f}".format(best))
+            self.message.setText(translate("FabGuide", "Searching... best usage so far {:.3f}").format(best))
             return
         self.timer.stop()
         self.run_button.setEnabled(True)
@@ -225,7 +227,7 @@ class SuggestPanel:
         if self.closed:
             return
         if self.error is not None:
-            self.message.setText("<b>No suggestions:</b> {}".format(self.error))
+            self.message.setText(translate("FabGuide", "<b>No suggestions:</b> {}").format(self.error))
         elif self.result is not None and not self.cards.buttons():
             self.show_results()
 
@@ -247,10 +249,12 @@ class SuggestPanel:
             least = result.get("least_sheets", 0)
             why = "; with every board as small as they allow it still needs {} sheet(s)".format(least) \
                 if least and least >= result["before"]["sheets"] else ""
-            self.message.setText("No variation of this design wastes less within its constraints{}{}.".format(
+            self.message.setText(translate("FabGuide", "No variation of this design wastes less within its "
+                                                       "constraints{}{}.").format(
                 why, stopped))
             return
-        self.message.setText("{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.".format(
+        self.message.setText(translate("FabGuide", "{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK "
+                                                   "applies it.").format(
             len(suggestions), result["seconds"], stopped))
         views = self.view_thumbnails([self.target.path(s)[-1][0] for s in suggestions])
         for k, s in enumerate(suggestions):
@@ -267,8 +271,9 @@ class SuggestPanel:
             button.setIcon(QtGui.QIcon(icon))
             button.setIconSize(icon.size())
             button.setText(card_text(k, s, result["before"]))
-            button.setToolTip("Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut "
-                              "{:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})".format(
+            button.setToolTip(translate("FabGuide", "Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now "
+                                                    "{:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now "
+                                                    "{:.3f})").format(
                                   k + 1, s["sheets"], result["before"]["sheets"], s["waste_m2"],
                                   result["before"]["waste_m2"], *s["largest_offcut"], s["usage"],
                                   result["usage_before"]))
@@ -309,7 +314,7 @@ class SuggestPanel:
 
     def slide(self, _value):
         parts, usage = self.current()
-        self.step.setText("usage {:.3f}".format(usage))
+        self.step.setText(translate("FabGuide", "usage {:.3f}").format(usage))
         self.preview(parts)
 
     def preview(self, state):
@@ -329,7 +334,7 @@ class SuggestPanel:
         self.doc.recompute()
         self.doc.commitTransaction()
         self.original = self.target.state()
-        self.now.setText("Usage now: {:.3f}".format(self.design.Usage))
+        self.now.setText(translate("FabGuide", "Usage now: {:.3f}").format(self.design.Usage))
 
     def lock(self, parts):
         by_id = {p["id"]: p for p in parts}
@@ -344,7 +349,7 @@ class SuggestPanel:
                 obj = design.add_constraint(self.design, "fixed", "Locked " + ref, Refs=[ref], Value=size[axis])
                 viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
             item.setCheckState(QtCore.Qt.Unchecked)
-            FreeCAD.Console.PrintMessage("FabGuide: locked the size of {}\n".format(box.Label))
+            FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: locked the size of {}\n").format(box.Label))
 
     def apply_and_again(self):
         if self.chosen is None:

@@ -4,11 +4,13 @@ import FreeCAD
 import FreeCADGui as Gui
 
 from freecad.fabguide.gui import resources
+from freecad.fabguide.i18n import translate
 
 
 class FabGuideWorkbench(Gui.Workbench):
     MenuText = "FabGuide"
-    ToolTip = "Design things that work and waste nothing: functional relationships and zero-waste layouts"
+    ToolTip = translate("FabGuide", "Design things that work and waste nothing: functional relationships and zero-waste "
+                                    "layouts")
     Icon = resources.icon("FabGuide.svg")
 
     def Initialize(self):

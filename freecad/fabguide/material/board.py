@@ -7,6 +7,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide import properties
+from freecad.fabguide.i18n import translate
 
 SAMPLING = 0.05  # mm: arcs and splines become polygons deviating at most this much (thesis 5.4.1)
 ROTATIONS = ("Any", "Follow grain", "Fixed")  # Follow grain: the master board's Grain decides
@@ -74,7 +75,8 @@ def element_name(name):
 def make_slab(obj):
     """(slab solid, thickness) for a board, or BoardError naming the board and its source."""
     if obj.Source is None:
-        raise BoardError("Board '{}': no Source (select a sketch, a planar face or a thin solid)".format(obj.Label))
+        raise BoardError(translate("FabGuide", "Board '{}': no Source (select a sketch, a planar face or a thin "
+                                               "solid)").format(obj.Label))
     source, subs = obj.Source
     return slab_of(source, subs[0] if subs else None, obj.Thickness.Value,
                    "Board '{}' (source '{}')".format(obj.Label, source.Label))
@@ -84,36 +86,38 @@ def slab_of(source, subelement, thickness, what):
     """(slab solid, thickness) of a board made from `source` (with `subelement`, a face of it), or BoardError
     saying why it makes none, beginning with `what`."""
     if not subelement and isinstance(getattr(source, "Proxy", None), properties.Proxy):  # a layout, a board
-        raise BoardError("{}: is FabGuide's {}, not a part of your model (pick a sketch, a planar face or a thin "
-                         "solid)".format(what, source.Proxy.NOUN.lower()))
+        raise BoardError(translate("FabGuide", "{}: is FabGuide's {}, not a part of your model (pick a sketch, a "
+                                               "planar face or a thin solid)").format(what, source.Proxy.NOUN.lower()))
     shape = getattr(source, "Shape", None)
     if shape is None or shape.isNull():
-        raise BoardError("{}: the source has no shape".format(what))
+        raise BoardError(translate("FabGuide", "{}: the source has no shape").format(what))
     if subelement:
         face = shape.getElement(element_name(subelement))
         return extrude(face, thickness, what), thickness
     if shape.Solids:
         if len(shape.Solids) > 1:
-            raise BoardError("{}: the source holds {} solids; make one board per solid".format(what, len(shape.Solids)))
+            raise BoardError(translate("FabGuide", "{}: the source holds {} solids; make one board per solid").format(
+                what, len(shape.Solids)))
         thickness = slab_thickness(shape.Solids[0], what)
         return shape.Solids[0].copy(), thickness
     closed = [wire for wire in shape.Wires if wire.isClosed()]
     if not closed:
-        raise BoardError("{}: needs closed wires, a planar face or a solid".format(what))
+        raise BoardError(translate("FabGuide", "{}: needs closed wires, a planar face or a solid").format(what))
     if Part.Compound(closed).findPlane() is None:
-        raise BoardError("{}: its closed wires do not lie in one plane, so they do not outline a board".format(what))
+        raise BoardError(translate("FabGuide", "{}: its closed wires do not lie in one plane, so they do not outline a "
+                                               "board").format(what))
     try:
         face = Part.makeFace(closed, "Part::FaceMakerBullseye")
     except Part.OCCError as error:
-        raise BoardError("{}: its wires do not make a planar face ({})".format(what, error))
+        raise BoardError(translate("FabGuide", "{}: its wires do not make a planar face ({})").format(what, error))
     return extrude(face, thickness, what), thickness
 
 
 def extrude(face, thickness, what):
     if not is_planar(face):
-        raise BoardError("{}: the face is not planar".format(what))
+        raise BoardError(translate("FabGuide", "{}: the face is not planar").format(what))
     if thickness <= 0:
-        raise BoardError("{}: Thickness must be greater than 0".format(what))
+        raise BoardError(translate("FabGuide", "{}: Thickness must be greater than 0").format(what))
     return face.extrude(face.normalAt(0, 0) * thickness)
 
 
@@ -138,21 +142,24 @@ def slab_thickness(solid, what):
     must be that face swept straight through (a flat board), else BoardError."""
     top = largest_planar_face(solid)
     if top is None:
-        raise BoardError("{}: has no planar face, so it is not a flat board".format(what))
+        raise BoardError(translate("FabGuide", "{}: has no planar face, so it is not a flat board").format(what))
     normal = top.normalAt(0, 0)
     opposite = [f for f in solid.Faces if is_planar(f) and f.normalAt(0, 0).dot(normal) < -1 + 1e-9
                 and abs(f.Area - top.Area) <= 1e-6 * top.Area]
     if not opposite:
-        raise BoardError("{}: no face parallel and opposite to its largest face, so it is not a flat board"
+        raise BoardError(translate("FabGuide", "{}: no face parallel and opposite to its largest face, so it is not a "
+                                               "flat board")
                          .format(what))
     thickness = abs((opposite[0].CenterOfMass - top.CenterOfMass).dot(normal))
     if abs(solid.Volume - top.Area * thickness) > 1e-3 * solid.Volume:
-        raise BoardError("{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)"
+        raise BoardError(translate("FabGuide", "{}: is not a flat board of one thickness (volume {:.1f} mm3, face x "
+                                               "thickness {:.1f} mm3)")
                          .format(what, solid.Volume, top.Area * thickness))
     width = narrowest(solid)
     if thickness >= width - 1e-6:
-        raise BoardError("{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board "
-                         "is thinner than it is wide)".format(what, thickness, width))
+        raise BoardError(translate("FabGuide", "{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather "
+                                               "than a board (a board is thinner than it is wide)").format(
+            what, thickness, width))
     return thickness
 
 

@@ -14,6 +14,7 @@ import Part
 
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide.material import layout
+from freecad.fabguide.i18n import translate
 
 FEED = 1500.0  # mm/min across the sheet: a router in plywood or MDF
 PLUNGE = 300.0  # mm/min down
@@ -48,7 +49,7 @@ def workbench():
                                      PathPreferences as Preferences)
             ToolBit = None
         except ImportError as error:
-            raise CamError("FreeCAD's CAM (Path) workbench is not installed: {}".format(error))
+            raise CamError(translate("FabGuide", "FreeCAD's CAM (Path) workbench is not installed: {}").format(error))
     return types.SimpleNamespace(Job=Job, Stock=Stock, Drilling=Drilling, Engrave=Engrave, Profile=Profile,
                                  Dogbone=Dogbone, Tags=Tags, Bit=Bit, Controller=Controller,
                                  Preferences=Preferences, ToolBit=ToolBit)
@@ -69,7 +70,7 @@ def bit_diameter(bit):
         with open(bit, encoding="utf-8") as f:
             return FreeCAD.Units.Quantity(json.load(f)["parameter"]["Diameter"]).Value
     except (KeyError, TypeError, ValueError, OSError) as error:
-        raise CamError("tool bit file '{}' has no diameter ({})".format(bit, error))
+        raise CamError(translate("FabGuide", "tool bit file '{}' has no diameter ({})").format(bit, error))
 
 
 def post_processors():
@@ -91,7 +92,7 @@ def for_material(value, material, what):
     if not isinstance(value, dict):
         return float(value)
     if material not in value:
-        raise CamError("no {} for the material '{}' (given for {})".format(
+        raise CamError(translate("FabGuide", "no {} for the material '{}' (given for {})").format(
             what, material, ", ".join("'{}'".format(m) for m in value) or "none"))
     return float(value[material])
 
@@ -102,24 +103,27 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=TH
     material ({material: number}); `through`: mm the profiles cut below the sheet. Returns the jobs."""
     layout.current(lay)
     if not 0 <= through <= 5:
-        raise CamError("cut through by {:g} mm: from 0 to 5 mm below the sheet".format(through))
+        raise CamError(translate("FabGuide", "cut through by {:g} mm: from 0 to 5 mm below the sheet").format(through))
     for material in materials(lay):
         feeding, turning = for_material(feed, material, "feed"), for_material(spindle, material, "spindle speed")
         if not 10 <= feeding <= 50000:
-            raise CamError("feed {:g} mm/min for '{}': from 10 to 50000 mm/min".format(feeding, material))
+            raise CamError(translate("FabGuide", "feed {:g} mm/min for '{}': from 10 to 50000 mm/min").format(
+                feeding, material))
         if not 0 <= turning <= 60000:
-            raise CamError("spindle speed {:g} rpm for '{}': from 0 to 60000 rpm".format(turning, material))
+            raise CamError(translate("FabGuide", "spindle speed {:g} rpm for '{}': from 0 to 60000 rpm").format(
+                turning, material))
     cam = workbench()
     if post not in cam.Preferences.allAvailablePostProcessors():
-        raise CamError("no post-processor '{}' in FreeCAD (there are: {})".format(
+        raise CamError(translate("FabGuide", "no post-processor '{}' in FreeCAD (there are: {})").format(
             post, ", ".join(cam.Preferences.allAvailablePostProcessors())))
     bit = bit or library_bits().get(BITS["end mill"])
     if not bit or not os.path.isfile(bit):
-        raise CamError("tool bit file '{}' not found".format(bit))
+        raise CamError(translate("FabGuide", "tool bit file '{}' not found").format(bit))
     diameter = bit_diameter(bit)
     if lay.Kerf.Value + lay.Spacing.Value < diameter - 1e-9:
-        raise CamError("Layout '{}': its parts are {:g} mm apart (Kerf {:g} + Spacing {:g} mm), too close for the "
-                       "{:g} mm tool: set its Kerf to the tool's diameter".format(
+        raise CamError(translate("FabGuide", "Layout '{}': its parts are {:g} mm apart (Kerf {:g} + Spacing {:g} mm), "
+                                             "too close for the {:g} mm tool: set its Kerf to the tool's "
+                                             "diameter").format(
                            lay.Label, lay.Kerf.Value + lay.Spacing.Value, lay.Kerf.Value, lay.Spacing.Value, diameter))
     remove_jobs(lay)
     sheets = fabguide_core.cut_sheets(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson))
@@ -373,7 +377,8 @@ def post(job, filename):
     scripts = [os.path.join(folder, name) for folder in workbench().Preferences.searchPathsPost()]
     script = next((path for path in scripts if os.path.isfile(path)), None)
     if script is None:
-        raise CamError("Job '{}': post-processor '{}' not found".format(job.Label, job.PostProcessor))
+        raise CamError(translate("FabGuide", "Job '{}': post-processor '{}' not found").format(
+            job.Label, job.PostProcessor))
     spec = importlib.util.spec_from_file_location(job.PostProcessor + "_post", script)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -384,7 +389,8 @@ def post(job, filename):
         args += " --no-show-editor"  # the G-code goes to its file, not to a dialog in the way
     module.export(postables(job), filename, args)  # some return the text, all write it
     if not os.path.isfile(filename):
-        raise CamError("Job '{}': the post-processor '{}' wrote nothing".format(job.Label, job.PostProcessor))
+        raise CamError(translate("FabGuide", "Job '{}': the post-processor '{}' wrote nothing").format(
+            job.Label, job.PostProcessor))
     with open(filename) as written:
         return written.read()
 

@@ -12,6 +12,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.material import master_board
+from freecad.fabguide.i18n import translate
 
 SATISFIED = "Satisfied"
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
@@ -92,7 +93,7 @@ class DesignConstraint(properties.Proxy):
         """Min and Max are checked together here, not as each is typed: "900" passes through 9 and 90 on its way
         past a Max of 500, and a refusal would keep 90."""
         if obj.Kind == "range" and obj.Min.Value > obj.Max.Value:
-            raise ValueError("Constraint '{}': its Min ({}) is more than its Max ({})".format(
+            raise ValueError(translate("FabGuide", "Constraint '{}': its Min ({}) is more than its Max ({})").format(
                 obj.Label, obj.Min.UserString, obj.Max.UserString))
 
 
@@ -121,8 +122,8 @@ def create(doc, boxes, master_boards, label="FlatpackDesign"):
     for box in boxes:
         group = box.getParentGroup()
         if group is not None:
-            raise DesignError("Box '{}' is in {} '{}' already, and a box belongs to one group: take it out of "
-                              "'{}' first, or pick other boxes".format(
+            raise DesignError(translate("FabGuide", "Box '{}' is in {} '{}' already, and a box belongs to one group: "
+                                                    "take it out of '{}' first, or pick other boxes").format(
                                   box.Label, "design" if is_design(group) else "group", group.Label, group.Label))
     obj = doc.addObject("App::DocumentObjectGroupPython", "FlatpackDesign")
     FlatpackDesign(obj)
@@ -215,7 +216,8 @@ def constraint_dict(c):
         d.update(lhs=refs, rhs=references.names(c.Rhs), offset=c.Value.Value)
     if c.Kind in ("fixed", "range"):
         if len(refs) != 1:
-            raise DesignError("constraint '{}': a {} constraint takes one reference".format(c.Label, c.Kind))
+            raise DesignError(translate("FabGuide", "constraint '{}': a {} constraint takes one reference").format(
+                c.Label, c.Kind))
         d["ref"] = refs[0]
     if c.Kind == "fixed":
         d["value"] = c.Value.Value
@@ -237,7 +239,8 @@ def volume_dicts(obj):
         size = [v.Length.Value, v.Width.Value, v.Height.Value]
         if v.Kind == "Inner":
             if v.On is None:
-                raise DesignError("inner volume '{}': choose the board it rests on (On)".format(v.Label))
+                raise DesignError(translate("FabGuide", "inner volume '{}': choose the board it rests on (On)").format(
+                    v.Label))
             inner.append({"name": v.Label, "on": v.On.Label, "position": [low.x, low.y, low.z], "size": size})
         else:
             outer = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
@@ -253,7 +256,7 @@ def flatpack(obj, parts=None):
     """The design as a *.flatpack.json dict (docs/formats.md), with `parts` instead of the boxes if given."""
     try:
         if not obj.MasterBoards:
-            raise DesignError("add a master board (MasterBoards)")
+            raise DesignError(translate("FabGuide", "add a master board (MasterBoards)"))
         inner, outer = volume_dicts(obj)
         doc = {"format": "fabguide.flatpack", "version": 1,
                "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
@@ -266,7 +269,7 @@ def flatpack(obj, parts=None):
             doc["outer_volume"] = outer
         return doc
     except (ValueError, cuboids.CuboidError) as error:
-        raise DesignError("Design '{}': {}".format(obj.Label, error))
+        raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, error))
 
 
 def recompute(obj):
@@ -295,18 +298,18 @@ def recompute(obj):
         mark_constraints(obj, said)
         obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
                       else "Design '" + obj.Label + "': {}").format(said)
-        raise DesignError("Design '{}': {}".format(obj.Label, said))
+        raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
     except fabguide_core.PackingError as error:
         if not same_boards or valid == edited["parts"]:  # no edit of the boxes to absorb or undo
             said = "{}{}".format(error, master_board.shared(obj.MasterBoards, obj))
             obj.Status = said
-            raise DesignError("Design '{}': {}".format(obj.Label, said))
+            raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
         laid, absorbed = absorb(obj, edited, start)
         note += absorbed
         if laid is None:
             write_parts(obj, valid, start)
             obj.Status = "Edit undone: {}".format(error)
-            FreeCAD.Console.PrintError("{}: edit undone: {}\n".format(obj.Label, error))
+            FreeCAD.Console.PrintError(translate("FabGuide", "{}: edit undone: {}\n").format(obj.Label, error))
             return
     mark_constraints(obj, "")
     obj.Usage = laid["usage"]

@@ -10,6 +10,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.material import board, master_board
+from freecad.fabguide.i18n import translate
 
 GAP = 100  # mm between the model and the sheets, and between sheets
 JOINTS = {"Auto (dowels for thick boards)": "Auto", "Finger joints": "Fingers", "None": "None"}
@@ -106,7 +107,8 @@ class Layout(properties.Proxy):
                 lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             said = messages.in_words(str(error), problem, messages.PACK)
-            raise LayoutError("Layout '{}': {}{}".format(obj.Label, said, master_board.shared(obj.MasterBoards, obj)))
+            raise LayoutError(translate("FabGuide", "Layout '{}': {}{}").format(
+                obj.Label, said, master_board.shared(obj.MasterBoards, obj)))
         obj.ProblemJson = json.dumps(problem)
         obj.LayoutJson = json.dumps(result)
         obj.Usage = result["usage"]
@@ -120,7 +122,8 @@ class Layout(properties.Proxy):
         for note in joined["notes"]:
             FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, note))
         obj.Shape = sheets_shape(problem, result, beside(boards))
-        FreeCAD.Console.PrintMessage("{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}\n"
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "{}: {} parts on {} master board(s), usage {:.1%}, sheet "
+                                                           "utilisation {:.1%}\n")
                                      .format(obj.Label, len(result["placements"]), obj.SheetCount, obj.Usage,
                                              obj.SheetUtilisation))
 
@@ -150,12 +153,15 @@ def make_problem(obj):
     boards = [b for b in obj.Boards if board.is_board(b)]
     masters = [m for m in obj.MasterBoards if master_board.is_master_board(m)]
     if not boards:
-        raise LayoutError("Layout '{}': no boards to lay out (add FabGuide boards to Boards)".format(obj.Label))
+        raise LayoutError(translate("FabGuide", "Layout '{}': no boards to lay out (add FabGuide boards to "
+                                                "Boards)").format(obj.Label))
     if not masters:
-        raise LayoutError("Layout '{}': no master boards (add one to MasterBoards)".format(obj.Label))
+        raise LayoutError(translate("FabGuide", "Layout '{}': no master boards (add one to MasterBoards)").format(
+            obj.Label))
     for b in boards:
         if b.Shape.isNull():
-            raise LayoutError("Layout '{}': board '{}' has no shape; recompute it first".format(obj.Label, b.Label))
+            raise LayoutError(translate("FabGuide", "Layout '{}': board '{}' has no shape; recompute it first").format(
+                obj.Label, b.Label))
     problem = {
         "format": "fabguide.pack", "version": 1,
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
@@ -181,8 +187,9 @@ def pieces(obj, joined, boards):
     for piece in joined["parts"]:
         members = [by_id[i] for i in piece.pop("boards")]
         if len(members) > 1 and any(b.Quantity != 1 for b in members):
-            raise LayoutError("Layout '{}': {} lie in one plane and touch, so they are cut as one piece; set their "
-                              "Quantity to 1".format(obj.Label, ", ".join("'{}'".format(b.Label) for b in members)))
+            raise LayoutError(translate("FabGuide", "Layout '{}': {} lie in one plane and touch, so they are cut as "
+                                                    "one piece; set their Quantity to 1").format(
+                obj.Label, ", ".join("'{}'".format(b.Label) for b in members)))
         result.append(dict(piece, **board.packing_of(members[0])))  # the first board's quantity, turns, grain
     return result
 
@@ -234,10 +241,12 @@ def current(obj):
     """Refuses a layout whose result is not the layout of its boards as they are: never computed, or its last
     recompute failed (files or pages made from it would show the last layout that could be made)."""
     if not obj.LayoutJson:
-        raise LayoutError("Layout '{}' has not been computed yet: recompute it first".format(obj.Label))
+        raise LayoutError(translate("FabGuide", "Layout '{}' has not been computed yet: recompute it first").format(
+            obj.Label))
     if properties.failed(obj):
-        raise LayoutError("{} Mend that first: what was made now would show the last layout that could be "
-                          "made, not the boards as they are.".format(obj.Error.rstrip(".") + "." if obj.Error else
+        raise LayoutError(translate("FabGuide", "{} Mend that first: what was made now would show the last layout that "
+                                                "could be made, not the boards as they are.").format(
+            obj.Error.rstrip(".") + "." if obj.Error else
                                                                      "Layout '{}' is in error.".format(obj.Label)))
 
 

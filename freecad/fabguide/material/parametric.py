@@ -6,6 +6,7 @@ import FreeCAD
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import cuboids
 from freecad.fabguide.material import design
+from freecad.fabguide.i18n import translate
 
 
 class ParameterError(ValueError):
@@ -21,14 +22,17 @@ def parameters(obj):
             name, low, high = " ".join(words[:-2]), float(words[-2]), float(words[-1])
             sheet_name, alias = name.rsplit(".", 1)
         except (IndexError, ValueError):
-            raise ParameterError("Design '{}': parameter '{}' must read 'Sheet.alias min max'".format(obj.Label, entry))
+            raise ParameterError(translate("FabGuide", "Design '{}': parameter '{}' must read 'Sheet.alias min "
+                                                       "max'").format(obj.Label, entry))
         sheets = obj.Document.getObjectsByLabel(sheet_name) or [obj.Document.getObject(sheet_name)]
         sheet = sheets[0]
         if sheet is None or sheet.TypeId != "Spreadsheet::Sheet" or sheet.getCellFromAlias(alias) is None:
-            raise ParameterError("Design '{}': parameter '{}': no spreadsheet '{}' with an alias '{}'".format(
+            raise ParameterError(translate("FabGuide", "Design '{}': parameter '{}': no spreadsheet '{}' with an alias "
+                                                       "'{}'").format(
                 obj.Label, entry, sheet_name, alias))
         if not low <= value(sheet, alias) <= high:
-            raise ParameterError("Design '{}': parameter '{}' is {} now, outside its range".format(
+            raise ParameterError(translate("FabGuide", "Design '{}': parameter '{}' is {} now, outside its "
+                                                       "range").format(
                 obj.Label, entry, value(sheet, alias)))
         found.append((sheet, alias, low, high))
     return found
@@ -40,7 +44,7 @@ def value(sheet, alias):
         v = sheet.get(alias)
         return float(getattr(v, "Value", v))
     except (ValueError, TypeError) as error:
-        raise ParameterError("Spreadsheet '{}': '{}' holds no number ({})".format(
+        raise ParameterError(translate("FabGuide", "Spreadsheet '{}': '{}' holds no number ({})").format(
             sheet.Label, alias, str(error).splitlines()[0]))
 
 
@@ -74,7 +78,7 @@ def optimise(obj, seed=1, time_limit=8.0, rounds=3, progress=None, cancel=None):
     values when it returns."""
     params = parameters(obj)
     if not params:
-        raise ParameterError("Design '{}' has no Parameters".format(obj.Label))
+        raise ParameterError(translate("FabGuide", "Design '{}' has no Parameters").format(obj.Label))
     data = design.flatpack(obj)
     start = [value(sheet, alias) for sheet, alias, _, _ in params]
 

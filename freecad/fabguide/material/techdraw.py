@@ -9,6 +9,7 @@ import FreeCAD
 
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide.material import layout
+from freecad.fabguide.i18n import translate
 
 # TechDraw's blank A4 page: in Templates/ up to FreeCAD 1.0, in Templates/ISO/ from 1.1.
 TEMPLATES = (("Mod", "TechDraw", "Templates", "A4_Landscape_blank.svg"),
@@ -54,7 +55,8 @@ def new_page(lay):
     template_path = next((path for path in (os.path.join(FreeCAD.getResourceDir(), *t) for t in TEMPLATES)
                           if os.path.isfile(path)), None)
     if template_path is None:
-        raise layout.LayoutError("TechDraw's blank A4 template is not installed with this FreeCAD")
+        raise layout.LayoutError(translate("FabGuide", "TechDraw's blank A4 template is not installed with this "
+                                                       "FreeCAD"))
     doc = lay.Document
     page = doc.addObject("TechDraw::DrawPage", "ReportPage")
     page.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide", "The layout this page draws")

@@ -1,0 +1,1761 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1">
+<context>
+    <name>CamJobPanel</name>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="6"/>
+        <source>Make CAM Job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="12"/>
+        <source>One CAM job per master board: the sheet as stock, the parts as solids, profiles from their outlines as designed (the tool&apos;s radius is CAM&apos;s), holding tags, dogbones, dowel drilling and engraved labels as the layout asks.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="17"/>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="19"/>
+        <source>Tool bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="19"/>
+        <source>The end mill that profiles the parts (a FreeCAD tool bit file, *.fctb)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="23"/>
+        <source>Other…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="26"/>
+        <source>Post-processor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="26"/>
+        <source>The G-code dialect of your machine&apos;s controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="28"/>
+        <source>Per material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="28"/>
+        <source>The feed across the sheet and the spindle speed for each material of the layout&apos;s master boards (remembered for the next job)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="34"/>
+        <source>Feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="35"/>
+        <source>Spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="38"/>
+        <source>Cut through by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="38"/>
+        <source>How far the profiles cut below the sheet, into the spoilboard, so that the parts come free (0: to the sheet&apos;s underside)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="39"/>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="45"/>
+        <source>Write G-code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="50"/>
+        <source>Folder…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ConfigurationsPanel</name>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="6"/>
+        <source>Configurations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="11"/>
+        <source>Configuration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="13"/>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="19"/>
+        <source>Joints it poses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="20"/>
+        <source>Tick the joints this configuration poses; an angle&apos;s sign is the way the part swings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="26"/>
+        <source>Move the mechanism from its base pose to the configuration, the way the print moves: turns first, then slides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="34"/>
+        <source>Base</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="34"/>
+        <source>The left end of the slider: the base pose</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="35"/>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="36"/>
+        <source>Posed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/ConfigurationsPanel.ui" line="36"/>
+        <source>The right end of the slider: the configuration</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FabGuide</name>
+    <message>
+        <location filename="../../freecad/fabguide/cuboids.py" line="22"/>
+        <source>&apos;{}&apos; is rotated: FabGuide parts are axis-aligned boxes (reset its Placement rotation; joints turn parts in configurations)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/cuboids.py" line="28"/>
+        <source>&apos;{}&apos;: its Length, Width, Height and Placement must be finite numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/cuboids.py" line="76"/>
+        <source>&apos;{}.{}&apos; is not a face of the box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/cuboids.py" line="95"/>
+        <source>&apos;{}.{}&apos; is not an edge of the box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/cuboids.py" line="104"/>
+        <source>&apos;{}&apos; has no edge between its {} and {} faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="67"/>
+        <source>Configuration &apos;{}&apos;: &apos;{}&apos; is not a joint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="108"/>
+        <source>Joint &apos;{}&apos;: choose the Part it moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="114"/>
+        <source>Joint &apos;{}&apos;: choose the Edge it turns about</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="117"/>
+        <source>Joint &apos;{}&apos;: its edge is on &apos;{}&apos;, which is not a box of part &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="122"/>
+        <source>Joint &apos;{}&apos;: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="126"/>
+        <source>Fixed joint &apos;{}&apos;: choose the Base part it holds &apos;{}&apos; to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="130"/>
+        <source>Double pivot &apos;{}&apos;: choose the Base part it links to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="135"/>
+        <source>Double pivot &apos;{}&apos;: choose a face of a box of &apos;{}&apos; for its {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="152"/>
+        <source>Mechanism &apos;{}&apos;: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="175"/>
+        <source>{}: these cannot hold together: {}. {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="38"/>
+        <source>Part &apos;{}&apos; has no boxes: add a Part::Box to its Cuboids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="43"/>
+        <source>Part &apos;{}&apos;: &apos;{}&apos; is not a Part::Box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="59"/>
+        <source>Printable &apos;{}&apos;: the mechanism has new parts ({}); run Make Printable again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="80"/>
+        <source>Printable &apos;{}&apos;: invalid solids: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="83"/>
+        <source>Printable &apos;{}&apos;: bodies that print in pieces ({}): a cut went through them, a joint turning the wrong way round or a part in the way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="88"/>
+        <source>{}: parts come within {:.3f} mm of each other ({}), less than the {} mm gap
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="104"/>
+        <source>Printable &apos;{}&apos;: choose the Mechanism to print</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="110"/>
+        <source>Printable &apos;{}&apos;: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="120"/>
+        <source>Printable &apos;{}&apos;: BuildVolume must be greater than 0 in x, y and z (is {:g} x {:g} x {:g})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="164"/>
+        <source>Printable &apos;{}&apos;: {}; mend that first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="168"/>
+        <source>Printable &apos;{}&apos;: not made from the mechanism as it stands ({} changed); recompute first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="174"/>
+        <source>Printable &apos;{}&apos;: {} not made yet; recompute it first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <source>Fit inside &apos;{}&apos;: choose the Enclosing part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="86"/>
+        <source>Flush &apos;{}&apos;: choose exactly two faces, got {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="121"/>
+        <source>Geometric &apos;{}&apos;: &apos;{}&apos; must read &apos;Box.side&apos;, &apos;Box.width&apos; or &apos;factor*Box.width&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="143"/>
+        <source>{} &apos;{}&apos;: its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or correct them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="191"/>
+        <source>{} &apos;{}&apos;: pair &apos;{}&apos; must read &apos;Box.side -&gt; Box.side&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <source>Build FabGuide&apos;s core</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="123"/>
+        <source>Cancelled: nothing was installed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="131"/>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="150"/>
+        <source>FabGuide: the core cannot be built: {}.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <source>The core cannot be built: {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/command_base.py" line="31"/>
+        <source>FabGuide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="88"/>
+        <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="89"/>
+        <source>FabGuide: {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
+        <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/command_base.py" line="144"/>
+        <source>{}: cannot use &apos;{}&apos;: {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/command_base.py" line="156"/>
+        <source>{} did not finish: {} ({}). Please report this, with what you did, at the FabGuide issue tracker.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="33"/>
+        <source>Make a mechanism, a part or a cavity from boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="35"/>
+        <source>Add a joint: hinge, slide, sliding hinge, double pivot or fixed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="37"/>
+        <source>Add a relationship: cover, fit inside, support, flush or geometric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="39"/>
+        <source>Make the mechanism printable in place, or export the print</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="41"/>
+        <source>Import or export a *.workslike.json model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="43"/>
+        <source>Make boards from thin solids, or from a sketch or face; band their edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="45"/>
+        <source>Export cut sheets, make TechDraw pages or CAM jobs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="47"/>
+        <source>Add a design constraint on the picked boards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="49"/>
+        <source>Add an inner (kept free) or the outer volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="51"/>
+        <source>Import or export a *.flatpack.json design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="55"/>
+        <source>Angle: its sign is the way the part swings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
+        <source>Offset along the slide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="118"/>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="51"/>
+        <source>Pick boxes of one flat-pack design (use Flat-pack Design from Boxes first).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="66"/>
+        <source>{} does not hold for the design as it is: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="71"/>
+        <source>Flat-pack Design from Boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="72"/>
+        <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; its usage updates as you edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="80"/>
+        <source>Select the Part boxes your furniture is made of first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="96"/>
+        <source>Import Flat-pack Design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="97"/>
+        <source>Open a *.flatpack.json design: boxes, master boards, constraints and volumes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="109"/>
+        <source>Cannot import {}: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="128"/>
+        <source>Export Flat-pack Design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="129"/>
+        <source>Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <source>Pick an edge of a box for {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <source>Pick edges of boxes for {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="169"/>
+        <source>Equal Lengths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="170"/>
+        <source>The picked edges of boards keep equal lengths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="174"/>
+        <source>Sum of Lengths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="175"/>
+        <source>The lengths of the picked edges add up to the length of the last one picked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="183"/>
+        <source>Fixed Length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="184"/>
+        <source>Each picked edge keeps its present length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="193"/>
+        <source>Length Range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="194"/>
+        <source>Each picked edge may change by at most 25 % (edit Min and Max of the constraint)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="204"/>
+        <source>Equal Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="205"/>
+        <source>The picked faces of boards stay level with each other (same coordinate along their normal)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="213"/>
+        <source>Pick two or more parallel faces of boards for Equal Position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="229"/>
+        <source>Pick {} for {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="237"/>
+        <source>Ground Touching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="238"/>
+        <source>The picked boards keep standing on the ground (their lowest face at the lowest board&apos;s level)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="243"/>
+        <source>Coplanar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
+        <source>The picked parallel boards stay in one plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="249"/>
+        <source>Snap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
+        <source>Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
+        <source>Symmetric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
+        <source>Two boards stay mirror images about the plane midway between them (along the axis that separates them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="277"/>
+        <source>Inner Volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="278"/>
+        <source>Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
+        <source>Pick the one board the free space rests on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="296"/>
+        <source>Outer Volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="297"/>
+        <source>An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="307"/>
+        <source>Design &apos;{}&apos; has no boxes to put an envelope round.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="318"/>
+        <source>Suggest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="319"/>
+        <source>Search for design variations that keep your constraints and waste less material (or, for a design with Parameters, spreadsheet values within their ranges); preview and accept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="44"/>
+        <source>Another task panel is open: finish it with OK or Cancel first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <source>FabGuide: the task panel closed: its document {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="80"/>
+        <source>Mechanism from Boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="81"/>
+        <source>Make a mechanism; each selected box (Part::Box) becomes one of its parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="87"/>
+        <source>Every picked box is already in a part: pick boxes that are not.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="95"/>
+        <source>Part from Boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="96"/>
+        <source>Make one part of the selected boxes: they move together</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="102"/>
+        <source>Select the boxes (Part::Box) the part is made of.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="112"/>
+        <source>Cavity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="113"/>
+        <source>Select a box of a part, then boxes to cut out of it: openings and compartments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="120"/>
+        <source>Select a box of the part first, then the boxes that are cavities in it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="162"/>
+        <source>Pick the one edge of a box the {} turns about.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="165"/>
+        <source>Pick a face of a box: the part slides along its normal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="181"/>
+        <source>Add Hinge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="182"/>
+        <source>Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="188"/>
+        <source>Add Slide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="189"/>
+        <source>Pick a face of a box: its part slides along the face&apos;s normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="194"/>
+        <source>Add Sliding Hinge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="195"/>
+        <source>Pick an edge and a face of a box: its part turns about the edge, which slides along the face&apos;s normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="201"/>
+        <source>Add Double Pivot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="202"/>
+        <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to, in the same plane: a rigid link joins them (the solve places both pivots)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="211"/>
+        <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="224"/>
+        <source>Add Fixed Joint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="225"/>
+        <source>Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints as one body with it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="232"/>
+        <source>Pick a box of the part to hold, then a box of the part it rides on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
+        <source>Both boxes are in one part: pick a box of the part to hold, then one of another part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="238"/>
+        <source>&apos;{}&apos; already rides on &apos;{}&apos;: pick the part to hold first, then the part it rides on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="293"/>
+        <source>Add Cover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="294"/>
+        <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="314"/>
+        <source>Add Fit Inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="315"/>
+        <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="326"/>
+        <source>Add Support</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
+        <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="335"/>
+        <source>Add Flush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="336"/>
+        <source>Pick two faces of boxes: they lie in one plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
+        <source>Add Geometric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="352"/>
+        <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="372"/>
+        <source>Solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="373"/>
+        <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="380"/>
+        <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
+        <source>Configurations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="391"/>
+        <source>Pose the joints: name configurations and move the mechanism between them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="404"/>
+        <source>Import Works-like Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="405"/>
+        <source>Build a mechanism from a *.workslike.json file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="429"/>
+        <source>Export Works-like Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="430"/>
+        <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="451"/>
+        <source>Make Printable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="452"/>
+        <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="470"/>
+        <source>{}: least clearance {:.3f} mm ({})
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="475"/>
+        <source>Export Printable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="476"/>
+        <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="51"/>
+        <source>&lt;i&gt;The layout is made again when you pause.&lt;/i&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="84"/>
+        <source>&lt;b&gt;The layout could not be made:&lt;/b&gt; {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="21"/>
+        <source>New Master Board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="22"/>
+        <source>Add a master board (sheet size, thickness, stock, material) to cut boards from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="35"/>
+        <source>Make Board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="36"/>
+        <source>Make a board from each selected sketch or planar face, as thick as the master boards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="44"/>
+        <source>Select sketches or planar faces first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="55"/>
+        <source>Boards from Solids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="56"/>
+        <source>Turn each selected thin solid into a board, detecting its thickness and outline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="64"/>
+        <source>Select the solids of your furniture model (flat boxes, pads, extrusions) first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="75"/>
+        <source>Band Edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="76"/>
+        <source>Glue edge banding on the picked edge faces of boards (asks for the band&apos;s name; empty removes it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="88"/>
+        <source>Pick the edge faces of boards (their narrow sides, not the large faces) first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="100"/>
+        <source>FabGuide: {} on {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="115"/>
+        <source>Nothing made: {}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="128"/>
+        <source>Layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="129"/>
+        <source>Lay the selected (or all) boards out on the master boards and show the material usage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="136"/>
+        <source>There are no boards yet: use Boards from Solids or Make Board first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="149"/>
+        <source>Export Cut Sheets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="150"/>
+        <source>Write SVG and DXF cut sheets per master board, a CSV cut list, the shop&apos;s PDF report and part labels for the selected layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="172"/>
+        <source>TechDraw Pages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="173"/>
+        <source>Make TechDraw pages of the selected layout&apos;s shop report: a page per master board (parts numbered and sized, grain, edge banding, saw cuts), then the cut list and the totals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="194"/>
+        <source>Make CAM Job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="195"/>
+        <source>Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, engraved labels) with your tool and post-processor, and write its G-code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="48"/>
+        <source>&lt;b style=&apos;color:{}&apos;&gt;{}&lt;/b&gt;{}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="67"/>
+        <source>&lt;b&gt;Pick two faces of boxes in the 3-D view&lt;/b&gt; (the first, then the second of the pair) and press Add; {} picked.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="143"/>
+        <source>&lt;b style=&apos;color:#b22222&apos;&gt;{}&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="69"/>
+        <source>Suggest cannot change {}: their sizes or places are set by expressions. Give Design &apos;{}&apos; the spreadsheet aliases that drive them as Parameters (&apos;Sheet.alias min max&apos;), and Suggest changes those.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="306"/>
+        <source>Design &apos;{}&apos;: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="337"/>
+        <source>Usage now: {:.3f}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="187"/>
+        <source>Searching for designs that waste less...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="222"/>
+        <source>Searching... best usage so far {:.3f}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="230"/>
+        <source>&lt;b&gt;No suggestions:&lt;/b&gt; {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="252"/>
+        <source>No variation of this design wastes less within its constraints{}{}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="256"/>
+        <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="274"/>
+        <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="317"/>
+        <source>usage {:.3f}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="352"/>
+        <source>FabGuide: locked the size of {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/workbench.py" line="12"/>
+        <source>Design things that work and waste nothing: functional relationships and zero-waste layouts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="78"/>
+        <source>Board &apos;{}&apos;: no Source (select a sketch, a planar face or a thin solid)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="89"/>
+        <source>{}: is FabGuide&apos;s {}, not a part of your model (pick a sketch, a planar face or a thin solid)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="93"/>
+        <source>{}: the source has no shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="99"/>
+        <source>{}: the source holds {} solids; make one board per solid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="105"/>
+        <source>{}: needs closed wires, a planar face or a solid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="107"/>
+        <source>{}: its closed wires do not lie in one plane, so they do not outline a board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="112"/>
+        <source>{}: its wires do not make a planar face ({})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="118"/>
+        <source>{}: the face is not planar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="120"/>
+        <source>{}: Thickness must be greater than 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="145"/>
+        <source>{}: has no planar face, so it is not a flat board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="150"/>
+        <source>{}: no face parallel and opposite to its largest face, so it is not a flat board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="155"/>
+        <source>{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="160"/>
+        <source>{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board is thinner than it is wide)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="52"/>
+        <source>FreeCAD&apos;s CAM (Path) workbench is not installed: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="73"/>
+        <source>tool bit file &apos;{}&apos; has no diameter ({})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="95"/>
+        <source>no {} for the material &apos;{}&apos; (given for {})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="106"/>
+        <source>cut through by {:g} mm: from 0 to 5 mm below the sheet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="110"/>
+        <source>feed {:g} mm/min for &apos;{}&apos;: from 10 to 50000 mm/min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="113"/>
+        <source>spindle speed {:g} rpm for &apos;{}&apos;: from 0 to 60000 rpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="117"/>
+        <source>no post-processor &apos;{}&apos; in FreeCAD (there are: {})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="121"/>
+        <source>tool bit file &apos;{}&apos; not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="124"/>
+        <source>Layout &apos;{}&apos;: its parts are {:g} mm apart (Kerf {:g} + Spacing {:g} mm), too close for the {:g} mm tool: set its Kerf to the tool&apos;s diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="380"/>
+        <source>Job &apos;{}&apos;: post-processor &apos;{}&apos; not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="392"/>
+        <source>Job &apos;{}&apos;: the post-processor &apos;{}&apos; wrote nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
+        <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="125"/>
+        <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="219"/>
+        <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="242"/>
+        <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
+        <source>add a master board (MasterBoards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="312"/>
+        <source>{}: edit undone: {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <source>Layout &apos;{}&apos;: {}{}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
+        <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="156"/>
+        <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="159"/>
+        <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="163"/>
+        <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="190"/>
+        <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="244"/>
+        <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="247"/>
+        <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="25"/>
+        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; must read &apos;Sheet.alias min max&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="30"/>
+        <source>Design &apos;{}&apos;: parameter &apos;{}&apos;: no spreadsheet &apos;{}&apos; with an alias &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
+        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {} now, outside its range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="47"/>
+        <source>Spreadsheet &apos;{}&apos;: &apos;{}&apos; holds no number ({})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="81"/>
+        <source>Design &apos;{}&apos; has no Parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/techdraw.py" line="58"/>
+        <source>TechDraw&apos;s blank A4 template is not installed with this FreeCAD</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="120"/>
+        <source>{}; kept {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/references.py" line="28"/>
+        <source>{}; left out when opening the document
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="84"/>
+        <source>see the report view</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FabGuidePreferences</name>
+    <message>
+        <location filename="../ui/Preferences.ui" line="5"/>
+        <source>FabGuide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="9"/>
+        <source>Cutting (new layouts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="11"/>
+        <source>Kerf</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="12"/>
+        <source>Width of the cut: the laser beam or the router bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="46"/>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="13"/>
+        <source>Spacing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="14"/>
+        <source>Material left between parts besides the kerf</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="15"/>
+        <source>Edge trim</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="16"/>
+        <source>Margin kept along every master board edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="17"/>
+        <source>Time limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="18"/>
+        <source>Seconds a layout&apos;s search may take at most</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="18"/>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="24"/>
+        <source>Master board (new master boards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="26"/>
+        <source>Width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="27"/>
+        <source>The sheet you buy, along the layout&apos;s x axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="28"/>
+        <source>Height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="29"/>
+        <source>The sheet you buy, along the layout&apos;s y axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="30"/>
+        <source>Thickness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="31"/>
+        <source>Used when no board gives the thickness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="37"/>
+        <source>Printing in place (new printables)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="39"/>
+        <source>Gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="40"/>
+        <source>Clearance between printed parts: 0.4 mm suits FDM, 0.2 mm resin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="41"/>
+        <source>Build volume width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="42"/>
+        <source>Your printer&apos;s build volume along x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="43"/>
+        <source>Build volume depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="44"/>
+        <source>Your printer&apos;s build volume along y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="45"/>
+        <source>Build volume height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/Preferences.ui" line="46"/>
+        <source>Your printer&apos;s build volume along z</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LayoutPanel</name>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="6"/>
+        <source>Layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="12"/>
+        <source>Material usage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="15"/>
+        <source>Usage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="15"/>
+        <source>Part area / area of the rectangle the layout covers (the thesis&apos; measure)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="24"/>
+        <source>-</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="17"/>
+        <source>Sheet utilisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="17"/>
+        <source>Part area / area of the master boards used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="19"/>
+        <source>Waste area</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="21"/>
+        <source>Master boards used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="23"/>
+        <source>Saw cuts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="23"/>
+        <source>Guillotine cuts: how many, and their total length (the cut sequence is on the cut sheets)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="31"/>
+        <source>Cutting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="34"/>
+        <source>Kerf</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="36"/>
+        <source>Spacing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="38"/>
+        <source>Edge trim</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="40"/>
+        <source>Cuts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="40"/>
+        <source>Free: any outline (CNC router, laser). Guillotine: straight cuts from edge to edge only (panel, track or table saw)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="42"/>
+        <source>Stages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="42"/>
+        <source>Guillotine cuts: at most this many changes of direction; 0 = unlimited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="43"/>
+        <source>Unlimited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="44"/>
+        <source>First cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="44"/>
+        <source>Guillotine cuts: the first cuts along the sheet&apos;s length, across it, or whichever wastes less</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>RelationshipPanel</name>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="6"/>
+        <source>Relationship</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="17"/>
+        <source>Corresponding faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="22"/>
+        <source>Blue → red in the 3-D view: first → second. Pick two faces there and press Add; double-click a pair to retype it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="28"/>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="28"/>
+        <source>Add the two faces picked in the 3-D view as a pair</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="29"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="29"/>
+        <source>Remove the selected pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="30"/>
+        <source>Re-infer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/RelationshipPanel.ui" line="30"/>
+        <source>Forget the pairs and infer them again on a solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SuggestPanel</name>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="22"/>
+        <source>Suggest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="12"/>
+        <source>Time limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="13"/>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="14"/>
+        <source>Threads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="16"/>
+        <source>Seed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="23"/>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="31"/>
+        <source>Path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="36"/>
+        <source>Keep these parts&apos; sizes from the suggestion:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/SuggestPanel.ui" line="38"/>
+        <source>Apply, keep, suggest again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Workbench</name>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="33"/>
+        <source>Parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="35"/>
+        <source>Joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="37"/>
+        <source>Relationships</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="39"/>
+        <source>Print in place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="41"/>
+        <source>Works-like file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="43"/>
+        <source>Boards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="45"/>
+        <source>Cut sheets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="47"/>
+        <source>Design constraints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="49"/>
+        <source>Volumes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="51"/>
+        <source>Flat-pack file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="56"/>
+        <source>Function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="57"/>
+        <source>Material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="58"/>
+        <source>Zero waste</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/commands.py" line="59"/>
+        <source>Zero-waste design</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+</TS>

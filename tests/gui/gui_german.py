@@ -1,0 +1,43 @@
+"""FabGuide in German (issue 34): with FreeCAD's language set to German before the workbench first loads, its
+toolbars, drop-down buttons, commands and their tips, and what a command tells the user come from
+Resources/translations/FabGuide_de.qm; screenshots of the German workbench at 1366 and 1920 px."""
+import FreeCAD
+import FreeCADGui as Gui
+from PySide import QtGui
+
+import guitest
+
+
+def the_toolbars_and_commands_speak_german():
+    Gui.setLocale("German")
+    Gui.activateWorkbench("FabGuideWorkbench")
+    guitest.settle(0.3)
+    window = Gui.getMainWindow()
+    titles = {bar.objectName(): bar.windowTitle() for bar in window.findChildren(QtGui.QToolBar)}
+    assert (titles.get("Function"), titles.get("Zero waste")) == ("Funktion", "Kein Verschnitt"), titles
+    texts = {action.text() for action in window.findChildren(QtGui.QAction)}
+    for german in ("Platte erstellen", "Zuschnitt", "Scharnier hinzufügen", "Gelenke", "Vorschlagen"):
+        assert german in texts, (german, sorted(t for t in texts if t)[:40])
+    tips = {action.toolTip() for action in window.findChildren(QtGui.QAction)}
+    assert any(t.startswith("Aus jeder gewählten Skizze oder ebenen Fläche eine Platte") for t in tips)
+    for path in guitest.screenshots_at_screen_sizes("german"):
+        print("screenshot: " + path)
+
+
+def a_mistake_is_told_in_german():
+    doc = guitest.new_document("Deutsch")
+    empty = doc.addObject("Part::Feature", "Empty")
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(empty)
+    said = guitest.told("FabGuide_BoardsFromSolids")
+    assert said == ("Wählen Sie zuerst die Körper Ihres Möbelmodells (flache Quader, Aufpolsterungen, "
+                    "Extrusionen)."), said
+    FreeCAD.closeDocument(doc.Name)
+    Gui.setLocale("English")
+
+
+guitest.run([
+    the_toolbars_and_commands_speak_german,
+    a_mistake_is_told_in_german,
+])
