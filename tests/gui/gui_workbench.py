@@ -82,6 +82,26 @@ def window_screenshot_is_saved():
     print("screenshot: " + path)
 
 
+def a_command_is_recorded_for_macros():
+    """A FabGuide command clicked is recorded as FreeCAD records its own (Macro > Macro recording, the Python
+    console): `Gui.runCommand(name, 0)`, which replays it on the selection the lines before it make."""
+    doc = guitest.new_document("Recorded")
+    side = doc.addObject("Part::Box", "Side")
+    side.Length, side.Width, side.Height = 400, 300, 18
+    doc.recompute()
+    window = Gui.getMainWindow()
+    console = window.findChild(QtGui.QPlainTextEdit, "Python console")
+    before = len(console.toPlainText())
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(side)
+    next(a for a in window.findChildren(QtGui.QAction) if a.objectName() == "FabGuide_BoardsFromSolids").trigger()
+    guitest.settle(0.3)
+    assert "Gui.runCommand('FabGuide_BoardsFromSolids',0)" in console.toPlainText()[before:], \
+        console.toPlainText()[before:]
+    assert [o.Label for o in doc.Objects if o.Label.endswith(" board")] == ["Side board"]
+    FreeCAD.closeDocument(doc.Name)
+
+
 guitest.run([
     workbench_is_listed_with_its_icon,
     workbench_activates_with_function_and_material_toolbars,
@@ -89,4 +109,5 @@ guitest.run([
     about_command_is_registered,
     preferences_page_stores_what_new_objects_start_with,
     window_screenshot_is_saved,
+    a_command_is_recorded_for_macros,
 ])
