@@ -8,7 +8,7 @@ from freecad.fabguide.i18n import translate
 
 READ_ONLY, HIDDEN, OUTPUT = 1, 4, 8  # App::PropertyType flags
 
-NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance")
+NUMBERS = ("App::PropertyFloat", "App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle")
 TYPED = NUMBERS + ("App::PropertyFloatList",)  # what typed_in judges finite
 
 

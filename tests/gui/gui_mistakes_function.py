@@ -8,7 +8,7 @@ from PySide import QtCore
 
 import guitest
 from freecad.fabguide import cuboids
-from freecad.fabguide.function import mechanism
+from freecad.fabguide.function import configuration, mechanism
 
 state = {}
 boxes = None  # guitest.MessageBoxes, from the first step: what message boxes said, in order
@@ -101,14 +101,14 @@ def an_angle_typed_out_of_range_keeps_the_panel_open_and_enter_does_not_accept()
     assert Gui.Control.activeDialog(), "Enter in a field does not accept the panel"
     assert not panel.accept(), "OK refused while the angle does not read"
     assert "is not an angle from -360 to 360" in panel.status.text(), panel.status.text()
-    assert len([o for o in mech.Group if hasattr(o, "Angles")]) == configurations, "nothing stored"
+    assert len([o for o in mech.Group if configuration.is_configuration(o)]) == configurations, "nothing stored"
     angle.selectAll()
     guitest.keys(angle, "-40")
     panel.name.setText("Drawer pulled out all the way for cleaning behind it, as the manual shows on page twelve")
     assert panel.accept()
     guitest.settle(0.3)
     shown = mech.ShownConfiguration
-    assert shown is not None and list(shown.Angles) == [-40.0], shown and shown.Angles
+    assert shown is not None and [a for _, a, _ in configuration.poses(shown)] == [-40.0], shown
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(mech)
     Gui.runCommand("FabGuide_Configurations")

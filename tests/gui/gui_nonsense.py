@@ -9,7 +9,7 @@ line.
 # expects error: Mechanism 'Mechanism': MinimumSize must be 0.01 mm or more; kept
 # expects error: Joint 'Lid hinge': Part must be a FabGuide part; kept 'Lid part'
 # expects error: Configuration 'Open': Joints must be joints; kept 'Lid hinge'
-# expects error: Configuration 'Open': Angles must be a finite number; kept
+# expects error: Configuration 'Open': HingeAngle must be a finite number; kept -90.00 °
 # expects error: Printable 'Mechanism printable': Mechanism must be a Mechanism; kept 'Mechanism'
 # expects error: Design 'Bookshelf': MasterBoards must be master boards; kept 'MasterBoard'
 # expects error: Design 'Bookshelf': parts: at least one part is needed
@@ -85,8 +85,9 @@ def links_to_the_wrong_objects_are_refused_as_typed():
     mech.Group = mech.Group + [made]
     typed(made, "Joints", [made])
     assert list(made.Joints) == [state["hinge"]]
-    typed(made, "Angles", [math.nan])
-    assert list(made.Angles) == [-90]
+    angle = state["hinge"].Name + "Angle"
+    typed(made, angle, math.nan)
+    assert getattr(made, angle).Value == -90
     print_it = printable.create(doc, mech)
     group = doc.addObject("App::DocumentObjectGroup", "Group")
     typed(print_it, "Mechanism", group)

@@ -44,6 +44,27 @@ def clamshell(doc, just=True):
     return mech, body, lid, cover
 
 
+def test_a_pose_takes_units_and_an_expression(doc):
+    """A configuration's angle is a property of its own (issue 34): typed with a unit, or bound to a spreadsheet
+    cell, and the mechanism solves in the pose the cell gives."""
+    mech, body, lid, cover = clamshell(doc)
+    closed = next(o for o in mech.Group if configuration.is_configuration(o))
+    hinge = closed.Joints[0]
+    angle = hinge.Name + "Angle"
+    assert closed.getTypeIdOfProperty(angle) == "App::PropertyAngle" and closed.getGroupOfProperty(angle) == "Poses"
+    setattr(closed, angle, FreeCAD.Units.Quantity("0.5 rad"))
+    assert [a for _, a, _ in configuration.poses(closed)] == [pytest.approx(math.degrees(0.5))]
+    sheet = doc.addObject("Spreadsheet::Sheet", "Sheet")
+    sheet.set("A1", "180")
+    sheet.setAlias("A1", "closed")
+    closed.setExpression(angle, "Sheet.closed")
+    doc.recompute()
+    assert configuration.as_dict(closed)["poses"] == {hinge.Label: pytest.approx(180)}
+    assert mech.Status == "Solved" and cover.Status == "Satisfied"
+    configuration.set_poses(closed, [])  # the hinge posed no more: its property goes
+    assert angle not in closed.PropertiesList
+
+
 def touched(doc):
     return [o.Label for o in doc.Objects if "Touched" in o.State or properties.failed(o)]
 

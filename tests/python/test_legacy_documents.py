@@ -1,6 +1,7 @@
 """Documents saved by an earlier FabGuide open, recompute to what they held and are saved in today's form
 (docs/decisions.md, "Documents carry their version"). tests/data/legacy/README.md says how each file was made."""
 import glob
+import json
 import os
 import re
 import zipfile
@@ -8,7 +9,7 @@ import zipfile
 import FreeCAD
 import pytest
 from freecad import fabguide
-from freecad.fabguide.function import mechanism, printable, relationships
+from freecad.fabguide.function import configuration, mechanism, printable, relationships
 from freecad.fabguide.material import design
 
 FREECAD = tuple(int(v) for v in FreeCAD.Version()[:2])
@@ -68,6 +69,12 @@ def test_works_like_document_opens_solves_and_prints(source_dir, tmp_path):
         assert rels and not [rel.Label for rel in rels if "Conflict" in rel.Status or not rel.Status]
         made = next(obj for obj in objects if printable.is_printable(obj))
         assert "Invalid" not in made.State and len(made.Group) > 1 and made.MinimumClearance.Value > 0
+        # migration 4: the lists of angles and offsets became a property per joint, in units, the poses kept
+        posed = [obj for obj in objects if configuration.is_configuration(obj)]
+        with open(os.path.join(source_dir, "examples", "box-with-lid.workslike.json")) as example:
+            assert [configuration.as_dict(c) for c in posed] == json.load(example)["configurations"]
+        assert not {"Angles", "Offsets"} & set(posed[0].PropertiesList)
+        assert posed[0].getTypeIdOfProperty(posed[0].Joints[0].Name + "Angle") == "App::PropertyAngle"
         FreeCAD.closeDocument(doc.Name)
 
 

@@ -6,6 +6,9 @@ from freecad.fabguide.function import joints
 from freecad.fabguide.i18n import translate
 
 
+POSES = "Poses"  # the property group of each joint's angle and offset
+
+
 class Configuration(properties.Proxy):
     TYPE, NOUN = "FabGuide::Configuration", "Configuration"
     VALID = dict(Joints=properties.links(joints.is_joint, "joints"))
@@ -13,11 +16,15 @@ class Configuration(properties.Proxy):
     def define(self, obj):
         add = properties.add
         add(obj, "App::PropertyLinkList", "Joints", "Configuration", "The joints it moves")
-        add(obj, "App::PropertyFloatList", "Angles", "Configuration",
-            "Per joint: the hinge angle in degrees (right-handed about the edge's +x/+y/+z direction)")
-        add(obj, "App::PropertyFloatList", "Offsets", "Configuration", "Per joint: the slide offset in mm")
         add(obj, "App::PropertyVectorList", "Poles", "Configuration",
-            "Per joint: for a double pivot, the point its part turns about (with Angles) to get here")
+            "Per joint: for a double pivot, the point its part turns about to get here")
+        if "Angles" in obj.PropertiesList:  # migration 4: up to 0.2.0, plain lists per joint
+            angles, offsets = list(obj.Angles), list(getattr(obj, "Offsets", []))
+            obj.removeProperty("Angles")
+            if "Offsets" in obj.PropertiesList:
+                obj.removeProperty("Offsets")
+            set_poses(obj, [(j, angles[k] if k < len(angles) else 0.0, offsets[k] if k < len(offsets) else 0.0)
+                            for k, j in enumerate(obj.Joints)])
 
     def recompute(self, obj):
         as_dict(obj)
@@ -32,20 +39,41 @@ def create(doc, label, poses, poles=None):
     return obj
 
 
+def pose_properties(joint):
+    """{property: (type, tip)} of a joint's pose in a configuration: an angle (degrees) for what turns, an offset
+    (mm) for what slides; properties of their own, so they take units and expressions (a spreadsheet's cell)."""
+    posed = {}
+    if joints.kind(joint) in ("hinge", "sliding_hinge", "double_pivot"):
+        posed[joint.Name + "Angle"] = ("App::PropertyAngle", "How far '{}' turns its part (right-handed about "
+                                       "the edge's +x/+y/+z direction)".format(joint.Label))
+    if joints.slides(joint):
+        posed[joint.Name + "Offset"] = ("App::PropertyDistance", "How far '{}' slides its part".format(joint.Label))
+    return posed
+
+
 def set_poses(obj, poses, poles=None):
-    """poses: [(joint, angle, offset)]; poles: a Vector per pose (double pivots), else kept where they were."""
+    """poses: [(joint, angle, offset)]; poles: a Vector per pose (double pivots), else kept where they were. The
+    properties of joints no longer posed go."""
     kept = dict(zip([j.Name for j in obj.Joints], obj.Poles))
     obj.Joints = [j for j, _, _ in poses]
-    obj.Angles = [float(a) for _, a, _ in poses]
-    obj.Offsets = [float(o) for _, _, o in poses]
+    wanted = {}
+    for joint, angle, offset in poses:
+        for name, (kind, tip) in pose_properties(joint).items():
+            properties.add(obj, kind, name, POSES, tip)
+            wanted[name] = angle if kind == "App::PropertyAngle" else offset
+    for name in obj.PropertiesList:
+        if obj.getGroupOfProperty(name) == POSES and name not in wanted:
+            obj.removeProperty(name)
+    for name, value in wanted.items():
+        setattr(obj, name, float(value))
     obj.Poles = list(poles) if poles is not None else [kept.get(j.Name, FreeCAD.Vector()) for j, _, _ in poses]
 
 
 def poses(obj):
-    """[(joint, angle, offset)], missing list entries read as 0."""
-    angles, offsets = list(obj.Angles), list(obj.Offsets)
-    return [(j, angles[k] if k < len(angles) else 0.0, offsets[k] if k < len(offsets) else 0.0)
-            for k, j in enumerate(obj.Joints)]
+    """[(joint, angle in degrees, offset in mm)]; what a joint does not do reads 0."""
+    def value(name):
+        return getattr(obj, name).Value if name in obj.PropertiesList else 0.0
+    return [(j, value(j.Name + "Angle"), value(j.Name + "Offset")) for j in obj.Joints]
 
 
 def pole(obj, joint):
