@@ -67,7 +67,7 @@ Linear constant(double value)
 
 Linear InnerVolume::lower(int axis) const
 {
-    return centreOf(on, axis) + constant(offset[axis]);
+    return (anchor[axis] < 0 ? lowerFace(on, axis) : upperFace(on, axis)) + constant(offset[axis]);
 }
 Linear InnerVolume::upper(int axis) const
 {

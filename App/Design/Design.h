@@ -62,11 +62,16 @@ struct DesignConstraint {
 };
 
 /// Space that must stay free of boards (thesis 5.3.5.1): a box of `size` resting on board `on`, its lower
-/// corner at `on`'s centre + `offset`, so it moves with the board that holds it.
+/// corner `offset` from the board's faces it is anchored to, so it moves with the board that holds it.
 struct InnerVolume {
     std::string name;
     int on = 0;
-    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    /// Per axis, the face of its board the volume keeps its distance from as the board changes (5.1: the
+    /// space travels with its board): -1 the lower face, +1 the upper one, whichever it was drawn nearer
+    /// (issue 32: anchored at the centre, a board shrunk to the volume's length left an off-centre volume
+    /// hanging over).
+    std::array<int, 3> anchor{-1, -1, -1};
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< the volume's lower corner from its anchors
     Eigen::Vector3d size = Eigen::Vector3d::Zero();
     Linear lower(int axis) const;  ///< the box's lower face
     Linear upper(int axis) const;

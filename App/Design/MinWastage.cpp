@@ -118,12 +118,21 @@ bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
 }
 
 constexpr double kWindow = 0.03;   // of the bought area: suggestions after the first waste at most that more
-constexpr double kDistinct = 1.0;  // mm of part lengths between two designs that differ
+constexpr double kUnchanged = 1.0;  // mm of part lengths (their norm) within which a design is the user's
+constexpr double kDistinct = 10.0;  // mm one part length at least differs by between two suggestions
+
+/// How far apart a maker sees two designs: the largest change of any one part length (issue 32: suggestions
+/// 1 and 2 within 2 mm of each other showed the same design twice).
+double apart(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
+{
+    return (a - b).lpNorm<Eigen::Infinity>();
+}
 
 /// The next suggestion (5.3.3's farthest-point choice, on the maker's terms) of `pool`, sorted in the maker's
 /// order, not yet taken: the first; then the design nearest the user's on as many sheets as the first (the
 /// least change that gets there); then the design farthest in part lengths from those chosen, among those on
-/// as many sheets within kWindow of its waste. -1 when there is none.
+/// as many sheets within kWindow of its waste. Each differs from every one chosen by kDistinct in some part
+/// length. -1 when there is none.
 int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
              const std::vector<Suggestion>& chosen, const DesignLayout& start)
 {
@@ -138,7 +147,7 @@ int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
         const MaterialSpace::Figures& best = chosen.front().result.figures;
         double nearest = std::numeric_limits<double>::infinity();
         for (const Suggestion& s : chosen)
-            nearest = std::min(nearest, (s.result.sizes - d.sizes).norm());
+            nearest = std::min(nearest, apart(s.result.sizes, d.sizes));
         if (d.figures.cost != best.cost || d.figures.sheets != best.sheets || nearest < kDistinct)
             continue;
         const double change = (d.sizes - start.sizes).norm();
@@ -162,7 +171,7 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
     pool.erase(std::remove_if(pool.begin(), pool.end(),
                               [&](const Entry& e) {
                                   return !better(e.design, start) ||
-                                         (e.design.sizes - start.sizes).norm() < kDistinct;
+                                         (e.design.sizes - start.sizes).norm() < kUnchanged;
                               }),
                pool.end());
     std::stable_sort(pool.begin(), pool.end(),

@@ -354,6 +354,19 @@ void addSettingConstraints(const Fields& settings, Design& design)
             addSnapping(design, a, b);
 }
 
+/// An inner volume stands on its board: along the board's plane the board stays under the volume's whole
+/// footprint, or overhangs it no more than drawn (issue 32: pantry shelves went from 542 to 60 mm deep under
+/// 300 mm jar spaces).
+void addStandsOn(Design& design, const material::InnerVolume& v)
+{
+    const Eigen::VectorXd X = design.variables();
+    const std::string name = v.name + " (stands on " + design.boards[v.on].id + ")";
+    for (int axis : design.boards[v.on].inPlane())
+        for (const material::Linear& over : {material::lowerFace(v.on, axis) - v.lower(axis),
+                                             v.upper(axis) - material::upperFace(v.on, axis)})
+            design.bounds.push_back({name, over - material::constant(std::max(0.0, over.value(X)))});
+}
+
 void readInnerVolumes(const Fields& root, Design& design)
 {
     const nlohmann::json& inner = root.array("inner_volumes", true);
@@ -365,9 +378,19 @@ void readInnerVolumes(const Fields& root, Design& design)
         v.size = volume.vector3("size");
         if (v.size.minCoeff() <= 0)  // a space no part could be kept out of (issue 32)
             throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
-        v.offset = volume.vector3("position") - design.boards[v.on].centre;
+        const Eigen::Vector3d position = volume.vector3("position");
+        const Eigen::VectorXd X = design.variables();
+        for (int axis = 0; axis < 3; ++axis) {  // its nearer face, the lower one on a tie
+            const double below = position[axis] - material::lowerFace(v.on, axis).value(X);
+            const double above = material::upperFace(v.on, axis).value(X) - position[axis] - v.size[axis];
+            v.anchor[axis] = below <= above ? -1 : 1;
+            v.offset[axis] = position[axis] - (v.anchor[axis] < 0 ? material::lowerFace(v.on, axis)
+                                                                  : material::upperFace(v.on, axis))
+                                                  .value(X);
+        }
         volume.noOthers();
         design.innerVolumes.push_back(v);
+        addStandsOn(design, v);
     }
 }
 
@@ -450,10 +473,10 @@ nlohmann::json withParts(nlohmann::json document, const Design& design, const Ei
         document["parts"][i]["size"] = parts[i]["size"];
     }
     // Inner volumes move with their boards (5.1: the shelf space travels with the shelf).
-    const std::vector<material::DesignBoard> boards = design.boardsAt(X);
     for (size_t i = 0; i < design.innerVolumes.size(); ++i) {
-        const Eigen::Vector3d at = boards[design.innerVolumes[i].on].centre + design.innerVolumes[i].offset;
-        document["inner_volumes"][i]["position"] = {at.x(), at.y(), at.z()};
+        const material::InnerVolume& v = design.innerVolumes[i];
+        document["inner_volumes"][i]["position"] = {v.lower(0).value(X), v.lower(1).value(X),
+                                                    v.lower(2).value(X)};
     }
     return document;
 }

@@ -39,6 +39,7 @@ AXES = "xyz"
 TOL = 0.01  # mm: constraint equalities, touching, flush, interpenetration (boxes overlapping by more than this)
 LAYOUT_TOL = 1e-6  # mm: gaps and margins in the layout are what the settings ask, to rounding
 SIZE_TOL = 0.01  # mm: a placement's size against the suggestion's board
+DISTINCT = 10.0  # mm: some board of a suggestion differs by this from every earlier suggestion (a maker sees it)
 RELOAD_TIME_LIMIT = "1"
 RELOAD_TIMEOUT = 120  # s
 
@@ -274,9 +275,17 @@ def constraint_problems(original, suggestion, tol=TOL):
         if on not in B0:
             problems.append("%s: no board %r" % (vname, on))
             continue
-        offset = [float(vol["position"][k]) - B0[on].centre(k) for k in range(3)]
-        lo = [B1[on].centre(k) + offset[k] for k in range(3)]
+        v0 = Box({"id": vname, "position": vol["position"], "size": vol["size"]})
+        # it keeps its distance from the face of its board it was drawn nearer to (the lower one on a tie)
+        lo = [v0.lo[k] + (B1[on].lo[k] - B0[on].lo[k] if v0.lo[k] - B0[on].lo[k] <= B0[on].hi[k] - v0.hi[k]
+                          else B1[on].hi[k] - B0[on].hi[k]) for k in range(3)]
         v = Box({"id": vname, "position": lo, "size": vol["size"]})
+        for k in B1[on].in_plane():  # and stands on it: the board under all of it, or overhung no more than drawn
+            for side, drawn, now in (("lower", B0[on].lo[k] - v0.lo[k], B1[on].lo[k] - v.lo[k]),
+                                     ("upper", v0.hi[k] - B0[on].hi[k], v.hi[k] - B1[on].hi[k])):
+                if now > max(0.0, drawn) + tol:
+                    problems.append("%s: off %s by %s mm on its %s side along %s" % (
+                        vname, on, fmt(now), side, AXES[k]))
         for pid, b in B1.items():
             if pid != on and interpenetrate(v, b, tol):
                 problems.append("%s (on %s) intruded by %s by %s mm" % (
@@ -558,10 +567,11 @@ def check_output(outdir, original, cli=None, reload=True):
     """Every suggestion in an optimise output folder: {file: problems}."""
     with open(os.path.join(outdir, "summary.json")) as f:
         summary = json.load(f)
-    results = {}
+    results, suggestions = {}, []
     for entry in summary.get("suggestions", []):
         with open(os.path.join(outdir, entry["file"])) as f:
             suggestion = json.load(f)
+        suggestions.append(suggestion)
         with open(os.path.join(outdir, entry["layout"])) as f:
             layout = json.load(f)
         before_layout = None
@@ -571,7 +581,20 @@ def check_output(outdir, original, cli=None, reload=True):
         results[entry["file"]] = check_suggestion(original, suggestion, layout, entry, summary.get("before"),
                                                   cli=cli, reload=reload, before_layout=before_layout,
                                                   suggestion_path=os.path.join(outdir, entry["file"]))
+    results["suggestions together"] = alike_problems(suggestions)
     return results
+
+
+def alike_problems(suggestions):
+    """Suggestions (designs, in order) with no board that differs by DISTINCT from an earlier one's."""
+    problems = []
+    for k, later in enumerate(suggestions):
+        sizes = {p["id"]: p["size"] for p in later["parts"]}
+        for j, earlier in enumerate(suggestions[:k]):
+            if max(abs(a - b) for p in earlier["parts"] for a, b in zip(p["size"], sizes[p["id"]])) < DISTINCT - TOL:
+                problems.append("suggestion %d: no board differs by %g mm from suggestion %d" % (k + 1, DISTINCT,
+                                                                                                j + 1))
+    return problems
 
 
 def main(argv):

@@ -191,6 +191,26 @@ def test_inner_volume_moves_with_its_board_and_must_stay_free():
     assert any(p.startswith("inner volume 'box' (on shelf) intruded by top") for p in problems), problems
 
 
+def test_a_board_shrunk_from_under_its_inner_volume_fails():
+    """Issue 32: the box, drawn 10 mm from the shelf's front edge and 200 mm deep, moves with that edge; the shelf
+    may not shrink from under it."""
+    sugg = suggestion()
+    part(sugg, "shelf")["size"][1] = 209
+    problems = check(sugg=sugg)
+    assert any(p.startswith("inner volume 'box': off shelf by 1 mm on its upper side along y") for p in problems), \
+        problems
+    part(sugg, "shelf")["size"][1] = 210
+    assert not any("off shelf" in p for p in check(sugg=sugg))
+
+
+def test_suggestions_alike_to_a_maker_fail():
+    first, second = suggestion(), suggestion()
+    part(second, "shelf")["size"][0] += 9  # within 10 mm on every board
+    assert C.alike_problems([first, second]) == ["suggestion 2: no board differs by 10 mm from suggestion 1"]
+    part(second, "shelf")["size"][0] += 1
+    assert C.alike_problems([first, second]) == []
+
+
 def test_outer_volume_fails():
     sugg = suggestion()
     for p in sugg["parts"]:

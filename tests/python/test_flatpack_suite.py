@@ -107,5 +107,6 @@ def test_suite_design(fabguide_cli, design, tmp_path):
                                    "waste": flatpack_checker.waste_of(layout), "usage": entry.get("usage_after"),
                                    "problems": found})
         problems += ["%s: %s" % (entry["file"], p) for p in found]
+    problems += flatpack_checker.alike_problems([load(str(out / e["file"])) for e in summary.get("suggestions", [])])
     report(design, row)
     assert problems == [], "%d problems:\n  %s" % (len(problems), "\n  ".join(problems[:40]))

@@ -386,17 +386,23 @@ def mark_constraints(obj, error):
 
 def write_parts(obj, parts, start=None):
     """Moves and sizes the boxes to `parts`. An inner volume rests on its board as the core has it: where it was
-    in design `start` (a dict with parts and inner_volumes; the design now if None), moved as far as its board's
-    centre moved from `start` to `parts`; so writing `start`'s own parts puts every volume back exactly."""
+    in design `start` (a dict with parts and inner_volumes; the design now if None), moved along each axis as far
+    as the face of its board it is nearer to (the lower one on a tie: InnerVolume in App/Design/Design.h) moved
+    from `start` to `parts`; so writing `start`'s own parts puts every volume back exactly."""
     start = start or snapshot(obj)
     by_id = {p["id"]: p for p in parts}
     for box in boxes(obj):
         p = by_id[box.Label]
         cuboids.place(box, [round(v, 9) for v in corners(p)])
-    before, after = centres(start["parts"]), centres(parts)
+    before, after = {p["id"]: corners(p) for p in start["parts"]}, {p["id"]: corners(p) for p in parts}
     for v, was in zip(inner_volumes(obj), start["inner_volumes"]):
-        on = was["on"]
-        at = FreeCAD.Vector(*[round(was["position"][a] + after[on][a] - before[on][a], 9) for a in range(3)])
+        on, at = was["on"], []
+        for a in range(3):
+            low, high = before[on][2 * a], before[on][2 * a + 1]
+            face = 2 * a + (was["position"][a] - low > high - was["position"][a] - was["size"][a])
+            shift = after[on][face] - before[on][face]
+            at.append(round(was["position"][a] + shift, 9) if shift else was["position"][a])  # exactly back
+        at = FreeCAD.Vector(*at)
         if (v.Placement.Base - at).Length > 1e-9:
             v.Placement = FreeCAD.Placement(at, FreeCAD.Rotation())
             v.purgeTouched()
@@ -405,10 +411,6 @@ def write_parts(obj, parts, start=None):
 def corners(part):
     """A format part's [left, right, near, far, bottom, top], as cuboids.coordinates has a box's."""
     return [v for a in range(3) for v in (part["position"][a], part["position"][a] + part["size"][a])]
-
-
-def centres(parts):
-    return {p["id"]: [p["position"][a] + p["size"][a] / 2 for a in range(3)] for p in parts}
 
 
 @contextlib.contextmanager
