@@ -54,7 +54,7 @@ void run(const OptimiseArguments& args)
     io::OutputBatch files;
     const nlohmann::json document = io::readJsonFile(args.input);
     const io::FlatpackDesign flatpack = io::readFlatpack(document);
-    const material::ConstrainedDesign design(flatpack.design);
+    const material::ConstrainedDesign design(io::forSuggestions(flatpack));
     const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
     material::MinWastageOptions options = args.options;
     options.guided = !args.unguided;

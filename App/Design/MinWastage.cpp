@@ -117,7 +117,7 @@ bool ranksBefore(const DesignLayout& a, const DesignLayout& b)
     return key(a.figures) < key(b.figures);
 }
 
-constexpr double kWindow = 0.03;   // of the bought area: suggestions after the first waste at most that more
+constexpr double kWindow = 0.03;    // of the bought area: suggestions after the first waste at most that more
 constexpr double kUnchanged = 1.0;  // mm of part lengths (their norm) within which a design is the user's
 constexpr double kDistinct = 10.0;  // mm one part length at least differs by between two suggestions
 

@@ -434,6 +434,8 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     }
     Design& design = result.design;
     readParts(root, thicknesses, design);
+    if (document.contains("settings"))
+        result.maxGrowth = Fields(document["settings"], "settings").number("max_growth", 1.5, 1.0);
     const nlohmann::json noSettings = nlohmann::json::object();
     addSettingConstraints(
         Fields(document.contains("settings") ? document["settings"] : noSettings, "settings"), design);
@@ -451,6 +453,21 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
     return result;
+}
+
+material::Design forSuggestions(const FlatpackDesign& f)
+{
+    material::Design design = f.design;
+    const Eigen::VectorXd X = design.variables();
+    const char* axes = "xyz";
+    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
+        for (int axis : design.boards[b].inPlane()) {
+            const double most = f.maxGrowth * X[material::sizeVariable(b, axis)];
+            design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " <= " + show(most) +
+                                         " (max_growth " + show(f.maxGrowth) + ")",
+                                     material::sizeOf(b, axis) - material::constant(most)});
+        }
+    return design;
 }
 
 nlohmann::json partsAt(const Design& design, const Eigen::VectorXd& X)

@@ -22,7 +22,14 @@ struct FlatpackDesign {
     material::Design design;
     std::vector<material::MasterBoard> boards;
     material::PackSettings settings;
+    double maxGrowth =
+        1.5;  ///< settings.max_growth: how many times its length now a suggestion may make a side
 };
+
+/// The design the suggestions are searched in: `f`'s, with no board side longer than maxGrowth times its
+/// length now (issue 32: a 60 mm batten grown into a 373 mm panel, a cleat into a board). Only the search is
+/// held to it: the user's own edits and the files read are not.
+material::Design forSuggestions(const FlatpackDesign& f);
 
 /// A design that does not satisfy its own constraints (the message names them): a FormatError the caller may
 /// answer by moving the boards (thesis 5.3.5.2).

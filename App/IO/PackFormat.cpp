@@ -225,8 +225,8 @@ material::PackSettings readSettings(const nlohmann::json& document)
         return result;
     const Fields settings(document["settings"], "settings");
     settings.only({"resolution", "kerf", "spacing", "trim", "dogbone", "tab_width", "tab_below",
-                   "rotation_step", "cuts", "stages", "first_cut", "min_length",
-                   "snap"});  // the last two: a flat-pack design's
+                   "rotation_step", "cuts", "stages", "first_cut", "min_length", "snap",
+                   "max_growth"});  // the last three: a flat-pack design's
     result.resolution = settings.number("resolution", 0.5);
     if (!(result.resolution > 0))
         throw FormatError("settings.resolution: must be greater than 0");

@@ -2,6 +2,654 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>App::Property</name>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="18"/>
+        <source>The joints it moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="20"/>
+        <source>Per joint: for a double pivot, the point its part turns about to get here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="20"/>
+        <source>The part the joint moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
+        <source>The part it hangs on, which carries it along when it moves; empty: the ground</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="25"/>
+        <source>The edge of one of the part&apos;s boxes it turns about</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="28"/>
+        <source>The direction it slides along</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="31"/>
+        <source>The face of the part&apos;s box with the pivot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="33"/>
+        <source>The pivot on the part (placed by the solve)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="35"/>
+        <source>The face of the base&apos;s box, in the same plane, with the other pivot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="38"/>
+        <source>The pivot on the base (placed by the solve)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="30"/>
+        <source>Smallest size of a box along any axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="32"/>
+        <source>Least wall around a cavity on its sides that are not openings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
+        <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="38"/>
+        <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="41"/>
+        <source>Solved, or the relationships in conflict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
+        <source>Largest constraint violation after the solve, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="46"/>
+        <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="49"/>
+        <source>What the last solve changed: box, size old → new, how far it moved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="52"/>
+        <source>Box coordinates after the last solve (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
+        <source>Box sizes as you drew them, before solves (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="13"/>
+        <source>The axis-aligned boxes (Part::Box) the part is made of</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="15"/>
+        <source>Boxes cut out of it: openings and compartments that can be covered or fitted into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="26"/>
+        <source>The mechanism to print in place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="28"/>
+        <source>Printer profile: the gap it needs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="30"/>
+        <source>Clearance between parts (set by the printer profile)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="33"/>
+        <source>Print at this scale (0.2 for 1:5); the gap stays as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="35"/>
+        <source>Print at the largest scale (at most 1) that fits the build volume; sets Scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="38"/>
+        <source>The printer&apos;s build volume in mm: width (x), depth (y), height (z); the print may turn a quarter about z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="42"/>
+        <source>Width x depth x height of the print</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="44"/>
+        <source>Fitted turned a quarter about z: exported so, shown as modelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="47"/>
+        <source>Show the volumes swept into cavities</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="49"/>
+        <source>Measure the clearance at 32 poses along every configuration&apos;s motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="52"/>
+        <source>Least distance between two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="54"/>
+        <source>Where the least distance is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="56"/>
+        <source>Joints made without geometry, and why</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="14"/>
+        <source>The configuration it must hold in; empty: as modelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="16"/>
+        <source>Satisfied, or what it conflicts with</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="25"/>
+        <source>Parts whose faces cover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="27"/>
+        <source>Parts whose faces are covered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="29"/>
+        <source>Just cover: the covering faces no larger than the covered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="43"/>
+        <source>Parts that must fit inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="45"/>
+        <source>The part they fit inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="47"/>
+        <source>A cavity of the enclosing part to fit in; empty: its box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="49"/>
+        <source>Partial fit: the boxes of the inner parts that must fit (a drawer&apos;s tray, not its front); empty: all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="56"/>
+        <source>Each inner part just fits on its own along the ticked axes (stacked trays without play), not only the inner parts taken together</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="77"/>
+        <source>Parts that support (legs, frames)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="79"/>
+        <source>Parts resting on them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="93"/>
+        <source>Two box faces that lie in one plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="111"/>
+        <source>Left = or &lt;= right + offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
+        <source>Added to the right side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="27"/>
+        <source>Sketch, planar face or thin solid the board is made of</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="29"/>
+        <source>Thickness of a board made from a sketch or face (detected for a solid)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="32"/>
+        <source>How many to cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="33"/>
+        <source>Turns allowed on the master board: any, keeping its length along the grain, or none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="43"/>
+        <source>Longest side of the outline&apos;s box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="45"/>
+        <source>Other side of the outline&apos;s box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="34"/>
+        <source>Master boards to cut the boards from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="36"/>
+        <source>Grid cell size tau (thesis 5.4.1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="38"/>
+        <source>Width of the cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
+        <source>Extra material between parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="41"/>
+        <source>Margin cut off every master board edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="43"/>
+        <source>Shortest side a board may shrink to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
+        <source>Boards that touch stay touching (edge snapping)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
+        <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="51"/>
+        <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="54"/>
+        <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="58"/>
+        <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="61"/>
+        <source>Laid out, or what is wrong</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
+        <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="67"/>
+        <source>Boards after the last valid recompute (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
+        <source>The last layout and its problem (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="95"/>
+        <source>What must hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <source>Boxes for ground, coplanar and snap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <source>Fixed value or sum offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <source>Range: smallest value (beyond ±10⁸ m: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
+        <source>Range: largest value (beyond ±10⁸ m: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <source>Satisfied, or what breaks it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="130"/>
+        <source>Inner: kept free; Outer: the design stays inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
+        <source>Inner volume: the board it rests on and moves with</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <source>Size along x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
+        <source>Size along y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <source>Size along z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <source>Satisfied, or the boards that break it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="197"/>
+        <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="37"/>
+        <source>Boards to lay out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="38"/>
+        <source>Master boards to cut them from, opened in this order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
+        <source>Width of the cut (laser beam, router bit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="43"/>
+        <source>Material left between parts besides the kerf</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="46"/>
+        <source>Margin kept along every master board edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="49"/>
+        <source>Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; 0 for none (a laser)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="52"/>
+        <source>Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="55"/>
+        <source>Parts whose longer side is shorter get holding tabs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
+        <source>Export the parts&apos; outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the machine cuts them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="63"/>
+        <source>Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD&apos;s DXF import take as they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="66"/>
+        <source>Width of the label printer&apos;s labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="68"/>
+        <source>Height of the label printer&apos;s labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
+        <source>Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under Auto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="73"/>
+        <source>Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only (a panel, track or table saw), with the cut sequence on the cut sheets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
+        <source>Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="80"/>
+        <source>Guillotine cuts: the first cuts along the sheet&apos;s length (x), across it, or whichever wastes less</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
+        <source>The connectors made</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="86"/>
+        <source>Guillotine cuts: the saw cuts to make</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
+        <source>Guillotine cuts: their total length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
+        <source>Cell size of the layout grid (thesis 5.4.1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
+        <source>Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="95"/>
+        <source>Ordering swaps tried; -1 = parts squared (thesis 5.4.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="97"/>
+        <source>Seed of the ordering search</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="99"/>
+        <source>Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
+        <source>Part area / bounding rectangle of the layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="105"/>
+        <source>Part area / area of the master boards used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
+        <source>Area of the master boards used minus part area</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <source>Master boards used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="112"/>
+        <source>The problem laid out (*.pack.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
+        <source>The layout (layout JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="16"/>
+        <source>Size along the layout&apos;s x axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="18"/>
+        <source>Size along the layout&apos;s y axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="20"/>
+        <source>Material thickness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="22"/>
+        <source>Boards in stock; 0 = as many as needed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="24"/>
+        <source>Material name for the cut list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="26"/>
+        <source>Direction of the wood grain; boards set to Follow grain keep their length along it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="29"/>
+        <source>What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new sheets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="108"/>
+        <source>Why the last recompute failed; empty when it did not</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <source>Just fits in width (along X)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <source>Just fits in depth (along Y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <source>Just fits in height (along Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="36"/>
+        <source>Band glued on its first long edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="36"/>
+        <source>Band glued on its second long edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="36"/>
+        <source>Band glued on its first short edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="36"/>
+        <source>Band glued on its second short edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>CamJobPanel</name>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="6"/>
@@ -175,139 +823,139 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/configuration.py" line="67"/>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="97"/>
         <source>Configuration &apos;{}&apos;: &apos;{}&apos; is not a joint</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="108"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="115"/>
         <source>Joint &apos;{}&apos;: choose the Part it moves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="114"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="121"/>
         <source>Joint &apos;{}&apos;: choose the Edge it turns about</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="117"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="124"/>
         <source>Joint &apos;{}&apos;: its edge is on &apos;{}&apos;, which is not a box of part &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="122"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="129"/>
         <source>Joint &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="126"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="133"/>
         <source>Fixed joint &apos;{}&apos;: choose the Base part it holds &apos;{}&apos; to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="130"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="137"/>
         <source>Double pivot &apos;{}&apos;: choose the Base part it links to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="135"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="142"/>
         <source>Double pivot &apos;{}&apos;: choose a face of a box of &apos;{}&apos; for its {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="152"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="175"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="184"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/parts.py" line="38"/>
+        <location filename="../../freecad/fabguide/function/parts.py" line="39"/>
         <source>Part &apos;{}&apos; has no boxes: add a Part::Box to its Cuboids</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/parts.py" line="43"/>
+        <location filename="../../freecad/fabguide/function/parts.py" line="44"/>
         <source>Part &apos;{}&apos;: &apos;{}&apos; is not a Part::Box</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="59"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="71"/>
         <source>Printable &apos;{}&apos;: the mechanism has new parts ({}); run Make Printable again</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="80"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="92"/>
         <source>Printable &apos;{}&apos;: invalid solids: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="83"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="95"/>
         <source>Printable &apos;{}&apos;: bodies that print in pieces ({}): a cut went through them, a joint turning the wrong way round or a part in the way</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="88"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="100"/>
         <source>{}: parts come within {:.3f} mm of each other ({}), less than the {} mm gap
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="104"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="116"/>
         <source>Printable &apos;{}&apos;: choose the Mechanism to print</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="110"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="122"/>
         <source>Printable &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="120"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="132"/>
         <source>Printable &apos;{}&apos;: BuildVolume must be greater than 0 in x, y and z (is {:g} x {:g} x {:g})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="164"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="176"/>
         <source>Printable &apos;{}&apos;: {}; mend that first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="168"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="180"/>
         <source>Printable &apos;{}&apos;: not made from the mechanism as it stands ({} changed); recompute first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="174"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="186"/>
         <source>Printable &apos;{}&apos;: {} not made yet; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="62"/>
         <source>Fit inside &apos;{}&apos;: choose the Enclosing part</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="86"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="99"/>
         <source>Flush &apos;{}&apos;: choose exactly two faces, got {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="121"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="136"/>
         <source>Geometric &apos;{}&apos;: &apos;{}&apos; must read &apos;Box.side&apos;, &apos;Box.width&apos; or &apos;factor*Box.width&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="143"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="158"/>
         <source>{} &apos;{}&apos;: its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or correct them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="191"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="206"/>
         <source>{} &apos;{}&apos;: pair &apos;{}&apos; must read &apos;Box.side -&gt; Box.side&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -343,18 +991,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="88"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="89"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="89"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="90"/>
         <source>FabGuide: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
         <translation type="unfinished"></translation>
@@ -1038,7 +1686,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="306"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="334"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1094,67 +1742,67 @@
         <translation>Dinge entwerfen, die funktionieren und nichts verschwenden: funktionale Beziehungen und Zuschnitte ohne Verschnitt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="78"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="85"/>
         <source>Board &apos;{}&apos;: no Source (select a sketch, a planar face or a thin solid)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="89"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="96"/>
         <source>{}: is FabGuide&apos;s {}, not a part of your model (pick a sketch, a planar face or a thin solid)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="93"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="100"/>
         <source>{}: the source has no shape</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="99"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="106"/>
         <source>{}: the source holds {} solids; make one board per solid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="112"/>
         <source>{}: needs closed wires, a planar face or a solid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="107"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="114"/>
         <source>{}: its closed wires do not lie in one plane, so they do not outline a board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="119"/>
         <source>{}: its wires do not make a planar face ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="118"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="125"/>
         <source>{}: the face is not planar</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="120"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="127"/>
         <source>{}: Thickness must be greater than 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="145"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="152"/>
         <source>{}: has no planar face, so it is not a flat board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="150"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="157"/>
         <source>{}: no face parallel and opposite to its largest face, so it is not a flat board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="155"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="162"/>
         <source>{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="160"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="167"/>
         <source>{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board is thinner than it is wide)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1214,74 +1862,74 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="119"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="151"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="219"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="246"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="242"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="269"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="286"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="312"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="134"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="149"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="156"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="180"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="159"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="183"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="163"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="187"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="190"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="214"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="244"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="268"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="247"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="271"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1316,7 +1964,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/properties.py" line="120"/>
+        <location filename="../../freecad/fabguide/properties.py" line="121"/>
         <source>{}; kept {}
 </source>
         <translation type="unfinished"></translation>

@@ -4,7 +4,7 @@ object, which says a mistake in the model in one plain sentence."""
 import FreeCAD
 
 from freecad import fabguide
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 READ_ONLY, HIDDEN, OUTPUT = 1, 4, 8  # App::PropertyType flags
 
@@ -105,7 +105,8 @@ class Proxy(Stateless):
 
     def define_all(self, obj):
         self.define(obj)
-        add(obj, "App::PropertyString", "Error", "Base", "Why the last recompute failed; empty when it did not",
+        add(obj, "App::PropertyString", "Error", "Base",
+            QT_TRANSLATE_NOOP("App::Property", "Why the last recompute failed; empty when it did not"),
             mode=2)
         stamp(obj)
 

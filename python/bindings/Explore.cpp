@@ -94,7 +94,7 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
 {
     const nlohmann::json doc = toJson(document);
     const io::FlatpackDesign f = io::readFlatpack(doc);
-    const material::ConstrainedDesign design(f.design);
+    const material::ConstrainedDesign design(io::forSuggestions(f));
     const material::MaterialSpace material(f.boards, f.settings, design.parts());
     const material::Exploration e =
         explore(design, material, options(seed, threads, timeLimit, rounds, guided, progress, cancel));

@@ -1,5 +1,5 @@
-// Saving a sheet (issue 14): the least design's linear programme on a suite bookcase, and FEWERSHEETS on a suite
-// TV bench that needs two sheets as drawn and one when its boards are a little smaller.
+// Saving a sheet (issue 14): the least design's linear programme on a suite bookcase, and FEWERSHEETS on a
+// suite TV bench that needs two sheets as drawn and one when its boards are a little smaller.
 #include "Design/FewerSheets.h"
 #include "Design/LeastDesign.h"
 #include "Design/MinWastage.h"

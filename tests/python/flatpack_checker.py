@@ -325,6 +325,11 @@ def structure_problems(original, suggestion):
             problems.append("%s is %s thick: no master board is" % (b0.id, fmt(t)))
         if b1.quantity != b0.quantity:
             problems.append("quantity of %s changed %d -> %d" % (b0.id, b0.quantity, b1.quantity))
+        growth = float(original.get("settings", {}).get("max_growth", 1.5))
+        for k in b0.in_plane():  # a batten stays a batten
+            if b1.size[k] > growth * b0.size[k] + TOL:
+                problems.append("%s grew along %s from %s to %s mm, more than max_growth %g times" % (
+                    b0.id, AXES[k], fmt(b0.size[k]), fmt(b1.size[k]), growth))
         if min(b1.size) <= 0:
             problems.append("%s has a side of size %s" % (b1.id, fmt(min(b1.size))))
         if abs(b1.size[b0.normal] - t) > 1e-6:

@@ -211,6 +211,15 @@ def test_suggestions_alike_to_a_maker_fail():
     assert C.alike_problems([first, second]) == []
 
 
+def test_a_board_grown_out_of_its_role_fails():
+    sugg = suggestion()
+    part(sugg, "shelf")["size"][1] = 361  # 240 mm drawn: at most 1.5 times
+    assert any(p.startswith("shelf grew along y from 240 to 361 mm, more than max_growth 1.5 times")
+               for p in C.structure_problems(original(), sugg))
+    part(sugg, "shelf")["size"][1] = 360
+    assert not any("grew" in p for p in C.structure_problems(original(), sugg))
+
+
 def test_outer_volume_fails():
     sugg = suggestion()
     for p in sugg["parts"]:

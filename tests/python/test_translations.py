@@ -34,12 +34,15 @@ def plain(node):
 
 def unmarked(text):
     """(line, text) of each string a user reads that bypasses translation in the Python source `text`: what is
-    told, shown in a widget or the report view, raised as an error, a command's MENU and TIP."""
+    told, shown in a widget or the report view, raised as an error, a command's MENU and TIP, a property's
+    tooltip."""
     found = []
     for node in ast.walk(ast.parse(text)):
         if isinstance(node, ast.Call):
             name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
             args = node.args[1:3] if name in BOXES else node.args[:1] if name in SAID else []
+            if name == "add" and len(node.args) >= 5 and str(getattr(node.args[1], "value", "")).startswith("App::"):
+                args = node.args[4:5]  # a property's tooltip: FreeCAD translates it in the context App::Property
             found += [(node.lineno, plain(a)) for a in args if plain(a)]
         elif isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call) and node.exc.args:
             name = getattr(node.exc.func, "id", getattr(node.exc.func, "attr", ""))
@@ -61,8 +64,9 @@ def test_every_string_a_user_reads_is_marked_for_translation():
 
 def test_the_check_finds_what_bypasses_translation():
     assert [t for _, t in unmarked('tell("Pick a box.")\nraise BoardError("{}: no shape".format(x))\n'
-                                   'class C:\n    ICON, MENU = "a.svg", "Make Board"\n')] == \
-        ["Pick a box.", "{}: no shape", "Make Board"]
+                                   'class C:\n    ICON, MENU = "a.svg", "Make Board"\n'
+                                   'add(obj, "App::PropertyLength", "Kerf", "Layout", "Width of the cut", 3)\n')] == \
+        ["Pick a box.", "{}: no shape", "Make Board", "Width of the cut"]
     assert unmarked('tell(translate("FabGuide", "Pick a box."))\nraise BoardError(str(error))\n'
                     'MENU = QT_TRANSLATE_NOOP("FabGuide", "Make Board")\n') == []
 
@@ -107,7 +111,8 @@ def test_german_names_every_command_button_toolbar_and_menu():
     noop = set()
     for path in sources():
         for node in ast.walk(ast.parse(open(path, encoding="utf-8").read())):
-            if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "QT_TRANSLATE_NOOP":
+            if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "QT_TRANSLATE_NOOP" and \
+                    node.args[0].value in ("FabGuide", "Workbench"):
                 noop.add((node.args[0].value, node.args[1].value))
     german = messages(os.path.join(TRANSLATIONS, "FabGuide_de.ts"))
     assert noop and all(german.get(key) for key in noop), sorted(key for key in noop if not german.get(key))

@@ -3,7 +3,7 @@ import FreeCAD
 
 from freecad.fabguide import properties
 from freecad.fabguide.function import joints
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 
 POSES = "Poses"  # the property group of each joint's angle and offset
@@ -15,9 +15,11 @@ class Configuration(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLinkList", "Joints", "Configuration", "The joints it moves")
+        add(obj, "App::PropertyLinkList", "Joints", "Configuration",
+            QT_TRANSLATE_NOOP("App::Property", "The joints it moves"))
         add(obj, "App::PropertyVectorList", "Poles", "Configuration",
-            "Per joint: for a double pivot, the point its part turns about to get here")
+            QT_TRANSLATE_NOOP("App::Property", "Per joint: for a double pivot, the point its part turns about to get "
+                                               "here"))
         if "Angles" in obj.PropertiesList:  # migration 4: up to 0.2.0, plain lists per joint
             angles, offsets = list(obj.Angles), list(getattr(obj, "Offsets", []))
             obj.removeProperty("Angles")

@@ -5,7 +5,7 @@ of its Base by a rigid link (the solve places both pivots, 4.3.6); a fixed joint
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import parts
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 AXES = ["x", "y", "z"]
 
@@ -17,19 +17,26 @@ class Joint(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLink", "Part", "Joint", "The part the joint moves")
+        add(obj, "App::PropertyLink", "Part", "Joint", QT_TRANSLATE_NOOP("App::Property", "The part the joint moves"))
         add(obj, "App::PropertyLink", "Base", "Joint",
-            "The part it hangs on, which carries it along when it moves; empty: the ground")
+            QT_TRANSLATE_NOOP("App::Property", "The part it hangs on, which carries it along when it moves; empty: the "
+                                               "ground"))
         if self.KIND in ("hinge", "sliding_hinge"):
-            add(obj, "App::PropertyLinkSub", "Edge", "Joint", "The edge of one of the part's boxes it turns about")
+            add(obj, "App::PropertyLinkSub", "Edge", "Joint",
+                QT_TRANSLATE_NOOP("App::Property", "The edge of one of the part's boxes it turns about"))
         if self.KIND in ("slide", "sliding_hinge"):
-            add(obj, "App::PropertyEnumeration", "Axis", "Joint", "The direction it slides along", AXES)
+            add(obj, "App::PropertyEnumeration", "Axis", "Joint",
+                QT_TRANSLATE_NOOP("App::Property", "The direction it slides along"), AXES)
         if self.KIND == "double_pivot":
-            add(obj, "App::PropertyLinkSub", "PivotFace", "Double pivot", "The face of the part's box with the pivot")
-            add(obj, "App::PropertyVector", "Pivot", "Double pivot", "The pivot on the part (placed by the solve)")
+            add(obj, "App::PropertyLinkSub", "PivotFace", "Double pivot",
+                QT_TRANSLATE_NOOP("App::Property", "The face of the part's box with the pivot"))
+            add(obj, "App::PropertyVector", "Pivot", "Double pivot",
+                QT_TRANSLATE_NOOP("App::Property", "The pivot on the part (placed by the solve)"))
             add(obj, "App::PropertyLinkSub", "BasePivotFace", "Double pivot",
-                "The face of the base's box, in the same plane, with the other pivot")
-            add(obj, "App::PropertyVector", "BasePivot", "Double pivot", "The pivot on the base (placed by the solve)")
+                QT_TRANSLATE_NOOP("App::Property", "The face of the base's box, in the same plane, with the other "
+                                                   "pivot"))
+            add(obj, "App::PropertyVector", "BasePivot", "Double pivot",
+                QT_TRANSLATE_NOOP("App::Property", "The pivot on the base (placed by the solve)"))
 
     def recompute(self, obj):
         as_dict(obj)

@@ -8,7 +8,7 @@ import FreeCAD
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.function import configuration, joints, parts, relationships
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 SATISFIED = "Satisfied"
 STALE = "Unknown: the mechanism did not solve (see its Status)"
@@ -27,23 +27,32 @@ class Mechanism(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLength", "MinimumSize", "Mechanism", "Smallest size of a box along any axis", 1)
+        add(obj, "App::PropertyLength", "MinimumSize", "Mechanism",
+            QT_TRANSLATE_NOOP("App::Property", "Smallest size of a box along any axis"), 1)
         add(obj, "App::PropertyLength", "MinimumWall", "Mechanism",
-            "Least wall around a cavity on its sides that are not openings", 1)
+            QT_TRANSLATE_NOOP("App::Property", "Least wall around a cavity on its sides that are not openings"), 1)
         references.define(obj, "Locks", "Mechanism", "Coordinates that keep their value: a box and its side")
         add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
-            "Box coordinates you changed since the last solve keep their new value while the rest adapts", True)
+            QT_TRANSLATE_NOOP("App::Property", "Box coordinates you changed since the last solve keep their new value "
+                                               "while the rest adapts"), True)
         add(obj, "App::PropertyLink", "ShownConfiguration", "Mechanism",
-            "The configuration the Configurations panel last showed; new relationships hold in it")
-        add(obj, "App::PropertyString", "Status", "Result", "Solved, or the relationships in conflict", mode=1)
-        add(obj, "App::PropertyFloat", "Violation", "Result", "Largest constraint violation after the solve, mm",
+            QT_TRANSLATE_NOOP("App::Property", "The configuration the Configurations panel last showed; new "
+                                               "relationships hold in it"))
+        add(obj, "App::PropertyString", "Status", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Solved, or the relationships in conflict"), mode=1)
+        add(obj, "App::PropertyFloat", "Violation", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Largest constraint violation after the solve, mm"),
             mode=1)
         add(obj, "App::PropertyStringList", "Blamed", "Result",
-            "Parts a conflict blames besides its relationships' (overlapping parts, thin walls)", mode=1)
+            QT_TRANSLATE_NOOP("App::Property", "Parts a conflict blames besides its relationships' (overlapping parts, "
+                                               "thin walls)"), mode=1)
         add(obj, "App::PropertyStringList", "Changes", "Result",
-            "What the last solve changed: box, size old → new, how far it moved", mode=1)
-        add(obj, "App::PropertyString", "Solved", "Data", "Box coordinates after the last solve (JSON)", mode=2)
-        add(obj, "App::PropertyString", "Drawn", "Data", "Box sizes as you drew them, before solves (JSON)", mode=2)
+            QT_TRANSLATE_NOOP("App::Property", "What the last solve changed: box, size old → new, how far it "
+                                               "moved"), mode=1)
+        add(obj, "App::PropertyString", "Solved", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "Box coordinates after the last solve (JSON)"), mode=2)
+        add(obj, "App::PropertyString", "Drawn", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "Box sizes as you drew them, before solves (JSON)"), mode=2)
 
     def recompute(self, obj):
         try:

@@ -1,7 +1,7 @@
 """A works-like part (thesis 4.1.1): one or more native Part::Box objects moving together."""
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 
 class FunctionalPart(properties.Proxy):
@@ -11,9 +11,10 @@ class FunctionalPart(properties.Proxy):
 
     def define(self, obj):
         properties.add(obj, "App::PropertyLinkList", "Cuboids", "Part",
-                       "The axis-aligned boxes (Part::Box) the part is made of")
+                       QT_TRANSLATE_NOOP("App::Property", "The axis-aligned boxes (Part::Box) the part is made of"))
         properties.add(obj, "App::PropertyLinkList", "Cavities", "Part",
-                       "Boxes cut out of it: openings and compartments that can be covered or fitted into")
+                       QT_TRANSLATE_NOOP("App::Property", "Boxes cut out of it: openings and compartments that can be "
+                                                          "covered or fitted into"))
 
     def recompute(self, obj):
         as_dict(obj)  # says which box is unusable

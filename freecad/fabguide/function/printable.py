@@ -7,7 +7,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.function import mechanism
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
 
@@ -23,26 +23,38 @@ class Printable(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLink", "Mechanism", "Printable", "The mechanism to print in place")
-        add(obj, "App::PropertyEnumeration", "Printer", "Printable", "Printer profile: the gap it needs", list(PRINTERS))
-        add(obj, "App::PropertyLength", "Gap", "Printable", "Clearance between parts (set by the printer profile)",
+        add(obj, "App::PropertyLink", "Mechanism", "Printable",
+            QT_TRANSLATE_NOOP("App::Property", "The mechanism to print in place"))
+        add(obj, "App::PropertyEnumeration", "Printer", "Printable",
+            QT_TRANSLATE_NOOP("App::Property", "Printer profile: the gap it needs"), list(PRINTERS))
+        add(obj, "App::PropertyLength", "Gap", "Printable",
+            QT_TRANSLATE_NOOP("App::Property", "Clearance between parts (set by the printer profile)"),
             preferences.get("Gap"))
         add(obj, "App::PropertyFloat", "Scale", "Printable",
-            "Print at this scale (0.2 for 1:5); the gap stays as it is", 1.0)
+            QT_TRANSLATE_NOOP("App::Property", "Print at this scale (0.2 for 1:5); the gap stays as it is"), 1.0)
         add(obj, "App::PropertyBool", "FitToBuildVolume", "Printable",
-            "Print at the largest scale (at most 1) that fits the build volume; sets Scale", False)
+            QT_TRANSLATE_NOOP("App::Property", "Print at the largest scale (at most 1) that fits the build volume; "
+                                               "sets Scale"), False)
         add(obj, "App::PropertyVector", "BuildVolume", "Printable",
-            "The printer's build volume in mm: width (x), depth (y), height (z); the print may turn a quarter about z",
+            QT_TRANSLATE_NOOP("App::Property", "The printer's build volume in mm: width (x), depth (y), height (z); "
+                                               "the print may turn a quarter about z"),
             FreeCAD.Vector(*(preferences.get("BuildVolume" + axis) for axis in "XYZ")))
-        add(obj, "App::PropertyString", "PrintSize", "Result", "Width x depth x height of the print", mode=1)
+        add(obj, "App::PropertyString", "PrintSize", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Width x depth x height of the print"), mode=1)
         add(obj, "App::PropertyBool", "TurnedOnBed", "Result",
-            "Fitted turned a quarter about z: exported so, shown as modelled", False, mode=1)
-        add(obj, "App::PropertyBool", "ShowCavities", "Printable", "Show the volumes swept into cavities", False)
+            QT_TRANSLATE_NOOP("App::Property", "Fitted turned a quarter about z: exported so, shown as "
+                                               "modelled"), False, mode=1)
+        add(obj, "App::PropertyBool", "ShowCavities", "Printable",
+            QT_TRANSLATE_NOOP("App::Property", "Show the volumes swept into cavities"), False)
         add(obj, "App::PropertyBool", "CheckMotion", "Printable",
-            "Measure the clearance at 32 poses along every configuration's motion", True)
-        add(obj, "App::PropertyLength", "MinimumClearance", "Result", "Least distance between two bodies", mode=1)
-        add(obj, "App::PropertyString", "ClearanceAt", "Result", "Where the least distance is", mode=1)
-        add(obj, "App::PropertyStringList", "Notes", "Result", "Joints made without geometry, and why", mode=1)
+            QT_TRANSLATE_NOOP("App::Property", "Measure the clearance at 32 poses along every configuration's "
+                                               "motion"), True)
+        add(obj, "App::PropertyLength", "MinimumClearance", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Least distance between two bodies"), mode=1)
+        add(obj, "App::PropertyString", "ClearanceAt", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Where the least distance is"), mode=1)
+        add(obj, "App::PropertyStringList", "Notes", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Joints made without geometry, and why"), mode=1)
 
     def onChanged(self, obj, prop):
         super().onChanged(obj, prop)

@@ -1,7 +1,7 @@
 """Functional relationships (thesis 4.2–4.3): cover, fit inside, support, flush, and geometric relations. Each
 names the configuration it must hold in and shows its Status after the Mechanism solves."""
 from freecad.fabguide import cuboids, properties, references
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 ARROW = " -> "  # how a pair of the corresponding-faces graph is written in Pairs
 
@@ -12,8 +12,9 @@ class Relationship(properties.Proxy):
     def define(self, obj):
         add = properties.add
         add(obj, "App::PropertyLink", "Configuration", "Relationship",
-            "The configuration it must hold in; empty: as modelled")
-        add(obj, "App::PropertyString", "Status", "Relationship", "Satisfied, or what it conflicts with", mode=1)
+            QT_TRANSLATE_NOOP("App::Property", "The configuration it must hold in; empty: as modelled"))
+        add(obj, "App::PropertyString", "Status", "Relationship",
+            QT_TRANSLATE_NOOP("App::Property", "Satisfied, or what it conflicts with"), mode=1)
         self.define_fields(obj, add)
 
 
@@ -21,9 +22,12 @@ class Cover(Relationship):
     TYPE, KIND = "FabGuide::Cover", "cover"
 
     def define_fields(self, obj, add):
-        add(obj, "App::PropertyLinkList", "Covering", "Cover", "Parts whose faces cover")
-        add(obj, "App::PropertyLinkList", "Covered", "Cover", "Parts whose faces are covered")
-        add(obj, "App::PropertyBool", "Just", "Cover", "Just cover: the covering faces no larger than the covered")
+        add(obj, "App::PropertyLinkList", "Covering", "Cover",
+            QT_TRANSLATE_NOOP("App::Property", "Parts whose faces cover"))
+        add(obj, "App::PropertyLinkList", "Covered", "Cover",
+            QT_TRANSLATE_NOOP("App::Property", "Parts whose faces are covered"))
+        add(obj, "App::PropertyBool", "Just", "Cover",
+            QT_TRANSLATE_NOOP("App::Property", "Just cover: the covering faces no larger than the covered"))
         define_pairs(obj, add, "Cover", "'covering -> covered' (thesis 4.3.1)",
                      "How far apart faces may be to correspond", 5)
 
@@ -36,16 +40,22 @@ class FitInside(Relationship):
     TYPE, KIND = "FabGuide::FitInside", "fit_inside"
 
     def define_fields(self, obj, add):
-        add(obj, "App::PropertyLinkList", "Inner", "Fit inside", "Parts that must fit inside")
-        add(obj, "App::PropertyLink", "Enclosing", "Fit inside", "The part they fit inside")
-        add(obj, "App::PropertyLink", "Cavity", "Fit inside", "A cavity of the enclosing part to fit in; empty: its box")
+        add(obj, "App::PropertyLinkList", "Inner", "Fit inside",
+            QT_TRANSLATE_NOOP("App::Property", "Parts that must fit inside"))
+        add(obj, "App::PropertyLink", "Enclosing", "Fit inside",
+            QT_TRANSLATE_NOOP("App::Property", "The part they fit inside"))
+        add(obj, "App::PropertyLink", "Cavity", "Fit inside",
+            QT_TRANSLATE_NOOP("App::Property", "A cavity of the enclosing part to fit in; empty: its box"))
         add(obj, "App::PropertyLinkList", "Portion", "Fit inside",
-            "Partial fit: the boxes of the inner parts that must fit (a drawer's tray, not its front); empty: all")
-        for axis, size in zip("XYZ", ("width", "depth", "height")):
-            add(obj, "App::PropertyBool", "Just" + axis, "Fit inside", "Just fits in {} (along {})".format(size, axis))
+            QT_TRANSLATE_NOOP("App::Property", "Partial fit: the boxes of the inner parts that must fit (a drawer's "
+                                               "tray, not its front); empty: all"))
+        for axis, tip in zip("XYZ", (QT_TRANSLATE_NOOP("App::Property", "Just fits in width (along X)"),
+                                     QT_TRANSLATE_NOOP("App::Property", "Just fits in depth (along Y)"),
+                                     QT_TRANSLATE_NOOP("App::Property", "Just fits in height (along Z)"))):
+            add(obj, "App::PropertyBool", "Just" + axis, "Fit inside", tip)
         add(obj, "App::PropertyBool", "JustEach", "Fit inside",
-            "Each inner part just fits on its own along the ticked axes (stacked trays without play), "
-            "not only the inner parts taken together")
+            QT_TRANSLATE_NOOP("App::Property", "Each inner part just fits on its own along the ticked axes (stacked "
+                                               "trays without play), not only the inner parts taken together"))
 
     def fields(self, obj):
         if obj.Enclosing is None:
@@ -64,8 +74,10 @@ class Support(Relationship):
     TYPE, KIND = "FabGuide::Support", "support"
 
     def define_fields(self, obj, add):
-        add(obj, "App::PropertyLinkList", "Supporting", "Support", "Parts that support (legs, frames)")
-        add(obj, "App::PropertyLinkList", "Supported", "Support", "Parts resting on them")
+        add(obj, "App::PropertyLinkList", "Supporting", "Support",
+            QT_TRANSLATE_NOOP("App::Property", "Parts that support (legs, frames)"))
+        add(obj, "App::PropertyLinkList", "Supported", "Support",
+            QT_TRANSLATE_NOOP("App::Property", "Parts resting on them"))
         define_pairs(obj, add, "Support", "'supporting top -> supported bottom' (thesis 4.3.3)",
                      "How far above a top face a bottom face may be", 100)
 
@@ -78,7 +90,8 @@ class Flush(Relationship):
     TYPE, KIND = "FabGuide::Flush", "flush"
 
     def define_fields(self, obj, add):
-        add(obj, "App::PropertyLinkSubList", "Faces", "Flush", "Two box faces that lie in one plane")
+        add(obj, "App::PropertyLinkSubList", "Faces", "Flush",
+            QT_TRANSLATE_NOOP("App::Property", "Two box faces that lie in one plane"))
 
     def fields(self, obj):
         faces = [cuboids.face_name(box, element) for box, elements in obj.Faces for element in elements]
@@ -95,10 +108,12 @@ class Geometric(Relationship):
         references.define(obj, "Left", "Geometric",
                           "Quantities summed: a box and its side or size (width/depth/height), with a factor "
                           "in front if not 1 (the formats write 'Door.width', '2*Shelf.height', '-Lid.left')")
-        add(obj, "App::PropertyEnumeration", "Relation", "Geometric", "Left = or <= right + offset",
+        add(obj, "App::PropertyEnumeration", "Relation", "Geometric",
+            QT_TRANSLATE_NOOP("App::Property", "Left = or <= right + offset"),
             ["Equal", "AtMost"])
         references.define(obj, "Right", "Geometric", "Quantities summed (may be empty)")
-        add(obj, "App::PropertyDistance", "Offset", "Geometric", "Added to the right side")
+        add(obj, "App::PropertyDistance", "Offset", "Geometric",
+            QT_TRANSLATE_NOOP("App::Property", "Added to the right side"))
 
     def fields(self, obj):
         return {"left": terms(obj, references.names(obj.Left)), "right": terms(obj, references.names(obj.Right)),

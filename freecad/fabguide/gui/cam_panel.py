@@ -44,8 +44,9 @@ class CamJobPanel:
         table.setRowCount(len(self.materials))
         table.setVerticalHeaderLabels(self.materials)
         for row, material in enumerate(self.materials):
+            speeds = preferences.cam_speeds(material, (cam.FEED, cam.SPINDLE))
             for column, (value, suffix, least, most, step) in enumerate(zip(
-                    preferences.cam_speeds(material, (cam.FEED, cam.SPINDLE)), (" mm/min", " rpm"), (10, 0), (50000, 60000), (100, 1000))):
+                    speeds, (" mm/min", " rpm"), (10, 0), (50000, 60000), (100, 1000))):
                 box = QtGui.QDoubleSpinBox()
                 box.setDecimals(0)
                 box.setRange(least, most)

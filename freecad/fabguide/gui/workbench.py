@@ -9,8 +9,8 @@ from freecad.fabguide.i18n import translate
 
 class FabGuideWorkbench(Gui.Workbench):
     MenuText = "FabGuide"
-    ToolTip = translate("FabGuide", "Design things that work and waste nothing: functional relationships and zero-waste "
-                                    "layouts")
+    ToolTip = translate("FabGuide", "Design things that work and waste nothing: functional relationships and "
+                                    "zero-waste layouts")
     Icon = resources.icon("FabGuide.svg")
 
     def Initialize(self):

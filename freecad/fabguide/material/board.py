@@ -7,7 +7,7 @@ import FreeCAD
 import Part
 
 from freecad.fabguide import properties
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 SAMPLING = 0.05  # mm: arcs and splines become polygons deviating at most this much (thesis 5.4.1)
 ROTATIONS = ("Any", "Follow grain", "Fixed")  # Follow grain: the master board's Grain decides
@@ -24,19 +24,26 @@ class Board(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLinkSub", "Source", "Board", "Sketch, planar face or thin solid the board is made of")
+        add(obj, "App::PropertyLinkSub", "Source", "Board",
+            QT_TRANSLATE_NOOP("App::Property", "Sketch, planar face or thin solid the board is made of"))
         add(obj, "App::PropertyLength", "Thickness", "Board",
-            "Thickness of a board made from a sketch or face (detected for a solid)", 18)
-        add(obj, "App::PropertyInteger", "Quantity", "Board", "How many to cut", 1)
+            QT_TRANSLATE_NOOP("App::Property", "Thickness of a board made from a sketch or face (detected for a "
+                                               "solid)"), 18)
+        add(obj, "App::PropertyInteger", "Quantity", "Board", QT_TRANSLATE_NOOP("App::Property", "How many to cut"), 1)
         add(obj, "App::PropertyEnumeration", "Rotation", "Board",
-            "Turns allowed on the master board: any, keeping its length along the grain, or none", list(ROTATIONS))
-        for side, where in zip(SIDES, ("first long edge", "second long edge", "first short edge",
-                                       "second short edge")):
-            add(obj, "App::PropertyString", "Edge" + side, "Edge banding",
-                "Band glued on its {} (e.g. 'oak 1 mm'); empty: none. Band Edges sets it from picked faces"
-                .format(where), "")
-        add(obj, "App::PropertyLength", "OutlineWidth", "Outline", "Longest side of the outline's box", mode=1)
-        add(obj, "App::PropertyLength", "OutlineHeight", "Outline", "Other side of the outline's box", mode=1)
+            QT_TRANSLATE_NOOP("App::Property", "Turns allowed on the master board: any, keeping its length along the "
+                                               "grain, or none"), list(ROTATIONS))
+        for side, tip in zip(SIDES, (
+                QT_TRANSLATE_NOOP("App::Property", "Band glued on its first long edge (e.g. 'oak 1 mm'); empty: none"),
+                QT_TRANSLATE_NOOP("App::Property", "Band glued on its second long edge (e.g. 'oak 1 mm'); empty: none"),
+                QT_TRANSLATE_NOOP("App::Property", "Band glued on its first short edge (e.g. 'oak 1 mm'); empty: none"),
+                QT_TRANSLATE_NOOP("App::Property", "Band glued on its second short edge (e.g. 'oak 1 mm'); empty: "
+                                                   "none"))):  # Band Edges sets them from picked faces
+            add(obj, "App::PropertyString", "Edge" + side, "Edge banding", tip, "")
+        add(obj, "App::PropertyLength", "OutlineWidth", "Outline",
+            QT_TRANSLATE_NOOP("App::Property", "Longest side of the outline's box"), mode=1)
+        add(obj, "App::PropertyLength", "OutlineHeight", "Outline",
+            QT_TRANSLATE_NOOP("App::Property", "Other side of the outline's box"), mode=1)
 
     def recompute(self, obj):
         slab, thickness = make_slab(obj)

@@ -12,7 +12,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, cuboids, messages, properties, references
 from freecad.fabguide.material import master_board
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 SATISFIED = "Satisfied"
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
@@ -26,31 +26,48 @@ class DesignError(ValueError):
 
 class FlatpackDesign(properties.Proxy):
     TYPE, NOUN = "FabGuide::FlatpackDesign", "Design"
-    VALID = dict(Resolution=properties.more_than(0),
+    VALID = dict(Resolution=properties.more_than(0), MaxGrowth=properties.at_least(1),
                  MasterBoards=properties.links(master_board.is_master_board, "master boards"))
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLinkList", "MasterBoards", "Design", "Master boards to cut the boards from")
-        add(obj, "App::PropertyLength", "Resolution", "Layout", "Grid cell size tau (thesis 5.4.1)", 0.5)
-        add(obj, "App::PropertyLength", "Kerf", "Layout", "Width of the cut", 0.2)
-        add(obj, "App::PropertyLength", "Spacing", "Layout", "Extra material between parts", 3)
-        add(obj, "App::PropertyLength", "Trim", "Layout", "Margin cut off every master board edge", 5)
-        add(obj, "App::PropertyLength", "MinimumLength", "Design", "Shortest side a board may shrink to", 60)
-        add(obj, "App::PropertyBool", "Snap", "Design", "Boards that touch stay touching (edge snapping)", True)
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Design",
+            QT_TRANSLATE_NOOP("App::Property", "Master boards to cut the boards from"))
+        add(obj, "App::PropertyLength", "Resolution", "Layout",
+            QT_TRANSLATE_NOOP("App::Property", "Grid cell size tau (thesis 5.4.1)"), 0.5)
+        add(obj, "App::PropertyLength", "Kerf", "Layout", QT_TRANSLATE_NOOP("App::Property", "Width of the cut"), 0.2)
+        add(obj, "App::PropertyLength", "Spacing", "Layout",
+            QT_TRANSLATE_NOOP("App::Property", "Extra material between parts"), 3)
+        add(obj, "App::PropertyLength", "Trim", "Layout",
+            QT_TRANSLATE_NOOP("App::Property", "Margin cut off every master board edge"), 5)
+        add(obj, "App::PropertyLength", "MinimumLength", "Design",
+            QT_TRANSLATE_NOOP("App::Property", "Shortest side a board may shrink to"), 60)
+        add(obj, "App::PropertyBool", "Snap", "Design",
+            QT_TRANSLATE_NOOP("App::Property", "Boards that touch stay touching (edge snapping)"), True)
+        add(obj, "App::PropertyFloat", "MaxGrowth", "Design",
+            QT_TRANSLATE_NOOP("App::Property", "How many times its length now Suggest may make a board's side (1.5: "
+                                               "half as long again), so a batten stays a batten; your own edits are "
+                                               "not held"), 1.5)
         add(obj, "App::PropertyBool", "KeepEdits", "Design",
-            "A box you edit keeps its new size and place while the rest adapts to the constraints", True)
+            QT_TRANSLATE_NOOP("App::Property", "A box you edit keeps its new size and place while the rest adapts to "
+                                               "the constraints"), True)
         add(obj, "App::PropertyStringList", "Parameters", "Parametric",
-            "Spreadsheet aliases that drive the boxes by expressions, as 'Sheet.alias min max' (thesis 5.4.2.2); "
-            "when given, Suggest changes these instead of the boxes")
-        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / layout bounding rectangle (thesis 5.2.3)",
+            QT_TRANSLATE_NOOP("App::Property", "Spreadsheet aliases that drive the boxes by expressions, as "
+                                               "'Sheet.alias min max' (thesis 5.4.2.2); when given, Suggest changes "
+                                               "these instead of the boxes"))
+        add(obj, "App::PropertyFloat", "Usage", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Part area / layout bounding rectangle (thesis 5.2.3)"),
             mode=1)
-        add(obj, "App::PropertyString", "Status", "Result", "Laid out, or what is wrong", mode=1)
+        add(obj, "App::PropertyString", "Status", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Laid out, or what is wrong"), mode=1)
         add(obj, "App::PropertyStringList", "Changes", "Result",
-            "What the last recompute or accepted suggestion that moved boards did: size old → new, how far",
+            QT_TRANSLATE_NOOP("App::Property", "What the last recompute or accepted suggestion that moved boards did: "
+                                               "size old → new, how far"),
             mode=1)
-        add(obj, "App::PropertyString", "Valid", "Data", "Boards after the last valid recompute (JSON)", mode=2)
-        add(obj, "App::PropertyString", "LayoutJson", "Data", "The last layout and its problem (JSON)", mode=2)
+        add(obj, "App::PropertyString", "Valid", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "Boards after the last valid recompute (JSON)"), mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "The last layout and its problem (JSON)"), mode=2)
 
     def recompute(self, obj):
         master_board.note_users(obj.Document)
@@ -75,19 +92,25 @@ class DesignConstraint(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyEnumeration", "Kind", "Constraint", "What must hold", list(KINDS))
+        add(obj, "App::PropertyEnumeration", "Kind", "Constraint",
+            QT_TRANSLATE_NOOP("App::Property", "What must hold"), list(KINDS))
         references.define(obj, "Refs", "Constraint",
                           "Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), "
                           "sum (left side), fixed and range (one)")
         references.define(obj, "Rhs", "Constraint", "Right side of a sum")
-        add(obj, "App::PropertyLinkList", "Parts", "Constraint", "Boxes for ground, coplanar and snap")
-        add(obj, "App::PropertyDistance", "Value", "Constraint", "Fixed value or sum offset")
-        add(obj, "App::PropertyDistance", "Min", "Constraint", "Range: smallest value (beyond ±10⁸ m: none)",
+        add(obj, "App::PropertyLinkList", "Parts", "Constraint",
+            QT_TRANSLATE_NOOP("App::Property", "Boxes for ground, coplanar and snap"))
+        add(obj, "App::PropertyDistance", "Value", "Constraint",
+            QT_TRANSLATE_NOOP("App::Property", "Fixed value or sum offset"))
+        add(obj, "App::PropertyDistance", "Min", "Constraint",
+            QT_TRANSLATE_NOOP("App::Property", "Range: smallest value (beyond ±10⁸ m: none)"),
             -10 * UNBOUNDED)
-        add(obj, "App::PropertyDistance", "Max", "Constraint", "Range: largest value (beyond ±10⁸ m: none)",
+        add(obj, "App::PropertyDistance", "Max", "Constraint",
+            QT_TRANSLATE_NOOP("App::Property", "Range: largest value (beyond ±10⁸ m: none)"),
             10 * UNBOUNDED)
         references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
-        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or what breaks it", mode=1)
+        add(obj, "App::PropertyString", "Status", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Satisfied, or what breaks it"), mode=1)
 
     def recompute(self, obj):
         """Min and Max are checked together here, not as each is typed: "900" passes through 9 and 90 on its way
@@ -104,13 +127,16 @@ class Volume(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyEnumeration", "Kind", "Volume", "Inner: kept free; Outer: the design stays inside",
+        add(obj, "App::PropertyEnumeration", "Kind", "Volume",
+            QT_TRANSLATE_NOOP("App::Property", "Inner: kept free; Outer: the design stays inside"),
             ["Inner", "Outer"])
-        add(obj, "App::PropertyLink", "On", "Volume", "Inner volume: the board it rests on and moves with")
-        add(obj, "App::PropertyLength", "Length", "Volume", "Size along x", 100)
-        add(obj, "App::PropertyLength", "Width", "Volume", "Size along y", 100)
-        add(obj, "App::PropertyLength", "Height", "Volume", "Size along z", 100)
-        add(obj, "App::PropertyString", "Status", "Result", "Satisfied, or the boards that break it", mode=1)
+        add(obj, "App::PropertyLink", "On", "Volume",
+            QT_TRANSLATE_NOOP("App::Property", "Inner volume: the board it rests on and moves with"))
+        add(obj, "App::PropertyLength", "Length", "Volume", QT_TRANSLATE_NOOP("App::Property", "Size along x"), 100)
+        add(obj, "App::PropertyLength", "Width", "Volume", QT_TRANSLATE_NOOP("App::Property", "Size along y"), 100)
+        add(obj, "App::PropertyLength", "Height", "Volume", QT_TRANSLATE_NOOP("App::Property", "Size along z"), 100)
+        add(obj, "App::PropertyString", "Status", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Satisfied, or the boards that break it"), mode=1)
 
     def recompute(self, obj):
         obj.Shape = Part.makeBox(obj.Length.Value, obj.Width.Value, obj.Height.Value)
@@ -169,8 +195,9 @@ def add_grain(boxes):
     """Gives each box its Grain (group FabGuide) if it has none yet."""
     for box in boxes:
         properties.add(box, "App::PropertyEnumeration", "Grain", "FabGuide",
-                       "The model axis the wood's grain runs along, one in the board's face: the board is laid "
-                       "with it along the grain of master boards that have one. Free: no grain", list(GRAINS))
+                       QT_TRANSLATE_NOOP("App::Property", "The model axis the wood's grain runs along, one in the "
+                                                          "board's face: the board is laid with it along the grain of "
+                                                          "master boards that have one. Free: no grain"), list(GRAINS))
 
 
 def is_design(obj):
@@ -260,7 +287,8 @@ def flatpack(obj, parts=None):
         inner, outer = volume_dicts(obj)
         doc = {"format": "fabguide.flatpack", "version": 1,
                "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
-                            "trim": obj.Trim.Value, "min_length": obj.MinimumLength.Value, "snap": obj.Snap},
+                            "trim": obj.Trim.Value, "min_length": obj.MinimumLength.Value, "snap": obj.Snap,
+                            "max_growth": obj.MaxGrowth},
                "boards": [master_board.as_problem_board(m) for m in obj.MasterBoards],
                "parts": parts if parts is not None else parts_of(obj),
                "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
@@ -466,6 +494,7 @@ def from_file(doc, path, label=None):
     obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
     obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
     obj.MinimumLength, obj.Snap = s.get("min_length", 2 * data["boards"][0]["thickness"]), s.get("snap", True)
+    obj.MaxGrowth = s.get("max_growth", 1.5)
     for c in data.get("constraints", []):
         values = {}
         if "refs" in c:

@@ -10,7 +10,7 @@ import Part
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.material import board, master_board
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 GAP = 100  # mm between the model and the sheets, and between sheets
 JOINTS = {"Auto (dowels for thick boards)": "Auto", "Finger joints": "Fingers", "None": "None"}
@@ -34,61 +34,85 @@ class Layout(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLinkList", "Boards", "Layout", "Boards to lay out")
-        add(obj, "App::PropertyLinkList", "MasterBoards", "Layout", "Master boards to cut them from, opened in this order")
-        add(obj, "App::PropertyLength", "Kerf", "Cutting", "Width of the cut (laser beam, router bit)",
+        add(obj, "App::PropertyLinkList", "Boards", "Layout", QT_TRANSLATE_NOOP("App::Property", "Boards to lay out"))
+        add(obj, "App::PropertyLinkList", "MasterBoards", "Layout",
+            QT_TRANSLATE_NOOP("App::Property", "Master boards to cut them from, opened in this order"))
+        add(obj, "App::PropertyLength", "Kerf", "Cutting",
+            QT_TRANSLATE_NOOP("App::Property", "Width of the cut (laser beam, router bit)"),
             preferences.get("Kerf"))
-        add(obj, "App::PropertyLength", "Spacing", "Cutting", "Material left between parts besides the kerf",
+        add(obj, "App::PropertyLength", "Spacing", "Cutting",
+            QT_TRANSLATE_NOOP("App::Property", "Material left between parts besides the kerf"),
             preferences.get("Spacing"))
-        add(obj, "App::PropertyLength", "Trim", "Cutting", "Margin kept along every master board edge",
+        add(obj, "App::PropertyLength", "Trim", "Cutting",
+            QT_TRANSLATE_NOOP("App::Property", "Margin kept along every master board edge"),
             preferences.get("Trim"))
         add(obj, "App::PropertyLength", "Dogbone", "Cutting",
-            "Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; "
-            "0 for none (a laser)", 0)
+            QT_TRANSLATE_NOOP("App::Property", "Router bit diameter: the cut sheets relieve inside corners (slots, "
+                                               "notches) so the bit cuts them square; 0 for none (a laser)"), 0)
         add(obj, "App::PropertyLength", "TabWidth", "Cutting",
-            "Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none", 0)
-        add(obj, "App::PropertyLength", "TabBelow", "Cutting", "Parts whose longer side is shorter get holding tabs",
+            QT_TRANSLATE_NOOP("App::Property", "Holding tabs left in the outer cut of small parts so they stay in the "
+                                               "sheet; 0 for none"), 0)
+        add(obj, "App::PropertyLength", "TabBelow", "Cutting",
+            QT_TRANSLATE_NOOP("App::Property", "Parts whose longer side is shorter get holding tabs"),
             300)
         add(obj, "App::PropertyBool", "AsDesigned", "Cut sheets",
-            "Export the parts' outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of "
-            "their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the "
-            "machine cuts them", False)
+            QT_TRANSLATE_NOOP("App::Property", "Export the parts' outlines as designed (no kerf offset, no dogbones, "
+                                               "closed, holding tabs on a layer of their own) for CAM software that "
+                                               "offsets by its tool itself; off: tool paths as a laser or the machine "
+                                               "cuts them"), False)
         add(obj, "App::PropertyBool", "TextLabels", "Cut sheets",
-            "Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD's "
-            "DXF import take as they are", False)
-        add(obj, "App::PropertyLength", "LabelWidth", "Cut sheets", "Width of the label printer's labels", 62)
-        add(obj, "App::PropertyLength", "LabelHeight", "Cut sheets", "Height of the label printer's labels", 29)
+            QT_TRANSLATE_NOOP("App::Property", "Labels as text in a font; off: as single strokes to engrave, which "
+                                               "laser software, CAM and FreeCAD's DXF import take as they are"), False)
+        add(obj, "App::PropertyLength", "LabelWidth", "Cut sheets",
+            QT_TRANSLATE_NOOP("App::Property", "Width of the label printer's labels"), 62)
+        add(obj, "App::PropertyLength", "LabelHeight", "Cut sheets",
+            QT_TRANSLATE_NOOP("App::Property", "Height of the label printer's labels"), 29)
         add(obj, "App::PropertyEnumeration", "Joints", "Cutting",
-            "Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under "
-            "Auto", list(JOINTS))
+            QT_TRANSLATE_NOOP("App::Property", "Connectors where boards meet: finger joints or cross slots; dowels for "
+                                               "boards of 18 mm or more under Auto"), list(JOINTS))
         add(obj, "App::PropertyEnumeration", "Cuts", "Cutting",
-            "Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only "
-            "(a panel, track or table saw), with the cut sequence on the cut sheets", list(CUTS))
+            QT_TRANSLATE_NOOP("App::Property", "Free: any outline (a CNC router or laser follows it); Guillotine: "
+                                               "straight cuts from edge to edge only (a panel, track or table saw), "
+                                               "with the cut sequence on the cut sheets"), list(CUTS))
         add(obj, "App::PropertyInteger", "Stages", "Cutting",
-            "Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited", 0)
+            QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 "
+                                               "= unlimited"), 0)
         add(obj, "App::PropertyEnumeration", "FirstCut", "Cutting",
-            "Guillotine cuts: the first cuts along the sheet's length (x), across it, or whichever wastes less",
+            QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: the first cuts along the sheet's length (x), across "
+                                               "it, or whichever wastes less"),
             list(FIRST_CUTS))
-        add(obj, "App::PropertyStringList", "Connectors", "Result", "The connectors made", mode=1)
-        add(obj, "App::PropertyInteger", "SawCuts", "Result", "Guillotine cuts: the saw cuts to make", mode=1)
-        add(obj, "App::PropertyLength", "SawCutLength", "Result", "Guillotine cuts: their total length", mode=1)
-        add(obj, "App::PropertyLength", "Resolution", "Search", "Cell size of the layout grid (thesis 5.4.1)", 0.5)
+        add(obj, "App::PropertyStringList", "Connectors", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "The connectors made"), mode=1)
+        add(obj, "App::PropertyInteger", "SawCuts", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: the saw cuts to make"), mode=1)
+        add(obj, "App::PropertyLength", "SawCutLength", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: their total length"), mode=1)
+        add(obj, "App::PropertyLength", "Resolution", "Search",
+            QT_TRANSLATE_NOOP("App::Property", "Cell size of the layout grid (thesis 5.4.1)"), 0.5)
         add(obj, "App::PropertyInteger", "RotationStep", "Search",
-            "Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, "
-            "e.g. 15); 0 = quarter turns only", 0)
+            QT_TRANSLATE_NOOP("App::Property", "Free rotation: boards without grain may turn by every multiple of this "
+                                               "many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only"), 0)
         add(obj, "App::PropertyInteger", "Iterations", "Search",
-            "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)", -1)
-        add(obj, "App::PropertyInteger", "Seed", "Search", "Seed of the ordering search", 1)
+            QT_TRANSLATE_NOOP("App::Property", "Ordering swaps tried; -1 = parts squared (thesis 5.4.3)"), -1)
+        add(obj, "App::PropertyInteger", "Seed", "Search",
+            QT_TRANSLATE_NOOP("App::Property", "Seed of the ordering search"), 1)
         add(obj, "App::PropertyFloat", "TimeLimit", "Search",
-            "Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far",
+            QT_TRANSLATE_NOOP("App::Property", "Seconds the search may take at most; in FreeCAD a dialog shows it and "
+                                               "Stop keeps the best layout so far"),
             preferences.get("LayoutTimeLimit"))
-        add(obj, "App::PropertyFloat", "Usage", "Result", "Part area / bounding rectangle of the layout", mode=1)
-        add(obj, "App::PropertyFloat", "SheetUtilisation", "Result", "Part area / area of the master boards used",
+        add(obj, "App::PropertyFloat", "Usage", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Part area / bounding rectangle of the layout"), mode=1)
+        add(obj, "App::PropertyFloat", "SheetUtilisation", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Part area / area of the master boards used"),
             mode=1)
-        add(obj, "App::PropertyArea", "WasteArea", "Result", "Area of the master boards used minus part area", mode=1)
-        add(obj, "App::PropertyInteger", "SheetCount", "Result", "Master boards used", mode=1)
-        add(obj, "App::PropertyString", "ProblemJson", "Data", "The problem laid out (*.pack.json)", mode=2)
-        add(obj, "App::PropertyString", "LayoutJson", "Data", "The layout (layout JSON)", mode=2)
+        add(obj, "App::PropertyArea", "WasteArea", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Area of the master boards used minus part area"), mode=1)
+        add(obj, "App::PropertyInteger", "SheetCount", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Master boards used"), mode=1)
+        add(obj, "App::PropertyString", "ProblemJson", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "The problem laid out (*.pack.json)"), mode=2)
+        add(obj, "App::PropertyString", "LayoutJson", "Data",
+            QT_TRANSLATE_NOOP("App::Property", "The layout (layout JSON)"), mode=2)
 
     def onChanged(self, obj, prop):
         super().onChanged(obj, prop)

@@ -1,5 +1,6 @@
 """MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
 from freecad.fabguide import preferences, properties
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP
 
 # The grain directions, as *.pack.json names them.
 GRAIN = {"None": "none", "Along width": "width", "Along height": "height"}
@@ -12,16 +13,22 @@ class MasterBoard(properties.Proxy):
 
     def define(self, obj):
         add = properties.add
-        add(obj, "App::PropertyLength", "Width", "Master board", "Size along the layout's x axis", 2440)
-        add(obj, "App::PropertyLength", "Height", "Master board", "Size along the layout's y axis", 1220)
-        add(obj, "App::PropertyLength", "Thickness", "Master board", "Material thickness", 18)
-        add(obj, "App::PropertyInteger", "Count", "Master board", "Boards in stock; 0 = as many as needed", 1)
-        add(obj, "App::PropertyString", "Material", "Master board", "Material name for the cut list", "plywood")
+        add(obj, "App::PropertyLength", "Width", "Master board",
+            QT_TRANSLATE_NOOP("App::Property", "Size along the layout's x axis"), 2440)
+        add(obj, "App::PropertyLength", "Height", "Master board",
+            QT_TRANSLATE_NOOP("App::Property", "Size along the layout's y axis"), 1220)
+        add(obj, "App::PropertyLength", "Thickness", "Master board",
+            QT_TRANSLATE_NOOP("App::Property", "Material thickness"), 18)
+        add(obj, "App::PropertyInteger", "Count", "Master board",
+            QT_TRANSLATE_NOOP("App::Property", "Boards in stock; 0 = as many as needed"), 1)
+        add(obj, "App::PropertyString", "Material", "Master board",
+            QT_TRANSLATE_NOOP("App::Property", "Material name for the cut list"), "plywood")
         add(obj, "App::PropertyEnumeration", "Grain", "Master board",
-            "Direction of the wood grain; boards set to Follow grain keep their length along it", list(GRAIN))
+            QT_TRANSLATE_NOOP("App::Property", "Direction of the wood grain; boards set to Follow grain keep their "
+                                               "length along it"), list(GRAIN))
         add(obj, "App::PropertyFloat", "Cost", "Master board",
-            "What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new "
-            "sheets", 1.0)
+            QT_TRANSLATE_NOOP("App::Property", "What one board costs (any unit; 1 = a sheet); 0 for an offcut you "
+                                               "have, which is used before new sheets"), 1.0)
         if "UsedBy" not in obj.PropertiesList:  # an output: noting the users never recomputes anything
             obj.addProperty("App::PropertyStringList", "UsedBy", "Result",
                             "The designs and layouts cut from this master board: a change reaches them all",
