@@ -702,38 +702,40 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/CamJobPanel.ui" line="34"/>
-        <source>Feed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/CamJobPanel.ui" line="35"/>
-        <source>Spindle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/CamJobPanel.ui" line="38"/>
+        <location filename="../ui/CamJobPanel.ui" line="40"/>
         <source>Cut through by</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/CamJobPanel.ui" line="38"/>
+        <location filename="../ui/CamJobPanel.ui" line="40"/>
         <source>How far the profiles cut below the sheet, into the spoilboard, so that the parts come free (0: to the sheet&apos;s underside)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/CamJobPanel.ui" line="39"/>
+        <location filename="../ui/CamJobPanel.ui" line="41"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/CamJobPanel.ui" line="45"/>
+        <location filename="../ui/CamJobPanel.ui" line="47"/>
         <source>Write G-code</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/CamJobPanel.ui" line="50"/>
+        <location filename="../ui/CamJobPanel.ui" line="52"/>
         <source>Folder…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="34"/>
+        <source>Feed
+mm/min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/CamJobPanel.ui" line="36"/>
+        <source>Spindle
+rpm</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -991,18 +993,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="89"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="92"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="90"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
         <source>FabGuide: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="97"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
         <translation type="unfinished"></translation>

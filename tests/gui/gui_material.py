@@ -214,8 +214,8 @@ def cam_job_from_the_layout_writes_checked_gcode():
     speeds = form.findChild(QtGui.QTableWidget, "speeds")
     assert [speeds.verticalHeaderItem(r).text() for r in range(speeds.rowCount())] == cam.materials(lay) == \
         ["plywood"], "a row per material of the master boards"
-    assert speeds.cellWidget(0, 0).value() == cam.FEED and speeds.cellWidget(0, 1).value() == cam.SPINDLE
-    speeds.cellWidget(0, 0).setValue(2100)
+    assert [box.value() for box in cam_panel.boxes[0]] == [cam.FEED, cam.SPINDLE]
+    cam_panel.boxes[0][0].setValue(2100)
     print("screenshot: " + guitest.screenshot("material_cam_panel"))
     assert cam_panel.accept() is False  # parts 1.5 mm apart: too close for a 5 mm end mill
     assert "Kerf" in form.findChild(QtGui.QLabel, "message").text()
@@ -236,7 +236,7 @@ def cam_job_from_the_layout_writes_checked_gcode():
     Gui.runCommand("FabGuide_MakeCamJob")  # the plywood's feed remembered for the next job
     QtGui.QApplication.processEvents()
     again = material_commands.COMMANDS["FabGuide_MakeCamJob"].panel
-    assert again.form.speeds.cellWidget(0, 0).value() == 2100, "remembered"
+    assert again.boxes[0][0].value() == 2100, "remembered"
     again.reject()
     QtGui.QApplication.processEvents()
     Gui.Selection.clearSelection()

@@ -43,22 +43,25 @@ class CamJobPanel:
         table = self.form.speeds
         table.setRowCount(len(self.materials))
         table.setVerticalHeaderLabels(self.materials)
+        self.boxes = []  # [feed, spindle] per row, held here: cellWidget() may give back a bare QWidget
         for row, material in enumerate(self.materials):
             speeds = preferences.cam_speeds(material, (cam.FEED, cam.SPINDLE))
-            for column, (value, suffix, least, most, step) in enumerate(zip(
-                    speeds, (" mm/min", " rpm"), (10, 0), (50000, 60000), (100, 1000))):
-                box = QtGui.QDoubleSpinBox()
+            self.boxes.append([])
+            for column, (value, least, most, step) in enumerate(zip(speeds, (10, 0), (50000, 60000), (100, 1000))):
+                box = QtGui.QDoubleSpinBox()  # the unit is the column's: a narrow panel shows the whole number
                 box.setDecimals(0)
                 box.setRange(least, most)
                 box.setSingleStep(step)
-                box.setSuffix(suffix)
                 box.setValue(value)
                 table.setCellWidget(row, column, box)
+                self.boxes[row].append(box)
         table.horizontalHeader().setSectionResizeMode(QtGui.QHeaderView.Stretch)  # no scrolling sideways
+        table.setFixedHeight(table.horizontalHeader().sizeHint().height() + table.verticalHeader().length() +
+                             2 * table.frameWidth())  # as tall as its rows
 
     def speeds(self, column):
         """{material: value} of the table's `column` (0 feed, 1 spindle speed)."""
-        return {m: self.form.speeds.cellWidget(row, column).value() for row, m in enumerate(self.materials)}
+        return {m: self.boxes[row][column].value() for row, m in enumerate(self.materials)}
 
     def browse_bit(self):
         from PySide import QtGui
