@@ -379,14 +379,12 @@ void readInnerVolumes(const Fields& root, Design& design)
         if (v.size.minCoeff() <= 0)  // a space no part could be kept out of (issue 32)
             throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
         const Eigen::Vector3d position = volume.vector3("position");
-        const Eigen::VectorXd X = design.variables();
+        const material::DesignBoard& on = design.boards[v.on];
         for (int axis = 0; axis < 3; ++axis) {  // its nearer face, the lower one on a tie
-            const double below = position[axis] - material::lowerFace(v.on, axis).value(X);
-            const double above = material::upperFace(v.on, axis).value(X) - position[axis] - v.size[axis];
-            v.anchor[axis] = below <= above ? -1 : 1;
-            v.offset[axis] = position[axis] - (v.anchor[axis] < 0 ? material::lowerFace(v.on, axis)
-                                                                  : material::upperFace(v.on, axis))
-                                                  .value(X);
+            const double low = on.centre[axis] - on.size[axis] / 2,
+                         high = on.centre[axis] + on.size[axis] / 2;
+            v.anchor[axis] = position[axis] - low <= high - position[axis] - v.size[axis] ? -1 : 1;
+            v.offset[axis] = position[axis] - (v.anchor[axis] < 0 ? low : high);
         }
         volume.noOthers();
         design.innerVolumes.push_back(v);
@@ -434,11 +432,10 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     }
     Design& design = result.design;
     readParts(root, thicknesses, design);
-    if (document.contains("settings"))
-        result.maxGrowth = Fields(document["settings"], "settings").number("max_growth", 1.5, 1.0);
     const nlohmann::json noSettings = nlohmann::json::object();
-    addSettingConstraints(
-        Fields(document.contains("settings") ? document["settings"] : noSettings, "settings"), design);
+    const Fields settings(document.contains("settings") ? document["settings"] : noSettings, "settings");
+    result.maxGrowth = settings.number("max_growth", 1.5, 1.0);
+    addSettingConstraints(settings, design);
     const nlohmann::json& constraints = root.array("constraints", true);
     for (size_t i = 0; i < constraints.size(); ++i)
         readConstraint(design, constraints[i], at("constraints", i));

@@ -993,18 +993,18 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="92"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
         <source>FabGuide: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="97"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="98"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
         <translation type="unfinished"></translation>
@@ -1346,203 +1346,203 @@ rpm</source>
         <translation>Wählen Sie zuerst einen Quader des Teils, dann die Quader, die Hohlräume darin sind.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="162"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="165"/>
         <source>Pick the one edge of a box the {} turns about.</source>
         <translation>Wählen Sie die eine Kante eines Quaders, um die sich das {} dreht.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="165"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="168"/>
         <source>Pick a face of a box: the part slides along its normal.</source>
         <translation>Wählen Sie eine Fläche eines Quaders: das Teil gleitet entlang ihrer Normalen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="181"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="184"/>
         <source>Add Hinge</source>
         <translation>Scharnier hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="182"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="185"/>
         <source>Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)</source>
         <translation>Eine Kante eines Quaders wählen: sein Teil dreht sich um sie (und ggf. einen Quader des Teils, an dem es hängt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="188"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="191"/>
         <source>Add Slide</source>
         <translation>Schiene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="189"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="192"/>
         <source>Pick a face of a box: its part slides along the face&apos;s normal</source>
         <translation>Eine Fläche eines Quaders wählen: sein Teil gleitet entlang der Flächennormalen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="194"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="197"/>
         <source>Add Sliding Hinge</source>
         <translation>Schiebescharnier hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="195"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="198"/>
         <source>Pick an edge and a face of a box: its part turns about the edge, which slides along the face&apos;s normal</source>
         <translation>Eine Kante und eine Fläche eines Quaders wählen: sein Teil dreht sich um die Kante, die entlang der Flächennormalen gleitet</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="201"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="204"/>
         <source>Add Double Pivot</source>
         <translation>Doppelgelenk hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="202"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="205"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to, in the same plane: a rigid link joins them (the solve places both pivots)</source>
         <translation>Einen Punkt auf einer Fläche des Quaders des bewegten Teils wählen, dann einen auf der Fläche des verbundenen Teils, in derselben Ebene: ein starrer Lenker verbindet sie (die Lösung setzt beide Drehpunkte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="211"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="214"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to.</source>
         <translation>Wählen Sie einen Punkt auf einer Fläche des Quaders des bewegten Teils, dann einen auf der Fläche des verbundenen Teils.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="224"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="227"/>
         <source>Add Fixed Joint</source>
         <translation>Feste Verbindung hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="225"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="228"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints as one body with it</source>
         <translation>Einen Quader des zu haltenden Teils wählen, dann einen Quader des Teils, auf dem es sitzt: es bewegt sich mit diesem Teil und wird als ein Körper mit ihm gedruckt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="232"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on.</source>
         <translation>Wählen Sie einen Quader des zu haltenden Teils, dann einen Quader des Teils, auf dem es sitzt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="238"/>
         <source>Both boxes are in one part: pick a box of the part to hold, then one of another part.</source>
         <translation>Beide Quader gehören zu einem Teil: wählen Sie einen Quader des zu haltenden Teils, dann einen eines anderen Teils.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="238"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="241"/>
         <source>&apos;{}&apos; already rides on &apos;{}&apos;: pick the part to hold first, then the part it rides on.</source>
         <translation>'{}' sitzt schon auf '{}': wählen Sie zuerst das zu haltende Teil, dann das Teil, auf dem es sitzt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="293"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="296"/>
         <source>Add Cover</source>
         <translation>Abdecken hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="294"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="297"/>
         <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
         <translation>Diese Teile decken jenes (zuletzt gewählte) ab: Flächen in einer Ebene, dicht an dicht, über seinen Flächen oder Öffnungen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="314"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="317"/>
         <source>Add Fit Inside</source>
         <translation>Einpassen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="315"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="318"/>
         <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
         <translation>Diese Teile passen in jenes (zuletzt gewählte; einen seiner Hohlräume wählen, um in ihn einzupassen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="326"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="329"/>
         <source>Add Support</source>
         <translation>Stützen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="330"/>
         <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
         <translation>Diese Teile stützen jenes (zuletzt gewählte): es liegt auf ihren Oberseiten; sie stehen auf einem Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="335"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="338"/>
         <source>Add Flush</source>
         <translation>Bündig hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="336"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
         <source>Pick two faces of boxes: they lie in one plane</source>
         <translation>Zwei Flächen von Quadern wählen: sie liegen in einer Ebene</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="354"/>
         <source>Add Geometric</source>
         <translation>Geometrisch hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="352"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="355"/>
         <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
         <translation>Zwei Kanten von Quadern wählen: ihre Längen bleiben gleich (eine Kante: ihre Länge bleibt wie jetzt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="372"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="375"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="373"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="376"/>
         <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
         <translation>Den gewählten (oder jeden) Mechanismus lösen: die kleinste Änderung, mit der seine Beziehungen gelten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="380"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="383"/>
         <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
         <translation>Es gibt noch keinen Mechanismus: verwenden Sie zuerst „Mechanismus aus Quadern“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="393"/>
         <source>Configurations</source>
         <translation>Konfigurationen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="391"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="394"/>
         <source>Pose the joints: name configurations and move the mechanism between them</source>
         <translation>Die Gelenke stellen: Konfigurationen benennen und den Mechanismus zwischen ihnen bewegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="404"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
         <source>Import Works-like Model</source>
         <translation>Funktionsmodell importieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="405"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
         <source>Build a mechanism from a *.workslike.json file</source>
         <translation>Einen Mechanismus aus einer *.workslike.json-Datei erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="429"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="432"/>
         <source>Export Works-like Model</source>
         <translation>Funktionsmodell exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="430"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="433"/>
         <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
         <translation>Den gewählten Mechanismus als *.workslike.json-Datei schreiben (die Kommandozeile liest sie mit fabguide solve)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="451"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="454"/>
         <source>Make Printable</source>
         <translation>Druckbar machen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="452"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
         <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
         <translation>In einem Stück druckbare Körper des gewählten (oder einzigen) Mechanismus: Spalte, Hohlräume, Scharnierstifte und Gabeln, Gelenklenker; entlang jeder Bewegung geprüft</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="470"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="473"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="475"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
         <source>Export Printable</source>
         <translation>Druckbares exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="476"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="479"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation>Das gewählte Druckbare als STL, 3MF und STEP schreiben: die Baugruppe und eine Datei je Körper</translation>
     </message>
@@ -1854,12 +1854,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="380"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="379"/>
         <source>Job &apos;{}&apos;: post-processor &apos;{}&apos; not found</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="392"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="391"/>
         <source>Job &apos;{}&apos;: the post-processor &apos;{}&apos; wrote nothing</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1981,6 +1981,21 @@ rpm</source>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="84"/>
         <source>see the report view</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="144"/>
+        <source>&apos;{0}&apos; rides on &apos;{1}&apos; by the fixed joint &apos;{2}&apos;, and a part is moved by one joint: add this joint to &apos;{1}&apos; (they move together), or delete the fixed joint and hold &apos;{1}&apos; on &apos;{0}&apos; instead.</source>
+        <translation>'{0}' sitzt über die feste Verbindung '{2}' auf '{1}', und ein Teil wird von einem Gelenk bewegt: fügen Sie dieses Gelenk '{1}' hinzu (sie bewegen sich zusammen), oder löschen Sie die feste Verbindung und halten Sie stattdessen '{1}' auf '{0}'.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="149"/>
+        <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint): pick the part to hold first, then the part it rides on.</source>
+        <translation>'{}' wird schon vom Gelenk '{}' bewegt (ein Teil wird von einem Gelenk bewegt): wählen Sie zuerst das zu haltende Teil, dann das Teil, auf dem es sitzt.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
+        <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint).</source>
+        <translation>'{}' wird schon vom Gelenk '{}' bewegt (ein Teil wird von einem Gelenk bewegt).</translation>
     </message>
 </context>
 <context>

@@ -81,10 +81,11 @@ class CamJobPanel:
 
     def accept(self):
         lay, doc = self.layout, self.layout.Document
+        feeds, spindles = self.speeds(0), self.speeds(1)
         try:
             with transaction(doc, "Make CAM Job"):
                 jobs = cam.make_jobs(lay, bit=self.form.bit.currentData(), post=self.form.post.currentText(),
-                                     feed=self.speeds(0), spindle=self.speeds(1),
+                                     feed=feeds, spindle=spindles,
                                      through=self.form.through.value())
             written = (cam.write_gcode(jobs, self.form.folder.text(), layout.file_stem(lay.Label))
                        if self.form.gcodeBox.isChecked() else [])
@@ -93,7 +94,7 @@ class CamJobPanel:
             FreeCAD.Console.PrintWarning(translate("FabGuide", "FabGuide: {}\n").format(error))
             return False
         for material in self.materials:
-            preferences.remember_cam_speeds(material, self.speeds(0)[material], self.speeds(1)[material])
+            preferences.remember_cam_speeds(material, feeds[material], spindles[material])
         FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: {} CAM job(s) for '{}'{}\n").format(
             len(jobs), lay.Label, "; wrote:\n  " + "\n  ".join(written) if written else ""))
         FreeCADGui.Control.closeDialog()

@@ -141,12 +141,15 @@ def already_moved(doc, box, kind):
         return None
     joint = moving[0]
     if joints.kind(joint) == "fixed" and kind != "fixed":
-        return ("'{}' rides on '{}' by the fixed joint '{}', and a part is moved by one joint: add this joint to "
-                "'{}' (they move together), or delete the fixed joint and hold '{}' on '{}' instead.".format(
-                    part.Label, joint.Base.Label, joint.Label, joint.Base.Label, joint.Base.Label, part.Label))
-    return "'{}' is already moved by joint '{}' (a part is moved by one joint){}.".format(
-        part.Label, joint.Label, ": pick the part to hold first, then the part it rides on" if kind == "fixed"
-        else "")
+        return translate("FabGuide", "'{0}' rides on '{1}' by the fixed joint '{2}', and a part is moved by one "
+                                     "joint: add this joint to '{1}' (they move together), or delete the fixed "
+                                     "joint and hold '{1}' on '{0}' instead.").format(
+            part.Label, joint.Base.Label, joint.Label)
+    if kind == "fixed":
+        return translate("FabGuide", "'{}' is already moved by joint '{}' (a part is moved by one joint): pick the "
+                                     "part to hold first, then the part it rides on.").format(part.Label, joint.Label)
+    return translate("FabGuide", "'{}' is already moved by joint '{}' (a part is moved by one joint).").format(
+        part.Label, joint.Label)
 
 
 class AddJoint(Command):

@@ -104,8 +104,8 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=TH
     layout.current(lay)
     if not 0 <= through <= 5:
         raise CamError(translate("FabGuide", "cut through by {:g} mm: from 0 to 5 mm below the sheet").format(through))
-    for material in materials(lay):
-        feeding, turning = for_material(feed, material, "feed"), for_material(spindle, material, "spindle speed")
+    speeds = {m: (for_material(feed, m, "feed"), for_material(spindle, m, "spindle speed")) for m in materials(lay)}
+    for material, (feeding, turning) in speeds.items():
         if not 10 <= feeding <= 50000:
             raise CamError(translate("FabGuide", "feed {:g} mm/min for '{}': from 10 to 50000 mm/min").format(
                 feeding, material))
@@ -128,8 +128,7 @@ def make_jobs(lay, bit=None, post="grbl", feed=FEED, spindle=SPINDLE, through=TH
     remove_jobs(lay)
     sheets = fabguide_core.cut_sheets(json.loads(lay.ProblemJson), json.loads(lay.LayoutJson))
     with plain_bits(cam):
-        jobs = [make_job(cam, lay, number, sheet, bit, post, for_material(feed, sheet["material"], "feed"),
-                         for_material(spindle, sheet["material"], "spindle speed"), through)
+        jobs = [make_job(cam, lay, number, sheet, bit, post, *speeds[sheet["material"]], through)
                 for number, sheet in enumerate(sheets, 1)]
     lay.Document.recompute()
     return jobs
