@@ -30,6 +30,7 @@ struct PackArguments {
     std::optional<material::Cuts> cuts;  // unset: as the file's settings say
     std::optional<int> stages;
     std::optional<material::FirstCut> firstCut;
+    bool commonLine = false;
     material::OrderingSearchOptions search;
 };
 
@@ -52,6 +53,7 @@ void run(const PackArguments& args)
     problem.settings.cuts = args.cuts.value_or(problem.settings.cuts);
     problem.settings.stages = args.stages.value_or(problem.settings.stages);
     problem.settings.firstCut = args.firstCut.value_or(problem.settings.firstCut);
+    problem.settings.commonLine = problem.settings.commonLine || args.commonLine;
     material::OrderingSearchOptions search = args.search;
     search.timeLimit = std::max(0.0, search.timeLimit - secondsSinceStart());  // start-up and reading count
     search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
@@ -74,6 +76,9 @@ void run(const PackArguments& args)
                 ++count, length += c.length();
         std::printf("saw cuts      %zu, %.1f m\n", count, length / 1000);
     }
+    if (problem.settings.commonLine && !out.options.asDesigned && layout.sawCuts.empty())
+        std::printf("common line   %.1f m cut once for two parts\n",
+                    material::totals(layout, problem).commonLine / 1000);
     std::printf("layout        %s\n", args.output.c_str());
     io::LayoutFiles named = out;
     named.title = std::filesystem::path(args.input).stem().stem().string();  // job.pack.json: job
@@ -119,6 +124,11 @@ void addPackCommand(CLI::App& app)
                   "cut sheets for CAM software that offsets by its tool itself: the parts' nominal outlines, "
                   "closed, no dogbones, the holding tabs on a layer of their own (default: tool paths as the "
                   "machine cuts them, offset by half the kerf)");
+    cmd->add_flag(
+           "--common-line", args->commonLine,
+           "common-line cutting: a line two parts a kerf apart share is cut once, by the part cut first "
+           "(default: the file's settings.common_line)")
+        ->excludes("--as-designed");
     cmd->add_flag("--strip", args->strip,
                   "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");

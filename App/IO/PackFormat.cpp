@@ -1,6 +1,7 @@
 #include "IO/PackFormat.h"
 
 #include "IO/Json.h"
+#include "Layout/CutSheet.h"
 
 #include <algorithm>
 #include <cmath>
@@ -225,7 +226,7 @@ material::PackSettings readSettings(const nlohmann::json& document)
         return result;
     const Fields settings(document["settings"], "settings");
     settings.only({"resolution", "kerf", "spacing", "trim", "dogbone", "tab_width", "tab_below",
-                   "rotation_step", "cuts", "stages", "first_cut", "min_length", "snap",
+                   "rotation_step", "cuts", "stages", "first_cut", "common_line", "min_length", "snap",
                    "max_growth"});  // the last three: a flat-pack design's
     result.resolution = settings.number("resolution", 0.5);
     if (!(result.resolution > 0))
@@ -246,6 +247,7 @@ material::PackSettings readSettings(const nlohmann::json& document)
         throw FormatError("settings.stages: must be 0 (unlimited) or a number of stages, got " +
                           std::to_string(result.stages));
     result.firstCut = named(settings, "first_cut", firstCutNames());
+    result.commonLine = settings.flag("common_line", false);
     return result;
 }
 
@@ -459,7 +461,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
                           std::to_string(sawn.size()));
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
-    root.noOthers({"sheet_utilisation", "waste_area"});  // written for people
+    root.noOthers({"sheet_utilisation", "waste_area", "cut_length", "common_line"});  // written for people
     return layout;
 }
 
@@ -584,7 +586,8 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
               {"rotation_step", s.rotationStep},
               {"cuts", nameOf(s.cuts, cutsNames())},
               {"stages", s.stages},
-              {"first_cut", nameOf(s.firstCut, firstCutNames())}}},
+              {"first_cut", nameOf(s.firstCut, firstCutNames())},
+              {"common_line", s.commonLine}}},
             {"boards", boards},
             {"parts", parts}};
 }
@@ -633,6 +636,12 @@ nlohmann::json layoutToJson(const material::Layout& layout, const material::Pack
                           {"waste_area", layout.wasteArea()}};
     if (problem.strip)
         out["strip_height"] = layout.stripHeight;
+    else {
+        const material::Totals totals = material::totals(layout, problem);
+        out["cut_length"] = totals.cutLength;
+        if (problem.settings.commonLine)
+            out["common_line"] = totals.commonLine;
+    }
     if (!layout.sawCuts.empty())
         out["saw_cuts"] = sawCutsToJson(layout.sawCuts);
     return out;

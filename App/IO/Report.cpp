@@ -261,7 +261,9 @@ void drawCutList(const NextPage& next, const material::Layout& layout, const mat
         {"Part area", squareMetres(t.partArea)},
         {"Waste", squareMetres(t.sheetArea - t.partArea) + " (" +
                       mm(t.sheetArea > 0 ? 100 * (t.sheetArea - t.partArea) / t.sheetArea : 0) + " %)"},
-        {layout.sawCuts.empty() ? "Cut length" : "Saw cut length", metres(t.cutLength)},
+        {layout.sawCuts.empty() ? "Cut length" : "Saw cut length",
+         metres(t.cutLength) +
+             (t.commonLine > 0 ? " (" + metres(t.commonLine) + " of it shared by two parts, cut once)" : "")},
         {"Cost", mm(t.cost) + " (master board costs)"}};
     for (const auto& [band, length] : t.banding)
         lines.push_back({"Edge banding " + band, metres(length)});

@@ -18,11 +18,11 @@ constexpr double kMargin = 1e-7;
 /// What an outline is grown by beyond the clearance before it slides, mm: past Clipper's rounding.
 constexpr double kGrowth = 1e-3;
 
-template <class Visit>
-void forEachRing(const Outline& outline, Visit&& visit)
+template <class AnOutline, class Visit>  // Outline or const Outline
+void forEachRing(AnOutline& outline, Visit&& visit)
 {
     visit(outline.outer);
-    for (const Polygon& hole : outline.holes)
+    for (auto& hole : outline.holes)
         visit(hole);
 }
 
@@ -59,56 +59,87 @@ double gapBelow(const Outline& moving, const Outline& fixed)
     return gap;
 }
 
+/// Each placed part's outline, and that outline grown by the clearance (mitred: never closer than a round
+/// offset), which must stay off the others' outlines.
+struct Outlines {
+    std::vector<Outline> outline, grown;
+};
+
+Outlines outlinesOf(const Layout& layout, const PackProblem& problem)
+{
+    const double clearance = problem.settings.kerf + problem.settings.spacing;
+    Outlines o;
+    for (const Placement& p : layout.placements) {
+        o.outline.push_back(geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y));
+        o.grown.push_back(clearance > 0 ? geometry::offset(o.outline.back(), clearance + kGrowth)
+                                        : o.outline.back());
+    }
+    return o;
+}
+
+void moveY(Outline& o, double dy)
+{
+    forEachRing(o, [&](Polygon& ring) {
+        for (Point2& p : ring)
+            p.y += dy;
+    });
+}
+
+/// Each part, the lowest first, slid down as far as its outline stays clear of every other's on its sheet
+/// and `trim` above the sheet's edge.
+void slideDown(Layout& out, Outlines& o, double trim)
+{
+    const size_t n = out.placements.size();
+    std::vector<geometry::Box2> box(n), grownBox(n);
+    for (size_t i = 0; i < n; ++i)
+        box[i] = geometry::bounds(o.outline[i].outer), grownBox[i] = geometry::bounds(o.grown[i].outer);
+    std::vector<size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return out.placements[a].y < out.placements[b].y; });
+    for (size_t i : order) {
+        Placement& moving = out.placements[i];
+        double gap = moving.y - trim;
+        for (size_t j = 0; j < n && gap > 0; ++j)
+            if (j != i && out.placements[j].sheet == moving.sheet && box[j].minY < grownBox[i].maxY &&
+                box[j].maxX >= grownBox[i].minX && box[j].minX <= grownBox[i].maxX)
+                gap = std::min(gap, geometry::overlap(o.grown[i], o.outline[j])
+                                        ? 0.0
+                                        : gapBelow(o.grown[i], o.outline[j]));
+        if (gap > kMargin) {
+            moveY(o.outline[i], -(gap - kMargin));
+            moveY(o.grown[i], -(gap - kMargin));
+            moving.y -= gap - kMargin;
+            box[i] = geometry::bounds(o.outline[i].outer);
+            grownBox[i] = geometry::bounds(o.grown[i].outer);
+        }
+    }
+}
+
+/// The layout mirrored in its diagonal (x and y swapped), so that sliding down slides left.
+void transpose(Layout& layout, Outlines& o)
+{
+    for (Placement& p : layout.placements)
+        std::swap(p.x, p.y), std::swap(p.width, p.height);
+    for (std::vector<Outline>* outlines : {&o.outline, &o.grown})
+        for (Outline& outline : *outlines)
+            forEachRing(outline, [](Polygon& ring) {
+                for (Point2& p : ring)
+                    std::swap(p.x, p.y);
+            });
+}
+
 }  // namespace
 
 Layout compacted(const Layout& layout, const PackProblem& problem)
 {
     if (!problem.strip || layout.sheets.size() != 1)
         return layout;
-    const PackSettings& settings = problem.settings;
-    const double clearance = settings.kerf + settings.spacing;
-    const size_t n = layout.placements.size();
-    // Each part's outline, and that outline grown by the clearance (mitred: never closer than a round
-    // offset), which must stay off the others' outlines.
-    std::vector<Outline> outline(n), grown(n);
-    std::vector<geometry::Box2> box(n), grownBox(n);
-    const auto place = [&](size_t i) {
-        const Placement& p = layout.placements[i];
-        outline[i] = geometry::placed(problem.parts[p.part].outline, p.rotation, p.x, p.y);
-        grown[i] = clearance > 0 ? geometry::offset(outline[i], clearance + kGrowth) : outline[i];
-        box[i] = geometry::bounds(outline[i].outer);
-        grownBox[i] = geometry::bounds(grown[i].outer);
-    };
     Layout out = layout;
-    for (size_t i = 0; i < n; ++i)
-        place(i);
-    std::vector<size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return layout.placements[a].y < layout.placements[b].y; });
-    for (size_t i : order) {
-        Placement& moving = out.placements[i];
-        double gap = moving.y - settings.trim;
-        for (size_t j = 0; j < n && gap > 0; ++j)
-            if (j != i && box[j].minY < grownBox[i].maxY && box[j].maxX >= grownBox[i].minX &&
-                box[j].minX <= grownBox[i].maxX)
-                gap = std::min(
-                    gap, geometry::overlap(grown[i], outline[j]) ? 0.0 : gapBelow(grown[i], outline[j]));
-        if (gap > kMargin) {
-            for (Outline* o : {&outline[i], &grown[i]}) {
-                for (Point2& p : o->outer)
-                    p.y -= gap - kMargin;
-                for (Polygon& hole : o->holes)
-                    for (Point2& p : hole)
-                        p.y -= gap - kMargin;
-            }
-            moving.y -= gap - kMargin;
-            box[i] = geometry::bounds(outline[i].outer);
-            grownBox[i] = geometry::bounds(grown[i].outer);
-        }
-    }
+    Outlines o = outlinesOf(layout, problem);
+    slideDown(out, o, problem.settings.trim);
     double before = 0, after = 0;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < out.placements.size(); ++i) {
         before = std::max(before, layout.placements[i].y + layout.placements[i].height);
         after = std::max(after, out.placements[i].y + out.placements[i].height);
     }
@@ -117,6 +148,19 @@ Layout compacted(const Layout& layout, const PackProblem& problem)
     out.stripHeight -= shorter;
     out.sheetArea -= width * shorter;
     out.boundingArea -= width * shorter;
+    return out;
+}
+
+Layout slidTogether(const Layout& layout, const PackProblem& problem)
+{
+    Layout out = layout;
+    Outlines o = outlinesOf(layout, problem);
+    for (int round = 0; round < 2; ++round) {
+        slideDown(out, o, problem.settings.trim);
+        transpose(out, o);
+        slideDown(out, o, problem.settings.trim);
+        transpose(out, o);
+    }
     return out;
 }
 

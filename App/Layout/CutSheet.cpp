@@ -1,5 +1,6 @@
 #include "Layout/CutSheet.h"
 
+#include "Layout/CommonLine.h"
 #include "Layout/Lettering.h"
 
 #include <algorithm>
@@ -161,8 +162,11 @@ std::vector<CutSheet> cutSheets(const Layout& layout, const PackProblem& problem
             sheets[i].cuts.insert(sheets[i].cuts.end(), outers[i].begin(), outers[i].end());
         }
     }
-    for (size_t i = 0; i < sheets.size(); ++i)
+    for (size_t i = 0; i < sheets.size(); ++i) {
+        if (s.commonLine && !options.asDesigned)
+            sheets[i].commonLine = cutCommonLinesOnce(sheets[i].cuts);
         sheets[i].cuts.insert(sheets[i].cuts.end(), last[i].begin(), last[i].end());
+    }
     return sheets;
 }
 
@@ -189,6 +193,10 @@ Totals totals(const Layout& layout, const PackProblem& problem)
     for (const std::vector<SawCut>& sheet : layout.sawCuts)
         for (const SawCut& c : sheet)
             t.cutLength += c.length();
+    if (problem.settings.commonLine && layout.sawCuts.empty())
+        for (const CutSheet& sheet : cutSheets(layout, problem, {false, true}))
+            t.commonLine += sheet.commonLine;
+    t.cutLength -= t.commonLine;
     t.banding.assign(banding.begin(), banding.end());
     return t;
 }

@@ -24,8 +24,9 @@ struct ToolPath {
     /// An inner cut: a hole with no part in it, cut before the outline round it. Outer cuts are the parts'
     /// outlines and the holes that hold parts (cut after the parts inside them).
     bool inner = false;
-    /// A stretch between two holding tabs (settings.tabWidth): open, so a small part stays in the sheet when
-    /// cut free. Such paths come last.
+    /// Not a closed contour: a stretch between two holding tabs (settings.tabWidth), so a small part stays in
+    /// the sheet when cut free (such paths come last); or what is left of an outline whose other stretches an
+    /// earlier path cut (common-line cutting).
     bool open = false;
     /// Holding tabs go on it: as the machine cuts, it is split into open stretches; as designed, it stays
     /// closed and the tabs are listed in CutSheet::tabs.
@@ -63,6 +64,7 @@ struct CutSheet {
     std::vector<geometry::Polygon> engraved;  ///< marks engraved on the parts (where to bore an edge)
     std::vector<SawCut> sawCuts;  ///< guillotine cuts: the saw's, in their order (Layout::sawCuts)
     std::vector<Banding> banding;
+    double commonLine = 0;  ///< mm of path cut once where two parts share it (PackSettings::commonLine)
 };
 
 /// The stretch of part k's bounding box along `side`, turned and moved as placed, as its banded edge.
@@ -94,8 +96,10 @@ struct Totals {
     int sheets = 0, parts = 0;
     double sheetArea = 0, partArea = 0;  ///< mm²
     double cost = 0;                     ///< of the sheets used (MasterBoard::cost)
-    /// mm: the saw's cuts for guillotine layouts, else every part's outline and holes.
+    /// mm: the saw's cuts for guillotine layouts, else every part's outline and holes, a line two parts share
+    /// counted once with common-line cutting.
     double cutLength = 0;
+    double commonLine = 0;  ///< mm of that cut once for two parts (common-line cutting)
     std::vector<std::pair<std::string, double>> banding;  ///< mm of each band, by name
 };
 

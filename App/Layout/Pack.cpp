@@ -553,6 +553,13 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
     }
 }
 
+/// With common-line cutting, the parts slid together so that the grid's slack does not keep them from
+/// sharing their lines.
+Layout commonLined(const Layout& layout, const PackProblem& problem)
+{
+    return problem.settings.commonLine && !problem.strip ? slidTogether(layout, problem) : layout;
+}
+
 }  // namespace
 
 Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
@@ -569,7 +576,7 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
     const std::vector<int> quantities = left;
     const std::vector<std::vector<std::vector<Guest>>> guests = fillHoles(problem, left, deadline.share(4));
     if (left == quantities)
-        return layOut(problem, search);
+        return commonLined(layOut(problem, search), problem);
     PackProblem rest = problem;  // the parts less the units laid in holes
     rest.parts.clear();
     std::vector<int> original;
@@ -581,7 +588,7 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
         }
     OrderingSearchOptions options = search;
     options.timeLimit = deadline.secondsLeft();
-    return withGuests(layOut(rest, options), problem, original, guests);
+    return commonLined(withGuests(layOut(rest, options), problem, original, guests), problem);
 }
 
 }  // namespace fabguide::material

@@ -74,6 +74,9 @@ struct PackSettings {
     Cuts cuts = Cuts::Free;
     int stages = 0;  ///< guillotine cuts: at most this many changes of direction (2, 3, ...); 0: unlimited
     FirstCut firstCut = FirstCut::Any;
+    /// Common-line cutting (CommonLine.h): a line two parts a kerf apart share is cut once. The machine's
+    /// paths only; as designed, the CAM plans its own.
+    bool commonLine = false;
 };
 
 struct PackProblem {

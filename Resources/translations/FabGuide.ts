@@ -464,112 +464,112 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="62"/>
         <source>Export the parts&apos; outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the machine cuts them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="63"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="67"/>
         <source>Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD&apos;s DXF import take as they are</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="66"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
         <source>Width of the label printer&apos;s labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="68"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
         <source>Height of the label printer&apos;s labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
         <source>Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under Auto</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="73"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
         <source>Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only (a panel, track or table saw), with the cut sequence on the cut sheets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="81"/>
         <source>Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="80"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length (x), across it, or whichever wastes less</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
         <source>The connectors made</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="86"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
         <source>Guillotine cuts: the saw cuts to make</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
         <source>Guillotine cuts: their total length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="101"/>
         <source>Cell size of the layout grid (thesis 5.4.1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
         <source>Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="95"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="106"/>
         <source>Ordering swaps tried; -1 = parts squared (thesis 5.4.3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="97"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
         <source>Seed of the ordering search</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="99"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
         <source>Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
         <source>Part area / bounding rectangle of the layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
         <source>Part area / area of the master boards used</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="119"/>
         <source>Area of the master boards used minus part area</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
         <source>Master boards used</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
         <source>The problem laid out (*.pack.json)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
         <source>The layout (layout JSON)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -646,6 +646,21 @@
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="36"/>
         <source>Band glued on its second short edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
+        <source>Common-line cutting: a line two boards a kerf apart share is cut once, by the board cut first (Spacing 0 lays boards so); the machine&apos;s paths only, not AsDesigned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
+        <source>Length of all cuts: the saw&apos;s for guillotine cuts, else every outline and hole, a line two boards share counted once with CommonLine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
+        <source>CommonLine: the length of the lines two boards share, cut once</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1547,12 +1562,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="51"/>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="53"/>
         <source>&lt;i&gt;The layout is made again when you pause.&lt;/i&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="84"/>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="86"/>
         <source>&lt;b&gt;The layout could not be made:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1895,43 +1910,43 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="134"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="145"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="149"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="162"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="180"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="193"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="183"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="187"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="200"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="214"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="228"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="268"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="282"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="271"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1978,7 +1993,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="84"/>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="86"/>
         <source>see the report view</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1995,6 +2010,16 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
         <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
+        <source>{:.1f} m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
+        <source> ({:.1f} m shared, cut once)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2164,7 +2189,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="24"/>
+        <location filename="../ui/LayoutPanel.ui" line="26"/>
         <source>-</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2199,58 +2224,78 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="31"/>
+        <location filename="../ui/LayoutPanel.ui" line="33"/>
         <source>Cutting</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="34"/>
+        <location filename="../ui/LayoutPanel.ui" line="36"/>
         <source>Kerf</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="36"/>
+        <location filename="../ui/LayoutPanel.ui" line="38"/>
         <source>Spacing</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="38"/>
+        <location filename="../ui/LayoutPanel.ui" line="40"/>
         <source>Edge trim</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="40"/>
+        <location filename="../ui/LayoutPanel.ui" line="42"/>
         <source>Cuts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="40"/>
+        <location filename="../ui/LayoutPanel.ui" line="42"/>
         <source>Free: any outline (CNC router, laser). Guillotine: straight cuts from edge to edge only (panel, track or table saw)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="42"/>
+        <location filename="../ui/LayoutPanel.ui" line="44"/>
         <source>Stages</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="42"/>
+        <location filename="../ui/LayoutPanel.ui" line="44"/>
         <source>Guillotine cuts: at most this many changes of direction; 0 = unlimited</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="43"/>
+        <location filename="../ui/LayoutPanel.ui" line="45"/>
         <source>Unlimited</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="44"/>
+        <location filename="../ui/LayoutPanel.ui" line="46"/>
         <source>First cut</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/LayoutPanel.ui" line="44"/>
+        <location filename="../ui/LayoutPanel.ui" line="46"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length, across it, or whichever wastes less</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="25"/>
+        <source>Cut length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="25"/>
+        <source>Every outline and hole; with shared lines cut once, a line two boards share counted once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="48"/>
+        <source>Cut shared lines once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/LayoutPanel.ui" line="48"/>
+        <source>Common-line cutting: where two boards lie a kerf apart (spacing 0), the line between them is cut once, by the board cut first. The machine&apos;s paths only (not as designed)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

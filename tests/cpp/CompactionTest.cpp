@@ -1,4 +1,5 @@
-// Compaction of a strip on the parts' real outlines (issue 16, item 3).
+// Compaction on the parts' real outlines: a strip (issue 16, item 3), parts on sheets slid together (issue
+// 31).
 #include "Layout/Compaction.h"
 
 #include "PackingTestSupport.h"
@@ -89,4 +90,28 @@ TEST(Compaction, APartInAFramesHoleSettlesOnTheHolesEdge)
     EXPECT_NEAR(layout.placements[1].y, 20, 1e-6);
     EXPECT_NEAR(layout.placements[0].y, 0, 1e-12);
     EXPECT_NEAR(layout.stripHeight, 100, 1e-12);
+}
+
+TEST(Compaction, PartsOnASheetSlideTogetherAKerfApart)
+{
+    // Three rectangles a grid's slack apart (kerf 3.2 kept as 3.5) on a sheet with a 10 mm trim: slid down
+    // and left, each ends a kerf (and the slide's hair) from its neighbour and the trim; the one on the
+    // second sheet ignores the first sheet's parts.
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "", 1000, 500, 18, 2});
+    problem.settings.kerf = 3.2;
+    problem.settings.trim = 10;
+    for (const char* id : {"a", "b", "c"})
+        problem.parts.push_back(part(id, fabguide::geometry::rectangle(100, 50)));
+    Layout layout = strip(problem, {{10.5, 10.5}, {114, 10.5}, {10.5, 64}});
+    layout.placements[2].sheet = 1;
+    layout.sheets.push_back(problem.boards.front());
+    const Layout slid = slidTogether(layout, problem);
+    EXPECT_NEAR(slid.placements[0].x, 10, 1e-6);
+    EXPECT_NEAR(slid.placements[0].y, 10, 1e-6);
+    EXPECT_NEAR(slid.placements[1].x, 10 + 100 + 3.2, 2e-3);
+    EXPECT_GE(slid.placements[1].x, 10 + 100 + 3.2 - 1e-9);
+    EXPECT_NEAR(slid.placements[1].y, 10, 1e-6);
+    EXPECT_NEAR(slid.placements[2].x, 10, 1e-6);  // alone on its sheet: into the corner
+    EXPECT_NEAR(slid.placements[2].y, 10, 1e-6);
 }

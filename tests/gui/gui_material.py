@@ -105,6 +105,17 @@ def guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts():
     cuts.setCurrentText("Free (CNC router, laser)")
     guitest.settle(1.2)
     assert layout.Cuts.startswith("Free") and layout.SawCuts == 0
+    # Common-line cutting: a line two boards share cut once, the cut length said in the panel.
+    common = [w for w in window.findChildren(QtGui.QCheckBox) if w.objectName() == "commonLine"][0]
+    assert common.isEnabled() and not common.isChecked()
+    whole = layout.CutLength.Value
+    layout.Spacing = 0
+    common.setChecked(True)
+    guitest.settle(1.2)
+    assert layout.CommonLine and json.loads(layout.ProblemJson)["settings"]["common_line"] is True
+    assert 0 < layout.CommonLineLength.Value and layout.CutLength.Value < whole, (layout.CutLength, whole)
+    shown = [w for w in window.findChildren(QtGui.QLabel) if w.objectName() == "cutLength"][0].text()
+    assert "shared, cut once" in shown and shown.startswith("{:.1f} m".format(layout.CutLength.Value / 1000)), shown
     Gui.Control.activeDialog() and Gui.ActiveDocument.resetEdit()
     Gui.Control.closeDialog()
     state["doc"].commitTransaction()

@@ -39,6 +39,8 @@ class LayoutPanel:
             combo.currentTextChanged.connect(lambda text, name=name: self.set(name, text))
         self.form.stages.setValue(layout.Stages)
         self.form.stages.valueChanged.connect(lambda value: self.set("Stages", value))
+        self.form.commonLine.setChecked(layout.CommonLine)
+        self.form.commonLine.toggled.connect(lambda on: self.set("CommonLine", on))
         self.show()
 
     def set(self, name, value):
@@ -92,8 +94,12 @@ class LayoutPanel:
         guillotine = layout.Cuts.startswith("Guillotine")
         form.sawCuts.setText("{}, {:.1f} m".format(layout.SawCuts, layout.SawCutLength.Value / 1000)
                              if guillotine else "-")
+        form.cutLength.setText("-" if guillotine else translate("FabGuide", "{:.1f} m").format(
+            layout.CutLength.Value / 1000) + (translate("FabGuide", " ({:.1f} m shared, cut once)").format(
+                layout.CommonLineLength.Value / 1000) if layout.CommonLine else ""))
         form.stages.setEnabled(guillotine)
         form.firstCut.setEnabled(guillotine)
+        form.commonLine.setEnabled(not guillotine)
 
     def abandon(self):
         self.pending.stop()

@@ -55,6 +55,10 @@ class Layout(properties.Proxy):
         add(obj, "App::PropertyLength", "TabBelow", "Cutting",
             QT_TRANSLATE_NOOP("App::Property", "Parts whose longer side is shorter get holding tabs"),
             300)
+        add(obj, "App::PropertyBool", "CommonLine", "Cutting",
+            QT_TRANSLATE_NOOP("App::Property", "Common-line cutting: a line two boards a kerf apart share is cut once, "
+                                               "by the board cut first (Spacing 0 lays boards so); the machine's "
+                                               "paths only, not AsDesigned"), False)
         add(obj, "App::PropertyBool", "AsDesigned", "Cut sheets",
             QT_TRANSLATE_NOOP("App::Property", "Export the parts' outlines as designed (no kerf offset, no dogbones, "
                                                "closed, holding tabs on a layer of their own) for CAM software that "
@@ -87,6 +91,13 @@ class Layout(properties.Proxy):
             QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: the saw cuts to make"), mode=1)
         add(obj, "App::PropertyLength", "SawCutLength", "Result",
             QT_TRANSLATE_NOOP("App::Property", "Guillotine cuts: their total length"), mode=1)
+        add(obj, "App::PropertyLength", "CutLength", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "Length of all cuts: the saw's for guillotine cuts, else every outline "
+                                               "and hole, a line two boards share counted once with CommonLine"),
+            mode=1)
+        add(obj, "App::PropertyLength", "CommonLineLength", "Result",
+            QT_TRANSLATE_NOOP("App::Property", "CommonLine: the length of the lines two boards share, cut once"),
+            mode=1)
         add(obj, "App::PropertyLength", "Resolution", "Search",
             QT_TRANSLATE_NOOP("App::Property", "Cell size of the layout grid (thesis 5.4.1)"), 0.5)
         add(obj, "App::PropertyInteger", "RotationStep", "Search",
@@ -142,6 +153,8 @@ class Layout(properties.Proxy):
         saw_cuts = [c for sheet in result.get("saw_cuts", []) for c in sheet]
         obj.SawCuts = len(saw_cuts)
         obj.SawCutLength = sum(c["length"] for c in saw_cuts)
+        obj.CutLength = result["cut_length"]
+        obj.CommonLineLength = result.get("common_line", 0)
         obj.Connectors = [connector_text(c) for c in joined["connectors"]]
         for note in joined["notes"]:
             FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, note))
@@ -191,7 +204,8 @@ def make_problem(obj):
         "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                      "trim": obj.Trim.Value, "dogbone": obj.Dogbone.Value, "tab_width": obj.TabWidth.Value,
                      "tab_below": obj.TabBelow.Value, "rotation_step": obj.RotationStep,
-                     "cuts": CUTS[obj.Cuts], "stages": obj.Stages, "first_cut": FIRST_CUTS[obj.FirstCut]},
+                     "cuts": CUTS[obj.Cuts], "stages": obj.Stages, "first_cut": FIRST_CUTS[obj.FirstCut],
+                     "common_line": obj.CommonLine},
         "boards": [master_board.as_problem_board(m) for m in masters],
     }
     return problem, boards
