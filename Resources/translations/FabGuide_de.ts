@@ -6,662 +6,662 @@
     <message>
         <location filename="../../freecad/fabguide/function/configuration.py" line="18"/>
         <source>The joints it moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Gelenke, die sie bewegt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/configuration.py" line="20"/>
         <source>Per joint: for a double pivot, the point its part turns about to get here</source>
-        <translation type="unfinished"></translation>
+        <translation>Je Gelenk: bei einem Doppelgelenk der Punkt, um den sich sein Teil dreht, um hierher zu gelangen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="20"/>
         <source>The part the joint moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil, das das Gelenk bewegt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
         <source>The part it hangs on, which carries it along when it moves; empty: the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil, an dem es hängt und das es mitnimmt, wenn es sich bewegt; leer: der Boden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="25"/>
         <source>The edge of one of the part&apos;s boxes it turns about</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kante eines Quaders des Teils, um die es dreht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="28"/>
         <source>The direction it slides along</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Richtung, in die es gleitet</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="31"/>
         <source>The face of the part&apos;s box with the pivot</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Fläche des Quaders des Teils mit dem Drehpunkt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="33"/>
         <source>The pivot on the part (placed by the solve)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Drehpunkt am Teil (vom Lösen gesetzt)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="35"/>
         <source>The face of the base&apos;s box, in the same plane, with the other pivot</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Fläche des Quaders der Basis, in derselben Ebene, mit dem anderen Drehpunkt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="38"/>
         <source>The pivot on the base (placed by the solve)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Drehpunkt an der Basis (vom Lösen gesetzt)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="30"/>
         <source>Smallest size of a box along any axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinste Größe eines Quaders entlang jeder Achse</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="32"/>
         <source>Least wall around a cavity on its sides that are not openings</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinste Wand um einen Hohlraum an seinen Seiten, die keine Öffnungen sind</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
         <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
-        <translation type="unfinished"></translation>
+        <translation>Quaderkoordinaten, die Sie seit dem letzten Lösen geändert haben, behalten ihren neuen Wert, während sich der Rest anpasst</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="38"/>
         <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Konfiguration, die das Konfigurationen-Fenster zuletzt zeigte; neue Beziehungen gelten in ihr</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="41"/>
         <source>Solved, or the relationships in conflict</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelöst, oder die Beziehungen im Widerspruch</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
         <source>Largest constraint violation after the solve, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte Verletzung einer Vorgabe nach dem Lösen, mm</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="46"/>
         <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, die ein Widerspruch außer denen seiner Beziehungen nennt (überlappende Teile, dünne Wände)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="49"/>
         <source>What the last solve changed: box, size old → new, how far it moved</source>
-        <translation type="unfinished"></translation>
+        <translation>Was das letzte Lösen geändert hat: Quader, Größe alt → neu, wie weit er verschoben wurde</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="52"/>
         <source>Box coordinates after the last solve (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Quaderkoordinaten nach dem letzten Lösen (JSON)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
         <source>Box sizes as you drew them, before solves (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Quadergrößen, wie Sie sie gezeichnet haben, vor dem Lösen (JSON)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/parts.py" line="13"/>
         <source>The axis-aligned boxes (Part::Box) the part is made of</source>
-        <translation type="unfinished"></translation>
+        <translation>Die achsparallelen Quader (Part::Box), aus denen das Teil besteht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/parts.py" line="15"/>
         <source>Boxes cut out of it: openings and compartments that can be covered or fitted into</source>
-        <translation type="unfinished"></translation>
+        <translation>Daraus ausgeschnittene Quader: Öffnungen und Fächer, die abgedeckt oder befüllt werden können</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="26"/>
         <source>The mechanism to print in place</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Mechanismus, der am Stück gedruckt wird</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="28"/>
         <source>Printer profile: the gap it needs</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckerprofil: der Spalt, den es braucht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="30"/>
         <source>Clearance between parts (set by the printer profile)</source>
-        <translation type="unfinished"></translation>
+        <translation>Spiel zwischen Teilen (vom Druckerprofil gesetzt)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="33"/>
         <source>Print at this scale (0.2 for 1:5); the gap stays as it is</source>
-        <translation type="unfinished"></translation>
+        <translation>In diesem Maßstab drucken (0,2 für 1:5); der Spalt bleibt, wie er ist</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="35"/>
         <source>Print at the largest scale (at most 1) that fits the build volume; sets Scale</source>
-        <translation type="unfinished"></translation>
+        <translation>Im größten Maßstab (höchstens 1) drucken, der in den Bauraum passt; setzt Scale</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="38"/>
         <source>The printer&apos;s build volume in mm: width (x), depth (y), height (z); the print may turn a quarter about z</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Bauraum des Druckers in mm: Breite (x), Tiefe (y), Höhe (z); der Druck darf sich um eine Vierteldrehung um z drehen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="42"/>
         <source>Width x depth x height of the print</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite x Tiefe x Höhe des Drucks</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="44"/>
         <source>Fitted turned a quarter about z: exported so, shown as modelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit einer Vierteldrehung um z eingepasst: so exportiert, wie modelliert angezeigt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="47"/>
         <source>Show the volumes swept into cavities</source>
-        <translation type="unfinished"></translation>
+        <translation>Die in Hohlräume überstrichenen Volumen zeigen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="49"/>
         <source>Measure the clearance at 32 poses along every configuration&apos;s motion</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Spiel in 32 Stellungen entlang der Bewegung jeder Konfiguration messen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="52"/>
         <source>Least distance between two bodies</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinster Abstand zwischen zwei Körpern</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="54"/>
         <source>Where the least distance is</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo der kleinste Abstand liegt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="56"/>
         <source>Joints made without geometry, and why</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenke, die ohne Geometrie erstellt wurden, und warum</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="14"/>
         <source>The configuration it must hold in; empty: as modelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Konfiguration, in der sie gelten muss; leer: wie modelliert</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="16"/>
         <source>Satisfied, or what it conflicts with</source>
-        <translation type="unfinished"></translation>
+        <translation>Erfüllt, oder womit sie im Widerspruch steht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="25"/>
         <source>Parts whose faces cover</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, deren Flächen abdecken</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="27"/>
         <source>Parts whose faces are covered</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, deren Flächen abgedeckt werden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="29"/>
         <source>Just cover: the covering faces no larger than the covered</source>
-        <translation type="unfinished"></translation>
+        <translation>Genau abdecken: die abdeckenden Flächen nicht größer als die abgedeckten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="43"/>
         <source>Parts that must fit inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, die hineinpassen müssen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="45"/>
         <source>The part they fit inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil, in das sie passen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="47"/>
         <source>A cavity of the enclosing part to fit in; empty: its box</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Hohlraum des umschließenden Teils, in den sie passen; leer: sein Quader</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="49"/>
         <source>Partial fit: the boxes of the inner parts that must fit (a drawer&apos;s tray, not its front); empty: all</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilweise Passung: die Quader der inneren Teile, die passen müssen (der Kasten einer Schublade, nicht ihre Front); leer: alle</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="56"/>
         <source>Each inner part just fits on its own along the ticked axes (stacked trays without play), not only the inner parts taken together</source>
-        <translation type="unfinished"></translation>
+        <translation>Jedes innere Teil passt für sich genau entlang der angehakten Achsen (gestapelte Kästen ohne Spiel), nicht nur die inneren Teile zusammen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="77"/>
         <source>Parts that support (legs, frames)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, die tragen (Beine, Rahmen)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="79"/>
         <source>Parts resting on them</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, die darauf ruhen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="93"/>
         <source>Two box faces that lie in one plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Zwei Quaderflächen, die in einer Ebene liegen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="111"/>
         <source>Left = or &lt;= right + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Links = oder &lt;= rechts + Versatz</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
         <source>Added to the right side</source>
-        <translation type="unfinished"></translation>
+        <translation>Zur rechten Seite addiert</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="27"/>
         <source>Sketch, planar face or thin solid the board is made of</source>
-        <translation type="unfinished"></translation>
+        <translation>Skizze, ebene Fläche oder dünner Körper, aus dem die Platte besteht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="29"/>
         <source>Thickness of a board made from a sketch or face (detected for a solid)</source>
-        <translation type="unfinished"></translation>
+        <translation>Dicke einer Platte aus einer Skizze oder Fläche (bei einem Körper erkannt)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="32"/>
         <source>How many to cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele geschnitten werden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="33"/>
         <source>Turns allowed on the master board: any, keeping its length along the grain, or none</source>
-        <translation type="unfinished"></translation>
+        <translation>Erlaubte Drehungen auf der Rohplatte: beliebig, mit der Länge entlang der Maserung, oder keine</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="43"/>
         <source>Longest side of the outline&apos;s box</source>
-        <translation type="unfinished"></translation>
+        <translation>Längste Seite des Umrissrechtecks</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="45"/>
         <source>Other side of the outline&apos;s box</source>
-        <translation type="unfinished"></translation>
+        <translation>Andere Seite des Umrissrechtecks</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="34"/>
         <source>Master boards to cut the boards from</source>
-        <translation type="unfinished"></translation>
+        <translation>Rohplatten, aus denen die Platten geschnitten werden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="36"/>
         <source>Grid cell size tau (thesis 5.4.1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rasterzellgröße tau (Dissertation 5.4.1)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="38"/>
         <source>Width of the cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite des Schnitts</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="39"/>
         <source>Extra material between parts</source>
-        <translation type="unfinished"></translation>
+        <translation>Zusätzliches Material zwischen Teilen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="41"/>
         <source>Margin cut off every master board edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Rand, der an jeder Kante der Rohplatte abgeschnitten wird</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="43"/>
         <source>Shortest side a board may shrink to</source>
-        <translation type="unfinished"></translation>
+        <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="45"/>
         <source>Boards that touch stay touching (edge snapping)</source>
-        <translation type="unfinished"></translation>
+        <translation>Platten, die sich berühren, bleiben in Berührung (Kantenfang)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="47"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viel Mal ihre jetzige Länge Vorschlagen die Seite einer Platte machen darf (1,5: um die Hälfte länger), damit eine Leiste eine Leiste bleibt; Ihre eigenen Änderungen sind nicht begrenzt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="51"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Quader, den Sie ändern, behält seine neue Größe und Lage, während sich der Rest den Vorgaben anpasst</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="54"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>Tabellen-Aliase, die die Quader über Ausdrücke steuern, als 'Sheet.alias min max' (Dissertation 5.4.2.2); sind sie angegeben, ändert Vorschlagen diese statt der Quader</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="58"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilefläche / umschließendes Rechteck des Layouts (Dissertation 5.2.3)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="61"/>
         <source>Laid out, or what is wrong</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausgelegt, oder was nicht stimmt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="63"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
-        <translation type="unfinished"></translation>
+        <translation>Was die letzte Neuberechnung oder der letzte übernommene Vorschlag, der Platten bewegte, getan hat: Größe alt → neu, wie weit</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="67"/>
         <source>Boards after the last valid recompute (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Platten nach der letzten gültigen Neuberechnung (JSON)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="69"/>
         <source>The last layout and its problem (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das letzte Layout und seine Aufgabe (JSON)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="95"/>
         <source>What must hold</source>
-        <translation type="unfinished"></translation>
+        <translation>Was gelten muss</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="101"/>
         <source>Boxes for ground, coplanar and snap</source>
-        <translation type="unfinished"></translation>
+        <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="103"/>
         <source>Fixed value or sum offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="108"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="112"/>
         <source>Satisfied, or what breaks it</source>
-        <translation type="unfinished"></translation>
+        <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="130"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="133"/>
         <source>Inner volume: the board it rests on and moves with</source>
-        <translation type="unfinished"></translation>
+        <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="135"/>
         <source>Size along x</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe entlang x</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="136"/>
         <source>Size along y</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe entlang y</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="137"/>
         <source>Size along z</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe entlang z</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Satisfied, or the boards that break it</source>
-        <translation type="unfinished"></translation>
+        <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="197"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="37"/>
         <source>Boards to lay out</source>
-        <translation type="unfinished"></translation>
+        <translation>Auszulegende Platten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="38"/>
         <source>Master boards to cut them from, opened in this order</source>
-        <translation type="unfinished"></translation>
+        <translation>Rohplatten, aus denen sie geschnitten werden, in dieser Reihenfolge angebrochen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
         <source>Width of the cut (laser beam, router bit)</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite des Schnitts (Laserstrahl, Fräser)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="43"/>
         <source>Material left between parts besides the kerf</source>
-        <translation type="unfinished"></translation>
+        <translation>Material, das zusätzlich zur Schnittbreite zwischen den Teilen bleibt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="46"/>
         <source>Margin kept along every master board edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Rand, der an jeder Kante der Rohplatte frei bleibt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="49"/>
         <source>Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; 0 for none (a laser)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fräserdurchmesser: die Zuschnittpläne geben Innenecken (Schlitze, Kerben) frei, damit der Fräser sie rechtwinklig schneidet; 0 für keine (ein Laser)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="52"/>
         <source>Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none</source>
-        <translation type="unfinished"></translation>
+        <translation>Haltestege im Außenschnitt kleiner Teile, damit sie in der Platte bleiben; 0 für keine</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="55"/>
         <source>Parts whose longer side is shorter get holding tabs</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile, deren längere Seite kürzer ist, erhalten Haltestege</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="62"/>
         <source>Export the parts&apos; outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the machine cuts them</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Umrisse der Teile wie konstruiert exportieren (kein Versatz um die Schnittbreite, keine Dogbones, geschlossen, Haltestege auf einer eigenen Ebene) für CAM-Software, die selbst um ihr Werkzeug versetzt; aus: Werkzeugbahnen, wie ein Laser oder die Maschine sie schneidet</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="67"/>
         <source>Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD&apos;s DXF import take as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschriftungen als Text in einer Schrift; aus: als einzelne Striche zum Gravieren, die Laser-Software, CAM und FreeCADs DXF-Import unverändert übernehmen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
         <source>Width of the label printer&apos;s labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite der Etiketten des Etikettendruckers</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
         <source>Height of the label printer&apos;s labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe der Etiketten des Etikettendruckers</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
         <source>Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under Auto</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbinder, wo Platten aufeinandertreffen: Fingerzinken oder Kreuzschlitze; Dübel für Platten ab 18 mm unter Auto</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
         <source>Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only (a panel, track or table saw), with the cut sequence on the cut sheets</source>
-        <translation type="unfinished"></translation>
+        <translation>Frei: jeder Umriss (eine CNC-Fräse oder ein Laser folgt ihm); Guillotine: nur gerade Schnitte von Kante zu Kante (Plattensäge, Tauchsäge oder Tischkreissäge), mit der Schnittfolge auf den Zuschnittplänen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="81"/>
         <source>Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: höchstens so viele Richtungswechsel (2, 3, ...); 0 = unbegrenzt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length (x), across it, or whichever wastes less</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: die ersten Schnitte längs der Platte (x), quer dazu oder wie es weniger Verschnitt gibt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
         <source>The connectors made</source>
-        <translation type="unfinished"></translation>
+        <translation>Die erstellten Verbinder</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
         <source>Guillotine cuts: the saw cuts to make</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: die auszuführenden Sägeschnitte</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
         <source>Guillotine cuts: their total length</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: ihre Gesamtlänge</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="101"/>
         <source>Cell size of the layout grid (thesis 5.4.1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zellgröße des Layout-Rasters (Dissertation 5.4.1)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
         <source>Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only</source>
-        <translation type="unfinished"></translation>
+        <translation>Freie Drehung: Platten ohne Maserung dürfen sich um jedes Vielfache so vieler Grad drehen (ein Teiler von 90, z. B. 15); 0 = nur Vierteldrehungen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="106"/>
         <source>Ordering swaps tried; -1 = parts squared (thesis 5.4.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Versuchte Vertauschungen der Reihenfolge; -1 = Teilezahl zum Quadrat (Dissertation 5.4.3)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
         <source>Seed of the ordering search</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert der Reihenfolgesuche</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
         <source>Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Sekunden, die die Suche höchstens dauern darf; in FreeCAD zeigt ein Dialog sie an, und Stopp behält das bisher beste Layout</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
         <source>Part area / bounding rectangle of the layout</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilefläche / umschließendes Rechteck des Layouts</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
         <source>Part area / area of the master boards used</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilefläche / Fläche der benutzten Rohplatten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="119"/>
         <source>Area of the master boards used minus part area</source>
-        <translation type="unfinished"></translation>
+        <translation>Fläche der benutzten Rohplatten minus Teilefläche</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
         <source>Master boards used</source>
-        <translation type="unfinished"></translation>
+        <translation>Benutzte Rohplatten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
         <source>The problem laid out (*.pack.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgelegte Aufgabe (*.pack.json)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
         <source>The layout (layout JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Layout (Layout-JSON)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="16"/>
         <source>Size along the layout&apos;s x axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe entlang der x-Achse des Layouts</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="18"/>
         <source>Size along the layout&apos;s y axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe entlang der y-Achse des Layouts</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="20"/>
         <source>Material thickness</source>
-        <translation type="unfinished"></translation>
+        <translation>Materialdicke</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="22"/>
         <source>Boards in stock; 0 = as many as needed</source>
-        <translation type="unfinished"></translation>
+        <translation>Platten auf Lager; 0 = so viele wie nötig</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="24"/>
         <source>Material name for the cut list</source>
-        <translation type="unfinished"></translation>
+        <translation>Materialname für die Zuschnittliste</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="26"/>
         <source>Direction of the wood grain; boards set to Follow grain keep their length along it</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Holzmaserung; Platten mit Follow grain behalten ihre Länge entlang ihr</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/master_board.py" line="29"/>
         <source>What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new sheets</source>
-        <translation type="unfinished"></translation>
+        <translation>Was eine Platte kostet (beliebige Einheit; 1 = eine Platte); 0 für einen vorhandenen Rest, der vor neuen Platten verwendet wird</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/properties.py" line="108"/>
         <source>Why the last recompute failed; empty when it did not</source>
-        <translation type="unfinished"></translation>
+        <translation>Warum die letzte Neuberechnung fehlschlug; leer, wenn nicht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
         <source>Just fits in width (along X)</source>
-        <translation type="unfinished"></translation>
+        <translation>Passt genau in der Breite (entlang X)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
         <source>Just fits in depth (along Y)</source>
-        <translation type="unfinished"></translation>
+        <translation>Passt genau in der Tiefe (entlang Y)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
         <source>Just fits in height (along Z)</source>
-        <translation type="unfinished"></translation>
+        <translation>Passt genau in der Höhe (entlang Z)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="36"/>
         <source>Band glued on its first long edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Umleimer auf der ersten langen Kante (z. B. 'Eiche 1 mm'); leer: keiner</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="36"/>
         <source>Band glued on its second long edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Umleimer auf der zweiten langen Kante (z. B. 'Eiche 1 mm'); leer: keiner</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="36"/>
         <source>Band glued on its first short edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Umleimer auf der ersten kurzen Kante (z. B. 'Eiche 1 mm'); leer: keiner</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="36"/>
         <source>Band glued on its second short edge (e.g. &apos;oak 1 mm&apos;); empty: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Umleimer auf der zweiten kurzen Kante (z. B. 'Eiche 1 mm'); leer: keiner</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
         <source>Common-line cutting: a line two boards a kerf apart share is cut once, by the board cut first (Spacing 0 lays boards so); the machine&apos;s paths only, not AsDesigned</source>
-        <translation type="unfinished"></translation>
+        <translation>Gemeinsamer Schnitt: eine Linie, die zwei eine Schnittbreite auseinanderliegende Platten teilen, wird einmal geschnitten, mit der zuerst geschnittenen Platte (Spacing 0 legt Platten so); nur für die Bahnen der Maschine, nicht AsDesigned</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
         <source>Length of all cuts: the saw&apos;s for guillotine cuts, else every outline and hole, a line two boards share counted once with CommonLine</source>
-        <translation type="unfinished"></translation>
+        <translation>Länge aller Schnitte: bei Guillotineschnitten die der Säge, sonst alle Umrisse und Löcher, eine Linie, die zwei Platten teilen, mit CommonLine einmal gezählt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
         <source>CommonLine: the length of the lines two boards share, cut once</source>
-        <translation type="unfinished"></translation>
+        <translation>CommonLine: die Länge der Linien, die zwei Platten teilen, einmal geschnitten</translation>
     </message>
 </context>
 <context>
@@ -674,84 +674,86 @@
     <message>
         <location filename="../ui/CamJobPanel.ui" line="12"/>
         <source>One CAM job per master board: the sheet as stock, the parts as solids, profiles from their outlines as designed (the tool&apos;s radius is CAM&apos;s), holding tags, dogbones, dowel drilling and engraved labels as the layout asks.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein CAM-Job je Rohplatte: die Platte als Rohteil, die Teile als Körper, Konturen aus ihren Umrissen wie konstruiert (den Werkzeugradius rechnet CAM), Haltestege, Dogbones, Dübelbohrungen und gravierte Beschriftungen, wie das Layout sie verlangt.</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="17"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Maschine</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="19"/>
         <source>Tool bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeug</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="19"/>
         <source>The end mill that profiles the parts (a FreeCAD tool bit file, *.fctb)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schaftfräser, der die Teile ausfräst (eine FreeCAD-Werkzeugdatei, *.fctb)</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="23"/>
         <source>Other…</source>
-        <translation type="unfinished"></translation>
+        <translation>Andere…</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="26"/>
         <source>Post-processor</source>
-        <translation type="unfinished"></translation>
+        <translation>Postprozessor</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="26"/>
         <source>The G-code dialect of your machine&apos;s controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Der G-Code-Dialekt Ihrer Maschinensteuerung</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="28"/>
         <source>Per material</source>
-        <translation type="unfinished"></translation>
+        <translation>Je Material</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="28"/>
         <source>The feed across the sheet and the spindle speed for each material of the layout&apos;s master boards (remembered for the next job)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschub und Spindeldrehzahl für jedes Material der Rohplatten des Layouts (für den nächsten Job gemerkt)</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="40"/>
         <source>Cut through by</source>
-        <translation type="unfinished"></translation>
+        <translation>Durchschneiden um</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="40"/>
         <source>How far the profiles cut below the sheet, into the spoilboard, so that the parts come free (0: to the sheet&apos;s underside)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie tief die Konturen unter die Platte in die Opferplatte schneiden, damit die Teile frei werden (0: bis zur Unterseite der Platte)</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="41"/>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="47"/>
         <source>Write G-code</source>
-        <translation type="unfinished"></translation>
+        <translation>G-Code schreiben</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="52"/>
         <source>Folder…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordner…</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="34"/>
         <source>Feed
 mm/min</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschub
+mm/min</translation>
     </message>
     <message>
         <location filename="../ui/CamJobPanel.ui" line="36"/>
         <source>Spindle
 rpm</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindel
+U/min</translation>
     </message>
 </context>
 <context>
@@ -764,52 +766,52 @@ rpm</source>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="11"/>
         <source>Configuration</source>
-        <translation type="unfinished"></translation>
+        <translation>Konfiguration</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="13"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Name</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="19"/>
         <source>Joints it poses</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenke, die sie stellt</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="20"/>
         <source>Tick the joints this configuration poses; an angle&apos;s sign is the way the part swings</source>
-        <translation type="unfinished"></translation>
+        <translation>Haken Sie die Gelenke an, die diese Konfiguration stellt; das Vorzeichen eines Winkels gibt an, wohin das Teil schwenkt</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="26"/>
         <source>Move the mechanism from its base pose to the configuration, the way the print moves: turns first, then slides</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Mechanismus aus seiner Grundstellung in die Konfiguration bewegen, so wie sich der Druck bewegt: erst Drehungen, dann Schübe</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="34"/>
         <source>Base</source>
-        <translation type="unfinished"></translation>
+        <translation>Grundstellung</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="34"/>
         <source>The left end of the slider: the base pose</source>
-        <translation type="unfinished"></translation>
+        <translation>Das linke Ende des Schiebers: die Grundstellung</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="35"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="36"/>
         <source>Posed</source>
-        <translation type="unfinished"></translation>
+        <translation>Gestellt</translation>
     </message>
     <message>
         <location filename="../ui/ConfigurationsPanel.ui" line="36"/>
         <source>The right end of the slider: the configuration</source>
-        <translation type="unfinished"></translation>
+        <translation>Das rechte Ende des Schiebers: die Konfiguration</translation>
     </message>
 </context>
 <context>
@@ -817,212 +819,217 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/cuboids.py" line="22"/>
         <source>&apos;{}&apos; is rotated: FabGuide parts are axis-aligned boxes (reset its Placement rotation; joints turn parts in configurations)</source>
-        <translation type="unfinished"></translation>
+        <translation>'{}' ist gedreht: FabGuide-Teile sind achsparallele Quader (setzen Sie die Drehung seiner Placement zurück; Gelenke drehen Teile in Konfigurationen)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/cuboids.py" line="28"/>
         <source>&apos;{}&apos;: its Length, Width, Height and Placement must be finite numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>'{}': Length, Width, Height und Placement müssen endliche Zahlen sein</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/cuboids.py" line="76"/>
         <source>&apos;{}.{}&apos; is not a face of the box</source>
-        <translation type="unfinished"></translation>
+        <translation>'{}.{}' ist keine Fläche des Quaders</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/cuboids.py" line="95"/>
         <source>&apos;{}.{}&apos; is not an edge of the box</source>
-        <translation type="unfinished"></translation>
+        <translation>'{}.{}' ist keine Kante des Quaders</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/cuboids.py" line="104"/>
         <source>&apos;{}&apos; has no edge between its {} and {} faces</source>
-        <translation type="unfinished"></translation>
+        <translation>'{}' hat keine Kante zwischen seinen Flächen {} und {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/configuration.py" line="97"/>
         <source>Configuration &apos;{}&apos;: &apos;{}&apos; is not a joint</source>
-        <translation type="unfinished"></translation>
+        <translation>Konfiguration '{}': '{}' ist kein Gelenk</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="115"/>
         <source>Joint &apos;{}&apos;: choose the Part it moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenk '{}': wählen Sie das Teil (Part), das es bewegt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="121"/>
         <source>Joint &apos;{}&apos;: choose the Edge it turns about</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenk '{}': wählen Sie die Kante (Edge), um die es dreht</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="124"/>
         <source>Joint &apos;{}&apos;: its edge is on &apos;{}&apos;, which is not a box of part &apos;{}&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenk '{}': seine Kante liegt auf '{}', das kein Quader des Teils '{}' ist</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="129"/>
         <source>Joint &apos;{}&apos;: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelenk '{}': {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="133"/>
         <source>Fixed joint &apos;{}&apos;: choose the Base part it holds &apos;{}&apos; to</source>
-        <translation type="unfinished"></translation>
+        <translation>Festes Gelenk '{}': wählen Sie das Basisteil (Base), an dem es '{}' hält</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="137"/>
         <source>Double pivot &apos;{}&apos;: choose the Base part it links to</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelgelenk '{}': wählen Sie das Basisteil (Base), mit dem es verbindet</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/joints.py" line="142"/>
         <source>Double pivot &apos;{}&apos;: choose a face of a box of &apos;{}&apos; for its {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelgelenk '{}': wählen Sie eine Fläche eines Quaders von '{}' für {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Mechanismus '{}': {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/mechanism.py" line="184"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}: diese können nicht zugleich gelten: {}. {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/parts.py" line="39"/>
         <source>Part &apos;{}&apos; has no boxes: add a Part::Box to its Cuboids</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil '{}' hat keine Quader: fügen Sie seinen Cuboids eine Part::Box hinzu</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/parts.py" line="44"/>
         <source>Part &apos;{}&apos;: &apos;{}&apos; is not a Part::Box</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil '{}': '{}' ist keine Part::Box</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="71"/>
         <source>Printable &apos;{}&apos;: the mechanism has new parts ({}); run Make Printable again</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': der Mechanismus hat neue Teile ({}); führen Sie Druckbar machen erneut aus</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="92"/>
         <source>Printable &apos;{}&apos;: invalid solids: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': ungültige Körper: {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="95"/>
         <source>Printable &apos;{}&apos;: bodies that print in pieces ({}): a cut went through them, a joint turning the wrong way round or a part in the way</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': Körper, die in Stücken gedruckt würden ({}): ein Schnitt ging durch sie hindurch, ein Gelenk dreht falsch herum oder ein Teil steht im Weg</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="100"/>
         <source>{}: parts come within {:.3f} mm of each other ({}), less than the {} mm gap
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}: Teile kommen sich bis auf {:.3f} mm nahe ({}), weniger als der Spalt von {} mm
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="116"/>
         <source>Printable &apos;{}&apos;: choose the Mechanism to print</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': wählen Sie den Mechanismus, der gedruckt werden soll</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="122"/>
         <source>Printable &apos;{}&apos;: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="132"/>
         <source>Printable &apos;{}&apos;: BuildVolume must be greater than 0 in x, y and z (is {:g} x {:g} x {:g})</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': BuildVolume muss in x, y und z größer als 0 sein (ist {:g} x {:g} x {:g})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="176"/>
         <source>Printable &apos;{}&apos;: {}; mend that first</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': {}; beheben Sie das zuerst</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="180"/>
         <source>Printable &apos;{}&apos;: not made from the mechanism as it stands ({} changed); recompute first</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': nicht aus dem Mechanismus, wie er jetzt ist, erstellt ({} geändert); erst neu berechnen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/printable.py" line="186"/>
         <source>Printable &apos;{}&apos;: {} not made yet; recompute it first</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckteil '{}': {} noch nicht erstellt; erst neu berechnen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="62"/>
         <source>Fit inside &apos;{}&apos;: choose the Enclosing part</source>
-        <translation type="unfinished"></translation>
+        <translation>Passt hinein '{}': wählen Sie das umschließende Teil (Enclosing)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="99"/>
         <source>Flush &apos;{}&apos;: choose exactly two faces, got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Bündig '{}': wählen Sie genau zwei Flächen, gewählt sind {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="136"/>
         <source>Geometric &apos;{}&apos;: &apos;{}&apos; must read &apos;Box.side&apos;, &apos;Box.width&apos; or &apos;factor*Box.width&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Geometrisch '{}': '{}' muss 'Box.side', 'Box.width' oder 'factor*Box.width' lauten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="158"/>
         <source>{} &apos;{}&apos;: its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or correct them</source>
-        <translation type="unfinished"></translation>
+        <translation>{} '{}': seinen Pairs fehlt eine Fläche (ein Quader gelöscht?); leiten Sie sie neu ab (Pairs leeren) oder korrigieren Sie sie</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/function/relationships.py" line="206"/>
         <source>{} &apos;{}&apos;: pair &apos;{}&apos; must read &apos;Box.side -&gt; Box.side&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>{} '{}': Paar '{}' muss 'Box.side -&gt; Box.side' lauten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
         <source>Build FabGuide&apos;s core</source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuides Kern bauen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/build_core.py" line="123"/>
         <source>Cancelled: nothing was installed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgebrochen: nichts wurde installiert.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/build_core.py" line="131"/>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/build_core.py" line="150"/>
         <source>FabGuide: the core cannot be built: {}.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: der Kern kann nicht gebaut werden: {}.
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
         <source>The core cannot be built: {}.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Kern kann nicht gebaut werden: {}.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/command_base.py" line="31"/>
         <source>FabGuide</source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Kein CAM-Job erstellt:&lt;/b&gt; {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
         <source>FabGuide: {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/cam_panel.py" line="98"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: {} CAM-Job(s) für '{}'{}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/command_base.py" line="144"/>
@@ -1087,22 +1094,22 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="55"/>
         <source>Angle: its sign is the way the part swings</source>
-        <translation type="unfinished"></translation>
+        <translation>Winkel: sein Vorzeichen gibt an, wohin das Teil schwenkt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
         <source>Offset along the slide</source>
-        <translation type="unfinished"></translation>
+        <translation>Verschiebung entlang der Führung</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="118"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/design_commands.py" line="51"/>
@@ -1313,7 +1320,8 @@ rpm</source>
         <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
         <source>FabGuide: the task panel closed: its document {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: das Aufgabenfenster wurde geschlossen: sein Dokument {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/function_commands.py" line="80"/>
@@ -1549,7 +1557,8 @@ rpm</source>
         <location filename="../../freecad/fabguide/gui/function_commands.py" line="473"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}: kleinstes Spiel {:.3f} mm ({})
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
@@ -1564,12 +1573,12 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="53"/>
         <source>&lt;i&gt;The layout is made again when you pause.&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;i&gt;Das Layout wird neu erstellt, sobald Sie eine Pause machen.&lt;/i&gt;</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="86"/>
         <source>&lt;b&gt;The layout could not be made:&lt;/b&gt; {}</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Das Layout konnte nicht erstellt werden:&lt;/b&gt; {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/material_commands.py" line="21"/>
@@ -1630,7 +1639,8 @@ rpm</source>
         <location filename="../../freecad/fabguide/gui/material_commands.py" line="100"/>
         <source>FabGuide: {} on {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: {} auf {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/material_commands.py" line="115"/>
@@ -1685,73 +1695,74 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="48"/>
         <source>&lt;b style=&apos;color:{}&apos;&gt;{}&lt;/b&gt;{}</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b style='color:{}'&gt;{}&lt;/b&gt;{}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="67"/>
         <source>&lt;b&gt;Pick two faces of boxes in the 3-D view&lt;/b&gt; (the first, then the second of the pair) and press Add; {} picked.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Wählen Sie zwei Flächen von Quadern in der 3D-Ansicht&lt;/b&gt; (die erste, dann die zweite des Paars) und drücken Sie Hinzufügen; {} gewählt.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="143"/>
         <source>&lt;b style=&apos;color:#b22222&apos;&gt;{}&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b style='color:#b22222'&gt;{}&lt;/b&gt;</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="69"/>
         <source>Suggest cannot change {}: their sizes or places are set by expressions. Give Design &apos;{}&apos; the spreadsheet aliases that drive them as Parameters (&apos;Sheet.alias min max&apos;), and Suggest changes those.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="334"/>
         <source>Design &apos;{}&apos;: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Entwurf '{}': {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="337"/>
         <source>Usage now: {:.3f}</source>
-        <translation type="unfinished"></translation>
+        <translation>Nutzung jetzt: {:.3f}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="187"/>
         <source>Searching for designs that waste less...</source>
-        <translation type="unfinished"></translation>
+        <translation>Suche nach Entwürfen mit weniger Verschnitt...</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="222"/>
         <source>Searching... best usage so far {:.3f}</source>
-        <translation type="unfinished"></translation>
+        <translation>Suche... beste Nutzung bisher {:.3f}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="230"/>
         <source>&lt;b&gt;No suggestions:&lt;/b&gt; {}</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Keine Vorschläge:&lt;/b&gt; {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="252"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Variante dieses Entwurfs hat innerhalb seiner Vorgaben weniger Verschnitt{}{}.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="256"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
-        <translation type="unfinished"></translation>
+        <translation>{} Vorschlag/Vorschläge in {:.1f} s{}. Wählen Sie einen; fahren Sie seinen Pfad entlang; OK übernimmt ihn.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="274"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschlag {}: {} Platte(n) (jetzt {}), Verschnitt {:.3f} m² (jetzt {:.3f}), größter Rest {:.0f} x {:.0f} mm, Nutzung {:.3f} (jetzt {:.3f})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="317"/>
         <source>usage {:.3f}</source>
-        <translation type="unfinished"></translation>
+        <translation>Nutzung {:.3f}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="352"/>
         <source>FabGuide: locked the size of {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide: die Größe von {} festgesetzt
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/workbench.py" line="12"/>
@@ -1761,241 +1772,245 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="85"/>
         <source>Board &apos;{}&apos;: no Source (select a sketch, a planar face or a thin solid)</source>
-        <translation type="unfinished"></translation>
+        <translation>Platte '{}': keine Source (wählen Sie eine Skizze, eine ebene Fläche oder einen dünnen Körper)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="96"/>
         <source>{}: is FabGuide&apos;s {}, not a part of your model (pick a sketch, a planar face or a thin solid)</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: ist FabGuides {}, kein Teil Ihres Modells (wählen Sie eine Skizze, eine ebene Fläche oder einen dünnen Körper)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="100"/>
         <source>{}: the source has no shape</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: die Quelle hat keine Form</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="106"/>
         <source>{}: the source holds {} solids; make one board per solid</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: die Quelle enthält {} Körper; erstellen Sie eine Platte je Körper</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="112"/>
         <source>{}: needs closed wires, a planar face or a solid</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: braucht geschlossene Linienzüge, eine ebene Fläche oder einen Körper</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="114"/>
         <source>{}: its closed wires do not lie in one plane, so they do not outline a board</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: seine geschlossenen Linienzüge liegen nicht in einer Ebene und umreißen daher keine Platte</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="119"/>
         <source>{}: its wires do not make a planar face ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: seine Linienzüge ergeben keine ebene Fläche ({})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="125"/>
         <source>{}: the face is not planar</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: die Fläche ist nicht eben</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="127"/>
         <source>{}: Thickness must be greater than 0</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: Thickness muss größer als 0 sein</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="152"/>
         <source>{}: has no planar face, so it is not a flat board</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: hat keine ebene Fläche und ist daher keine flache Platte</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="157"/>
         <source>{}: no face parallel and opposite to its largest face, so it is not a flat board</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: keine Fläche liegt seiner größten Fläche parallel gegenüber, daher ist es keine flache Platte</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="162"/>
         <source>{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: ist keine flache Platte einer Dicke (Volumen {:.1f} mm3, Fläche x Dicke {:.1f} mm3)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/board.py" line="167"/>
         <source>{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board is thinner than it is wide)</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: ist {:.0f} mm dick und {:.0f} mm breit, eher ein Block oder Pfosten als eine Platte (eine Platte ist dünner als breit)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="52"/>
         <source>FreeCAD&apos;s CAM (Path) workbench is not installed: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>FreeCADs CAM-Arbeitsbereich (Path) ist nicht installiert: {}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="73"/>
         <source>tool bit file &apos;{}&apos; has no diameter ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeugdatei '{}' hat keinen Durchmesser ({})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="95"/>
         <source>no {} for the material &apos;{}&apos; (given for {})</source>
-        <translation type="unfinished"></translation>
+        <translation>kein(e) {} für das Material '{}' (angegeben für {})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="106"/>
         <source>cut through by {:g} mm: from 0 to 5 mm below the sheet</source>
-        <translation type="unfinished"></translation>
+        <translation>Durchschneiden um {:g} mm: von 0 bis 5 mm unter der Platte</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="110"/>
         <source>feed {:g} mm/min for &apos;{}&apos;: from 10 to 50000 mm/min</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschub {:g} mm/min für '{}': von 10 bis 50000 mm/min</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="113"/>
         <source>spindle speed {:g} rpm for &apos;{}&apos;: from 0 to 60000 rpm</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindeldrehzahl {:g} U/min für '{}': von 0 bis 60000 U/min</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="117"/>
         <source>no post-processor &apos;{}&apos; in FreeCAD (there are: {})</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Postprozessor '{}' in FreeCAD (vorhanden sind: {})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="121"/>
         <source>tool bit file &apos;{}&apos; not found</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeugdatei '{}' nicht gefunden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="124"/>
         <source>Layout &apos;{}&apos;: its parts are {:g} mm apart (Kerf {:g} + Spacing {:g} mm), too close for the {:g} mm tool: set its Kerf to the tool&apos;s diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': seine Teile liegen {:g} mm auseinander (Kerf {:g} + Spacing {:g} mm), zu eng für das {:g}-mm-Werkzeug: setzen Sie seinen Kerf auf den Werkzeugdurchmesser</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="379"/>
         <source>Job &apos;{}&apos;: post-processor &apos;{}&apos; not found</source>
-        <translation type="unfinished"></translation>
+        <translation>Job '{}': Postprozessor '{}' nicht gefunden</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/cam.py" line="391"/>
         <source>Job &apos;{}&apos;: the post-processor &apos;{}&apos; wrote nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="119"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="151"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="246"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="269"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
-        <translation type="unfinished"></translation>
+        <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="286"/>
         <source>add a master board (MasterBoards)</source>
-        <translation type="unfinished"></translation>
+        <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="340"/>
         <source>{}: edit undone: {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}: Änderung rückgängig gemacht: {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="145"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': {}{}</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="162"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}: {} Teile auf {} Rohplatte(n), Nutzung {:.1%}, Plattenausnutzung {:.1%}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="193"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': keine Platten auszulegen (fügen Sie FabGuide-Platten zu Boards hinzu)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': keine Rohplatten (fügen Sie eine zu MasterBoards hinzu)</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="200"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': Platte '{}' hat keine Form; erst neu berechnen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="228"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}': {} liegen in einer Ebene und berühren sich, werden also als ein Stück geschnitten; setzen Sie ihre Quantity auf 1</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="282"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout '{}' wurde noch nicht berechnet: erst neu berechnen</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
-        <translation type="unfinished"></translation>
+        <translation>{} Beheben Sie das zuerst: was jetzt erstellt würde, zeigte das letzte Layout, das erstellt werden konnte, nicht die Platten, wie sie sind.</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="25"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos; must read &apos;Sheet.alias min max&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Entwurf '{}': Parameter '{}' muss 'Sheet.alias min max' lauten</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="30"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos;: no spreadsheet &apos;{}&apos; with an alias &apos;{}&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Entwurf '{}': Parameter '{}': keine Tabelle '{}' mit einem Alias '{}'</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {} now, outside its range</source>
-        <translation type="unfinished"></translation>
+        <translation>Entwurf '{}': Parameter '{}' ist jetzt {}, außerhalb seines Bereichs</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="47"/>
         <source>Spreadsheet &apos;{}&apos;: &apos;{}&apos; holds no number ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>Tabelle '{}': '{}' enthält keine Zahl ({})</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="81"/>
         <source>Design &apos;{}&apos; has no Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Entwurf '{}' hat keine Parameters</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/techdraw.py" line="58"/>
         <source>TechDraw&apos;s blank A4 template is not installed with this FreeCAD</source>
-        <translation type="unfinished"></translation>
+        <translation>Die leere A4-Vorlage von TechDraw ist mit diesem FreeCAD nicht installiert</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/properties.py" line="121"/>
         <source>{}; kept {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}; behalten: {}
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/references.py" line="28"/>
         <source>{}; left out when opening the document
 </source>
-        <translation type="unfinished"></translation>
+        <translation>{}; beim Öffnen des Dokuments ausgelassen
+</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="86"/>
         <source>see the report view</source>
-        <translation type="unfinished"></translation>
+        <translation>siehe Ausgabefenster</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/function_commands.py" line="144"/>
@@ -2015,12 +2030,12 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
         <source>{:.1f} m</source>
-        <translation type="unfinished"></translation>
+        <translation>{:.1f} m</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
         <source> ({:.1f} m shared, cut once)</source>
-        <translation type="unfinished"></translation>
+        <translation> ({:.1f} m gemeinsam, einmal geschnitten)</translation>
     </message>
 </context>
 <context>
@@ -2028,142 +2043,142 @@ rpm</source>
     <message>
         <location filename="../ui/Preferences.ui" line="5"/>
         <source>FabGuide</source>
-        <translation type="unfinished"></translation>
+        <translation>FabGuide</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="9"/>
         <source>Cutting (new layouts)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuschnitt (neue Layouts)</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="11"/>
         <source>Kerf</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittbreite</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="12"/>
         <source>Width of the cut: the laser beam or the router bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite des Schnitts: Laserstrahl oder Fräser</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="46"/>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="13"/>
         <source>Spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="14"/>
         <source>Material left between parts besides the kerf</source>
-        <translation type="unfinished"></translation>
+        <translation>Material, das zusätzlich zur Schnittbreite zwischen den Teilen bleibt</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="15"/>
         <source>Edge trim</source>
-        <translation type="unfinished"></translation>
+        <translation>Randbeschnitt</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="16"/>
         <source>Margin kept along every master board edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Rand, der an jeder Kante der Rohplatte frei bleibt</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="17"/>
         <source>Time limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitlimit</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="18"/>
         <source>Seconds a layout&apos;s search may take at most</source>
-        <translation type="unfinished"></translation>
+        <translation>Sekunden, die die Suche nach einem Layout höchstens dauern darf</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="18"/>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="24"/>
         <source>Master board (new master boards)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rohplatte (neue Rohplatten)</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="26"/>
         <source>Width</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="27"/>
         <source>The sheet you buy, along the layout&apos;s x axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Platte, die Sie kaufen, entlang der x-Achse des Layouts</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="28"/>
         <source>Height</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="29"/>
         <source>The sheet you buy, along the layout&apos;s y axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Platte, die Sie kaufen, entlang der y-Achse des Layouts</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="30"/>
         <source>Thickness</source>
-        <translation type="unfinished"></translation>
+        <translation>Dicke</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="31"/>
         <source>Used when no board gives the thickness</source>
-        <translation type="unfinished"></translation>
+        <translation>Gilt, wenn keine Platte die Dicke vorgibt</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="37"/>
         <source>Printing in place (new printables)</source>
-        <translation type="unfinished"></translation>
+        <translation>Druck am Stück (neue Druckteile)</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="39"/>
         <source>Gap</source>
-        <translation type="unfinished"></translation>
+        <translation>Spalt</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="40"/>
         <source>Clearance between printed parts: 0.4 mm suits FDM, 0.2 mm resin</source>
-        <translation type="unfinished"></translation>
+        <translation>Spiel zwischen gedruckten Teilen: 0,4 mm für FDM, 0,2 mm für Harz</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="41"/>
         <source>Build volume width</source>
-        <translation type="unfinished"></translation>
+        <translation>Bauraumbreite</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="42"/>
         <source>Your printer&apos;s build volume along x</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Bauraum Ihres Druckers entlang x</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="43"/>
         <source>Build volume depth</source>
-        <translation type="unfinished"></translation>
+        <translation>Bauraumtiefe</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="44"/>
         <source>Your printer&apos;s build volume along y</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Bauraum Ihres Druckers entlang y</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="45"/>
         <source>Build volume height</source>
-        <translation type="unfinished"></translation>
+        <translation>Bauraumhöhe</translation>
     </message>
     <message>
         <location filename="../ui/Preferences.ui" line="46"/>
         <source>Your printer&apos;s build volume along z</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Bauraum Ihres Druckers entlang z</translation>
     </message>
 </context>
 <context>
@@ -2176,127 +2191,127 @@ rpm</source>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="12"/>
         <source>Material usage</source>
-        <translation type="unfinished"></translation>
+        <translation>Materialnutzung</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="15"/>
         <source>Usage</source>
-        <translation type="unfinished"></translation>
+        <translation>Nutzung</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="15"/>
         <source>Part area / area of the rectangle the layout covers (the thesis&apos; measure)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilefläche / Fläche des Rechtecks, das das Layout bedeckt (das Maß der Dissertation)</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="26"/>
         <source>-</source>
-        <translation type="unfinished"></translation>
+        <translation>-</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="17"/>
         <source>Sheet utilisation</source>
-        <translation type="unfinished"></translation>
+        <translation>Plattenausnutzung</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="17"/>
         <source>Part area / area of the master boards used</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilefläche / Fläche der benutzten Rohplatten</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="19"/>
         <source>Waste area</source>
-        <translation type="unfinished"></translation>
+        <translation>Verschnittfläche</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="21"/>
         <source>Master boards used</source>
-        <translation type="unfinished"></translation>
+        <translation>Benutzte Rohplatten</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="23"/>
         <source>Saw cuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Sägeschnitte</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="23"/>
         <source>Guillotine cuts: how many, and their total length (the cut sequence is on the cut sheets)</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: wie viele und ihre Gesamtlänge (die Schnittfolge steht auf den Zuschnittplänen)</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="33"/>
         <source>Cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuschnitt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="36"/>
         <source>Kerf</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittbreite</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="38"/>
         <source>Spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="40"/>
         <source>Edge trim</source>
-        <translation type="unfinished"></translation>
+        <translation>Randbeschnitt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="42"/>
         <source>Cuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnitte</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="42"/>
         <source>Free: any outline (CNC router, laser). Guillotine: straight cuts from edge to edge only (panel, track or table saw)</source>
-        <translation type="unfinished"></translation>
+        <translation>Frei: jeder Umriss (CNC-Fräse, Laser). Guillotine: nur gerade Schnitte von Kante zu Kante (Plattensäge, Tauchsäge oder Tischkreissäge)</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="44"/>
         <source>Stages</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufen</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="44"/>
         <source>Guillotine cuts: at most this many changes of direction; 0 = unlimited</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: höchstens so viele Richtungswechsel; 0 = unbegrenzt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="45"/>
         <source>Unlimited</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbegrenzt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="46"/>
         <source>First cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Erster Schnitt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="46"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length, across it, or whichever wastes less</source>
-        <translation type="unfinished"></translation>
+        <translation>Guillotineschnitte: die ersten Schnitte längs der Platte, quer dazu oder wie es weniger Verschnitt gibt</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="25"/>
         <source>Cut length</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittlänge</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="25"/>
         <source>Every outline and hole; with shared lines cut once, a line two boards share counted once</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Umrisse und Löcher; werden gemeinsame Linien einmal geschnitten, zählt eine Linie, die zwei Platten teilen, einmal</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="48"/>
         <source>Cut shared lines once</source>
-        <translation type="unfinished"></translation>
+        <translation>Gemeinsame Linien einmal schneiden</translation>
     </message>
     <message>
         <location filename="../ui/LayoutPanel.ui" line="48"/>
         <source>Common-line cutting: where two boards lie a kerf apart (spacing 0), the line between them is cut once, by the board cut first. The machine&apos;s paths only (not as designed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gemeinsamer Schnitt: wo zwei Platten eine Schnittbreite auseinander liegen (Abstand 0), wird die Linie zwischen ihnen einmal geschnitten, mit der zuerst geschnittenen Platte. Nur für die Bahnen der Maschine (nicht wie konstruiert)</translation>
     </message>
 </context>
 <context>
@@ -2304,47 +2319,47 @@ rpm</source>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="6"/>
         <source>Relationship</source>
-        <translation type="unfinished"></translation>
+        <translation>Beziehung</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="17"/>
         <source>Corresponding faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Zugehörige Flächen</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="22"/>
         <source>Blue → red in the 3-D view: first → second. Pick two faces there and press Add; double-click a pair to retype it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Blau → Rot in der 3D-Ansicht: erste → zweite. Wählen Sie dort zwei Flächen und drücken Sie Hinzufügen; ein Doppelklick auf ein Paar gibt ihm einen anderen Typ.</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="28"/>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinzufügen</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="28"/>
         <source>Add the two faces picked in the 3-D view as a pair</source>
-        <translation type="unfinished"></translation>
+        <translation>Die zwei in der 3D-Ansicht gewählten Flächen als Paar hinzufügen</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="29"/>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Entfernen</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="29"/>
         <source>Remove the selected pairs</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Paare entfernen</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="30"/>
         <source>Re-infer</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu ableiten</translation>
     </message>
     <message>
         <location filename="../ui/RelationshipPanel.ui" line="30"/>
         <source>Forget the pairs and infer them again on a solve</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Paare vergessen und beim Lösen neu ableiten</translation>
     </message>
 </context>
 <context>
@@ -2357,42 +2372,42 @@ rpm</source>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="12"/>
         <source>Time limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitlimit</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="13"/>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="14"/>
         <source>Threads</source>
-        <translation type="unfinished"></translation>
+        <translation>Threads</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="16"/>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="23"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="31"/>
         <source>Path</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfad</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="36"/>
         <source>Keep these parts&apos; sizes from the suggestion:</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Teilegrößen aus dem Vorschlag übernehmen:</translation>
     </message>
     <message>
         <location filename="../ui/SuggestPanel.ui" line="38"/>
         <source>Apply, keep, suggest again</source>
-        <translation type="unfinished"></translation>
+        <translation>Übernehmen, behalten, neu vorschlagen</translation>
     </message>
 </context>
 <context>

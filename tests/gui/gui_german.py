@@ -1,9 +1,11 @@
 """FabGuide in German (issue 34): with FreeCAD's language set to German before the workbench first loads, its
-toolbars, drop-down buttons, commands and their tips, and what a command tells the user come from
-Resources/translations/FabGuide_de.qm; screenshots of the German workbench at 1366 and 1920 px."""
+toolbars, drop-down buttons, commands and their tips, what a command tells the user, task panels and property
+tooltips come from Resources/translations/FabGuide_de.qm; screenshots of the German workbench at 1366 and 1920 px."""
+import os
+
 import FreeCAD
 import FreeCADGui as Gui
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 import guitest
 
@@ -34,10 +36,21 @@ def a_mistake_is_told_in_german():
     assert said == ("Wählen Sie zuerst die Körper Ihres Möbelmodells (flache Quader, Aufpolsterungen, "
                     "Extrusionen)."), said
     FreeCAD.closeDocument(doc.Name)
+
+
+def panels_and_property_tooltips_speak_german():
+    # A task panel as FreeCAD loads it (its texts translated in the .ui's own context), and a property's tooltip
+    # as the property editor asks for it.
+    from freecad.fabguide.gui import resources
+    panel = Gui.PySideUic.loadUi(os.path.join(resources.RESOURCES, "ui", "LayoutPanel.ui"))
+    assert (panel.usageBox.title(), panel.commonLine.text()) == ("Materialnutzung",
+                                                                 "Gemeinsame Linien einmal schneiden")
+    assert QtCore.QCoreApplication.translate("App::Property", "Width of the cut") == "Breite des Schnitts"
     Gui.setLocale("English")
 
 
 guitest.run([
     the_toolbars_and_commands_speak_german,
     a_mistake_is_told_in_german,
+    panels_and_property_tooltips_speak_german,
 ])
