@@ -64,42 +64,42 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="36"/>
         <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="38"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="39"/>
         <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="41"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="42"/>
         <source>Solved, or the relationships in conflict</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="44"/>
         <source>Largest constraint violation after the solve, mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="46"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="47"/>
         <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="49"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="50"/>
         <source>What the last solve changed: box, size old → new, how far it moved</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="53"/>
         <source>Box coordinates after the last solve (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="55"/>
         <source>Box sizes as you drew them, before solves (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -204,52 +204,52 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="43"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="46"/>
         <source>Parts that must fit inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="45"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="48"/>
         <source>The part they fit inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="47"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="50"/>
         <source>A cavity of the enclosing part to fit in; empty: its box</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="49"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
         <source>Partial fit: the boxes of the inner parts that must fit (a drawer&apos;s tray, not its front); empty: all</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="56"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="59"/>
         <source>Each inner part just fits on its own along the ticked axes (stacked trays without play), not only the inner parts taken together</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="77"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="80"/>
         <source>Parts that support (legs, frames)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="79"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="82"/>
         <source>Parts resting on them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="93"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="100"/>
         <source>Two box faces that lie in one plane</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="111"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="120"/>
         <source>Left = or &lt;= right + offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="125"/>
         <source>Added to the right side</source>
         <translation type="unfinished"></translation>
     </message>
@@ -364,62 +364,62 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Fixed value or sum offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
         <source>Satisfied, or what breaks it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="130"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="132"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
         <source>Size along x</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Size along y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along z</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Satisfied, or the boards that break it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="197"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="199"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
@@ -574,57 +574,57 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="16"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="17"/>
         <source>Size along the layout&apos;s x axis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="18"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="19"/>
         <source>Size along the layout&apos;s y axis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="20"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="21"/>
         <source>Material thickness</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="22"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="23"/>
         <source>Boards in stock; 0 = as many as needed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="24"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="25"/>
         <source>Material name for the cut list</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="26"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="27"/>
         <source>Direction of the wood grain; boards set to Follow grain keep their length along it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="29"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="30"/>
         <source>What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new sheets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/properties.py" line="108"/>
+        <location filename="../../freecad/fabguide/properties.py" line="111"/>
         <source>Why the last recompute failed; empty when it did not</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in width (along X)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in depth (along Y)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in height (along Z)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -661,6 +661,91 @@
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
         <source>CommonLine: the length of the lines two boards share, cut once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="49"/>
+        <source>How far the joint turns its part (right-handed about its edge&apos;s +x/+y/+z direction)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="52"/>
+        <source>How far the joint slides its part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="34"/>
+        <source>Coordinates that keep their value: a box and its side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="158"/>
+        <source>The body this shape is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="31"/>
+        <source>Corresponding faces, two by two: &apos;covering -&gt; covered&apos; (thesis 4.3.1); empty: inferred on the next solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="31"/>
+        <source>How far apart faces may be to correspond when inferring the pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="84"/>
+        <source>Corresponding faces, two by two: &apos;supporting top -&gt; supported bottom&apos; (thesis 4.3.3); empty: inferred on the next solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="84"/>
+        <source>How far above a top face a bottom face may be when inferring the pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
+        <source>Quantities summed: a box and its side or size (width/depth/height), with a factor in front if not 1 (the formats write &apos;Door.width&apos;, &apos;2*Shelf.height&apos;, &apos;-Lid.left&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="123"/>
+        <source>Quantities summed (may be empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="191"/>
+        <source>The layout this was made from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <source>Right side of a sum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <source>Symmetric about this reference (empty: midway now)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="34"/>
+        <source>The designs and layouts cut from this master board: a change reaches them all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/techdraw.py" line="62"/>
+        <source>The layout this page draws</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="38"/>
+        <source>The FabGuide version that wrote this</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -840,7 +925,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/configuration.py" line="97"/>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="98"/>
         <source>Configuration &apos;{}&apos;: &apos;{}&apos; is not a joint</source>
         <translation type="unfinished"></translation>
     </message>
@@ -880,12 +965,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="162"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="184"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="185"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation type="unfinished"></translation>
@@ -937,68 +1022,68 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="176"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="177"/>
         <source>Printable &apos;{}&apos;: {}; mend that first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="180"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="181"/>
         <source>Printable &apos;{}&apos;: not made from the mechanism as it stands ({} changed); recompute first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="186"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="187"/>
         <source>Printable &apos;{}&apos;: {} not made yet; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="62"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="65"/>
         <source>Fit inside &apos;{}&apos;: choose the Enclosing part</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="99"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="106"/>
         <source>Flush &apos;{}&apos;: choose exactly two faces, got {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="136"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="146"/>
         <source>Geometric &apos;{}&apos;: &apos;{}&apos; must read &apos;Box.side&apos;, &apos;Box.width&apos; or &apos;factor*Box.width&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="158"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="168"/>
         <source>{} &apos;{}&apos;: its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or correct them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="216"/>
         <source>{} &apos;{}&apos;: pair &apos;{}&apos; must read &apos;Box.side -&gt; Box.side&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="154"/>
         <source>Build FabGuide&apos;s core</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="123"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="125"/>
         <source>Cancelled: nothing was installed.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="131"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="133"/>
         <source>Close</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
         <source>FabGuide: the core cannot be built: {}.
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="154"/>
         <source>The core cannot be built: {}.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1008,18 +1093,18 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
+        <location filename="../../freecad/fabguide/gui/command_base.py" line="30"/>
         <source>FabGuide: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="98"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="99"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
         <translation type="unfinished"></translation>
@@ -1085,22 +1170,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="55"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="52"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="53"/>
         <source>Offset along the slide</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="118"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="117"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="120"/>
         <source>Stop</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1115,192 +1200,192 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="71"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="78"/>
         <source>Flat-pack Design from Boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="72"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
         <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; its usage updates as you edit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="87"/>
         <source>Select the Part boxes your furniture is made of first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="96"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="103"/>
         <source>Import Flat-pack Design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="97"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="104"/>
         <source>Open a *.flatpack.json design: boxes, master boards, constraints and volumes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="116"/>
         <source>Cannot import {}: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="128"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="135"/>
         <source>Export Flat-pack Design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="129"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="136"/>
         <source>Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
         <source>Pick an edge of a box for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
         <source>Pick edges of boxes for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="169"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="176"/>
         <source>Equal Lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="170"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="177"/>
         <source>The picked edges of boards keep equal lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="174"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="181"/>
         <source>Sum of Lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="175"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="182"/>
         <source>The lengths of the picked edges add up to the length of the last one picked</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="183"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="190"/>
         <source>Fixed Length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="184"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="191"/>
         <source>Each picked edge keeps its present length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="193"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="200"/>
         <source>Length Range</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="194"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="201"/>
         <source>Each picked edge may change by at most 25 % (edit Min and Max of the constraint)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="211"/>
         <source>Equal Position</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="205"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="212"/>
         <source>The picked faces of boards stay level with each other (same coordinate along their normal)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="213"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="220"/>
         <source>Pick two or more parallel faces of boards for Equal Position.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="229"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="236"/>
         <source>Pick {} for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="237"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
         <source>Ground Touching</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="238"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="245"/>
         <source>The picked boards keep standing on the ground (their lowest face at the lowest board&apos;s level)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="243"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
         <source>Coplanar</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="251"/>
         <source>The picked parallel boards stay in one plane</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="249"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
         <source>Snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
         <source>Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="263"/>
         <source>Symmetric</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="264"/>
         <source>Two boards stay mirror images about the plane midway between them (along the axis that separates them)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="277"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="284"/>
         <source>Inner Volume</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="278"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
         <source>Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="292"/>
         <source>Pick the one board the free space rests on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="296"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="303"/>
         <source>Outer Volume</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="297"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="304"/>
         <source>An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="307"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="314"/>
         <source>Design &apos;{}&apos; has no boxes to put an envelope round.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="318"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="325"/>
         <source>Suggest</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="319"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="326"/>
         <source>Search for design variations that keep your constraints and waste less material (or, for a design with Parameters, spreadsheet values within their ranges); preview and accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1316,248 +1401,248 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="87"/>
         <source>Mechanism from Boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="81"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="88"/>
         <source>Make a mechanism; each selected box (Part::Box) becomes one of its parts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="87"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="94"/>
         <source>Every picked box is already in a part: pick boxes that are not.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="95"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="102"/>
         <source>Part from Boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="96"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="103"/>
         <source>Make one part of the selected boxes: they move together</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="102"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="109"/>
         <source>Select the boxes (Part::Box) the part is made of.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="112"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="119"/>
         <source>Cavity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="120"/>
         <source>Select a box of a part, then boxes to cut out of it: openings and compartments</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="120"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="127"/>
         <source>Select a box of the part first, then the boxes that are cavities in it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="165"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="172"/>
         <source>Pick the one edge of a box the {} turns about.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="168"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="175"/>
         <source>Pick a face of a box: the part slides along its normal.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="184"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="191"/>
         <source>Add Hinge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="185"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="192"/>
         <source>Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="198"/>
         <source>Add Slide</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="192"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="199"/>
         <source>Pick a face of a box: its part slides along the face&apos;s normal</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="197"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="204"/>
         <source>Add Sliding Hinge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="198"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="205"/>
         <source>Pick an edge and a face of a box: its part turns about the edge, which slides along the face&apos;s normal</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="211"/>
         <source>Add Double Pivot</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="205"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="212"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to, in the same plane: a rigid link joins them (the solve places both pivots)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="214"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="221"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="227"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="234"/>
         <source>Add Fixed Joint</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="228"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints as one body with it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="242"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="238"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="245"/>
         <source>Both boxes are in one part: pick a box of the part to hold, then one of another part.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="241"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="248"/>
         <source>&apos;{}&apos; already rides on &apos;{}&apos;: pick the part to hold first, then the part it rides on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="296"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="303"/>
         <source>Add Cover</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="297"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="305"/>
         <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="317"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
         <source>Add Fit Inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="318"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
         <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="329"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="341"/>
         <source>Add Support</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="330"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
         <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="338"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="350"/>
         <source>Add Flush</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
         <source>Pick two faces of boxes: they lie in one plane</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="354"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="367"/>
         <source>Add Geometric</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="355"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
         <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="375"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="389"/>
         <source>Solve</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="376"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
         <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="383"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="397"/>
         <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="393"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
         <source>Configurations</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="394"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
         <source>Pose the joints: name configurations and move the mechanism between them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="421"/>
         <source>Import Works-like Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
         <source>Build a mechanism from a *.workslike.json file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="432"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="446"/>
         <source>Export Works-like Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="433"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
         <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="454"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="468"/>
         <source>Make Printable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
         <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="473"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="487"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="492"/>
         <source>Export Printable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="479"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1572,113 +1657,113 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="21"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="27"/>
         <source>New Master Board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="22"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="28"/>
         <source>Add a master board (sheet size, thickness, stock, material) to cut boards from</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="35"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="41"/>
         <source>Make Board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="36"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="42"/>
         <source>Make a board from each selected sketch or planar face, as thick as the master boards</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="44"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="50"/>
         <source>Select sketches or planar faces first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="55"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="61"/>
         <source>Boards from Solids</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="62"/>
         <source>Turn each selected thin solid into a board, detecting its thickness and outline</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="64"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="70"/>
         <source>Select the solids of your furniture model (flat boxes, pads, extrusions) first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="75"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="96"/>
         <source>Band Edges</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="76"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="82"/>
         <source>Glue edge banding on the picked edge faces of boards (asks for the band&apos;s name; empty removes it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="88"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="94"/>
         <source>Pick the edge faces of boards (their narrow sides, not the large faces) first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="100"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="107"/>
         <source>FabGuide: {} on {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="115"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="122"/>
         <source>Nothing made: {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="128"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="26"/>
         <source>Layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="129"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="137"/>
         <source>Lay the selected (or all) boards out on the master boards and show the material usage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="136"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="144"/>
         <source>There are no boards yet: use Boards from Solids or Make Board first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="149"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="157"/>
         <source>Export Cut Sheets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="158"/>
         <source>Write SVG and DXF cut sheets per master board, a CSV cut list, the shop&apos;s PDF report and part labels for the selected layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="172"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="181"/>
         <source>TechDraw Pages</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="173"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
         <source>Make TechDraw pages of the selected layout&apos;s shop report: a page per master board (parts numbered and sized, grain, edge banding, saw cuts), then the cut list and the totals</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="194"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="203"/>
         <source>Make CAM Job</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="195"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
         <source>Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, engraved labels) with your tool and post-processor, and write its G-code</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1703,7 +1788,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="334"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="336"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1869,42 +1954,42 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="379"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="380"/>
         <source>Job &apos;{}&apos;: post-processor &apos;{}&apos; not found</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="391"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="392"/>
         <source>Job &apos;{}&apos;: the post-processor &apos;{}&apos; wrote nothing</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="121"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="151"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="153"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="246"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="248"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="269"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="271"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="288"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="342"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -1981,7 +2066,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/properties.py" line="121"/>
+        <location filename="../../freecad/fabguide/properties.py" line="124"/>
         <source>{}; kept {}
 </source>
         <translation type="unfinished"></translation>
@@ -1998,17 +2083,17 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="144"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
         <source>&apos;{0}&apos; rides on &apos;{1}&apos; by the fixed joint &apos;{2}&apos;, and a part is moved by one joint: add this joint to &apos;{1}&apos; (they move together), or delete the fixed joint and hold &apos;{1}&apos; on &apos;{0}&apos; instead.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="149"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="156"/>
         <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint): pick the part to hold first, then the part it rides on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="158"/>
         <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2020,6 +2105,477 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
         <source> ({:.1f} m shared, cut once)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/core.py" line="12"/>
+        <source>FabGuide&apos;s compiled core is not built for this FreeCAD (Python {}.{}){}: choose FabGuide &gt; Build the Core, or install the fabguide Debian package (README.md, Install).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/core.py" line="14"/>
+        <source> (the one there does not load: {})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="13"/>
+        <source>Configuration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="14"/>
+        <source>joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="14"/>
+        <source>Joint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="15"/>
+        <source>a FabGuide part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="15"/>
+        <source>a FabGuide part (empty: the ground)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="24"/>
+        <source>Mechanism</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="25"/>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="25"/>
+        <source>a configuration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
+        <source>Mend the model as the note below says.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <source>Change or delete one of the relationships.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <source>Or unlock a box (the mechanism&apos;s Locks).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <source>Or move the parts that meet apart.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="8"/>
+        <source>Part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="9"/>
+        <source>Part::Box objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="21"/>
+        <source>Printable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/about.py" line="27"/>
+        <source>About FabGuide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/about.py" line="21"/>
+        <source>Show the FabGuide version and the libraries it was built with</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="38"/>
+        <source>this FabGuide has no sources to build from ({}): install it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="40"/>
+        <source>cmake is not installed: in a terminal, run  sudo {}/tools/install-deps core</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="45"/>
+        <source>the build needs Debian packages that are not installed ({}): in a terminal, run  sudo {}/tools/install-deps core</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="54"/>
+        <source>the build made no fabguide_core in {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="69"/>
+        <source>Building the core for this FreeCAD (Python {}.{}) in {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="108"/>
+        <source>The build stopped (exit status {}): the output above names the problem.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="115"/>
+        <source>The core could not be put into the workbench: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="118"/>
+        <source>Built {}. Restart FreeCAD to use FabGuide.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="29"/>
+        <source>{}: cancelled; it keeps its last result (recompute to try again)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="38"/>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="52"/>
+        <source>{}
+stopping: keeping the best found so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="61"/>
+        <source>{}
+{:.0f} s of at most {:.0f} s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="69"/>
+        <source>Tool bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="69"/>
+        <source>FreeCAD tool bits (*.fctb)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="78"/>
+        <source>Folder for the G-code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <source>{} (current)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <source>New configuration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="80"/>
+        <source>Configuration {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Cannot show it: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Moves: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Moves: nothing yet: tick the joints this configuration poses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="131"/>
+        <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="133"/>
+        <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="141"/>
+        <source>Select the flat-pack design to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="73"/>
+        <source>There is no flat-pack design in this document yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="332"/>
+        <source>Select the flat-pack design.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <source>changed by undo or redo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="131"/>
+        <source>Already in a part: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="304"/>
+        <source>Pick boxes of at least two parts; the last one picked is the covered part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="325"/>
+        <source>Pick boxes of at least two parts; the last one picked is the enclosing part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <source>Pick boxes of at least two parts; the last one picked is the supported part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="357"/>
+        <source>Pick exactly two faces of boxes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="359"/>
+        <source>Pick faces of two different boxes: two faces of one box never lie in one plane.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="374"/>
+        <source>Pick one or two edges of boxes, and nothing else (a face or a whole box says no length).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="415"/>
+        <source>Select the mechanism to pose.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="82"/>
+        <source>There is no mechanism in this document yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <source>Select the mechanism to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="464"/>
+        <source>FabGuide wrote {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="477"/>
+        <source>Select the mechanism to print.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <source>Select the printable to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <source>There is no printable in this document yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="507"/>
+        <source>Folder for the print files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="177"/>
+        <source>FabGuide wrote:
+  {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="72"/>
+        <source>{}: &quot;{}&quot; is not a length from {:g} to {:g} mm; it stays {:g} mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="96"/>
+        <source>Band on the {} picked edge(s) (empty: none):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="131"/>
+        <source>FabGuide: see the messages above for {}
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="165"/>
+        <source>Select the layout to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="23"/>
+        <source>There is no layout in this document yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="169"/>
+        <source>Folder for the cut sheets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="191"/>
+        <source>Select the layout to draw.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="48"/>
+        <source>&lt;br&gt;The solve changed:{}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="247"/>
+        <source> (stopped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="250"/>
+        <source>; with every board as small as they allow it still needs {} sheet(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="22"/>
+        <source>Board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="28"/>
+        <source>Design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
+        <source>master boards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="91"/>
+        <source>Constraint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source> (parts squared)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source>0 or a divisor of 90 (e.g. 15, 30, 45)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source> (0: unlimited)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source>0 or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <source>Layout &apos;{}&apos; is in error.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="10"/>
+        <source>Master board</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="11"/>
+        <source> (as many as needed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="11"/>
+        <source> (an offcut you have)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="90"/>
+        <source>master board &apos;{}&apos; is shared with {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="67"/>
+        <source>greater than {:g}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="72"/>
+        <source>{:g}{} or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="100"/>
+        <source>Object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="135"/>
+        <source>{} &apos;{}&apos;: {} must be a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="140"/>
+        <source>{} &apos;{}&apos;: {} must be {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/references.py" line="58"/>
+        <source>{}: &apos;{}&apos; names no box (write &apos;Box label.{}&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
+        <source>Select the layout to machine.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

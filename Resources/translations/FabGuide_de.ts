@@ -64,42 +64,42 @@
         <translation>Kleinste Wand um einen Hohlraum an seinen Seiten, die keine Öffnungen sind</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="36"/>
         <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
         <translation>Quaderkoordinaten, die Sie seit dem letzten Lösen geändert haben, behalten ihren neuen Wert, während sich der Rest anpasst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="38"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="39"/>
         <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
         <translation>Die Konfiguration, die das Konfigurationen-Fenster zuletzt zeigte; neue Beziehungen gelten in ihr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="41"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="42"/>
         <source>Solved, or the relationships in conflict</source>
         <translation>Gelöst, oder die Beziehungen im Widerspruch</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="44"/>
         <source>Largest constraint violation after the solve, mm</source>
         <translation>Größte Verletzung einer Vorgabe nach dem Lösen, mm</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="46"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="47"/>
         <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
         <translation>Teile, die ein Widerspruch außer denen seiner Beziehungen nennt (überlappende Teile, dünne Wände)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="49"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="50"/>
         <source>What the last solve changed: box, size old → new, how far it moved</source>
         <translation>Was das letzte Lösen geändert hat: Quader, Größe alt → neu, wie weit er verschoben wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="53"/>
         <source>Box coordinates after the last solve (JSON)</source>
         <translation>Quaderkoordinaten nach dem letzten Lösen (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="55"/>
         <source>Box sizes as you drew them, before solves (JSON)</source>
         <translation>Quadergrößen, wie Sie sie gezeichnet haben, vor dem Lösen (JSON)</translation>
     </message>
@@ -204,52 +204,52 @@
         <translation>Genau abdecken: die abdeckenden Flächen nicht größer als die abgedeckten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="43"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="46"/>
         <source>Parts that must fit inside</source>
         <translation>Teile, die hineinpassen müssen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="45"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="48"/>
         <source>The part they fit inside</source>
         <translation>Das Teil, in das sie passen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="47"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="50"/>
         <source>A cavity of the enclosing part to fit in; empty: its box</source>
         <translation>Ein Hohlraum des umschließenden Teils, in den sie passen; leer: sein Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="49"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
         <source>Partial fit: the boxes of the inner parts that must fit (a drawer&apos;s tray, not its front); empty: all</source>
         <translation>Teilweise Passung: die Quader der inneren Teile, die passen müssen (der Kasten einer Schublade, nicht ihre Front); leer: alle</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="56"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="59"/>
         <source>Each inner part just fits on its own along the ticked axes (stacked trays without play), not only the inner parts taken together</source>
         <translation>Jedes innere Teil passt für sich genau entlang der angehakten Achsen (gestapelte Kästen ohne Spiel), nicht nur die inneren Teile zusammen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="77"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="80"/>
         <source>Parts that support (legs, frames)</source>
         <translation>Teile, die tragen (Beine, Rahmen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="79"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="82"/>
         <source>Parts resting on them</source>
         <translation>Teile, die darauf ruhen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="93"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="100"/>
         <source>Two box faces that lie in one plane</source>
         <translation>Zwei Quaderflächen, die in einer Ebene liegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="111"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="120"/>
         <source>Left = or &lt;= right + offset</source>
         <translation>Links = oder &lt;= rechts + Versatz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="125"/>
         <source>Added to the right side</source>
         <translation>Zur rechten Seite addiert</translation>
     </message>
@@ -364,62 +364,62 @@
         <translation>Was gelten muss</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Fixed value or sum offset</source>
         <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
         <source>Satisfied, or what breaks it</source>
         <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="130"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="132"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
         <source>Size along x</source>
         <translation>Größe entlang x</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Size along y</source>
         <translation>Größe entlang y</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along z</source>
         <translation>Größe entlang z</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Satisfied, or the boards that break it</source>
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="197"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="199"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
@@ -574,57 +574,57 @@
         <translation>Das Layout (Layout-JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="16"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="17"/>
         <source>Size along the layout&apos;s x axis</source>
         <translation>Größe entlang der x-Achse des Layouts</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="18"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="19"/>
         <source>Size along the layout&apos;s y axis</source>
         <translation>Größe entlang der y-Achse des Layouts</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="20"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="21"/>
         <source>Material thickness</source>
         <translation>Materialdicke</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="22"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="23"/>
         <source>Boards in stock; 0 = as many as needed</source>
         <translation>Platten auf Lager; 0 = so viele wie nötig</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="24"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="25"/>
         <source>Material name for the cut list</source>
         <translation>Materialname für die Zuschnittliste</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="26"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="27"/>
         <source>Direction of the wood grain; boards set to Follow grain keep their length along it</source>
         <translation>Richtung der Holzmaserung; Platten mit Follow grain behalten ihre Länge entlang ihr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/master_board.py" line="29"/>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="30"/>
         <source>What one board costs (any unit; 1 = a sheet); 0 for an offcut you have, which is used before new sheets</source>
         <translation>Was eine Platte kostet (beliebige Einheit; 1 = eine Platte); 0 für einen vorhandenen Rest, der vor neuen Platten verwendet wird</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/properties.py" line="108"/>
+        <location filename="../../freecad/fabguide/properties.py" line="111"/>
         <source>Why the last recompute failed; empty when it did not</source>
         <translation>Warum die letzte Neuberechnung fehlschlug; leer, wenn nicht</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in width (along X)</source>
         <translation>Passt genau in der Breite (entlang X)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in depth (along Y)</source>
         <translation>Passt genau in der Tiefe (entlang Y)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="52"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="55"/>
         <source>Just fits in height (along Z)</source>
         <translation>Passt genau in der Höhe (entlang Z)</translation>
     </message>
@@ -662,6 +662,91 @@
         <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
         <source>CommonLine: the length of the lines two boards share, cut once</source>
         <translation>CommonLine: die Länge der Linien, die zwei Platten teilen, einmal geschnitten</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="49"/>
+        <source>How far the joint turns its part (right-handed about its edge&apos;s +x/+y/+z direction)</source>
+        <translation>Wie weit das Gelenk sein Teil dreht (rechtshändig um die +x/+y/+z-Richtung seiner Kante)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="52"/>
+        <source>How far the joint slides its part</source>
+        <translation>Wie weit das Gelenk sein Teil verschiebt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="34"/>
+        <source>Coordinates that keep their value: a box and its side</source>
+        <translation>Koordinaten, die ihren Wert behalten: ein Quader und seine Seite</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="158"/>
+        <source>The body this shape is</source>
+        <translation>Der Körper, den diese Form darstellt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="31"/>
+        <source>Corresponding faces, two by two: &apos;covering -&gt; covered&apos; (thesis 4.3.1); empty: inferred on the next solve</source>
+        <translation>Zugehörige Flächen, paarweise: 'abdeckend -&gt; abgedeckt' (Dissertation 4.3.1); leer: beim nächsten Lösen abgeleitet</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="31"/>
+        <source>How far apart faces may be to correspond when inferring the pairs</source>
+        <translation>Wie weit Flächen auseinander liegen dürfen, um beim Ableiten der Paare zusammenzugehören</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="84"/>
+        <source>Corresponding faces, two by two: &apos;supporting top -&gt; supported bottom&apos; (thesis 4.3.3); empty: inferred on the next solve</source>
+        <translation>Zugehörige Flächen, paarweise: 'tragende Oberseite -&gt; getragene Unterseite' (Dissertation 4.3.3); leer: beim nächsten Lösen abgeleitet</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="84"/>
+        <source>How far above a top face a bottom face may be when inferring the pairs</source>
+        <translation>Wie weit über einer Oberseite eine Unterseite beim Ableiten der Paare liegen darf</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="115"/>
+        <source>Quantities summed: a box and its side or size (width/depth/height), with a factor in front if not 1 (the formats write &apos;Door.width&apos;, &apos;2*Shelf.height&apos;, &apos;-Lid.left&apos;)</source>
+        <translation>Summierte Größen: ein Quader und seine Seite oder Größe (width/depth/height), mit einem Faktor davor, wenn nicht 1 (die Formate schreiben 'Door.width', '2*Shelf.height', '-Lid.left')</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="123"/>
+        <source>Quantities summed (may be empty)</source>
+        <translation>Summierte Größen (darf leer sein)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/cam.py" line="191"/>
+        <source>The layout this was made from</source>
+        <translation>Das Layout, aus dem dies erstellt wurde</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
+        <translation>Quader und was von ihnen (size.x, centre.z, min.y, max.x): gleich, symmetrisch (zwei), Summe (linke Seite), fest und Bereich (einer)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <source>Right side of a sum</source>
+        <translation>Rechte Seite einer Summe</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <source>Symmetric about this reference (empty: midway now)</source>
+        <translation>Symmetrisch zu dieser Referenz (leer: jetzige Mitte)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="34"/>
+        <source>The designs and layouts cut from this master board: a change reaches them all</source>
+        <translation>Die Entwürfe und Layouts, die aus dieser Rohplatte geschnitten werden: eine Änderung erreicht sie alle</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/techdraw.py" line="62"/>
+        <source>The layout this page draws</source>
+        <translation>Das Layout, das diese Seite zeichnet</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="38"/>
+        <source>The FabGuide version that wrote this</source>
+        <translation>Die FabGuide-Version, die dies geschrieben hat</translation>
     </message>
 </context>
 <context>
@@ -842,7 +927,7 @@ U/min</translation>
         <translation>'{}' hat keine Kante zwischen seinen Flächen {} und {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/configuration.py" line="97"/>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="98"/>
         <source>Configuration &apos;{}&apos;: &apos;{}&apos; is not a joint</source>
         <translation>Konfiguration '{}': '{}' ist kein Gelenk</translation>
     </message>
@@ -882,12 +967,12 @@ U/min</translation>
         <translation>Doppelgelenk '{}': wählen Sie eine Fläche eines Quaders von '{}' für {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="162"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation>Mechanismus '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="184"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="185"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation>{}: diese können nicht zugleich gelten: {}. {}
@@ -941,69 +1026,69 @@ U/min</translation>
         <translation>Druckteil '{}': BuildVolume muss in x, y und z größer als 0 sein (ist {:g} x {:g} x {:g})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="176"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="177"/>
         <source>Printable &apos;{}&apos;: {}; mend that first</source>
         <translation>Druckteil '{}': {}; beheben Sie das zuerst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="180"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="181"/>
         <source>Printable &apos;{}&apos;: not made from the mechanism as it stands ({} changed); recompute first</source>
         <translation>Druckteil '{}': nicht aus dem Mechanismus, wie er jetzt ist, erstellt ({} geändert); erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/printable.py" line="186"/>
+        <location filename="../../freecad/fabguide/function/printable.py" line="187"/>
         <source>Printable &apos;{}&apos;: {} not made yet; recompute it first</source>
         <translation>Druckteil '{}': {} noch nicht erstellt; erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="62"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="65"/>
         <source>Fit inside &apos;{}&apos;: choose the Enclosing part</source>
         <translation>Passt hinein '{}': wählen Sie das umschließende Teil (Enclosing)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="99"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="106"/>
         <source>Flush &apos;{}&apos;: choose exactly two faces, got {}</source>
         <translation>Bündig '{}': wählen Sie genau zwei Flächen, gewählt sind {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="136"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="146"/>
         <source>Geometric &apos;{}&apos;: &apos;{}&apos; must read &apos;Box.side&apos;, &apos;Box.width&apos; or &apos;factor*Box.width&apos;</source>
         <translation>Geometrisch '{}': '{}' muss 'Box.side', 'Box.width' oder 'factor*Box.width' lauten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="158"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="168"/>
         <source>{} &apos;{}&apos;: its Pairs lost a face (a box was deleted?); re-infer them (clear Pairs) or correct them</source>
         <translation>{} '{}': seinen Pairs fehlt eine Fläche (ein Quader gelöscht?); leiten Sie sie neu ab (Pairs leeren) oder korrigieren Sie sie</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/relationships.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/relationships.py" line="216"/>
         <source>{} &apos;{}&apos;: pair &apos;{}&apos; must read &apos;Box.side -&gt; Box.side&apos;</source>
         <translation>{} '{}': Paar '{}' muss 'Box.side -&gt; Box.side' lauten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="154"/>
         <source>Build FabGuide&apos;s core</source>
         <translation>FabGuides Kern bauen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="123"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="125"/>
         <source>Cancelled: nothing was installed.</source>
         <translation>Abgebrochen: nichts wurde installiert.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="131"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="133"/>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
         <source>FabGuide: the core cannot be built: {}.
 </source>
         <translation>FabGuide: der Kern kann nicht gebaut werden: {}.
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/build_core.py" line="152"/>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="154"/>
         <source>The core cannot be built: {}.</source>
         <translation>Der Kern kann nicht gebaut werden: {}.</translation>
     </message>
@@ -1013,19 +1098,19 @@ U/min</translation>
         <translation>FabGuide</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="93"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
         <source>&lt;b&gt;No CAM job made:&lt;/b&gt; {}</source>
         <translation>&lt;b&gt;Kein CAM-Job erstellt:&lt;/b&gt; {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="94"/>
+        <location filename="../../freecad/fabguide/gui/command_base.py" line="30"/>
         <source>FabGuide: {}
 </source>
         <translation>FabGuide: {}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="98"/>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="99"/>
         <source>FabGuide: {} CAM job(s) for &apos;{}&apos;{}
 </source>
         <translation>FabGuide: {} CAM-Job(s) für '{}'{}
@@ -1092,22 +1177,22 @@ U/min</translation>
         <translation>Einen *.flatpack.json-Entwurf importieren oder exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="55"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="52"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation>Winkel: sein Vorzeichen gibt an, wohin das Teil schwenkt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="53"/>
         <source>Offset along the slide</source>
         <translation>Verschiebung entlang der Führung</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="118"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="117"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="120"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
@@ -1122,192 +1207,192 @@ U/min</translation>
         <translation>{} gilt für den Entwurf in seinem jetzigen Zustand nicht: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="71"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="78"/>
         <source>Flat-pack Design from Boxes</source>
         <translation>Flachpaket-Entwurf aus Quadern</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="72"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
         <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; its usage updates as you edit</source>
         <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="87"/>
         <source>Select the Part boxes your furniture is made of first.</source>
         <translation>Wählen Sie zuerst die Part-Quader, aus denen Ihr Möbel besteht.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="96"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="103"/>
         <source>Import Flat-pack Design</source>
         <translation>Flachpaket-Entwurf importieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="97"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="104"/>
         <source>Open a *.flatpack.json design: boxes, master boards, constraints and volumes</source>
         <translation>Einen *.flatpack.json-Entwurf öffnen: Quader, Rohplatten, Bedingungen und Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="116"/>
         <source>Cannot import {}: {}</source>
         <translation>{} kann nicht importiert werden: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="128"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="135"/>
         <source>Export Flat-pack Design</source>
         <translation>Flachpaket-Entwurf exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="129"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="136"/>
         <source>Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)</source>
         <translation>Den gewählten Entwurf als *.flatpack.json schreiben (für `fabguide optimise` und Fehlerberichte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
         <source>Pick an edge of a box for {}.</source>
         <translation>Wählen Sie eine Kante eines Quaders für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="159"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
         <source>Pick edges of boxes for {}.</source>
         <translation>Wählen Sie Kanten von Quadern für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="169"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="176"/>
         <source>Equal Lengths</source>
         <translation>Gleiche Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="170"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="177"/>
         <source>The picked edges of boards keep equal lengths</source>
         <translation>Die gewählten Plattenkanten behalten gleiche Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="174"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="181"/>
         <source>Sum of Lengths</source>
         <translation>Summe der Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="175"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="182"/>
         <source>The lengths of the picked edges add up to the length of the last one picked</source>
         <translation>Die Längen der gewählten Kanten ergeben zusammen die Länge der zuletzt gewählten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="183"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="190"/>
         <source>Fixed Length</source>
         <translation>Feste Länge</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="184"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="191"/>
         <source>Each picked edge keeps its present length</source>
         <translation>Jede gewählte Kante behält ihre jetzige Länge</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="193"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="200"/>
         <source>Length Range</source>
         <translation>Längenbereich</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="194"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="201"/>
         <source>Each picked edge may change by at most 25 % (edit Min and Max of the constraint)</source>
         <translation>Jede gewählte Kante darf sich um höchstens 25 % ändern (Min und Max der Bedingung bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="211"/>
         <source>Equal Position</source>
         <translation>Gleiche Position</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="205"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="212"/>
         <source>The picked faces of boards stay level with each other (same coordinate along their normal)</source>
         <translation>Die gewählten Plattenflächen bleiben auf einer Höhe (gleiche Koordinate entlang ihrer Normalen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="213"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="220"/>
         <source>Pick two or more parallel faces of boards for Equal Position.</source>
         <translation>Wählen Sie zwei oder mehr parallele Plattenflächen für „Gleiche Position“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="229"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="236"/>
         <source>Pick {} for {}.</source>
         <translation>Wählen Sie {} für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="237"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
         <source>Ground Touching</source>
         <translation>Auf dem Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="238"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="245"/>
         <source>The picked boards keep standing on the ground (their lowest face at the lowest board&apos;s level)</source>
         <translation>Die gewählten Platten bleiben auf dem Boden stehen (ihre unterste Fläche auf der Höhe der untersten Platte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="243"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
         <source>Coplanar</source>
         <translation>Koplanar</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="251"/>
         <source>The picked parallel boards stay in one plane</source>
         <translation>Die gewählten parallelen Platten bleiben in einer Ebene</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="249"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
         <source>Snap</source>
         <translation>Anliegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
         <source>Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)</source>
         <translation>Zwei sich berührende Platten bleiben in Kontakt und bündig, wo sie bündig sind (Entwürfe halten standardmäßig alle Kontakte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="263"/>
         <source>Symmetric</source>
         <translation>Symmetrisch</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="264"/>
         <source>Two boards stay mirror images about the plane midway between them (along the axis that separates them)</source>
         <translation>Zwei Platten bleiben spiegelbildlich zur Ebene in ihrer Mitte (entlang der Achse, die sie trennt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="277"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="284"/>
         <source>Inner Volume</source>
         <translation>Inneres Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="278"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
         <source>Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place</source>
         <translation>Raum, der frei bleiben muss, auf der gewählten Platte (ein Fach für Ordner); Größe und Lage bearbeiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="292"/>
         <source>Pick the one board the free space rests on.</source>
         <translation>Wählen Sie die eine Platte, auf der der freie Raum liegt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="296"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="303"/>
         <source>Outer Volume</source>
         <translation>Äußeres Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="297"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="304"/>
         <source>An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place</source>
         <translation>Eine Hülle, in der der gewählte Entwurf bleiben muss (sein jetziger Quader, 10 % größer); Größe und Lage bearbeiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="307"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="314"/>
         <source>Design &apos;{}&apos; has no boxes to put an envelope round.</source>
         <translation>Entwurf '{}' hat keine Quader, um die eine Hülle gelegt werden kann.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="318"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="325"/>
         <source>Suggest</source>
         <translation>Vorschlagen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="319"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="326"/>
         <source>Search for design variations that keep your constraints and waste less material (or, for a design with Parameters, spreadsheet values within their ranges); preview and accept</source>
         <translation>Nach Entwurfsvarianten suchen, die Ihre Bedingungen einhalten und weniger Material verschwenden (oder, bei einem Entwurf mit Parametern, Tabellenwerte in ihren Bereichen); Vorschau und Übernehmen</translation>
     </message>
@@ -1324,249 +1409,249 @@ U/min</translation>
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="87"/>
         <source>Mechanism from Boxes</source>
         <translation>Mechanismus aus Quadern</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="81"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="88"/>
         <source>Make a mechanism; each selected box (Part::Box) becomes one of its parts</source>
         <translation>Einen Mechanismus erstellen; jeder gewählte Quader (Part::Box) wird eines seiner Teile</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="87"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="94"/>
         <source>Every picked box is already in a part: pick boxes that are not.</source>
         <translation>Jeder gewählte Quader gehört schon zu einem Teil: wählen Sie Quader, die zu keinem gehören.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="95"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="102"/>
         <source>Part from Boxes</source>
         <translation>Teil aus Quadern</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="96"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="103"/>
         <source>Make one part of the selected boxes: they move together</source>
         <translation>Ein Teil aus den gewählten Quadern erstellen: sie bewegen sich zusammen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="102"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="109"/>
         <source>Select the boxes (Part::Box) the part is made of.</source>
         <translation>Wählen Sie die Quader (Part::Box), aus denen das Teil besteht.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="112"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="119"/>
         <source>Cavity</source>
         <translation>Hohlraum</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="120"/>
         <source>Select a box of a part, then boxes to cut out of it: openings and compartments</source>
         <translation>Einen Quader eines Teils wählen, dann Quader, die daraus ausgeschnitten werden: Öffnungen und Fächer</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="120"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="127"/>
         <source>Select a box of the part first, then the boxes that are cavities in it.</source>
         <translation>Wählen Sie zuerst einen Quader des Teils, dann die Quader, die Hohlräume darin sind.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="165"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="172"/>
         <source>Pick the one edge of a box the {} turns about.</source>
         <translation>Wählen Sie die eine Kante eines Quaders, um die sich das {} dreht.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="168"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="175"/>
         <source>Pick a face of a box: the part slides along its normal.</source>
         <translation>Wählen Sie eine Fläche eines Quaders: das Teil gleitet entlang ihrer Normalen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="184"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="191"/>
         <source>Add Hinge</source>
         <translation>Scharnier hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="185"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="192"/>
         <source>Pick an edge of a box: its part turns about it (and a box of another part it hangs on, if any)</source>
         <translation>Eine Kante eines Quaders wählen: sein Teil dreht sich um sie (und ggf. einen Quader des Teils, an dem es hängt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="198"/>
         <source>Add Slide</source>
         <translation>Schiene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="192"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="199"/>
         <source>Pick a face of a box: its part slides along the face&apos;s normal</source>
         <translation>Eine Fläche eines Quaders wählen: sein Teil gleitet entlang der Flächennormalen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="197"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="204"/>
         <source>Add Sliding Hinge</source>
         <translation>Schiebescharnier hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="198"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="205"/>
         <source>Pick an edge and a face of a box: its part turns about the edge, which slides along the face&apos;s normal</source>
         <translation>Eine Kante und eine Fläche eines Quaders wählen: sein Teil dreht sich um die Kante, die entlang der Flächennormalen gleitet</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="211"/>
         <source>Add Double Pivot</source>
         <translation>Doppelgelenk hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="205"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="212"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to, in the same plane: a rigid link joins them (the solve places both pivots)</source>
         <translation>Einen Punkt auf einer Fläche des Quaders des bewegten Teils wählen, dann einen auf der Fläche des verbundenen Teils, in derselben Ebene: ein starrer Lenker verbindet sie (die Lösung setzt beide Drehpunkte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="214"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="221"/>
         <source>Pick a point on a face of the moving part&apos;s box, then one on the face of the part it links to.</source>
         <translation>Wählen Sie einen Punkt auf einer Fläche des Quaders des bewegten Teils, dann einen auf der Fläche des verbundenen Teils.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="227"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="234"/>
         <source>Add Fixed Joint</source>
         <translation>Feste Verbindung hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="228"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on: it moves with that part and prints as one body with it</source>
         <translation>Einen Quader des zu haltenden Teils wählen, dann einen Quader des Teils, auf dem es sitzt: es bewegt sich mit diesem Teil und wird als ein Körper mit ihm gedruckt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="235"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="242"/>
         <source>Pick a box of the part to hold, then a box of the part it rides on.</source>
         <translation>Wählen Sie einen Quader des zu haltenden Teils, dann einen Quader des Teils, auf dem es sitzt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="238"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="245"/>
         <source>Both boxes are in one part: pick a box of the part to hold, then one of another part.</source>
         <translation>Beide Quader gehören zu einem Teil: wählen Sie einen Quader des zu haltenden Teils, dann einen eines anderen Teils.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="241"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="248"/>
         <source>&apos;{}&apos; already rides on &apos;{}&apos;: pick the part to hold first, then the part it rides on.</source>
         <translation>'{}' sitzt schon auf '{}': wählen Sie zuerst das zu haltende Teil, dann das Teil, auf dem es sitzt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="296"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="303"/>
         <source>Add Cover</source>
         <translation>Abdecken hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="297"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="305"/>
         <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
         <translation>Diese Teile decken jenes (zuletzt gewählte) ab: Flächen in einer Ebene, dicht an dicht, über seinen Flächen oder Öffnungen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="317"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
         <source>Add Fit Inside</source>
         <translation>Einpassen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="318"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
         <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
         <translation>Diese Teile passen in jenes (zuletzt gewählte; einen seiner Hohlräume wählen, um in ihn einzupassen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="329"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="341"/>
         <source>Add Support</source>
         <translation>Stützen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="330"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
         <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
         <translation>Diese Teile stützen jenes (zuletzt gewählte): es liegt auf ihren Oberseiten; sie stehen auf einem Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="338"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="350"/>
         <source>Add Flush</source>
         <translation>Bündig hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
         <source>Pick two faces of boxes: they lie in one plane</source>
         <translation>Zwei Flächen von Quadern wählen: sie liegen in einer Ebene</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="354"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="367"/>
         <source>Add Geometric</source>
         <translation>Geometrisch hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="355"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
         <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
         <translation>Zwei Kanten von Quadern wählen: ihre Längen bleiben gleich (eine Kante: ihre Länge bleibt wie jetzt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="375"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="389"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="376"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
         <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
         <translation>Den gewählten (oder jeden) Mechanismus lösen: die kleinste Änderung, mit der seine Beziehungen gelten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="383"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="397"/>
         <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
         <translation>Es gibt noch keinen Mechanismus: verwenden Sie zuerst „Mechanismus aus Quadern“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="393"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
         <source>Configurations</source>
         <translation>Konfigurationen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="394"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
         <source>Pose the joints: name configurations and move the mechanism between them</source>
         <translation>Die Gelenke stellen: Konfigurationen benennen und den Mechanismus zwischen ihnen bewegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="421"/>
         <source>Import Works-like Model</source>
         <translation>Funktionsmodell importieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
         <source>Build a mechanism from a *.workslike.json file</source>
         <translation>Einen Mechanismus aus einer *.workslike.json-Datei erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="432"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="446"/>
         <source>Export Works-like Model</source>
         <translation>Funktionsmodell exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="433"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
         <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
         <translation>Den gewählten Mechanismus als *.workslike.json-Datei schreiben (die Kommandozeile liest sie mit fabguide solve)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="454"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="468"/>
         <source>Make Printable</source>
         <translation>Druckbar machen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
         <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
         <translation>In einem Stück druckbare Körper des gewählten (oder einzigen) Mechanismus: Spalte, Hohlräume, Scharnierstifte und Gabeln, Gelenklenker; entlang jeder Bewegung geprüft</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="473"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="487"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation>{}: kleinstes Spiel {:.3f} mm ({})
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="492"/>
         <source>Export Printable</source>
         <translation>Druckbares exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="479"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation>Das gewählte Druckbare als STL, 3MF und STEP schreiben: die Baugruppe und eine Datei je Körper</translation>
     </message>
@@ -1581,114 +1666,114 @@ U/min</translation>
         <translation>&lt;b&gt;Das Layout konnte nicht erstellt werden:&lt;/b&gt; {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="21"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="27"/>
         <source>New Master Board</source>
         <translation>Neue Rohplatte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="22"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="28"/>
         <source>Add a master board (sheet size, thickness, stock, material) to cut boards from</source>
         <translation>Eine Rohplatte hinzufügen (Format, Dicke, Vorrat, Material), aus der Platten zugeschnitten werden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="35"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="41"/>
         <source>Make Board</source>
         <translation>Platte erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="36"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="42"/>
         <source>Make a board from each selected sketch or planar face, as thick as the master boards</source>
         <translation>Aus jeder gewählten Skizze oder ebenen Fläche eine Platte so dick wie die Rohplatten erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="44"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="50"/>
         <source>Select sketches or planar faces first.</source>
         <translation>Wählen Sie zuerst Skizzen oder ebene Flächen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="55"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="61"/>
         <source>Boards from Solids</source>
         <translation>Platten aus Körpern</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="62"/>
         <source>Turn each selected thin solid into a board, detecting its thickness and outline</source>
         <translation>Jeden gewählten dünnen Körper in eine Platte umwandeln, Dicke und Umriss werden erkannt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="64"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="70"/>
         <source>Select the solids of your furniture model (flat boxes, pads, extrusions) first.</source>
         <translation>Wählen Sie zuerst die Körper Ihres Möbelmodells (flache Quader, Aufpolsterungen, Extrusionen).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="75"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="96"/>
         <source>Band Edges</source>
         <translation>Kanten bekanten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="76"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="82"/>
         <source>Glue edge banding on the picked edge faces of boards (asks for the band&apos;s name; empty removes it)</source>
         <translation>Kantenband auf die gewählten Schmalflächen von Platten kleben (fragt nach dem Namen des Bands; leer entfernt es)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="88"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="94"/>
         <source>Pick the edge faces of boards (their narrow sides, not the large faces) first.</source>
         <translation>Wählen Sie zuerst Schmalflächen von Platten (ihre schmalen Seiten, nicht die großen Flächen).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="100"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="107"/>
         <source>FabGuide: {} on {}
 </source>
         <translation>FabGuide: {} auf {}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="115"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="122"/>
         <source>Nothing made: {}.</source>
         <translation>Nichts erstellt: {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="128"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="26"/>
         <source>Layout</source>
         <translation>Zuschnitt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="129"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="137"/>
         <source>Lay the selected (or all) boards out on the master boards and show the material usage</source>
         <translation>Die gewählten (oder alle) Platten auf den Rohplatten anordnen und die Materialausnutzung zeigen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="136"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="144"/>
         <source>There are no boards yet: use Boards from Solids or Make Board first.</source>
         <translation>Es gibt noch keine Platten: verwenden Sie zuerst „Platten aus Körpern“ oder „Platte erstellen“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="149"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="157"/>
         <source>Export Cut Sheets</source>
         <translation>Zuschnittpläne exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="158"/>
         <source>Write SVG and DXF cut sheets per master board, a CSV cut list, the shop&apos;s PDF report and part labels for the selected layout</source>
         <translation>SVG- und DXF-Zuschnittpläne je Rohplatte, eine CSV-Stückliste, den PDF-Werkstattbericht und Teileetiketten für den gewählten Zuschnitt schreiben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="172"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="181"/>
         <source>TechDraw Pages</source>
         <translation>TechDraw-Seiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="173"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
         <source>Make TechDraw pages of the selected layout&apos;s shop report: a page per master board (parts numbered and sized, grain, edge banding, saw cuts), then the cut list and the totals</source>
         <translation>TechDraw-Seiten des Werkstattberichts des gewählten Zuschnitts erstellen: eine Seite je Rohplatte (Teile nummeriert und bemaßt, Faser, Kantenband, Sägeschnitte), dann die Stückliste und die Summen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="194"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="203"/>
         <source>Make CAM Job</source>
         <translation>CAM-Job erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="195"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
         <source>Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, engraved labels) with your tool and post-processor, and write its G-code</source>
         <translation>Je Rohplatte des gewählten Zuschnitts einen FreeCAD-CAM-Job erstellen (Konturen, Haltestege, Dogbones, Bohrungen, gravierte Etiketten) mit Ihrem Werkzeug und Postprozessor, und seinen G-Code schreiben</translation>
     </message>
@@ -1713,7 +1798,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="334"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="336"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1880,42 +1965,42 @@ U/min</translation>
         <translation>Layout '{}': seine Teile liegen {:g} mm auseinander (Kerf {:g} + Spacing {:g} mm), zu eng für das {:g}-mm-Werkzeug: setzen Sie seinen Kerf auf den Werkzeugdurchmesser</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="379"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="380"/>
         <source>Job &apos;{}&apos;: post-processor &apos;{}&apos; not found</source>
         <translation>Job '{}': Postprozessor '{}' nicht gefunden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/cam.py" line="391"/>
+        <location filename="../../freecad/fabguide/material/cam.py" line="392"/>
         <source>Job &apos;{}&apos;: the post-processor &apos;{}&apos; wrote nothing</source>
         <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="121"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="151"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="153"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="246"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="248"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="269"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="271"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="288"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="342"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -1994,7 +2079,7 @@ U/min</translation>
         <translation>Die leere A4-Vorlage von TechDraw ist mit diesem FreeCAD nicht installiert</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/properties.py" line="121"/>
+        <location filename="../../freecad/fabguide/properties.py" line="124"/>
         <source>{}; kept {}
 </source>
         <translation>{}; behalten: {}
@@ -2013,17 +2098,17 @@ U/min</translation>
         <translation>siehe Ausgabefenster</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="144"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
         <source>&apos;{0}&apos; rides on &apos;{1}&apos; by the fixed joint &apos;{2}&apos;, and a part is moved by one joint: add this joint to &apos;{1}&apos; (they move together), or delete the fixed joint and hold &apos;{1}&apos; on &apos;{0}&apos; instead.</source>
         <translation>'{0}' sitzt über die feste Verbindung '{2}' auf '{1}', und ein Teil wird von einem Gelenk bewegt: fügen Sie dieses Gelenk '{1}' hinzu (sie bewegen sich zusammen), oder löschen Sie die feste Verbindung und halten Sie stattdessen '{1}' auf '{0}'.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="149"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="156"/>
         <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint): pick the part to hold first, then the part it rides on.</source>
         <translation>'{}' wird schon vom Gelenk '{}' bewegt (ein Teil wird von einem Gelenk bewegt): wählen Sie zuerst das zu haltende Teil, dann das Teil, auf dem es sitzt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="151"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="158"/>
         <source>&apos;{}&apos; is already moved by joint &apos;{}&apos; (a part is moved by one joint).</source>
         <translation>'{}' wird schon vom Gelenk '{}' bewegt (ein Teil wird von einem Gelenk bewegt).</translation>
     </message>
@@ -2036,6 +2121,483 @@ U/min</translation>
         <location filename="../../freecad/fabguide/gui/layout_panel.py" line="97"/>
         <source> ({:.1f} m shared, cut once)</source>
         <translation> ({:.1f} m gemeinsam, einmal geschnitten)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/core.py" line="12"/>
+        <source>FabGuide&apos;s compiled core is not built for this FreeCAD (Python {}.{}){}: choose FabGuide &gt; Build the Core, or install the fabguide Debian package (README.md, Install).</source>
+        <translation>FabGuides kompilierter Kern ist für dieses FreeCAD (Python {}.{}) nicht gebaut{}: wählen Sie FabGuide &gt; Kern bauen, oder installieren Sie das Debian-Paket fabguide (README.md, Install).</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/core.py" line="14"/>
+        <source> (the one there does not load: {})</source>
+        <translation> (der vorhandene lädt nicht: {})</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="13"/>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/configuration.py" line="14"/>
+        <source>joints</source>
+        <translation>Gelenke</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="14"/>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="15"/>
+        <source>a FabGuide part</source>
+        <translation>ein FabGuide-Teil</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/joints.py" line="15"/>
+        <source>a FabGuide part (empty: the ground)</source>
+        <translation>ein FabGuide-Teil (leer: der Boden)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="24"/>
+        <source>Mechanism</source>
+        <translation>Mechanismus</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="25"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="25"/>
+        <source>a configuration</source>
+        <translation>eine Konfiguration</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
+        <source>Mend the model as the note below says.</source>
+        <translation>Beheben Sie das Modell, wie der Hinweis unten sagt.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <source>Change or delete one of the relationships.</source>
+        <translation>Ändern oder löschen Sie eine der Beziehungen.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <source>Or unlock a box (the mechanism&apos;s Locks).</source>
+        <translation>Oder geben Sie einen Quader frei (Locks des Mechanismus).</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <source>Or move the parts that meet apart.</source>
+        <translation>Oder rücken Sie die Teile, die aufeinandertreffen, auseinander.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="8"/>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/parts.py" line="9"/>
+        <source>Part::Box objects</source>
+        <translation>Part::Box-Objekte</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="21"/>
+        <source>Printable</source>
+        <translation>Druckteil</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/about.py" line="27"/>
+        <source>About FabGuide</source>
+        <translation>Über FabGuide</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/about.py" line="21"/>
+        <source>Show the FabGuide version and the libraries it was built with</source>
+        <translation>Die FabGuide-Version und die Bibliotheken zeigen, mit denen es gebaut wurde</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="38"/>
+        <source>this FabGuide has no sources to build from ({}): install it again</source>
+        <translation>dieses FabGuide hat keine Quellen zum Bauen ({}): installieren Sie es erneut</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="40"/>
+        <source>cmake is not installed: in a terminal, run  sudo {}/tools/install-deps core</source>
+        <translation>cmake ist nicht installiert: führen Sie in einem Terminal  sudo {}/tools/install-deps core  aus</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="45"/>
+        <source>the build needs Debian packages that are not installed ({}): in a terminal, run  sudo {}/tools/install-deps core</source>
+        <translation>der Bau braucht Debian-Pakete, die nicht installiert sind ({}): führen Sie in einem Terminal  sudo {}/tools/install-deps core  aus</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="54"/>
+        <source>the build made no fabguide_core in {}</source>
+        <translation>der Bau hat kein fabguide_core in {} erzeugt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="69"/>
+        <source>Building the core for this FreeCAD (Python {}.{}) in {}</source>
+        <translation>Der Kern wird für dieses FreeCAD (Python {}.{}) in {} gebaut</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="108"/>
+        <source>The build stopped (exit status {}): the output above names the problem.</source>
+        <translation>Der Bau brach ab (Exit-Status {}): die Ausgabe oben nennt das Problem.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="115"/>
+        <source>The core could not be put into the workbench: {}</source>
+        <translation>Der Kern konnte nicht in den Arbeitsbereich gelegt werden: {}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/build_core.py" line="118"/>
+        <source>Built {}. Restart FreeCAD to use FabGuide.</source>
+        <translation>{} gebaut. Starten Sie FreeCAD neu, um FabGuide zu benutzen.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="29"/>
+        <source>{}: cancelled; it keeps its last result (recompute to try again)</source>
+        <translation>{}: abgebrochen; das letzte Ergebnis bleibt (neu berechnen, um es erneut zu versuchen)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="38"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="52"/>
+        <source>{}
+stopping: keeping the best found so far</source>
+        <translation>{}
+hält an: das bisher Beste bleibt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/busy.py" line="61"/>
+        <source>{}
+{:.0f} s of at most {:.0f} s</source>
+        <translation>{}
+{:.0f} s von höchstens {:.0f} s</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="69"/>
+        <source>Tool bit</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="69"/>
+        <source>FreeCAD tool bits (*.fctb)</source>
+        <translation>FreeCAD-Werkzeuge (*.fctb)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/cam_panel.py" line="78"/>
+        <source>Folder for the G-code</source>
+        <translation>Ordner für den G-Code</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <source>{} (current)</source>
+        <translation>{} (aktuell)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <source>New configuration</source>
+        <translation>Neue Konfiguration</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="80"/>
+        <source>Configuration {}</source>
+        <translation>Konfiguration {}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Cannot show it: {}</source>
+        <translation>Kann sie nicht zeigen: {}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Moves: {}</source>
+        <translation>Bewegt: {}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <source>Moves: nothing yet: tick the joints this configuration poses</source>
+        <translation>Bewegt: noch nichts: haken Sie die Gelenke an, die diese Konfiguration stellt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="131"/>
+        <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
+        <translation>Der Winkel von {}: &quot;{}&quot; ist kein Winkel von {:g} bis {:g}; geben Sie ihn erneut ein.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="133"/>
+        <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
+        <translation>Die Verschiebung von {}: &quot;{}&quot; ist keine Länge von {:g} bis {:g}; geben Sie sie erneut ein.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="141"/>
+        <source>Select the flat-pack design to export.</source>
+        <translation>Wählen Sie den Flachpack-Entwurf, der exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="73"/>
+        <source>There is no flat-pack design in this document yet.</source>
+        <translation>In diesem Dokument gibt es noch keinen Flachpack-Entwurf.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="332"/>
+        <source>Select the flat-pack design.</source>
+        <translation>Wählen Sie den Flachpack-Entwurf.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <source>closed</source>
+        <translation>wurde geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <source>changed by undo or redo</source>
+        <translation>wurde durch Rückgängig oder Wiederholen geändert</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="131"/>
+        <source>Already in a part: {}</source>
+        <translation>Schon in einem Teil: {}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="304"/>
+        <source>Pick boxes of at least two parts; the last one picked is the covered part.</source>
+        <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das abgedeckte Teil.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="325"/>
+        <source>Pick boxes of at least two parts; the last one picked is the enclosing part.</source>
+        <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das umschließende Teil.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <source>Pick boxes of at least two parts; the last one picked is the supported part.</source>
+        <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das getragene Teil.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="357"/>
+        <source>Pick exactly two faces of boxes.</source>
+        <translation>Wählen Sie genau zwei Flächen von Quadern.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="359"/>
+        <source>Pick faces of two different boxes: two faces of one box never lie in one plane.</source>
+        <translation>Wählen Sie Flächen zweier verschiedener Quader: zwei Flächen eines Quaders liegen nie in einer Ebene.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="374"/>
+        <source>Pick one or two edges of boxes, and nothing else (a face or a whole box says no length).</source>
+        <translation>Wählen Sie eine oder zwei Kanten von Quadern und nichts anderes (eine Fläche oder ein ganzer Quader gibt keine Länge an).</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="415"/>
+        <source>Select the mechanism to pose.</source>
+        <translation>Wählen Sie den Mechanismus, der gestellt werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="82"/>
+        <source>There is no mechanism in this document yet.</source>
+        <translation>In diesem Dokument gibt es noch keinen Mechanismus.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <source>Select the mechanism to export.</source>
+        <translation>Wählen Sie den Mechanismus, der exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="464"/>
+        <source>FabGuide wrote {}
+</source>
+        <translation>FabGuide hat {} geschrieben
+</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="477"/>
+        <source>Select the mechanism to print.</source>
+        <translation>Wählen Sie den Mechanismus, der gedruckt werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <source>Select the printable to export.</source>
+        <translation>Wählen Sie das Druckteil, das exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <source>There is no printable in this document yet.</source>
+        <translation>In diesem Dokument gibt es noch kein Druckteil.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="507"/>
+        <source>Folder for the print files</source>
+        <translation>Ordner für die Druckdateien</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="177"/>
+        <source>FabGuide wrote:
+  {}
+</source>
+        <translation>FabGuide hat geschrieben:
+  {}
+</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/layout_panel.py" line="72"/>
+        <source>{}: &quot;{}&quot; is not a length from {:g} to {:g} mm; it stays {:g} mm.</source>
+        <translation>{}: &quot;{}&quot; ist keine Länge von {:g} bis {:g} mm; es bleibt bei {:g} mm.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="96"/>
+        <source>Band on the {} picked edge(s) (empty: none):</source>
+        <translation>Umleimer auf der/den {} gewählten Kante(n) (leer: keiner):</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="131"/>
+        <source>FabGuide: see the messages above for {}
+</source>
+        <translation>FabGuide: siehe die Meldungen oben zu {}
+</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="165"/>
+        <source>Select the layout to export.</source>
+        <translation>Wählen Sie das Layout, das exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="23"/>
+        <source>There is no layout in this document yet.</source>
+        <translation>In diesem Dokument gibt es noch kein Layout.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="169"/>
+        <source>Folder for the cut sheets</source>
+        <translation>Ordner für die Zuschnittpläne</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="191"/>
+        <source>Select the layout to draw.</source>
+        <translation>Wählen Sie das Layout, das gezeichnet werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/relationship_panel.py" line="48"/>
+        <source>&lt;br&gt;The solve changed:{}</source>
+        <translation>&lt;br&gt;Das Lösen hat geändert:{}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="247"/>
+        <source> (stopped)</source>
+        <translation> (angehalten)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="250"/>
+        <source>; with every board as small as they allow it still needs {} sheet(s)</source>
+        <translation>; selbst mit jeder Platte so klein, wie sie es erlauben, braucht er {} Platte(n)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/board.py" line="22"/>
+        <source>Board</source>
+        <translation>Platte</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="28"/>
+        <source>Design</source>
+        <translation>Entwurf</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
+        <source>master boards</source>
+        <translation>Rohplatten</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="91"/>
+        <source>Constraint</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source> (parts squared)</source>
+        <translation> (Teilezahl zum Quadrat)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source>0 or a divisor of 90 (e.g. 15, 30, 45)</source>
+        <translation>0 oder ein Teiler von 90 (z. B. 15, 30, 45)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source> (0: unlimited)</source>
+        <translation> (0: unbegrenzt)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="27"/>
+        <source>0 or more</source>
+        <translation>0 oder mehr</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <source>Layout &apos;{}&apos; is in error.</source>
+        <translation>Layout '{}' ist fehlerhaft.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="10"/>
+        <source>Master board</source>
+        <translation>Rohplatte</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="11"/>
+        <source> (as many as needed)</source>
+        <translation> (so viele wie nötig)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="11"/>
+        <source> (an offcut you have)</source>
+        <translation> (ein vorhandener Rest)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/master_board.py" line="90"/>
+        <source>master board &apos;{}&apos; is shared with {}</source>
+        <translation>Rohplatte '{}' wird mit {} geteilt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="67"/>
+        <source>greater than {:g}</source>
+        <translation>größer als {:g}</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="72"/>
+        <source>{:g}{} or more</source>
+        <translation>{:g}{} oder mehr</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="100"/>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="135"/>
+        <source>{} &apos;{}&apos;: {} must be a finite number</source>
+        <translation>{} '{}': {} muss eine endliche Zahl sein</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/properties.py" line="140"/>
+        <source>{} &apos;{}&apos;: {} must be {}</source>
+        <translation>{} '{}': {} muss {} sein</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/references.py" line="58"/>
+        <source>{}: &apos;{}&apos; names no box (write &apos;Box label.{}&apos;)</source>
+        <translation>{}: '{}' nennt keinen Quader (schreiben Sie 'Quaderbezeichnung.{}')</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
+        <source>Select the layout to machine.</source>
+        <translation>Wählen Sie das Layout, das gefräst werden soll.</translation>
     </message>
 </context>
 <context>

@@ -35,7 +35,8 @@ def stamp(obj):
     """The FabGuide version that wrote the object, made or opened (and migrated) by this one: hidden, and an
     output, so stamping an opened document changes nothing a recompute depends on."""
     if "FabGuideVersion" not in obj.PropertiesList:
-        obj.addProperty("App::PropertyString", "FabGuideVersion", "Base", "The FabGuide version that wrote this",
+        obj.addProperty("App::PropertyString", "FabGuideVersion", "Base",
+                        QT_TRANSLATE_NOOP("App::Property", "The FabGuide version that wrote this"),
                         HIDDEN | OUTPUT)
     obj.FabGuideVersion = fabguide.__version__
 
@@ -63,11 +64,13 @@ def number(v):
 
 
 def more_than(limit):
-    return lambda obj, v: number(v) > limit, "greater than {:g}".format(limit)
+    return lambda obj, v: number(v) > limit, lambda: translate("FabGuide", "greater than {:g}").format(limit)
 
 
 def at_least(limit, meaning=""):
-    return lambda obj, v: number(v) >= limit, "{:g}{} or more".format(limit, meaning)
+    """`meaning`: marked with QT_TRANSLATE_NOOP("FabGuide", ...) by the caller."""
+    return lambda obj, v: number(v) >= limit, lambda: translate("FabGuide", "{:g}{} or more").format(
+        limit, translate("FabGuide", meaning) if meaning else "")
 
 
 def shown(value):
@@ -81,7 +84,7 @@ def shown(value):
 
 def links(test, what):
     """A link or link list to objects that pass `test`, never to the object itself (a part among its own boxes
-    is a cycle, which crashed FreeCAD)."""
+    is a cycle, which crashed FreeCAD); `what` marked with QT_TRANSLATE_NOOP("FabGuide", ...) by the caller."""
     def valid(obj, value):
         return all(o is None or (o != obj and test(o)) for o in (value if isinstance(value, list) else [value]))
     return valid, what
@@ -94,7 +97,7 @@ class Proxy(Stateless):
     what it must be)}: a value that fails is refused as it is typed (the old one stays, the report view says
     why), and a document that holds one anyway does not recompute."""
 
-    VALID, NOUN = {}, "Object"
+    VALID, NOUN = {}, QT_TRANSLATE_NOOP("FabGuide", "Object")
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -129,11 +132,13 @@ class Proxy(Stateless):
         value = getattr(obj, prop)
         numbers = value if isinstance(value, list) else [value]
         if typed_in(obj, prop) and not all(abs(number(v)) < 1e100 for v in numbers):  # a length keeps inf as 1e308
-            return "{} '{}': {} must be a finite number".format(self.NOUN, obj.Label, prop)
+            return translate("FabGuide", "{} '{}': {} must be a finite number").format(
+                translate("FabGuide", self.NOUN), obj.Label, prop)
         test, must = self.VALID.get(prop, (None, ""))
         if test is None or test(obj, value):
             return ""
-        return "{} '{}': {} must be {}".format(self.NOUN, obj.Label, prop, must)
+        return translate("FabGuide", "{} '{}': {} must be {}").format(
+            translate("FabGuide", self.NOUN), obj.Label, prop, must() if callable(must) else translate("FabGuide", must))
 
     def execute(self, obj):
         """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError; or the core's

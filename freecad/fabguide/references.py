@@ -55,7 +55,7 @@ def link(by_label, text, field):
         label += "." + more
         box = by_label.get(label)
     if box is None or not what:
-        raise BrokenReference("{}: '{}' names no box (write 'Box label.{}')".format(
+        raise BrokenReference(translate("FabGuide", "{}: '{}' names no box (write 'Box label.{}')").format(
             field, text, what or "side"))
     return box, "{}{}{}{}".format(factor.strip(), star, sign, what)
 

@@ -155,7 +155,7 @@ def no_board_is_made_from_a_layout():
     del boxes.told[:]
     Gui.runCommand("FabGuide_MakeBoard")
     guitest.settle(0.3)
-    assert boxes.told == ["Nothing made: 'Layout': is FabGuide's layout, not a part of your model (pick a sketch, a "
+    assert boxes.told == ["Nothing made: 'Layout': is FabGuide's Layout, not a part of your model (pick a sketch, a "
                           "planar face or a thin solid)."], boxes.told
     assert [o.Name for o in doc.Objects] == objects and doc.UndoCount == undo_steps
     Gui.Selection.clearSelection()

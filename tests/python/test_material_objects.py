@@ -113,7 +113,7 @@ def test_fabguides_own_objects_make_no_board(doc):
     """A master board (a layout, a board) is FabGuide's, not a part of the model: no board is made of it whole."""
     master = master_board.create(doc, thickness=18)
     doc.recompute()
-    with pytest.raises(board.BoardError, match="^'MasterBoard': is FabGuide's master board, not a part of your model"):
+    with pytest.raises(board.BoardError, match="^'MasterBoard': is FabGuide's Master board, not a part of your model"):
         board.slab_of(master, None, 18, "'{}'".format(master.Label))
 
 

@@ -23,9 +23,16 @@ def sources():
 
 
 def plain(node):
-    """The string literal (or literal.format(...)) with words in it, markup aside, that `node` is, or None."""
+    """The string literal with words in it, markup aside, that `node` is or is built from (literal.format(...),
+    a + b, a % b, a if c else b, an f-string), or None: a translate(...) call is not looked into."""
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "format":
-        node = node.func.value
+        return plain(node.func.value)
+    if isinstance(node, ast.BinOp):
+        return plain(node.left) or plain(node.right)
+    if isinstance(node, ast.IfExp):
+        return plain(node.body) or plain(node.orelse)
+    if isinstance(node, ast.JoinedStr):
+        return next((plain(v) for v in node.values if plain(v)), None)
     if isinstance(node, ast.Constant) and isinstance(node.value, str) and re.search(
             "[A-Za-z]{2}", re.sub("<[^>]*>", "", node.value)):
         return node.value

@@ -10,8 +10,8 @@ POSES = "Poses"  # the property group of each joint's angle and offset
 
 
 class Configuration(properties.Proxy):
-    TYPE, NOUN = "FabGuide::Configuration", "Configuration"
-    VALID = dict(Joints=properties.links(joints.is_joint, "joints"))
+    TYPE, NOUN = "FabGuide::Configuration", QT_TRANSLATE_NOOP("FabGuide", "Configuration")
+    VALID = dict(Joints=properties.links(joints.is_joint, QT_TRANSLATE_NOOP("FabGuide", "joints")))
 
     def define(self, obj):
         add = properties.add
@@ -46,10 +46,11 @@ def pose_properties(joint):
     (mm) for what slides; properties of their own, so they take units and expressions (a spreadsheet's cell)."""
     posed = {}
     if joints.kind(joint) in ("hinge", "sliding_hinge", "double_pivot"):
-        posed[joint.Name + "Angle"] = ("App::PropertyAngle", "How far '{}' turns its part (right-handed about "
-                                       "the edge's +x/+y/+z direction)".format(joint.Label))
+        posed[joint.Name + "Angle"] = ("App::PropertyAngle", QT_TRANSLATE_NOOP(
+            "App::Property", "How far the joint turns its part (right-handed about its edge's +x/+y/+z direction)"))
     if joints.slides(joint):
-        posed[joint.Name + "Offset"] = ("App::PropertyDistance", "How far '{}' slides its part".format(joint.Label))
+        posed[joint.Name + "Offset"] = ("App::PropertyDistance",
+                                        QT_TRANSLATE_NOOP("App::Property", "How far the joint slides its part"))
     return posed
 
 

@@ -21,9 +21,9 @@ class MechanismError(ValueError):
 
 
 class Mechanism(properties.Proxy):
-    TYPE, NOUN = "FabGuide::Mechanism", "Mechanism"
-    VALID = dict(MinimumSize=properties.at_least(0.01, " mm"),
-                 ShownConfiguration=properties.links(configuration.is_configuration, "a configuration"))
+    TYPE, NOUN = "FabGuide::Mechanism", QT_TRANSLATE_NOOP("FabGuide", "Mechanism")
+    VALID = dict(MinimumSize=properties.at_least(0.01, QT_TRANSLATE_NOOP("FabGuide", " mm")),
+                 ShownConfiguration=properties.links(configuration.is_configuration, QT_TRANSLATE_NOOP("FabGuide", "a configuration")))
 
     def define(self, obj):
         add = properties.add
@@ -31,7 +31,8 @@ class Mechanism(properties.Proxy):
             QT_TRANSLATE_NOOP("App::Property", "Smallest size of a box along any axis"), 1)
         add(obj, "App::PropertyLength", "MinimumWall", "Mechanism",
             QT_TRANSLATE_NOOP("App::Property", "Least wall around a cavity on its sides that are not openings"), 1)
-        references.define(obj, "Locks", "Mechanism", "Coordinates that keep their value: a box and its side")
+        references.define(obj, "Locks", "Mechanism",
+                          QT_TRANSLATE_NOOP("App::Property", "Coordinates that keep their value: a box and its side"))
         add(obj, "App::PropertyBool", "KeepEdits", "Mechanism",
             QT_TRANSLATE_NOOP("App::Property", "Box coordinates you changed since the last solve keep their new value "
                                                "while the rest adapts"), True)
@@ -197,13 +198,13 @@ def solve(obj):
 def what_to_do(conflict):
     """A hint after a conflict: what the user can change."""
     if any(n.startswith(("drawn inside", "one piece")) for n in conflict):
-        return "Mend the model as the note below says."
-    hint = "Change or delete one of the relationships"
+        return translate("FabGuide", "Mend the model as the note below says.")
+    hints = [translate("FabGuide", "Change or delete one of the relationships.")]
     if any(n.startswith("lock: ") for n in conflict):
-        hint += ", or unlock a box (the mechanism's Locks)"
+        hints.append(translate("FabGuide", "Or unlock a box (the mechanism's Locks)."))
     if any(n.startswith("no overlap") for n in conflict):
-        hint += ", or move the parts that meet apart"
-    return hint + "."
+        hints.append(translate("FabGuide", "Or move the parts that meet apart."))
+    return " ".join(hints)
 
 
 def say_changes(obj, changes):

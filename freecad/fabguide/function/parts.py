@@ -5,9 +5,9 @@ from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 
 class FunctionalPart(properties.Proxy):
-    TYPE, NOUN = "FabGuide::Part", "Part"
-    VALID = dict(Cuboids=properties.links(cuboids.is_box, "Part::Box objects"),
-                 Cavities=properties.links(cuboids.is_box, "Part::Box objects"))
+    TYPE, NOUN = "FabGuide::Part", QT_TRANSLATE_NOOP("FabGuide", "Part")
+    VALID = dict(Cuboids=properties.links(cuboids.is_box, QT_TRANSLATE_NOOP("FabGuide", "Part::Box objects")),
+                 Cavities=properties.links(cuboids.is_box, QT_TRANSLATE_NOOP("FabGuide", "Part::Box objects")))
 
     def define(self, obj):
         properties.add(obj, "App::PropertyLinkList", "Cuboids", "Part",

@@ -18,7 +18,7 @@ class PrintableError(ValueError):
 
 class Printable(properties.Proxy):
     TYPE = "FabGuide::Printable"
-    NOUN, VALID = "Printable", dict(Scale=properties.more_than(0),
+    NOUN, VALID = QT_TRANSLATE_NOOP("FabGuide", "Printable"), dict(Scale=properties.more_than(0),
                                     Mechanism=properties.links(mechanism.is_mechanism, "a Mechanism"))
 
     def define(self, obj):
@@ -155,7 +155,8 @@ def sync(obj):
     added = []
     for name in [n for n in names + [CAVITIES] if n not in have]:
         child = obj.Document.addObject("Part::Feature", "Body")
-        child.addProperty("App::PropertyString", "BodyName", "Printable", "The body this shape is")
+        child.addProperty("App::PropertyString", "BodyName", "Printable",
+                          QT_TRANSLATE_NOOP("App::Property", "The body this shape is"))
         child.BodyName = name
         child.setEditorMode("BodyName", 1)
         child.Label = name + " printed"

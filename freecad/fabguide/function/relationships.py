@@ -28,8 +28,11 @@ class Cover(Relationship):
             QT_TRANSLATE_NOOP("App::Property", "Parts whose faces are covered"))
         add(obj, "App::PropertyBool", "Just", "Cover",
             QT_TRANSLATE_NOOP("App::Property", "Just cover: the covering faces no larger than the covered"))
-        define_pairs(obj, add, "Cover", "'covering -> covered' (thesis 4.3.1)",
-                     "How far apart faces may be to correspond", 5)
+        define_pairs(obj, add, "Cover",
+                     QT_TRANSLATE_NOOP("App::Property", "Corresponding faces, two by two: 'covering -> covered' "
+                                                        "(thesis 4.3.1); empty: inferred on the next solve"),
+                     QT_TRANSLATE_NOOP("App::Property", "How far apart faces may be to correspond when inferring "
+                                                        "the pairs"), 5)
 
     def fields(self, obj):
         return dict({"covering": labels(obj.Covering), "covered": labels(obj.Covered), "just": obj.Just},
@@ -78,8 +81,12 @@ class Support(Relationship):
             QT_TRANSLATE_NOOP("App::Property", "Parts that support (legs, frames)"))
         add(obj, "App::PropertyLinkList", "Supported", "Support",
             QT_TRANSLATE_NOOP("App::Property", "Parts resting on them"))
-        define_pairs(obj, add, "Support", "'supporting top -> supported bottom' (thesis 4.3.3)",
-                     "How far above a top face a bottom face may be", 100)
+        define_pairs(obj, add, "Support",
+                     QT_TRANSLATE_NOOP("App::Property", "Corresponding faces, two by two: 'supporting top -> "
+                                                        "supported bottom' (thesis 4.3.3); empty: inferred on the "
+                                                        "next solve"),
+                     QT_TRANSLATE_NOOP("App::Property", "How far above a top face a bottom face may be when "
+                                                        "inferring the pairs"), 100)
 
     def fields(self, obj):
         return dict({"supporting": labels(obj.Supporting), "supported": labels(obj.Supported)},
@@ -106,12 +113,15 @@ class Geometric(Relationship):
 
     def define_fields(self, obj, add):
         references.define(obj, "Left", "Geometric",
-                          "Quantities summed: a box and its side or size (width/depth/height), with a factor "
-                          "in front if not 1 (the formats write 'Door.width', '2*Shelf.height', '-Lid.left')")
+                          QT_TRANSLATE_NOOP("App::Property", "Quantities summed: a box and its side or size "
+                                                             "(width/depth/height), with a factor in front if not 1 "
+                                                             "(the formats write 'Door.width', '2*Shelf.height', "
+                                                             "'-Lid.left')"))
         add(obj, "App::PropertyEnumeration", "Relation", "Geometric",
             QT_TRANSLATE_NOOP("App::Property", "Left = or <= right + offset"),
             ["Equal", "AtMost"])
-        references.define(obj, "Right", "Geometric", "Quantities summed (may be empty)")
+        references.define(obj, "Right", "Geometric",
+                          QT_TRANSLATE_NOOP("App::Property", "Quantities summed (may be empty)"))
         add(obj, "App::PropertyDistance", "Offset", "Geometric",
             QT_TRANSLATE_NOOP("App::Property", "Added to the right side"))
 
@@ -140,10 +150,10 @@ def terms(obj, texts):
 
 
 def define_pairs(obj, add, group, pairs, distance, default):
-    """The corresponding-faces graph a cover or support infers, which the user may correct."""
-    references.define(obj, "Pairs", group, "Corresponding faces, two by two: " + pairs +
-                      "; empty: inferred on the next solve", lambda text: text.split(ARROW.strip()))
-    add(obj, "App::PropertyLength", "Distance", group, distance + " when inferring the pairs", default)
+    """The corresponding-faces graph a cover or support infers, which the user may correct; `pairs` and `distance`
+    are the tooltips of Pairs and Distance."""
+    references.define(obj, "Pairs", group, pairs, lambda text: text.split(ARROW.strip()))
+    add(obj, "App::PropertyLength", "Distance", group, distance, default)
 
 
 def labels(objs):

@@ -3,6 +3,7 @@ import FreeCAD
 from freecad.fabguide.core import fabguide_core
 
 from freecad.fabguide.gui import resources
+from freecad.fabguide.i18n import translate
 
 
 def report():
@@ -16,14 +17,14 @@ class AboutCommand:
     def GetResources(self):
         return {
             "Pixmap": resources.icon("FabGuide.svg"),
-            "MenuText": "About FabGuide",
-            "ToolTip": "Show the FabGuide version and the libraries it was built with",
+            "MenuText": translate("FabGuide", "About FabGuide"),
+            "ToolTip": translate("FabGuide", "Show the FabGuide version and the libraries it was built with"),
         }
 
     def Activated(self):
         from PySide import QtGui
 
-        QtGui.QMessageBox.about(None, "About FabGuide", report())
+        QtGui.QMessageBox.about(None, translate("FabGuide", "About FabGuide"), report())
 
     def IsActive(self):
         return True

@@ -35,14 +35,15 @@ def steps(build):
 def obstacle():
     """Why the core cannot be built here, in one sentence, or None."""
     if not os.path.isfile(os.path.join(SOURCE, "CMakeLists.txt")):
-        return "this FabGuide has no sources to build from ({}): install it again".format(SOURCE)
+        return translate("FabGuide", "this FabGuide has no sources to build from ({}): install it again").format(SOURCE)
     if shutil.which("cmake") is None or not os.access(os.path.join(SOURCE, "tools", "install-deps"), os.X_OK):
-        return "cmake is not installed: in a terminal, run  sudo {}/tools/install-deps core".format(SOURCE)
+        return translate("FabGuide", "cmake is not installed: in a terminal, run  sudo {}/tools/install-deps core").format(
+            SOURCE)
     missing = subprocess.run([os.path.join(SOURCE, "tools", "install-deps"), "--missing", "core"],
                              capture_output=True, text=True).stdout.split()
     if missing:
-        return "the build needs Debian packages that are not installed ({}): in a terminal, run  sudo {}/tools/" \
-               "install-deps core".format(", ".join(missing), SOURCE)
+        return translate("FabGuide", "the build needs Debian packages that are not installed ({}): in a terminal, "
+                                     "run  sudo {}/tools/install-deps core").format(", ".join(missing), SOURCE)
     return None
 
 
@@ -50,7 +51,7 @@ def install_core(build):
     """Copies the built core into the package; returns its path."""
     built = glob.glob(os.path.join(build, "fabguide_core*.so"))
     if not built:
-        raise RuntimeError("the build made no fabguide_core in " + build)
+        raise RuntimeError(translate("FabGuide", "the build made no fabguide_core in {}").format(build))
     return shutil.copy2(max(built, key=os.path.getmtime), PACKAGE)
 
 
@@ -65,7 +66,7 @@ class BuildDialog:
         self.dialog = QtGui.QDialog(FreeCADGui.getMainWindow())
         self.dialog.setWindowTitle(translate("FabGuide", "Build FabGuide's core"))
         layout = QtGui.QVBoxLayout(self.dialog)
-        self.label = QtGui.QLabel("Building the core for this FreeCAD (Python {}.{}) in {}".format(
+        self.label = QtGui.QLabel(translate("FabGuide", "Building the core for this FreeCAD (Python {}.{}) in {}").format(
             *sys.version_info[:2], build_dir()))
         self.label.setWordWrap(True)
         self.bar = QtGui.QProgressBar()
@@ -104,16 +105,17 @@ class BuildDialog:
         if self.outcome == "cancelled":
             return
         if code != 0:
-            return self.finish("failed", "The build stopped (exit status {}): the output above names the "
-                               "problem.".format(code))
+            return self.finish("failed", translate("FabGuide", "The build stopped (exit status {}): the output above "
+                                                           "names the problem.").format(code))
         if self.todo:
             return self.next_step()
         try:
             path = install_core(build_dir())
         except (OSError, RuntimeError) as error:
-            return self.finish("failed", "The core could not be put into the workbench: {}".format(error))
+            return self.finish("failed", translate("FabGuide", "The core could not be put into the workbench: {}").format(
+                error))
         self.bar.setValue(100)
-        self.finish("built", "Built {}. Restart FreeCAD to use FabGuide.".format(path))
+        self.finish("built", translate("FabGuide", "Built {}. Restart FreeCAD to use FabGuide.").format(path))
 
     def stop(self):
         if self.outcome is None:

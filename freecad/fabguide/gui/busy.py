@@ -26,7 +26,8 @@ def run(title, work, cancel, seconds=None, stoppable=True):
     thread.start()
     thread.join(QUIET)
     if thread.is_alive() and not wait(title, thread, cancel, seconds, stoppable):
-        raise background.Cancelled("{}: cancelled; it keeps its last result (recompute to try again)".format(title))
+        raise background.Cancelled(translate("FabGuide", "{}: cancelled; it keeps its last result (recompute to try "
+                                                         "again)").format(title))
     if "error" in outcome:
         raise outcome["error"]
     return outcome["result"]
@@ -34,7 +35,8 @@ def run(title, work, cancel, seconds=None, stoppable=True):
 
 def wait(title, thread, cancel, seconds, stoppable):
     """Shows the dialog until the thread ends; False when the user cancelled work that cannot stop early."""
-    dialog = QtGui.QProgressDialog(title, "Stop" if stoppable else "Cancel", 0, 100 if seconds else 0,
+    dialog = QtGui.QProgressDialog(title, translate("FabGuide", "Stop") if stoppable else translate("FabGuide", "Cancel"),
+                                   0, 100 if seconds else 0,
                                    FreeCADGui.getMainWindow())
     dialog.setWindowTitle(translate("FabGuide", "FabGuide"))
     dialog.setWindowModality(QtCore.Qt.ApplicationModal)
@@ -47,7 +49,8 @@ def wait(title, thread, cancel, seconds, stoppable):
     while thread.is_alive():
         if dialog.wasCanceled() and not cancel.cancelled:
             cancel.cancel()
-            dialog.setLabelText(title + "\nstopping: keeping the best found so far" if stoppable else title)
+            dialog.setLabelText(translate("FabGuide", "{}\nstopping: keeping the best found so far").format(title)
+                                if stoppable else title)
             abandoned = not stoppable
             if abandoned:
                 break
@@ -55,7 +58,7 @@ def wait(title, thread, cancel, seconds, stoppable):
         if seconds:
             dialog.setValue(min(99, int(100 * elapsed / seconds)))
             if not cancel.cancelled:
-                dialog.setLabelText("{}\n{:.0f} s of at most {:.0f} s".format(title, elapsed, seconds))
+                dialog.setLabelText(translate("FabGuide", "{}\n{:.0f} s of at most {:.0f} s").format(title, elapsed, seconds))
         QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
         thread.join(0.05)
     dialog.close()

@@ -66,8 +66,8 @@ class CamJobPanel:
     def browse_bit(self):
         from PySide import QtGui
 
-        path = QtGui.QFileDialog.getOpenFileName(self.form, "Tool bit", os.path.expanduser("~"),
-                                                 "FreeCAD tool bits (*.fctb)")[0]
+        path = QtGui.QFileDialog.getOpenFileName(self.form, translate("FabGuide", "Tool bit"), os.path.expanduser("~"),
+                                                 translate("FabGuide", "FreeCAD tool bits (*.fctb)"))[0]
         if path:
             self.form.bit.addItem(os.path.basename(path), path)
             self.form.bit.setCurrentIndex(self.form.bit.count() - 1)
@@ -75,7 +75,8 @@ class CamJobPanel:
     def browse_folder(self):
         from PySide import QtGui
 
-        folder = QtGui.QFileDialog.getExistingDirectory(self.form, "Folder for the G-code", self.form.folder.text())
+        folder = QtGui.QFileDialog.getExistingDirectory(self.form, translate("FabGuide", "Folder for the G-code"),
+                                                    self.form.folder.text())
         if folder:
             self.form.folder.setText(folder)
 

@@ -27,7 +27,7 @@ def tell(message):
     """A user mistake: said in the report view and in a message box."""
     from PySide import QtGui
 
-    FreeCAD.Console.PrintWarning("FabGuide: " + message + "\n")
+    FreeCAD.Console.PrintWarning(translate("FabGuide", "FabGuide: {}\n").format(message))
     QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), translate("FabGuide", "FabGuide"), message)
 
 
@@ -71,12 +71,12 @@ def both(*gates):
     return Gate(lambda doc: all(gate(doc) for gate in gates))
 
 
-def the_one(doc, test, what):
-    """The selected object of a kind, else the document's only one; when that is not one, tells the user to
-    select the `what` and returns None."""
+def the_one(doc, test, select, missing):
+    """The selected object of a kind, else the document's only one; when there are several, tells the user
+    `select` (which to pick), when there is none `missing`, and returns None."""
     found = selected(test) or all_in(doc, test)
     if len(found) != 1:
-        tell("Select the {}.".format(what) if found else "There is no {} in this document yet.".format(what.split()[0]))
+        tell(select if found else missing)
         return None
     return found[0]
 

@@ -12,9 +12,6 @@ from freecad.fabguide.gui import editing, function_viewproviders as vp, resource
 from freecad.fabguide.gui.posing import Poser
 from freecad.fabguide.i18n import translate
 
-NEW = "New configuration"
-
-
 def quantity_box(unit, largest):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
     the user's units; a value beyond ±`largest` is refused whole on OK (editing.widened)."""
@@ -41,8 +38,8 @@ class ConfigurationsPanel:
         self.form.setWindowIcon(FreeCADGui.getIcon(resources.icon("FabGuide_Configurations.svg")))
         for name in ("choice", "name", "slider", "play", "status"):
             setattr(self, name, getattr(self.form, name))
-        self.choice.addItems([c.Label + (" (current)" if c == mech.ShownConfiguration else "")
-                              for c in self.configurations] + [NEW])
+        self.choice.addItems([translate("FabGuide", "{} (current)").format(c.Label) if c == mech.ShownConfiguration
+                              else c.Label for c in self.configurations] + [translate("FabGuide", "New configuration")])
         # A long configuration name elides rather than widening the panel past the screen (and OK with it).
         self.choice.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
         self.choice.setMinimumContentsLength(10)
@@ -80,7 +77,8 @@ class ConfigurationsPanel:
     def load(self, index):
         chosen = self.configurations[index] if index < len(self.configurations) else None
         poses = {j.Name: (a, o) for j, a, o in configuration.poses(chosen)} if chosen else {}
-        self.name.setText(chosen.Label if chosen else "Configuration {}".format(len(self.configurations) + 1))
+        self.name.setText(chosen.Label if chosen else translate("FabGuide", "Configuration {}").format(
+            len(self.configurations) + 1))
         for row, joint in enumerate(self.joints):
             angle, offset = poses.get(joint.Name, (0.0, 0.0))
             for widget, value in ((self.moves[row], joint.Name in poses), (self.angles[row], angle),
@@ -108,8 +106,9 @@ class ConfigurationsPanel:
     def preview(self, *args):
         reason = self.poser.show(self.poses(), self.slider.value() / 100.0)
         moved = ", ".join(self.joints[r].Label for r in range(len(self.joints)) if self.moves[r].isChecked())
-        self.status.setText("Cannot show it: " + reason if reason else
-                            "Moves: " + (moved or "nothing yet: tick the joints this configuration poses"))
+        self.status.setText(translate("FabGuide", "Cannot show it: {}").format(reason) if reason else
+                            translate("FabGuide", "Moves: {}").format(moved) if moved else
+                            translate("FabGuide", "Moves: nothing yet: tick the joints this configuration poses"))
         FreeCADGui.updateGui()
 
     def animate(self):
@@ -129,12 +128,14 @@ class ConfigurationsPanel:
 
     def unreadable(self):
         """What is typed wrong in a used field, as a sentence; "" when every field reads."""
+        said = {"Angle": translate("FabGuide", "The angle of {}: \"{}\" is not an angle from {:g} to {:g}; type it "
+                                                "again."),
+                "Length": translate("FabGuide", "The offset of {}: \"{}\" is not a length from {:g} to {:g}; type it "
+                                                "again.")}
         for row, joint in enumerate(self.joints):
-            for box, what, unit in ((self.angles[row], "angle", "Angle"), (self.offsets[row], "offset", "Length")):
+            for box, unit in ((self.angles[row], "Angle"), (self.offsets[row], "Length")):
                 if self.moves[row].isChecked() and box.isVisible() and not editing.readable(box, unit):
-                    return "The {} of {}: \"{}\" is not {} from {:g} to {:g}; type it again.".format(
-                        what, joint.Label, box.text(), "an angle" if unit == "Angle" else "a length",
-                        *editing.limits(box))
+                    return said[unit].format(joint.Label, box.text(), *editing.limits(box))
         return ""
 
     def accept(self):

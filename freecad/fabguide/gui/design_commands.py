@@ -67,6 +67,13 @@ def add(doc, kind, boxes, label=None, **values):
     return obj
 
 
+def the_design(doc, select):
+    """The flat-pack design picked, else the document's only one; None when that is not one (the user told
+    `select`, or that there is none)."""
+    return the_one(doc, design.is_design, select,
+                   translate("FabGuide", "There is no flat-pack design in this document yet."))
+
+
 class DesignFromBoxes(Command):
     ICON, MENU = "FabGuide_FlatpackDesign.svg", QT_TRANSLATE_NOOP("FabGuide", "Flat-pack Design from Boxes")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a flat-pack design of the selected Part boxes (boards, their thinnest "
@@ -131,7 +138,7 @@ class ExportFlatpack(Command):
     NEEDS = present(design.is_design)
 
     def run(self, doc):
-        chosen = the_one(doc, design.is_design, "flat-pack design to export")
+        chosen = the_design(doc, translate("FabGuide", "Select the flat-pack design to export."))
         if chosen is None:
             return
         path = ask_save("Export flat-pack design", chosen.Label + ".flatpack.json", "Flat-pack designs (*.flatpack.json)")
@@ -299,7 +306,7 @@ class OuterVolume(Command):
     NEEDS = present(design.is_design)
 
     def run(self, doc):
-        target = the_one(doc, design.is_design, "flat-pack design")
+        target = the_design(doc, translate("FabGuide", "Select the flat-pack design."))
         if target is None:
             return
         coords = [cuboids.coordinates(b) for b in design.boxes(target)]
@@ -322,7 +329,7 @@ class Suggest(Command):
     NEEDS = present(design.is_design)
 
     def run(self, doc):
-        target = the_one(doc, design.is_design, "flat-pack design")
+        target = the_design(doc, translate("FabGuide", "Select the flat-pack design."))
         if target is None:
             return
         from freecad.fabguide.gui import suggest_panel

@@ -136,4 +136,4 @@ class Watch:
         else:
             close_panel(doc)
         FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide: the task panel closed: its document {}\n").format(
-            "closed" if closing else "changed by undo or redo"))
+            translate("FabGuide", "closed") if closing else translate("FabGuide", "changed by undo or redo")))

@@ -76,6 +76,13 @@ def usable(boxes):
     return boxes
 
 
+def the_mechanism(doc, select):
+    """The mechanism picked, else the document's only one; None when that is not one (the user told `select`, or
+    that there is none)."""
+    return the_one(doc, mechanism.is_mechanism, select,
+                   translate("FabGuide", "There is no mechanism in this document yet."))
+
+
 class NewMechanism(Command):
     ICON, MENU = "FabGuide_Mechanism.svg", QT_TRANSLATE_NOOP("FabGuide", "Mechanism from Boxes")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a mechanism; each selected box (Part::Box) becomes one of its parts")
@@ -102,7 +109,7 @@ class MakePart(Command):
             return tell(translate("FabGuide", "Select the boxes (Part::Box) the part is made of."))
         owned = [b.Label for b in boxes if parts.part_of(doc.Objects, b)]
         if owned:
-            return tell("Already in a part: " + ", ".join(owned))
+            return tell(translate("FabGuide", "Already in a part: {}").format(", ".join(owned)))
         with transaction(doc, "Part from boxes"):
             part = add_to(mechanism_for(doc), vp.attach(parts.create(doc, boxes)))
             finish(doc, part, mechanism_for(doc, [part]))
@@ -121,7 +128,7 @@ class MakeCavity(Command):
                                               "it."))
         owned = [b.Label for b in boxes[1:] if parts.part_of(doc.Objects, b)]
         if owned:
-            return tell("Already in a part: " + ", ".join(owned))
+            return tell(translate("FabGuide", "Already in a part: {}").format(", ".join(owned)))
         with transaction(doc, "Cavity"):
             part = part_of(doc, boxes[0])
             part.Cavities = part.Cavities + boxes[1:]
@@ -275,7 +282,7 @@ class AddRelationship(Command):
         """What is wrong with the selection, or None."""
         boxes = {o.Name for o, _ in picks() if cuboids.is_box(o) or parts.is_part(o)}
         if len(boxes) < 2:
-            return "Pick boxes of at least two parts; the last one picked is the " + self.LAST + " part."
+            return translate("FabGuide", self.TOO_FEW)
 
     def run(self, doc):
         mistake = self.check()
@@ -293,7 +300,8 @@ class AddRelationship(Command):
 
 
 class AddCover(AddRelationship):
-    ICON, MENU, KIND, LAST = "FabGuide_Cover.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Cover"), "cover", "covered"
+    ICON, MENU, KIND = "FabGuide_Cover.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Cover"), "cover"
+    TOO_FEW = QT_TRANSLATE_NOOP("FabGuide", "Pick boxes of at least two parts; the last one picked is the covered part.")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts cover that one (picked last): faces in one plane, packed, "
                                         "covering its faces or openings")
 
@@ -313,7 +321,9 @@ def portion(inner):
 
 
 class AddFitInside(AddRelationship):
-    ICON, KIND, LAST = "FabGuide_FitInside.svg", "fit_inside", "enclosing"
+    ICON, KIND = "FabGuide_FitInside.svg", "fit_inside"
+    TOO_FEW = QT_TRANSLATE_NOOP("FabGuide", "Pick boxes of at least two parts; the last one picked is the enclosing "
+                                            "part.")
     MENU = QT_TRANSLATE_NOOP("FabGuide", "Add Fit Inside")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts fit inside that one (picked last; pick one of its cavities to fit "
                                         "in it)")
@@ -325,7 +335,9 @@ class AddFitInside(AddRelationship):
 
 
 class AddSupport(AddRelationship):
-    ICON, KIND, LAST = "FabGuide_Support.svg", "support", "supported"
+    ICON, KIND = "FabGuide_Support.svg", "support"
+    TOO_FEW = QT_TRANSLATE_NOOP("FabGuide", "Pick boxes of at least two parts; the last one picked is the supported "
+                                            "part.")
     MENU = QT_TRANSLATE_NOOP("FabGuide", "Add Support")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts support that one (picked last): it rests on their tops; they "
                                         "stand on one ground")
@@ -342,9 +354,10 @@ class AddFlush(AddRelationship):
     def check(self):
         faces = picked_elements("Face")
         if len(faces) != 2:
-            return "Pick exactly two faces of boxes."
+            return translate("FabGuide", "Pick exactly two faces of boxes.")
         if faces[0][0] == faces[1][0]:
-            return "Pick faces of two different boxes: two faces of one box never lie in one plane."
+            return translate("FabGuide", "Pick faces of two different boxes: two faces of one box never lie in one "
+                                         "plane.")
 
     def fields(self, doc, found):
         return {"Faces": picked_elements("Face")}
@@ -358,7 +371,8 @@ class AddGeometric(AddRelationship):
 
     def check(self):
         if len(picked_elements("Edge")) not in (1, 2) or any(not (e or "").startswith("Edge") for _, e in picks()):
-            return "Pick one or two edges of boxes, and nothing else (a face or a whole box says no length)."
+            return translate("FabGuide", "Pick one or two edges of boxes, and nothing else (a face or a whole box says "
+                                         "no length).")
 
     def fields(self, doc, found):
         edges = picked_elements("Edge")
@@ -398,7 +412,7 @@ class Configurations(Command):
         return FreeCAD.ActiveDocument is not None and bool(all_in(FreeCAD.ActiveDocument, mechanism.is_mechanism))
 
     def run(self, doc):
-        mech = the_one(doc, mechanism.is_mechanism, "mechanism to pose")
+        mech = the_mechanism(doc, translate("FabGuide", "Select the mechanism to pose."))
         if mech is not None:
             editing.edit(mech)
 
@@ -438,7 +452,7 @@ class ExportWorkslike(Command):
         return Configurations.IsActive(self)
 
     def run(self, doc):
-        mech = the_one(doc, mechanism.is_mechanism, "mechanism to export")
+        mech = the_mechanism(doc, translate("FabGuide", "Select the mechanism to export."))
         if mech is None:
             return
         path = ask_save("Works-like model", mech.Label + ".workslike.json", "Works-like models (*.workslike.json)")
@@ -447,7 +461,7 @@ class ExportWorkslike(Command):
                 workslike_file.write(mech, path)
             except ValueError as error:
                 return tell(str(error))
-            FreeCAD.Console.PrintMessage("FabGuide wrote " + path + "\n")
+            FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide wrote {}\n").format(path))
 
 
 class MakePrintable(Command):
@@ -460,7 +474,7 @@ class MakePrintable(Command):
         return Configurations.IsActive(self)
 
     def run(self, doc):
-        mech = the_one(doc, mechanism.is_mechanism, "mechanism to print")
+        mech = the_mechanism(doc, translate("FabGuide", "Select the mechanism to print."))
         if mech is None:
             return
         existing = [p for p in all_in(doc, printable.is_printable) if p.Mechanism == mech]
@@ -486,10 +500,11 @@ class ExportPrintable(Command):
     def run(self, doc):
         from PySide import QtGui
 
-        made = the_one(doc, printable.is_printable, "printable to export")
+        made = the_one(doc, printable.is_printable, translate("FabGuide", "Select the printable to export."),
+                        translate("FabGuide", "There is no printable in this document yet."))
         if made is None:
             return
-        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the print files",
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), translate("FabGuide", "Folder for the print files"),
                                                         os.path.expanduser("~"))
         if folder:
             doc.recompute()  # what is written is what the Printable shows, made from the mechanism as it is
@@ -497,7 +512,7 @@ class ExportPrintable(Command):
                 written = printable.export(made, folder)
             except (ValueError, RuntimeError) as error:
                 return tell(str(error))
-            FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
+            FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide wrote:\n  {}\n").format("\n  ".join(written)))
 
 
 COMMANDS = {

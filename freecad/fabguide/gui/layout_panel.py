@@ -69,7 +69,7 @@ class LayoutPanel:
     def refuse(self, name):
         box = getattr(self.form, name.lower())
         kept = self.typed_from.get(name, getattr(self.layout, name).Value)
-        said = "{}: \"{}\" is not a length from {:g} to {:g} mm; it stays {:g} mm.".format(
+        said = translate("FabGuide", "{}: \"{}\" is not a length from {:g} to {:g} mm; it stays {:g} mm.").format(
             name, box.text(), *editing.limits(box), kept)
         setattr(self.layout, name, kept)
         box.setProperty("rawValue", kept)

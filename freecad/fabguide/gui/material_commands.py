@@ -17,6 +17,12 @@ def first_thickness(doc):
     return boards[0].Thickness.Value if boards else None  # none: the preferences' sheet thickness
 
 
+def the_layout(doc, select):
+    """The layout picked, else the document's only one; None when that is not one (the user told `select`, or
+    that there is none)."""
+    return the_one(doc, layout.is_layout, select, translate("FabGuide", "There is no layout in this document yet."))
+
+
 class NewMasterBoard(Command):
     ICON, MENU = "FabGuide_MasterBoard.svg", QT_TRANSLATE_NOOP("FabGuide", "New Master Board")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "Add a master board (sheet size, thickness, stock, material) to cut boards "
@@ -87,8 +93,9 @@ class BandEdges(Command):
         if not sides or not all(side for _, side in sides):
             return tell(translate("FabGuide", "Pick the edge faces of boards (their narrow sides, not the large faces) "
                                               "first."))
-        band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), "Band Edges",
-                                              "Band on the {} picked edge(s) (empty: none):".format(len(sides)),
+        band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), translate("FabGuide", "Band Edges"),
+                                              translate("FabGuide", "Band on the {} picked edge(s) (empty: none):").format(
+                                                  len(sides)),
                                               text=BandEdges.last)
         if not ok:
             return
@@ -121,7 +128,8 @@ def finish_boards(doc, made):
     doc.recompute()
     failed = [obj.Label for obj in made if properties.failed(obj)]
     if failed:
-        FreeCAD.Console.PrintWarning("FabGuide: see the messages above for " + ", ".join(failed) + "\n")
+        FreeCAD.Console.PrintWarning(translate("FabGuide", "FabGuide: see the messages above for {}\n").format(
+            ", ".join(failed)))
 
 
 class MakeLayout(Command):
@@ -154,18 +162,19 @@ class ExportCutSheets(Command):
     def run(self, doc):
         from PySide import QtGui
 
-        chosen = the_one(doc, layout.is_layout, "layout to export")
+        chosen = the_layout(doc, translate("FabGuide", "Select the layout to export."))
         if chosen is None:
             return
         start = os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~")
-        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Folder for the cut sheets", start)
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), translate("FabGuide", "Folder for the cut sheets"),
+                                                        start)
         if not folder:
             return
         try:
             written = layout.export_cut_sheets(chosen, folder)
         except (layout.LayoutError, ValueError, RuntimeError) as error:
             return tell(str(error))
-        FreeCAD.Console.PrintMessage("FabGuide wrote:\n  " + "\n  ".join(written) + "\n")
+        FreeCAD.Console.PrintMessage(translate("FabGuide", "FabGuide wrote:\n  {}\n").format("\n  ".join(written)))
 
 
 class TechDrawPages(Command):
@@ -179,7 +188,7 @@ class TechDrawPages(Command):
         return ExportCutSheets.IsActive(self)
 
     def run(self, doc):
-        chosen = the_one(doc, layout.is_layout, "layout to draw")
+        chosen = the_layout(doc, translate("FabGuide", "Select the layout to draw."))
         if chosen is None:
             return
         try:
@@ -201,7 +210,7 @@ class MakeCamJob(Command):
         return ExportCutSheets.IsActive(self)
 
     def run(self, doc):
-        chosen = the_one(doc, layout.is_layout, "layout to machine")
+        chosen = the_layout(doc, translate("FabGuide", "Select the layout to machine."))
         if chosen is None:
             return
         from freecad.fabguide.gui import cam_panel

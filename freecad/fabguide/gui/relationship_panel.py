@@ -46,7 +46,7 @@ class RelationshipPanel:
         colour = "#b22222" if status.startswith("Conflict") else "#2e7d32"
         changed = "".join("<br>{}".format(c) for c in self.changes)
         self.status.setText(translate("FabGuide", "<b style='color:{}'>{}</b>{}").format(
-            colour, status, "<br>The solve changed:" + changed if changed else ""))
+            colour, status, translate("FabGuide", "<br>The solve changed:{}").format(changed) if changed else ""))
         if self.pairs is not None:
             self.pairs.blockSignals(True)
             self.pairs.clear()

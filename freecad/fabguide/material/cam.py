@@ -14,7 +14,7 @@ import Part
 
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide.material import layout
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 FEED = 1500.0  # mm/min across the sheet: a router in plywood or MDF
 PLUNGE = 300.0  # mm/min down
@@ -188,7 +188,8 @@ def make_job(cam, lay, number, sheet, bit, post, feed, spindle, through):
 
 def owned(obj, lay, label):
     obj.Label = label
-    obj.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide", "The layout this was made from")
+    obj.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide",
+                    QT_TRANSLATE_NOOP("App::Property", "The layout this was made from"))
     obj.FabGuideLayout = lay
     return obj
 

@@ -25,9 +25,9 @@ class DesignError(ValueError):
 
 
 class FlatpackDesign(properties.Proxy):
-    TYPE, NOUN = "FabGuide::FlatpackDesign", "Design"
+    TYPE, NOUN = "FabGuide::FlatpackDesign", QT_TRANSLATE_NOOP("FabGuide", "Design")
     VALID = dict(Resolution=properties.more_than(0), MaxGrowth=properties.at_least(1),
-                 MasterBoards=properties.links(master_board.is_master_board, "master boards"))
+                 MasterBoards=properties.links(master_board.is_master_board, QT_TRANSLATE_NOOP("FabGuide", "master boards")))
 
     def define(self, obj):
         add = properties.add
@@ -88,16 +88,17 @@ class FlatpackDesign(properties.Proxy):
 class DesignConstraint(properties.Proxy):
     """One design constraint of thesis 5.1 as docs/formats.md writes it; its references are links to boxes with
     what of them: size.x, centre.z, min.y or max.x (the format writes "Box.size.x" with the box's label)."""
-    TYPE, NOUN = "FabGuide::DesignConstraint", "Constraint"
+    TYPE, NOUN = "FabGuide::DesignConstraint", QT_TRANSLATE_NOOP("FabGuide", "Constraint")
 
     def define(self, obj):
         add = properties.add
         add(obj, "App::PropertyEnumeration", "Kind", "Constraint",
             QT_TRANSLATE_NOOP("App::Property", "What must hold"), list(KINDS))
         references.define(obj, "Refs", "Constraint",
-                          "Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), "
-                          "sum (left side), fixed and range (one)")
-        references.define(obj, "Rhs", "Constraint", "Right side of a sum")
+                          QT_TRANSLATE_NOOP("App::Property", "Boxes and what of them (size.x, centre.z, min.y, "
+                                                             "max.x): equal, symmetric (two), sum (left side), fixed "
+                                                             "and range (one)"))
+        references.define(obj, "Rhs", "Constraint", QT_TRANSLATE_NOOP("App::Property", "Right side of a sum"))
         add(obj, "App::PropertyLinkList", "Parts", "Constraint",
             QT_TRANSLATE_NOOP("App::Property", "Boxes for ground, coplanar and snap"))
         add(obj, "App::PropertyDistance", "Value", "Constraint",
@@ -108,7 +109,8 @@ class DesignConstraint(properties.Proxy):
         add(obj, "App::PropertyDistance", "Max", "Constraint",
             QT_TRANSLATE_NOOP("App::Property", "Range: largest value (beyond ±10⁸ m: none)"),
             10 * UNBOUNDED)
-        references.define(obj, "About", "Constraint", "Symmetric about this reference (empty: midway now)")
+        references.define(obj, "About", "Constraint",
+                          QT_TRANSLATE_NOOP("App::Property", "Symmetric about this reference (empty: midway now)"))
         add(obj, "App::PropertyString", "Status", "Result",
             QT_TRANSLATE_NOOP("App::Property", "Satisfied, or what breaks it"), mode=1)
 

@@ -23,12 +23,12 @@ class LayoutError(ValueError):
 
 
 class Layout(properties.Proxy):
-    TYPE, NOUN = "FabGuide::Layout", "Layout"
-    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, " (parts squared)"),
+    TYPE, NOUN = "FabGuide::Layout", QT_TRANSLATE_NOOP("FabGuide", "Layout")
+    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, QT_TRANSLATE_NOOP("FabGuide", " (parts squared)")),
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
-                               "0 or a divisor of 90 (e.g. 15, 30, 45)"),
-                 Stages=properties.at_least(0, " (0: unlimited)"), LabelWidth=properties.at_least(20),
-                 Seed=(lambda obj, v: 0 <= v < 2 ** 63, "0 or more"),
+                               QT_TRANSLATE_NOOP("FabGuide", "0 or a divisor of 90 (e.g. 15, 30, 45)")),
+                 Stages=properties.at_least(0, QT_TRANSLATE_NOOP("FabGuide", " (0: unlimited)")), LabelWidth=properties.at_least(20),
+                 Seed=(lambda obj, v: 0 <= v < 2 ** 63, QT_TRANSLATE_NOOP("FabGuide", "0 or more")),
                  TimeLimit=properties.more_than(0),
                  LabelHeight=properties.at_least(10))
 
@@ -285,7 +285,7 @@ def current(obj):
         raise LayoutError(translate("FabGuide", "{} Mend that first: what was made now would show the last layout that "
                                                 "could be made, not the boards as they are.").format(
             obj.Error.rstrip(".") + "." if obj.Error else
-                                                                     "Layout '{}' is in error.".format(obj.Label)))
+                                                                     translate("FabGuide", "Layout '{}' is in error.").format(obj.Label)))
 
 
 def export_cut_sheets(obj, folder):

@@ -1,15 +1,16 @@
 """MasterBoard: a kind of sheet the boards are cut from (thesis 5.1); a leftover is just another one."""
 from freecad.fabguide import preferences, properties
-from freecad.fabguide.i18n import QT_TRANSLATE_NOOP
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 # The grain directions, as *.pack.json names them.
 GRAIN = {"None": "none", "Along width": "width", "Along height": "height"}
 
 
 class MasterBoard(properties.Proxy):
-    TYPE, NOUN = "FabGuide::MasterBoard", "Master board"
+    TYPE, NOUN = "FabGuide::MasterBoard", QT_TRANSLATE_NOOP("FabGuide", "Master board")
     VALID = dict(Width=properties.more_than(0), Height=properties.more_than(0), Thickness=properties.more_than(0),
-                 Count=properties.at_least(0, " (as many as needed)"), Cost=properties.at_least(0, " (an offcut you have)"))
+                 Count=properties.at_least(0, QT_TRANSLATE_NOOP("FabGuide", " (as many as needed)")),
+                 Cost=properties.at_least(0, QT_TRANSLATE_NOOP("FabGuide", " (an offcut you have)")))
 
     def define(self, obj):
         add = properties.add
@@ -31,7 +32,8 @@ class MasterBoard(properties.Proxy):
                                                "have, which is used before new sheets"), 1.0)
         if "UsedBy" not in obj.PropertiesList:  # an output: noting the users never recomputes anything
             obj.addProperty("App::PropertyStringList", "UsedBy", "Result",
-                            "The designs and layouts cut from this master board: a change reaches them all",
+                            QT_TRANSLATE_NOOP("App::Property", "The designs and layouts cut from this master "
+                                                               "board: a change reaches them all"),
                             properties.READ_ONLY | properties.OUTPUT)
 
 
@@ -85,6 +87,6 @@ def shared(masters, user):
     """What the message of `user`'s failure adds when its master boards are others' too: a change made for
     another design is the likely cause."""
     others = {m.Label: [u for u in users(m) if u != user.Label] for m in masters}
-    said = ["master board '{}' is shared with {}".format(m, ", ".join("'{}'".format(u) for u in us))
+    said = [translate("FabGuide", "master board '{}' is shared with {}").format(m, ", ".join("'{}'".format(u) for u in us))
             for m, us in others.items() if us]
     return " ({})".format("; ".join(said)) if said else ""

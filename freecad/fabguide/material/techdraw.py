@@ -9,7 +9,7 @@ import FreeCAD
 
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide.material import layout
-from freecad.fabguide.i18n import translate
+from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 # TechDraw's blank A4 page: in Templates/ up to FreeCAD 1.0, in Templates/ISO/ from 1.1.
 TEMPLATES = (("Mod", "TechDraw", "Templates", "A4_Landscape_blank.svg"),
@@ -59,7 +59,8 @@ def new_page(lay):
                                                        "FreeCAD"))
     doc = lay.Document
     page = doc.addObject("TechDraw::DrawPage", "ReportPage")
-    page.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide", "The layout this page draws")
+    page.addProperty("App::PropertyLink", "FabGuideLayout", "FabGuide",
+                     QT_TRANSLATE_NOOP("App::Property", "The layout this page draws"))
     page.FabGuideLayout = lay
     template = doc.addObject("TechDraw::DrawSVGTemplate", "ReportTemplate")
     template.Template = template_path
