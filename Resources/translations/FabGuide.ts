@@ -1788,7 +1788,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="336"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1854,57 +1854,57 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="100"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="101"/>
         <source>{}: the source has no shape</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="107"/>
         <source>{}: the source holds {} solids; make one board per solid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="113"/>
         <source>{}: needs closed wires, a planar face or a solid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="115"/>
         <source>{}: its closed wires do not lie in one plane, so they do not outline a board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="120"/>
         <source>{}: its wires do not make a planar face ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="126"/>
         <source>{}: the face is not planar</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="127"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="128"/>
         <source>{}: Thickness must be greater than 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="152"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="153"/>
         <source>{}: has no planar face, so it is not a flat board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="157"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="158"/>
         <source>{}: no face parallel and opposite to its largest face, so it is not a flat board</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="162"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="163"/>
         <source>{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="167"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="168"/>
         <source>{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board is thinner than it is wide)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1989,7 +1989,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="342"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="346"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2031,7 +2031,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="290"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2043,11 +2043,6 @@ rpm</source>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="30"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos;: no spreadsheet &apos;{}&apos; with an alias &apos;{}&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
-        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {} now, outside its range</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2519,7 +2514,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2576,6 +2571,21 @@ stopping: keeping the best found so far</source>
     <message>
         <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
         <source>Select the layout to machine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="337"/>
+        <source>Design &apos;{}&apos;: {} could not be recomputed (see the report view). Mend that first: Suggest would start from their last shapes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
+        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {:g} now, outside its range</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

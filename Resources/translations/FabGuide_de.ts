@@ -1798,7 +1798,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="336"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1865,57 +1865,57 @@ U/min</translation>
         <translation>{}: ist FabGuides {}, kein Teil Ihres Modells (wählen Sie eine Skizze, eine ebene Fläche oder einen dünnen Körper)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="100"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="101"/>
         <source>{}: the source has no shape</source>
         <translation>{}: die Quelle hat keine Form</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="107"/>
         <source>{}: the source holds {} solids; make one board per solid</source>
         <translation>{}: die Quelle enthält {} Körper; erstellen Sie eine Platte je Körper</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="113"/>
         <source>{}: needs closed wires, a planar face or a solid</source>
         <translation>{}: braucht geschlossene Linienzüge, eine ebene Fläche oder einen Körper</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="115"/>
         <source>{}: its closed wires do not lie in one plane, so they do not outline a board</source>
         <translation>{}: seine geschlossenen Linienzüge liegen nicht in einer Ebene und umreißen daher keine Platte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="120"/>
         <source>{}: its wires do not make a planar face ({})</source>
         <translation>{}: seine Linienzüge ergeben keine ebene Fläche ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="126"/>
         <source>{}: the face is not planar</source>
         <translation>{}: die Fläche ist nicht eben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="127"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="128"/>
         <source>{}: Thickness must be greater than 0</source>
         <translation>{}: Thickness muss größer als 0 sein</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="152"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="153"/>
         <source>{}: has no planar face, so it is not a flat board</source>
         <translation>{}: hat keine ebene Fläche und ist daher keine flache Platte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="157"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="158"/>
         <source>{}: no face parallel and opposite to its largest face, so it is not a flat board</source>
         <translation>{}: keine Fläche liegt seiner größten Fläche parallel gegenüber, daher ist es keine flache Platte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="162"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="163"/>
         <source>{}: is not a flat board of one thickness (volume {:.1f} mm3, face x thickness {:.1f} mm3)</source>
         <translation>{}: ist keine flache Platte einer Dicke (Volumen {:.1f} mm3, Fläche x Dicke {:.1f} mm3)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/board.py" line="167"/>
+        <location filename="../../freecad/fabguide/material/board.py" line="168"/>
         <source>{}: is {:.0f} mm thick and {:.0f} mm wide, a block or a post rather than a board (a board is thinner than it is wide)</source>
         <translation>{}: ist {:.0f} mm dick und {:.0f} mm breit, eher ein Block oder Pfosten als eine Platte (eine Platte ist dünner als breit)</translation>
     </message>
@@ -2000,7 +2000,7 @@ U/min</translation>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="342"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="346"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2044,7 +2044,7 @@ U/min</translation>
         <translation>Layout '{}' wurde noch nicht berechnet: erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="290"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation>{} Beheben Sie das zuerst: was jetzt erstellt würde, zeigte das letzte Layout, das erstellt werden konnte, nicht die Platten, wie sie sind.</translation>
     </message>
@@ -2057,11 +2057,6 @@ U/min</translation>
         <location filename="../../freecad/fabguide/material/parametric.py" line="30"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos;: no spreadsheet &apos;{}&apos; with an alias &apos;{}&apos;</source>
         <translation>Entwurf '{}': Parameter '{}': keine Tabelle '{}' mit einem Alias '{}'</translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
-        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {} now, outside its range</source>
-        <translation>Entwurf '{}': Parameter '{}' ist jetzt {}, außerhalb seines Bereichs</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="47"/>
@@ -2540,7 +2535,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>0 oder mehr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation>Layout '{}' ist fehlerhaft.</translation>
     </message>
@@ -2598,6 +2593,21 @@ hält an: das bisher Beste bleibt</translation>
         <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
         <source>Select the layout to machine.</source>
         <translation>Wählen Sie das Layout, das gefräst werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="337"/>
+        <source>Design &apos;{}&apos;: {} could not be recomputed (see the report view). Mend that first: Suggest would start from their last shapes.</source>
+        <translation>Entwurf '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster). Beheben Sie das zuerst: Vorschlagen ginge von ihren letzten Formen aus.</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
+        <translation>Layout '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster).</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
+        <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {:g} now, outside its range</source>
+        <translation>Entwurf '{}': Parameter '{}' ist jetzt {:g}, außerhalb seines Bereichs</translation>
     </message>
 </context>
 <context>

@@ -180,6 +180,12 @@ def failed(obj):
     return bool(getattr(obj, "Error", "")) or "Invalid" in obj.State
 
 
+def failed_inputs(obj):
+    """The labels of the objects `obj` is made from (at any depth) whose last recompute failed: FreeCAD then
+    leaves `obj` touched, showing what it made from their last shapes."""
+    return ["'{}'".format(label) for label in sorted(o.Label for o in obj.OutListRecursive if failed(o))]
+
+
 def fail(obj, message):
     """Marks `obj` failed with `message` (said in the report view once), or not failed when it is empty."""
     if obj.Error != message:

@@ -332,6 +332,11 @@ class Suggest(Command):
         target = the_design(doc, translate("FabGuide", "Select the flat-pack design."))
         if target is None:
             return
+        broken = properties.failed_inputs(target)
+        if broken:
+            return tell(translate("FabGuide", "Design '{}': {} could not be recomputed (see the report view). Mend that "
+                                              "first: Suggest would start from their last shapes.").format(
+                target.Label, ", ".join(broken)))
         from freecad.fabguide.gui import suggest_panel
 
         try:

@@ -94,7 +94,8 @@ def slab_of(source, subelement, thickness, what):
     saying why it makes none, beginning with `what`."""
     if not subelement and isinstance(getattr(source, "Proxy", None), properties.Proxy):  # a layout, a board
         raise BoardError(translate("FabGuide", "{}: is FabGuide's {}, not a part of your model (pick a sketch, a "
-                                               "planar face or a thin solid)").format(what, translate("FabGuide", source.Proxy.NOUN)))
+                                               "planar face or a thin solid)").format(
+            what, translate("FabGuide", source.Proxy.NOUN)))
     shape = getattr(source, "Shape", None)
     if shape is None or shape.isNull():
         raise BoardError(translate("FabGuide", "{}: the source has no shape").format(what))

@@ -303,12 +303,16 @@ def flatpack(obj, parts=None):
 
 
 def recompute(obj):
-    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit."""
+    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit. A
+    Parameters entry Suggest could not use is said now, when it is typed, not when Suggest is asked."""
+    from freecad.fabguide.material import parametric  # it builds on this module
+
     try:
         edited = flatpack(obj)
-    except DesignError as error:
+        parametric.parameters(obj)
+    except (DesignError, parametric.ParameterError) as error:
         obj.Status = str(error)
-        raise
+        raise DesignError(str(error))
     valid = json.loads(obj.Valid) if obj.Valid else None
     start = dict(edited, parts=valid)  # the last valid state, the inner volumes resting on its boards
     note = ""

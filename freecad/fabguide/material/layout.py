@@ -281,11 +281,14 @@ def current(obj):
     if not obj.LayoutJson:
         raise LayoutError(translate("FabGuide", "Layout '{}' has not been computed yet: recompute it first").format(
             obj.Label))
-    if properties.failed(obj):
+    broken = properties.failed_inputs(obj)
+    if properties.failed(obj) or broken:
+        said = (obj.Error.rstrip(".") + "." if obj.Error else
+                translate("FabGuide", "Layout '{}': {} could not be recomputed (see the report view).").format(
+                    obj.Label, ", ".join(broken)) if broken else
+                translate("FabGuide", "Layout '{}' is in error.").format(obj.Label))
         raise LayoutError(translate("FabGuide", "{} Mend that first: what was made now would show the last layout that "
-                                                "could be made, not the boards as they are.").format(
-            obj.Error.rstrip(".") + "." if obj.Error else
-                                                                     translate("FabGuide", "Layout '{}' is in error.").format(obj.Label)))
+                                                "could be made, not the boards as they are.").format(said))
 
 
 def export_cut_sheets(obj, folder):

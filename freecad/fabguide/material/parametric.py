@@ -31,7 +31,7 @@ def parameters(obj):
                                                        "'{}'").format(
                 obj.Label, entry, sheet_name, alias))
         if not low <= value(sheet, alias) <= high:
-            raise ParameterError(translate("FabGuide", "Design '{}': parameter '{}' is {} now, outside its "
+            raise ParameterError(translate("FabGuide", "Design '{}': parameter '{}' is {:g} now, outside its "
                                                        "range").format(
                 obj.Label, entry, value(sheet, alias)))
         found.append((sheet, alias, low, high))
