@@ -12,10 +12,12 @@ from freecad.fabguide.gui import editing, function_viewproviders as vp, resource
 from freecad.fabguide.gui.posing import Poser
 from freecad.fabguide.i18n import translate
 
-def quantity_box(unit, largest):
+def quantity_box(loader, unit, largest, parent):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
-    the user's units; a value beyond ±`largest` is refused whole on OK (editing.widened)."""
-    box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
+    the user's units; a value beyond ±`largest` is refused whole on OK (editing.widened). Made by a `loader` the
+    panel keeps, as a child of `parent` at once: under PySide6 (FreeCAD 1.1) a box made by a loader that was
+    then collected could be deleted before its signals were connected."""
+    box = loader.createWidget("Gui::QuantitySpinBox", parent)
     box.setProperty("unit", unit)
     box.setProperty("minimum", -largest)
     box.setProperty("maximum", largest)
@@ -44,11 +46,13 @@ class ConfigurationsPanel:
         self.choice.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
         self.choice.setMinimumContentsLength(10)
         grid = self.form.poses
+        self.loader = FreeCADGui.UiLoader()
         self.moves, self.angles, self.offsets = [], [], []
         for row, joint in enumerate(self.joints):  # the joint's name on a line, its angle and offset below it
             moves = QtGui.QCheckBox(joint.Label)
             moves.setToolTip(joint.Label)
-            angle, offset = quantity_box("deg", 360), quantity_box("mm", 1e5)
+            angle = quantity_box(self.loader, "deg", 360, self.form)
+            offset = quantity_box(self.loader, "mm", 1e5, self.form)
             angle.setToolTip(translate("FabGuide", "Angle: its sign is the way the part swings"))
             offset.setToolTip(translate("FabGuide", "Offset along the slide"))
             moves.setEnabled(joints.moves(joint))
