@@ -113,6 +113,7 @@ def a_flatpack_design_with_the_aliases_as_parameters():
     guitest.isometric()
     for path in guitest.screenshots_at_screen_sizes("bookcase"):
         print("screenshot: " + path)
+    print("3-D view: " + guitest.view_image("bookcase_3d", compared=False))
 
 
 def suggest_changes_the_aliases_and_undo_brings_them_back():
