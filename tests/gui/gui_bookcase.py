@@ -8,6 +8,8 @@ holds no traceback and no red line that is not such a sentence."""
 # expects error: Failed to convert to Quantity
 # expects error: unsupported operand type(s)
 # expects error: Recompute failed! Please check report view.
+# FreeCAD 1.0's own line for a box of negative height:
+# expects error: Height of box too small
 # expects error: not found in 'Dims.
 # FreeCAD's undo of Suggest's cell values, at times, once the height cell has held a word (the values come back):
 # expects error: exception while restoring Bookcase#Dims.B2: std::bad_cast
