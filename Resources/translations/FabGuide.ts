@@ -14,92 +14,92 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="20"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
         <source>The part the joint moves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="22"/>
         <source>The part it hangs on, which carries it along when it moves; empty: the ground</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="25"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="26"/>
         <source>The edge of one of the part&apos;s boxes it turns about</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="28"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="29"/>
         <source>The direction it slides along</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="31"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="32"/>
         <source>The face of the part&apos;s box with the pivot</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="33"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="34"/>
         <source>The pivot on the part (placed by the solve)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="35"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="36"/>
         <source>The face of the base&apos;s box, in the same plane, with the other pivot</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="38"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="39"/>
         <source>The pivot on the base (placed by the solve)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="30"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="31"/>
         <source>Smallest size of a box along any axis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="32"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="33"/>
         <source>Least wall around a cavity on its sides that are not openings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="36"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="37"/>
         <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="39"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="40"/>
         <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="42"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
         <source>Solved, or the relationships in conflict</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="44"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="45"/>
         <source>Largest constraint violation after the solve, mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="47"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="48"/>
         <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="50"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="51"/>
         <source>What the last solve changed: box, size old → new, how far it moved</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="53"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
         <source>Box coordinates after the last solve (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="55"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="56"/>
         <source>Box sizes as you drew them, before solves (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -284,292 +284,292 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="34"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="35"/>
         <source>Master boards to cut the boards from</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="36"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="37"/>
         <source>Grid cell size tau (thesis 5.4.1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="38"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
         <source>Width of the cut</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
         <source>Extra material between parts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="41"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="42"/>
         <source>Margin cut off every master board edge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="43"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="44"/>
         <source>Shortest side a board may shrink to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="46"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="51"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="52"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="54"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="55"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="58"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="59"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="61"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="62"/>
         <source>Laid out, or what is wrong</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="67"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="68"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
         <source>The last layout and its problem (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="95"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
         <source>What must hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Fixed value or sum offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
         <source>Satisfied, or what breaks it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="132"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Size along x</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along z</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Satisfied, or the boards that break it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="199"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="200"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="37"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="39"/>
         <source>Boards to lay out</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="38"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
         <source>Master boards to cut them from, opened in this order</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="42"/>
         <source>Width of the cut (laser beam, router bit)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="43"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="45"/>
         <source>Material left between parts besides the kerf</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="46"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="48"/>
         <source>Margin kept along every master board edge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="49"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="51"/>
         <source>Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; 0 for none (a laser)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="52"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="54"/>
         <source>Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="55"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="57"/>
         <source>Parts whose longer side is shorter get holding tabs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="62"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="64"/>
         <source>Export the parts&apos; outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the machine cuts them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="67"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="69"/>
         <source>Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD&apos;s DXF import take as they are</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
         <source>Width of the label printer&apos;s labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
         <source>Height of the label printer&apos;s labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="76"/>
         <source>Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under Auto</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="79"/>
         <source>Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only (a panel, track or table saw), with the cut sequence on the cut sheets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="81"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="83"/>
         <source>Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="86"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length (x), across it, or whichever wastes less</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
         <source>The connectors made</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
         <source>Guillotine cuts: the saw cuts to make</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
         <source>Guillotine cuts: their total length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
         <source>Cell size of the layout grid (thesis 5.4.1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="105"/>
         <source>Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
         <source>Ordering swaps tried; -1 = parts squared (thesis 5.4.3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
         <source>Seed of the ordering search</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="112"/>
         <source>Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
         <source>Part area / bounding rectangle of the layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="118"/>
         <source>Part area / area of the master boards used</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
         <source>Area of the master boards used minus part area</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
         <source>Master boards used</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
         <source>The problem laid out (*.pack.json)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="127"/>
         <source>The layout (layout JSON)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -649,17 +649,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="60"/>
         <source>Common-line cutting: a line two boards a kerf apart share is cut once, by the board cut first (Spacing 0 lays boards so); the machine&apos;s paths only, not AsDesigned</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="96"/>
         <source>Length of all cuts: the saw&apos;s for guillotine cuts, else every outline and hole, a line two boards share counted once with CommonLine</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="100"/>
         <source>CommonLine: the length of the lines two boards share, cut once</source>
         <translation type="unfinished"></translation>
     </message>
@@ -674,7 +674,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="34"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
         <source>Coordinates that keep their value: a box and its side</source>
         <translation type="unfinished"></translation>
     </message>
@@ -719,17 +719,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
         <source>Right side of a sum</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -930,47 +930,47 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="115"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="116"/>
         <source>Joint &apos;{}&apos;: choose the Part it moves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="121"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="122"/>
         <source>Joint &apos;{}&apos;: choose the Edge it turns about</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="124"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="125"/>
         <source>Joint &apos;{}&apos;: its edge is on &apos;{}&apos;, which is not a box of part &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="129"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="130"/>
         <source>Joint &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="133"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="134"/>
         <source>Fixed joint &apos;{}&apos;: choose the Base part it holds &apos;{}&apos; to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="137"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="138"/>
         <source>Double pivot &apos;{}&apos;: choose the Base part it links to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="142"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="143"/>
         <source>Double pivot &apos;{}&apos;: choose a face of a box of &apos;{}&apos; for its {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="162"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="163"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="185"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="186"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation type="unfinished"></translation>
@@ -1170,22 +1170,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="52"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="53"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
         <source>Offset along the slide</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="117"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="120"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="124"/>
         <source>Stop</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1395,7 +1395,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>FabGuide: the task panel closed: its document {}
 </source>
         <translation type="unfinished"></translation>
@@ -1531,118 +1531,118 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="305"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="306"/>
         <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
         <source>Add Fit Inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="329"/>
         <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="341"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
         <source>Add Support</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="343"/>
         <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="350"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
         <source>Add Flush</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="352"/>
         <source>Pick two faces of boxes: they lie in one plane</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="367"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
         <source>Add Geometric</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="369"/>
         <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="389"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
         <source>Solve</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="391"/>
         <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="397"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="398"/>
         <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
         <source>Configurations</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="409"/>
         <source>Pose the joints: name configurations and move the mechanism between them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="421"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
         <source>Import Works-like Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="423"/>
         <source>Build a mechanism from a *.workslike.json file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="446"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
         <source>Export Works-like Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="448"/>
         <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="468"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
         <source>Make Printable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="470"/>
         <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="487"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="488"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="492"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
         <source>Export Printable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1748,22 +1748,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="181"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
         <source>TechDraw Pages</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="183"/>
         <source>Make TechDraw pages of the selected layout&apos;s shop report: a page per master board (parts numbered and sized, grain, edge banding, saw cuts), then the cut list and the totals</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="203"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
         <source>Make CAM Job</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="205"/>
         <source>Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, engraved labels) with your tool and post-processor, and write its G-code</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1788,12 +1788,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="341"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="337"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="338"/>
         <source>Usage now: {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1813,27 +1813,27 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="252"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="253"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="257"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="274"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="275"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="317"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="318"/>
         <source>usage {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="352"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="353"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation type="unfinished"></translation>
@@ -1964,74 +1964,74 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="121"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="122"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="153"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="154"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="248"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="249"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="271"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="272"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="289"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="346"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="347"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="145"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="147"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="162"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="164"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="193"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="195"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="198"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="200"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="202"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="228"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="230"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="282"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="284"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="290"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="292"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2153,22 +2153,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
         <source>Mend the model as the note below says.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
         <source>Change or delete one of the relationships.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="205"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="207"/>
         <source>Or move the parts that meet apart.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2275,42 +2275,42 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
         <source>{} (current)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
         <source>New configuration</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="84"/>
         <source>Configuration {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Cannot show it: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Moves: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Moves: nothing yet: tick the joints this configuration poses</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="131"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="135"/>
         <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="133"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="137"/>
         <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2330,12 +2330,12 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>closed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>changed by undo or redo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2350,32 +2350,32 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="325"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="326"/>
         <source>Pick boxes of at least two parts; the last one picked is the enclosing part.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="340"/>
         <source>Pick boxes of at least two parts; the last one picked is the supported part.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="357"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="358"/>
         <source>Pick exactly two faces of boxes.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="359"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="360"/>
         <source>Pick faces of two different boxes: two faces of one box never lie in one plane.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="374"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="375"/>
         <source>Pick one or two edges of boxes, and nothing else (a face or a whole box says no length).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="415"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="416"/>
         <source>Select the mechanism to pose.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2385,38 +2385,38 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="456"/>
         <source>Select the mechanism to export.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="464"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="465"/>
         <source>FabGuide wrote {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="477"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
         <source>Select the mechanism to print.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
         <source>Select the printable to export.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
         <source>There is no printable in this document yet.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="507"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="508"/>
         <source>Folder for the print files</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="177"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="178"/>
         <source>FabGuide wrote:
   {}
 </source>
@@ -2454,7 +2454,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="192"/>
         <source>Select the layout to draw.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2489,7 +2489,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="91"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="92"/>
         <source>Constraint</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2514,7 +2514,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2569,7 +2569,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="214"/>
         <source>Select the layout to machine.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2579,7 +2579,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
         <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
         <translation type="unfinished"></translation>
     </message>

@@ -14,92 +14,92 @@
         <translation>Je Gelenk: bei einem Doppelgelenk der Punkt, um den sich sein Teil dreht, um hierher zu gelangen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="20"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
         <source>The part the joint moves</source>
         <translation>Das Teil, das das Gelenk bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="21"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="22"/>
         <source>The part it hangs on, which carries it along when it moves; empty: the ground</source>
         <translation>Das Teil, an dem es hängt und das es mitnimmt, wenn es sich bewegt; leer: der Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="25"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="26"/>
         <source>The edge of one of the part&apos;s boxes it turns about</source>
         <translation>Die Kante eines Quaders des Teils, um die es dreht</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="28"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="29"/>
         <source>The direction it slides along</source>
         <translation>Die Richtung, in die es gleitet</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="31"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="32"/>
         <source>The face of the part&apos;s box with the pivot</source>
         <translation>Die Fläche des Quaders des Teils mit dem Drehpunkt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="33"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="34"/>
         <source>The pivot on the part (placed by the solve)</source>
         <translation>Der Drehpunkt am Teil (vom Lösen gesetzt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="35"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="36"/>
         <source>The face of the base&apos;s box, in the same plane, with the other pivot</source>
         <translation>Die Fläche des Quaders der Basis, in derselben Ebene, mit dem anderen Drehpunkt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="38"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="39"/>
         <source>The pivot on the base (placed by the solve)</source>
         <translation>Der Drehpunkt an der Basis (vom Lösen gesetzt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="30"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="31"/>
         <source>Smallest size of a box along any axis</source>
         <translation>Kleinste Größe eines Quaders entlang jeder Achse</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="32"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="33"/>
         <source>Least wall around a cavity on its sides that are not openings</source>
         <translation>Kleinste Wand um einen Hohlraum an seinen Seiten, die keine Öffnungen sind</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="36"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="37"/>
         <source>Box coordinates you changed since the last solve keep their new value while the rest adapts</source>
         <translation>Quaderkoordinaten, die Sie seit dem letzten Lösen geändert haben, behalten ihren neuen Wert, während sich der Rest anpasst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="39"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="40"/>
         <source>The configuration the Configurations panel last showed; new relationships hold in it</source>
         <translation>Die Konfiguration, die das Konfigurationen-Fenster zuletzt zeigte; neue Beziehungen gelten in ihr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="42"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="43"/>
         <source>Solved, or the relationships in conflict</source>
         <translation>Gelöst, oder die Beziehungen im Widerspruch</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="44"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="45"/>
         <source>Largest constraint violation after the solve, mm</source>
         <translation>Größte Verletzung einer Vorgabe nach dem Lösen, mm</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="47"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="48"/>
         <source>Parts a conflict blames besides its relationships&apos; (overlapping parts, thin walls)</source>
         <translation>Teile, die ein Widerspruch außer denen seiner Beziehungen nennt (überlappende Teile, dünne Wände)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="50"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="51"/>
         <source>What the last solve changed: box, size old → new, how far it moved</source>
         <translation>Was das letzte Lösen geändert hat: Quader, Größe alt → neu, wie weit er verschoben wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="53"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="54"/>
         <source>Box coordinates after the last solve (JSON)</source>
         <translation>Quaderkoordinaten nach dem letzten Lösen (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="55"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="56"/>
         <source>Box sizes as you drew them, before solves (JSON)</source>
         <translation>Quadergrößen, wie Sie sie gezeichnet haben, vor dem Lösen (JSON)</translation>
     </message>
@@ -284,292 +284,292 @@
         <translation>Andere Seite des Umrissrechtecks</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="34"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="35"/>
         <source>Master boards to cut the boards from</source>
         <translation>Rohplatten, aus denen die Platten geschnitten werden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="36"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="37"/>
         <source>Grid cell size tau (thesis 5.4.1)</source>
         <translation>Rasterzellgröße tau (Dissertation 5.4.1)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="38"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
         <source>Width of the cut</source>
         <translation>Breite des Schnitts</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
         <source>Extra material between parts</source>
         <translation>Zusätzliches Material zwischen Teilen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="41"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="42"/>
         <source>Margin cut off every master board edge</source>
         <translation>Rand, der an jeder Kante der Rohplatte abgeschnitten wird</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="43"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="44"/>
         <source>Shortest side a board may shrink to</source>
         <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="46"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation>Platten, die sich berühren, bleiben in Berührung (Kantenfang)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation>Wie viel Mal ihre jetzige Länge Vorschlagen die Seite einer Platte machen darf (1,5: um die Hälfte länger), damit eine Leiste eine Leiste bleibt; Ihre eigenen Änderungen sind nicht begrenzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="51"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="52"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation>Ein Quader, den Sie ändern, behält seine neue Größe und Lage, während sich der Rest den Vorgaben anpasst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="54"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="55"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation>Tabellen-Aliase, die die Quader über Ausdrücke steuern, als 'Sheet.alias min max' (Dissertation 5.4.2.2); sind sie angegeben, ändert Vorschlagen diese statt der Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="58"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="59"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation>Teilefläche / umschließendes Rechteck des Layouts (Dissertation 5.2.3)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="61"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="62"/>
         <source>Laid out, or what is wrong</source>
         <translation>Ausgelegt, oder was nicht stimmt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation>Was die letzte Neuberechnung oder der letzte übernommene Vorschlag, der Platten bewegte, getan hat: Größe alt → neu, wie weit</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="67"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="68"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation>Platten nach der letzten gültigen Neuberechnung (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
         <source>The last layout and its problem (JSON)</source>
         <translation>Das letzte Layout und seine Aufgabe (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="95"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
         <source>What must hold</source>
         <translation>Was gelten muss</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Fixed value or sum offset</source>
         <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
         <source>Satisfied, or what breaks it</source>
         <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="132"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Size along x</source>
         <translation>Größe entlang x</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along y</source>
         <translation>Größe entlang y</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along z</source>
         <translation>Größe entlang z</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Satisfied, or the boards that break it</source>
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="199"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="200"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="37"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="39"/>
         <source>Boards to lay out</source>
         <translation>Auszulegende Platten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="38"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
         <source>Master boards to cut them from, opened in this order</source>
         <translation>Rohplatten, aus denen sie geschnitten werden, in dieser Reihenfolge angebrochen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="40"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="42"/>
         <source>Width of the cut (laser beam, router bit)</source>
         <translation>Breite des Schnitts (Laserstrahl, Fräser)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="43"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="45"/>
         <source>Material left between parts besides the kerf</source>
         <translation>Material, das zusätzlich zur Schnittbreite zwischen den Teilen bleibt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="46"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="48"/>
         <source>Margin kept along every master board edge</source>
         <translation>Rand, der an jeder Kante der Rohplatte frei bleibt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="49"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="51"/>
         <source>Router bit diameter: the cut sheets relieve inside corners (slots, notches) so the bit cuts them square; 0 for none (a laser)</source>
         <translation>Fräserdurchmesser: die Zuschnittpläne geben Innenecken (Schlitze, Kerben) frei, damit der Fräser sie rechtwinklig schneidet; 0 für keine (ein Laser)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="52"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="54"/>
         <source>Holding tabs left in the outer cut of small parts so they stay in the sheet; 0 for none</source>
         <translation>Haltestege im Außenschnitt kleiner Teile, damit sie in der Platte bleiben; 0 für keine</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="55"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="57"/>
         <source>Parts whose longer side is shorter get holding tabs</source>
         <translation>Teile, deren längere Seite kürzer ist, erhalten Haltestege</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="62"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="64"/>
         <source>Export the parts&apos; outlines as designed (no kerf offset, no dogbones, closed, holding tabs on a layer of their own) for CAM software that offsets by its tool itself; off: tool paths as a laser or the machine cuts them</source>
         <translation>Die Umrisse der Teile wie konstruiert exportieren (kein Versatz um die Schnittbreite, keine Dogbones, geschlossen, Haltestege auf einer eigenen Ebene) für CAM-Software, die selbst um ihr Werkzeug versetzt; aus: Werkzeugbahnen, wie ein Laser oder die Maschine sie schneidet</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="67"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="69"/>
         <source>Labels as text in a font; off: as single strokes to engrave, which laser software, CAM and FreeCAD&apos;s DXF import take as they are</source>
         <translation>Beschriftungen als Text in einer Schrift; aus: als einzelne Striche zum Gravieren, die Laser-Software, CAM und FreeCADs DXF-Import unverändert übernehmen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="70"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
         <source>Width of the label printer&apos;s labels</source>
         <translation>Breite der Etiketten des Etikettendruckers</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="72"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
         <source>Height of the label printer&apos;s labels</source>
         <translation>Höhe der Etiketten des Etikettendruckers</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="74"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="76"/>
         <source>Connectors where boards meet: finger joints or cross slots; dowels for boards of 18 mm or more under Auto</source>
         <translation>Verbinder, wo Platten aufeinandertreffen: Fingerzinken oder Kreuzschlitze; Dübel für Platten ab 18 mm unter Auto</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="77"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="79"/>
         <source>Free: any outline (a CNC router or laser follows it); Guillotine: straight cuts from edge to edge only (a panel, track or table saw), with the cut sequence on the cut sheets</source>
         <translation>Frei: jeder Umriss (eine CNC-Fräse oder ein Laser folgt ihm); Guillotine: nur gerade Schnitte von Kante zu Kante (Plattensäge, Tauchsäge oder Tischkreissäge), mit der Schnittfolge auf den Zuschnittplänen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="81"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="83"/>
         <source>Guillotine cuts: at most this many changes of direction (2, 3, ...); 0 = unlimited</source>
         <translation>Guillotineschnitte: höchstens so viele Richtungswechsel (2, 3, ...); 0 = unbegrenzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="84"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="86"/>
         <source>Guillotine cuts: the first cuts along the sheet&apos;s length (x), across it, or whichever wastes less</source>
         <translation>Guillotineschnitte: die ersten Schnitte längs der Platte (x), quer dazu oder wie es weniger Verschnitt gibt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="88"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
         <source>The connectors made</source>
         <translation>Die erstellten Verbinder</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="90"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
         <source>Guillotine cuts: the saw cuts to make</source>
         <translation>Guillotineschnitte: die auszuführenden Sägeschnitte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="92"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
         <source>Guillotine cuts: their total length</source>
         <translation>Guillotineschnitte: ihre Gesamtlänge</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
         <source>Cell size of the layout grid (thesis 5.4.1)</source>
         <translation>Zellgröße des Layout-Rasters (Dissertation 5.4.1)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="105"/>
         <source>Free rotation: boards without grain may turn by every multiple of this many degrees (a divisor of 90, e.g. 15); 0 = quarter turns only</source>
         <translation>Freie Drehung: Platten ohne Maserung dürfen sich um jedes Vielfache so vieler Grad drehen (ein Teiler von 90, z. B. 15); 0 = nur Vierteldrehungen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
         <source>Ordering swaps tried; -1 = parts squared (thesis 5.4.3)</source>
         <translation>Versuchte Vertauschungen der Reihenfolge; -1 = Teilezahl zum Quadrat (Dissertation 5.4.3)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
         <source>Seed of the ordering search</source>
         <translation>Startwert der Reihenfolgesuche</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="112"/>
         <source>Seconds the search may take at most; in FreeCAD a dialog shows it and Stop keeps the best layout so far</source>
         <translation>Sekunden, die die Suche höchstens dauern darf; in FreeCAD zeigt ein Dialog sie an, und Stopp behält das bisher beste Layout</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
         <source>Part area / bounding rectangle of the layout</source>
         <translation>Teilefläche / umschließendes Rechteck des Layouts</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="116"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="118"/>
         <source>Part area / area of the master boards used</source>
         <translation>Teilefläche / Fläche der benutzten Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="119"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
         <source>Area of the master boards used minus part area</source>
         <translation>Fläche der benutzten Rohplatten minus Teilefläche</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="121"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
         <source>Master boards used</source>
         <translation>Benutzte Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="123"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
         <source>The problem laid out (*.pack.json)</source>
         <translation>Die ausgelegte Aufgabe (*.pack.json)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="125"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="127"/>
         <source>The layout (layout JSON)</source>
         <translation>Das Layout (Layout-JSON)</translation>
     </message>
@@ -649,17 +649,17 @@
         <translation>Umleimer auf der zweiten kurzen Kante (z. B. 'Eiche 1 mm'); leer: keiner</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="58"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="60"/>
         <source>Common-line cutting: a line two boards a kerf apart share is cut once, by the board cut first (Spacing 0 lays boards so); the machine&apos;s paths only, not AsDesigned</source>
         <translation>Gemeinsamer Schnitt: eine Linie, die zwei eine Schnittbreite auseinanderliegende Platten teilen, wird einmal geschnitten, mit der zuerst geschnittenen Platte (Spacing 0 legt Platten so); nur für die Bahnen der Maschine, nicht AsDesigned</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="94"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="96"/>
         <source>Length of all cuts: the saw&apos;s for guillotine cuts, else every outline and hole, a line two boards share counted once with CommonLine</source>
         <translation>Länge aller Schnitte: bei Guillotineschnitten die der Säge, sonst alle Umrisse und Löcher, eine Linie, die zwei Platten teilen, mit CommonLine einmal gezählt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="100"/>
         <source>CommonLine: the length of the lines two boards share, cut once</source>
         <translation>CommonLine: die Länge der Linien, die zwei Platten teilen, einmal geschnitten</translation>
     </message>
@@ -674,7 +674,7 @@
         <translation>Wie weit das Gelenk sein Teil verschiebt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="34"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="35"/>
         <source>Coordinates that keep their value: a box and its side</source>
         <translation>Koordinaten, die ihren Wert behalten: ein Quader und seine Seite</translation>
     </message>
@@ -719,17 +719,17 @@
         <translation>Das Layout, aus dem dies erstellt wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation>Quader und was von ihnen (size.x, centre.z, min.y, max.x): gleich, symmetrisch (zwei), Summe (linke Seite), fest und Bereich (einer)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
         <source>Right side of a sum</source>
         <translation>Rechte Seite einer Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation>Symmetrisch zu dieser Referenz (leer: jetzige Mitte)</translation>
     </message>
@@ -932,47 +932,47 @@ U/min</translation>
         <translation>Konfiguration '{}': '{}' ist kein Gelenk</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="115"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="116"/>
         <source>Joint &apos;{}&apos;: choose the Part it moves</source>
         <translation>Gelenk '{}': wählen Sie das Teil (Part), das es bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="121"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="122"/>
         <source>Joint &apos;{}&apos;: choose the Edge it turns about</source>
         <translation>Gelenk '{}': wählen Sie die Kante (Edge), um die es dreht</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="124"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="125"/>
         <source>Joint &apos;{}&apos;: its edge is on &apos;{}&apos;, which is not a box of part &apos;{}&apos;</source>
         <translation>Gelenk '{}': seine Kante liegt auf '{}', das kein Quader des Teils '{}' ist</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="129"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="130"/>
         <source>Joint &apos;{}&apos;: {}</source>
         <translation>Gelenk '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="133"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="134"/>
         <source>Fixed joint &apos;{}&apos;: choose the Base part it holds &apos;{}&apos; to</source>
         <translation>Festes Gelenk '{}': wählen Sie das Basisteil (Base), an dem es '{}' hält</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="137"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="138"/>
         <source>Double pivot &apos;{}&apos;: choose the Base part it links to</source>
         <translation>Doppelgelenk '{}': wählen Sie das Basisteil (Base), mit dem es verbindet</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/joints.py" line="142"/>
+        <location filename="../../freecad/fabguide/function/joints.py" line="143"/>
         <source>Double pivot &apos;{}&apos;: choose a face of a box of &apos;{}&apos; for its {}</source>
         <translation>Doppelgelenk '{}': wählen Sie eine Fläche eines Quaders von '{}' für {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="162"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="163"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation>Mechanismus '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="185"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="186"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation>{}: diese können nicht zugleich gelten: {}. {}
@@ -1177,22 +1177,22 @@ U/min</translation>
         <translation>Einen *.flatpack.json-Entwurf importieren oder exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="52"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation>Winkel: sein Vorzeichen gibt an, wohin das Teil schwenkt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="53"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
         <source>Offset along the slide</source>
         <translation>Verschiebung entlang der Führung</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="117"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="120"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="124"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
@@ -1402,7 +1402,7 @@ U/min</translation>
         <translation>Ein anderer Aufgabenbereich ist offen: beenden Sie ihn zuerst mit OK oder Abbrechen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>FabGuide: the task panel closed: its document {}
 </source>
         <translation>FabGuide: das Aufgabenfenster wurde geschlossen: sein Dokument {}
@@ -1539,119 +1539,119 @@ U/min</translation>
         <translation>Abdecken hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="305"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="306"/>
         <source>These parts cover that one (picked last): faces in one plane, packed, covering its faces or openings</source>
         <translation>Diese Teile decken jenes (zuletzt gewählte) ab: Flächen in einer Ebene, dicht an dicht, über seinen Flächen oder Öffnungen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="327"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
         <source>Add Fit Inside</source>
         <translation>Einpassen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="328"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="329"/>
         <source>These parts fit inside that one (picked last; pick one of its cavities to fit in it)</source>
         <translation>Diese Teile passen in jenes (zuletzt gewählte; einen seiner Hohlräume wählen, um in ihn einzupassen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="341"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
         <source>Add Support</source>
         <translation>Stützen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="342"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="343"/>
         <source>These parts support that one (picked last): it rests on their tops; they stand on one ground</source>
         <translation>Diese Teile stützen jenes (zuletzt gewählte): es liegt auf ihren Oberseiten; sie stehen auf einem Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="350"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
         <source>Add Flush</source>
         <translation>Bündig hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="351"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="352"/>
         <source>Pick two faces of boxes: they lie in one plane</source>
         <translation>Zwei Flächen von Quadern wählen: sie liegen in einer Ebene</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="367"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
         <source>Add Geometric</source>
         <translation>Geometrisch hinzufügen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="368"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="369"/>
         <source>Pick two edges of boxes: their lengths stay equal (one edge: its length stays as it is now)</source>
         <translation>Zwei Kanten von Quadern wählen: ihre Längen bleiben gleich (eine Kante: ihre Länge bleibt wie jetzt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="389"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="390"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="391"/>
         <source>Solve the selected (or every) mechanism: the least change that makes its relationships hold</source>
         <translation>Den gewählten (oder jeden) Mechanismus lösen: die kleinste Änderung, mit der seine Beziehungen gelten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="397"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="398"/>
         <source>There is no mechanism yet: use Mechanism from Boxes first.</source>
         <translation>Es gibt noch keinen Mechanismus: verwenden Sie zuerst „Mechanismus aus Quadern“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="407"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
         <source>Configurations</source>
         <translation>Konfigurationen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="408"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="409"/>
         <source>Pose the joints: name configurations and move the mechanism between them</source>
         <translation>Die Gelenke stellen: Konfigurationen benennen und den Mechanismus zwischen ihnen bewegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="421"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
         <source>Import Works-like Model</source>
         <translation>Funktionsmodell importieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="422"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="423"/>
         <source>Build a mechanism from a *.workslike.json file</source>
         <translation>Einen Mechanismus aus einer *.workslike.json-Datei erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="446"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
         <source>Export Works-like Model</source>
         <translation>Funktionsmodell exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="447"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="448"/>
         <source>Write the selected mechanism as a *.workslike.json file (the CLI&apos;s fabguide solve reads it)</source>
         <translation>Den gewählten Mechanismus als *.workslike.json-Datei schreiben (die Kommandozeile liest sie mit fabguide solve)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="468"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
         <source>Make Printable</source>
         <translation>Druckbar machen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="469"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="470"/>
         <source>Print-in-place bodies of the selected (or only) mechanism: gaps, cavities, hinge pins and yokes, pivot links; checked along every motion</source>
         <translation>In einem Stück druckbare Körper des gewählten (oder einzigen) Mechanismus: Spalte, Hohlräume, Scharnierstifte und Gabeln, Gelenklenker; entlang jeder Bewegung geprüft</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="487"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="488"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation>{}: kleinstes Spiel {:.3f} mm ({})
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="492"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
         <source>Export Printable</source>
         <translation>Druckbares exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation>Das gewählte Druckbare als STL, 3MF und STEP schreiben: die Baugruppe und eine Datei je Körper</translation>
     </message>
@@ -1758,22 +1758,22 @@ U/min</translation>
         <translation>SVG- und DXF-Zuschnittpläne je Rohplatte, eine CSV-Stückliste, den PDF-Werkstattbericht und Teileetiketten für den gewählten Zuschnitt schreiben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="181"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
         <source>TechDraw Pages</source>
         <translation>TechDraw-Seiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="182"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="183"/>
         <source>Make TechDraw pages of the selected layout&apos;s shop report: a page per master board (parts numbered and sized, grain, edge banding, saw cuts), then the cut list and the totals</source>
         <translation>TechDraw-Seiten des Werkstattberichts des gewählten Zuschnitts erstellen: eine Seite je Rohplatte (Teile nummeriert und bemaßt, Faser, Kantenband, Sägeschnitte), dann die Stückliste und die Summen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="203"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
         <source>Make CAM Job</source>
         <translation>CAM-Job erstellen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="204"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="205"/>
         <source>Make a FreeCAD CAM job per master board of the selected layout (profiles, tags, dogbones, drilling, engraved labels) with your tool and post-processor, and write its G-code</source>
         <translation>Je Rohplatte des gewählten Zuschnitts einen FreeCAD-CAM-Job erstellen (Konturen, Haltestege, Dogbones, Bohrungen, gravierte Etiketten) mit Ihrem Werkzeug und Postprozessor, und seinen G-Code schreiben</translation>
     </message>
@@ -1798,12 +1798,12 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="340"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="341"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="337"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="338"/>
         <source>Usage now: {:.3f}</source>
         <translation>Nutzung jetzt: {:.3f}</translation>
     </message>
@@ -1823,27 +1823,27 @@ U/min</translation>
         <translation>&lt;b&gt;Keine Vorschläge:&lt;/b&gt; {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="252"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="253"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
         <translation>Keine Variante dieses Entwurfs hat innerhalb seiner Vorgaben weniger Verschnitt{}{}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="257"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
         <translation>{} Vorschlag/Vorschläge in {:.1f} s{}. Wählen Sie einen; fahren Sie seinen Pfad entlang; OK übernimmt ihn.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="274"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="275"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
         <translation>Vorschlag {}: {} Platte(n) (jetzt {}), Verschnitt {:.3f} m² (jetzt {:.3f}), größter Rest {:.0f} x {:.0f} mm, Nutzung {:.3f} (jetzt {:.3f})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="317"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="318"/>
         <source>usage {:.3f}</source>
         <translation>Nutzung {:.3f}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="352"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="353"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation>FabGuide: die Größe von {} festgesetzt
@@ -1975,76 +1975,76 @@ U/min</translation>
         <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="121"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="122"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="153"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="154"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="248"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="249"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="271"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="272"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="289"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="346"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="347"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="145"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="147"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation>Layout '{}': {}{}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="162"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="164"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation>{}: {} Teile auf {} Rohplatte(n), Nutzung {:.1%}, Plattenausnutzung {:.1%}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="193"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="195"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation>Layout '{}': keine Platten auszulegen (fügen Sie FabGuide-Platten zu Boards hinzu)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="198"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation>Layout '{}': keine Rohplatten (fügen Sie eine zu MasterBoards hinzu)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="200"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="202"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation>Layout '{}': Platte '{}' hat keine Form; erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="228"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="230"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation>Layout '{}': {} liegen in einer Ebene und berühren sich, werden also als ein Stück geschnitten; setzen Sie ihre Quantity auf 1</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="282"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="284"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation>Layout '{}' wurde noch nicht berechnet: erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="290"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="292"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation>{} Beheben Sie das zuerst: was jetzt erstellt würde, zeigte das letzte Layout, das erstellt werden konnte, nicht die Platten, wie sie sind.</translation>
     </message>
@@ -2168,22 +2168,22 @@ U/min</translation>
         <translation>eine Konfiguration</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
         <source>Mend the model as the note below says.</source>
         <translation>Beheben Sie das Modell, wie der Hinweis unten sagt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
         <source>Change or delete one of the relationships.</source>
         <translation>Ändern oder löschen Sie eine der Beziehungen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="205"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation>Oder geben Sie einen Quader frei (Locks des Mechanismus).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="207"/>
         <source>Or move the parts that meet apart.</source>
         <translation>Oder rücken Sie die Teile, die aufeinandertreffen, auseinander.</translation>
     </message>
@@ -2292,42 +2292,42 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Ordner für den G-Code</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
         <source>{} (current)</source>
         <translation>{} (aktuell)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="41"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
         <source>New configuration</source>
         <translation>Neue Konfiguration</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="80"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="84"/>
         <source>Configuration {}</source>
         <translation>Konfiguration {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Cannot show it: {}</source>
         <translation>Kann sie nicht zeigen: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Moves: {}</source>
         <translation>Bewegt: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="109"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
         <source>Moves: nothing yet: tick the joints this configuration poses</source>
         <translation>Bewegt: noch nichts: haken Sie die Gelenke an, die diese Konfiguration stellt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="131"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="135"/>
         <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
         <translation>Der Winkel von {}: &quot;{}&quot; ist kein Winkel von {:g} bis {:g}; geben Sie ihn erneut ein.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="133"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="137"/>
         <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
         <translation>Die Verschiebung von {}: &quot;{}&quot; ist keine Länge von {:g} bis {:g}; geben Sie sie erneut ein.</translation>
     </message>
@@ -2347,12 +2347,12 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Wählen Sie den Flachpack-Entwurf.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>closed</source>
         <translation>wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="138"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
         <source>changed by undo or redo</source>
         <translation>wurde durch Rückgängig oder Wiederholen geändert</translation>
     </message>
@@ -2367,32 +2367,32 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das abgedeckte Teil.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="325"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="326"/>
         <source>Pick boxes of at least two parts; the last one picked is the enclosing part.</source>
         <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das umschließende Teil.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="339"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="340"/>
         <source>Pick boxes of at least two parts; the last one picked is the supported part.</source>
         <translation>Wählen Sie Quader von mindestens zwei Teilen; der zuletzt gewählte ist das getragene Teil.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="357"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="358"/>
         <source>Pick exactly two faces of boxes.</source>
         <translation>Wählen Sie genau zwei Flächen von Quadern.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="359"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="360"/>
         <source>Pick faces of two different boxes: two faces of one box never lie in one plane.</source>
         <translation>Wählen Sie Flächen zweier verschiedener Quader: zwei Flächen eines Quaders liegen nie in einer Ebene.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="374"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="375"/>
         <source>Pick one or two edges of boxes, and nothing else (a face or a whole box says no length).</source>
         <translation>Wählen Sie eine oder zwei Kanten von Quadern und nichts anderes (eine Fläche oder ein ganzer Quader gibt keine Länge an).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="415"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="416"/>
         <source>Select the mechanism to pose.</source>
         <translation>Wählen Sie den Mechanismus, der gestellt werden soll.</translation>
     </message>
@@ -2402,39 +2402,39 @@ hält an: das bisher Beste bleibt</translation>
         <translation>In diesem Dokument gibt es noch keinen Mechanismus.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="455"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="456"/>
         <source>Select the mechanism to export.</source>
         <translation>Wählen Sie den Mechanismus, der exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="464"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="465"/>
         <source>FabGuide wrote {}
 </source>
         <translation>FabGuide hat {} geschrieben
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="477"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="478"/>
         <source>Select the mechanism to print.</source>
         <translation>Wählen Sie den Mechanismus, der gedruckt werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
         <source>Select the printable to export.</source>
         <translation>Wählen Sie das Druckteil, das exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="503"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
         <source>There is no printable in this document yet.</source>
         <translation>In diesem Dokument gibt es noch kein Druckteil.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="507"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="508"/>
         <source>Folder for the print files</source>
         <translation>Ordner für die Druckdateien</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="177"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="178"/>
         <source>FabGuide wrote:
   {}
 </source>
@@ -2475,7 +2475,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Ordner für die Zuschnittpläne</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="192"/>
         <source>Select the layout to draw.</source>
         <translation>Wählen Sie das Layout, das gezeichnet werden soll.</translation>
     </message>
@@ -2510,7 +2510,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="91"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="92"/>
         <source>Constraint</source>
         <translation>Vorgabe</translation>
     </message>
@@ -2535,7 +2535,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>0 oder mehr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation>Layout '{}' ist fehlerhaft.</translation>
     </message>
@@ -2590,7 +2590,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>{}: '{}' nennt keinen Quader (schreiben Sie 'Quaderbezeichnung.{}')</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/material_commands.py" line="213"/>
+        <location filename="../../freecad/fabguide/gui/material_commands.py" line="214"/>
         <source>Select the layout to machine.</source>
         <translation>Wählen Sie das Layout, das gefräst werden soll.</translation>
     </message>
@@ -2600,7 +2600,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Entwurf '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster). Beheben Sie das zuerst: Vorschlagen ginge von ihren letzten Formen aus.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="286"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
         <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
         <translation>Layout '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster).</translation>
     </message>

@@ -12,7 +12,8 @@ def missing_message(cause=None):
     return translate("FabGuide", "FabGuide's compiled core is not built for this FreeCAD (Python {}.{}){}: choose "
                                  "FabGuide > Build the Core, or install the fabguide Debian package (README.md, "
                                  "Install).").format(
-        *sys.version_info[:2], translate("FabGuide", " (the one there does not load: {})").format(cause) if cause else "")
+        *sys.version_info[:2],
+        translate("FabGuide", " (the one there does not load: {})").format(cause) if cause else "")
 
 
 # Where the core is looked for: built into this folder; installed for the system's Python (the Debian package).

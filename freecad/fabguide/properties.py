@@ -138,7 +138,8 @@ class Proxy(Stateless):
         if test is None or test(obj, value):
             return ""
         return translate("FabGuide", "{} '{}': {} must be {}").format(
-            translate("FabGuide", self.NOUN), obj.Label, prop, must() if callable(must) else translate("FabGuide", must))
+            translate("FabGuide", self.NOUN), obj.Label, prop,
+            must() if callable(must) else translate("FabGuide", must))
 
     def execute(self, obj):
         """A mistake in the model (a ValueError: FabGuide's own errors, the core's FormatError; or the core's

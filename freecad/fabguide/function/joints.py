@@ -13,7 +13,8 @@ AXES = ["x", "y", "z"]
 class Joint(properties.Proxy):
     KIND, NOUN = None, QT_TRANSLATE_NOOP("FabGuide", "Joint")  # KIND as *.workslike.json names it
     VALID = dict(Part=properties.links(parts.is_part, QT_TRANSLATE_NOOP("FabGuide", "a FabGuide part")),
-                 Base=properties.links(parts.is_part, QT_TRANSLATE_NOOP("FabGuide", "a FabGuide part (empty: the ground)")))
+                 Base=properties.links(parts.is_part,
+                                       QT_TRANSLATE_NOOP("FabGuide", "a FabGuide part (empty: the ground)")))
 
     def define(self, obj):
         add = properties.add

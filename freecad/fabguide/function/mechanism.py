@@ -23,7 +23,8 @@ class MechanismError(ValueError):
 class Mechanism(properties.Proxy):
     TYPE, NOUN = "FabGuide::Mechanism", QT_TRANSLATE_NOOP("FabGuide", "Mechanism")
     VALID = dict(MinimumSize=properties.at_least(0.01, QT_TRANSLATE_NOOP("FabGuide", " mm")),
-                 ShownConfiguration=properties.links(configuration.is_configuration, QT_TRANSLATE_NOOP("FabGuide", "a configuration")))
+                 ShownConfiguration=properties.links(configuration.is_configuration,
+                                                     QT_TRANSLATE_NOOP("FabGuide", "a configuration")))
 
     def define(self, obj):
         add = properties.add

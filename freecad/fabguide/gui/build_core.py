@@ -37,8 +37,8 @@ def obstacle():
     if not os.path.isfile(os.path.join(SOURCE, "CMakeLists.txt")):
         return translate("FabGuide", "this FabGuide has no sources to build from ({}): install it again").format(SOURCE)
     if shutil.which("cmake") is None or not os.access(os.path.join(SOURCE, "tools", "install-deps"), os.X_OK):
-        return translate("FabGuide", "cmake is not installed: in a terminal, run  sudo {}/tools/install-deps core").format(
-            SOURCE)
+        return translate("FabGuide", "cmake is not installed: in a terminal, run  sudo {}/tools/install-deps "
+                                     "core").format(SOURCE)
     missing = subprocess.run([os.path.join(SOURCE, "tools", "install-deps"), "--missing", "core"],
                              capture_output=True, text=True).stdout.split()
     if missing:
@@ -66,8 +66,8 @@ class BuildDialog:
         self.dialog = QtGui.QDialog(FreeCADGui.getMainWindow())
         self.dialog.setWindowTitle(translate("FabGuide", "Build FabGuide's core"))
         layout = QtGui.QVBoxLayout(self.dialog)
-        self.label = QtGui.QLabel(translate("FabGuide", "Building the core for this FreeCAD (Python {}.{}) in {}").format(
-            *sys.version_info[:2], build_dir()))
+        self.label = QtGui.QLabel(translate("FabGuide", "Building the core for this FreeCAD (Python {}.{}) in "
+                                                        "{}").format(*sys.version_info[:2], build_dir()))
         self.label.setWordWrap(True)
         self.bar = QtGui.QProgressBar()
         self.output = QtGui.QPlainTextEdit()
@@ -112,8 +112,8 @@ class BuildDialog:
         try:
             path = install_core(build_dir())
         except (OSError, RuntimeError) as error:
-            return self.finish("failed", translate("FabGuide", "The core could not be put into the workbench: {}").format(
-                error))
+            return self.finish("failed", translate("FabGuide", "The core could not be put into the workbench: "
+                                                           "{}").format(error))
         self.bar.setValue(100)
         self.finish("built", translate("FabGuide", "Built {}. Restart FreeCAD to use FabGuide.").format(path))
 

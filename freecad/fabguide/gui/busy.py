@@ -35,8 +35,8 @@ def run(title, work, cancel, seconds=None, stoppable=True):
 
 def wait(title, thread, cancel, seconds, stoppable):
     """Shows the dialog until the thread ends; False when the user cancelled work that cannot stop early."""
-    dialog = QtGui.QProgressDialog(title, translate("FabGuide", "Stop") if stoppable else translate("FabGuide", "Cancel"),
-                                   0, 100 if seconds else 0,
+    button = translate("FabGuide", "Stop") if stoppable else translate("FabGuide", "Cancel")
+    dialog = QtGui.QProgressDialog(title, button, 0, 100 if seconds else 0,
                                    FreeCADGui.getMainWindow())
     dialog.setWindowTitle(translate("FabGuide", "FabGuide"))
     dialog.setWindowModality(QtCore.Qt.ApplicationModal)
@@ -58,7 +58,8 @@ def wait(title, thread, cancel, seconds, stoppable):
         if seconds:
             dialog.setValue(min(99, int(100 * elapsed / seconds)))
             if not cancel.cancelled:
-                dialog.setLabelText(translate("FabGuide", "{}\n{:.0f} s of at most {:.0f} s").format(title, elapsed, seconds))
+                dialog.setLabelText(translate("FabGuide", "{}\n{:.0f} s of at most {:.0f} s").format(
+                    title, elapsed, seconds))
         QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
         thread.join(0.05)
     dialog.close()

@@ -10,7 +10,7 @@ import FreeCADGui
 
 from freecad.fabguide import preferences
 from freecad.fabguide.material import cam, layout
-from freecad.fabguide.gui import resources
+from freecad.fabguide.gui import editing, resources
 from freecad.fabguide.gui.command_base import transaction
 from freecad.fabguide.i18n import translate
 
@@ -55,9 +55,9 @@ class CamJobPanel:
                 box.setValue(value)
                 table.setCellWidget(row, column, box)
                 self.boxes[row].append(box)
-        table.horizontalHeader().setSectionResizeMode(QtGui.QHeaderView.Stretch)  # no scrolling sideways
-        table.setFixedHeight(table.horizontalHeader().sizeHint().height() + table.verticalHeader().length() +
-                             2 * table.frameWidth())  # as tall as its rows
+        across, down = (editing.typed(h, QtGui.QHeaderView) for h in (table.horizontalHeader(), table.verticalHeader()))
+        across.setSectionResizeMode(QtGui.QHeaderView.Stretch)  # no scrolling sideways
+        table.setFixedHeight(across.sizeHint().height() + down.length() + 2 * table.frameWidth())  # as tall as its rows
 
     def speeds(self, column):
         """{material: value} of the table's `column` (0 feed, 1 spindle speed)."""

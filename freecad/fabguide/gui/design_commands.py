@@ -334,8 +334,8 @@ class Suggest(Command):
             return
         broken = properties.failed_inputs(target)
         if broken:
-            return tell(translate("FabGuide", "Design '{}': {} could not be recomputed (see the report view). Mend that "
-                                              "first: Suggest would start from their last shapes.").format(
+            return tell(translate("FabGuide", "Design '{}': {} could not be recomputed (see the report view). Mend "
+                                              "that first: Suggest would start from their last shapes.").format(
                 target.Label, ", ".join(broken)))
         from freecad.fabguide.gui import suggest_panel
 

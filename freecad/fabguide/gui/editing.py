@@ -69,6 +69,18 @@ class EnterKeys(QtCore.QObject):
         return False
 
 
+def typed(widget, kind):
+    """`widget` as a `kind` (a QHeaderView, say): shiboken can hand back a wrapper of a base class (a bare QWidget)
+    when it reuses the one it made for an earlier widget at the same address."""
+    if isinstance(widget, kind):
+        return widget
+    try:
+        import shiboken6 as shiboken  # FreeCAD 1.1
+    except ImportError:
+        import shiboken2 as shiboken
+    return shiboken.wrapInstance(shiboken.getCppPointer(widget)[0], kind)
+
+
 def widened(box):
     """Lets a quantity spin box take any number as it is typed, its range kept as its "limits" for `readable` to
     judge the whole value once typed: a box held to its range drops the keystroke that leaves it ("-400" shows

@@ -301,7 +301,8 @@ class AddRelationship(Command):
 
 class AddCover(AddRelationship):
     ICON, MENU, KIND = "FabGuide_Cover.svg", QT_TRANSLATE_NOOP("FabGuide", "Add Cover"), "cover"
-    TOO_FEW = QT_TRANSLATE_NOOP("FabGuide", "Pick boxes of at least two parts; the last one picked is the covered part.")
+    TOO_FEW = QT_TRANSLATE_NOOP("FabGuide", "Pick boxes of at least two parts; the last one picked is the covered "
+                                            "part.")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "These parts cover that one (picked last): faces in one plane, packed, "
                                         "covering its faces or openings")
 
@@ -504,7 +505,8 @@ class ExportPrintable(Command):
                         translate("FabGuide", "There is no printable in this document yet."))
         if made is None:
             return
-        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), translate("FabGuide", "Folder for the print files"),
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(),
+                                                        translate("FabGuide", "Folder for the print files"),
                                                         os.path.expanduser("~"))
         if folder:
             doc.recompute()  # what is written is what the Printable shows, made from the mechanism as it is

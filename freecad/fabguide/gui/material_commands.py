@@ -94,8 +94,8 @@ class BandEdges(Command):
             return tell(translate("FabGuide", "Pick the edge faces of boards (their narrow sides, not the large faces) "
                                               "first."))
         band, ok = QtGui.QInputDialog.getText(FreeCADGui.getMainWindow(), translate("FabGuide", "Band Edges"),
-                                              translate("FabGuide", "Band on the {} picked edge(s) (empty: none):").format(
-                                                  len(sides)),
+                                              translate("FabGuide", "Band on the {} picked edge(s) (empty: "
+                                                                    "none):").format(len(sides)),
                                               text=BandEdges.last)
         if not ok:
             return
@@ -166,7 +166,8 @@ class ExportCutSheets(Command):
         if chosen is None:
             return
         start = os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~")
-        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), translate("FabGuide", "Folder for the cut sheets"),
+        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(),
+                                                        translate("FabGuide", "Folder for the cut sheets"),
                                                         start)
         if not folder:
             return

@@ -247,7 +247,8 @@ class SuggestPanel:
         stopped = translate("FabGuide", " (stopped)") if self.stopped else ""
         if not suggestions:
             least = result.get("least_sheets", 0)
-            why = translate("FabGuide", "; with every board as small as they allow it still needs {} sheet(s)").format(least) \
+            why = translate("FabGuide", "; with every board as small as they allow it still needs {} "
+                                        "sheet(s)").format(least) \
                 if least and least >= result["before"]["sheets"] else ""
             self.message.setText(translate("FabGuide", "No variation of this design wastes less within its "
                                                        "constraints{}{}.").format(

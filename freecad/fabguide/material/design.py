@@ -27,7 +27,8 @@ class DesignError(ValueError):
 class FlatpackDesign(properties.Proxy):
     TYPE, NOUN = "FabGuide::FlatpackDesign", QT_TRANSLATE_NOOP("FabGuide", "Design")
     VALID = dict(Resolution=properties.more_than(0), MaxGrowth=properties.at_least(1),
-                 MasterBoards=properties.links(master_board.is_master_board, QT_TRANSLATE_NOOP("FabGuide", "master boards")))
+                 MasterBoards=properties.links(master_board.is_master_board,
+                                               QT_TRANSLATE_NOOP("FabGuide", "master boards")))
 
     def define(self, obj):
         add = properties.add

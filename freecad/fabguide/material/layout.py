@@ -24,10 +24,12 @@ class LayoutError(ValueError):
 
 class Layout(properties.Proxy):
     TYPE, NOUN = "FabGuide::Layout", QT_TRANSLATE_NOOP("FabGuide", "Layout")
-    VALID = dict(Resolution=properties.more_than(0), Iterations=properties.at_least(-1, QT_TRANSLATE_NOOP("FabGuide", " (parts squared)")),
+    VALID = dict(Resolution=properties.more_than(0),
+                 Iterations=properties.at_least(-1, QT_TRANSLATE_NOOP("FabGuide", " (parts squared)")),
                  RotationStep=(lambda obj, v: v == 0 or (0 < v <= 90 and 90 % v == 0),
                                QT_TRANSLATE_NOOP("FabGuide", "0 or a divisor of 90 (e.g. 15, 30, 45)")),
-                 Stages=properties.at_least(0, QT_TRANSLATE_NOOP("FabGuide", " (0: unlimited)")), LabelWidth=properties.at_least(20),
+                 Stages=properties.at_least(0, QT_TRANSLATE_NOOP("FabGuide", " (0: unlimited)")),
+                 LabelWidth=properties.at_least(20),
                  Seed=(lambda obj, v: 0 <= v < 2 ** 63, QT_TRANSLATE_NOOP("FabGuide", "0 or more")),
                  TimeLimit=properties.more_than(0),
                  LabelHeight=properties.at_least(10))

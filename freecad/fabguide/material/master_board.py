@@ -87,6 +87,7 @@ def shared(masters, user):
     """What the message of `user`'s failure adds when its master boards are others' too: a change made for
     another design is the likely cause."""
     others = {m.Label: [u for u in users(m) if u != user.Label] for m in masters}
-    said = [translate("FabGuide", "master board '{}' is shared with {}").format(m, ", ".join("'{}'".format(u) for u in us))
+    said = [translate("FabGuide", "master board '{}' is shared with {}").format(
+                m, ", ".join("'{}'".format(u) for u in us))
             for m, us in others.items() if us]
     return " ({})".format("; ".join(said)) if said else ""
