@@ -8,8 +8,10 @@ With --packingsolver BIN (built by build_packingsolver.sh), packingsolver's free
 (rectangleguillotine, 3NAR: non-exact, either first direction) solvers run beside FabGuide on the same instances
 and time limits; kerf, spacing and trim go in as the usual equivalence (each item and the trimmed sheet grown by
 the kerf), one run per sheet thickness; their sheet counts are theirs, not checked here.
+With --maxrects FOLDER (build_maxrects.sh), a plain MaxRects (npm's maxrects-packer, free cuts, one run, the
+same kerf equivalence) runs beside them too.
 Usage: saw_benchmark.py [--seconds 1,10] [--lists N] [--classes PACKINGSOLVER_REPO] [--per-class K]
-[--packingsolver BIN] (prints the Markdown section)."""
+[--packingsolver BIN] [--maxrects FOLDER] (prints the Markdown section)."""
 import argparse
 import csv
 import io
@@ -59,29 +61,39 @@ def laid_out(problem, cuts, stages, seconds):
     return len(layout["boards"]), wall, found
 
 
+def grown(problem):
+    """Per sheet thickness with parts, (sheet, items) as packers without kerf take a job: the trimmed sheet and each
+    item grown by the kerf (and spacing), items as (width, height, copies, fixed: may not turn)."""
+    s = problem["settings"]
+    gap, trim = s.get("kerf", 0) + s.get("spacing", 0), s.get("trim", 0)
+    groups = []
+    for board in problem["boards"]:
+        parts = [p for p in problem["parts"] if p.get("thickness", board.get("thickness")) == board.get("thickness")]
+        if parts:
+            groups.append(((board["width"] - 2 * trim + gap, board["height"] - 2 * trim + gap),
+                           [(p["width"] + gap, p["height"] + gap, p.get("quantity", 1),
+                             p.get("orientations") == [0] or (p.get("follow_grain") and
+                                                              board.get("grain", "none") != "none"))
+                            for p in parts]))
+    return groups
+
+
 def by_packingsolver(binary, problem, kind, seconds):
     """(sheets, wall seconds, problems) of packingsolver's `kind` solver, one run per thickness (the time limit
     shared between them), summed."""
-    s = problem["settings"]
-    gap, trim = s.get("kerf", 0) + s.get("spacing", 0), s.get("trim", 0)
-    groups = [(board, [p for p in problem["parts"] if p.get("thickness", board.get("thickness")) ==
-                       board.get("thickness")]) for board in problem["boards"]]
-    groups = [(board, parts) for board, parts in groups if parts]
+    groups = grown(problem)
     sheets, wall = 0, 0.0
-    for board, parts in groups:
+    for (width, height), items in groups:
         with tempfile.TemporaryDirectory() as folder:
-            items, bins, out = (os.path.join(folder, n) for n in ("items.csv", "bins.csv", "out.json"))
-            with open(items, "w") as f:
+            items_csv, bins, out = (os.path.join(folder, n) for n in ("items.csv", "bins.csv", "out.json"))
+            with open(items_csv, "w") as f:
                 f.write("WIDTH,HEIGHT,COPIES,ORIENTED\n")
-                for p in parts:
-                    fixed = p.get("orientations") == [0] or (p.get("follow_grain") and board.get("grain", "none") !=
-                                                              "none")
-                    f.write("{},{},{},{}\n".format(p["width"] + gap, p["height"] + gap, p.get("quantity", 1),
-                                                   int(fixed)))
+                for w, h, copies, fixed in items:
+                    f.write("{},{},{},{}\n".format(w, h, copies, int(fixed)))
             with open(bins, "w") as f:
-                f.write("WIDTH,HEIGHT\n{},{}\n".format(board["width"] - 2 * trim + gap, board["height"] - 2 * trim + gap))
-            command = [os.path.join(binary, "packingsolver_" + kind), "-i", items, "-b", bins, "-f", "bin-packing",
-                       "--bin-infinite-copies", "-t", str(seconds / len(groups)), "-o", out, "-v", "0"]
+                f.write("WIDTH,HEIGHT\n{},{}\n".format(width, height))
+            command = [os.path.join(binary, "packingsolver_" + kind), "-i", items_csv, "-b", bins, "-f",
+                       "bin-packing", "--bin-infinite-copies", "-t", str(seconds / len(groups)), "-o", out, "-v", "0"]
             if kind == "rectangleguillotine":
                 command += ["-p", "3NAR"]
             start = time.monotonic()
@@ -91,10 +103,22 @@ def by_packingsolver(binary, problem, kind, seconds):
                 return None, wall, [run.stderr.strip()[-200:]]
             with open(out) as f:
                 solution = json.load(f)["Output"]["Solution"]
-            if solution["NumberOfItems"] != sum(p.get("quantity", 1) for p in parts):
+            if solution["NumberOfItems"] != sum(copies for _, _, copies, _ in items):
                 return None, wall, ["packingsolver placed {} of the items".format(solution["NumberOfItems"])]
             sheets += solution["NumberOfBins"]
     return sheets, wall, []
+
+
+def by_maxrects(folder, problem):
+    """(sheets, wall seconds, problems) of a plain MaxRects (npm's maxrects-packer in `folder`,
+    tests/bench/maxrects.js), one run per thickness, summed."""
+    start = time.monotonic()
+    run = subprocess.run(["node", os.path.join(HERE, "maxrects.js"), folder], capture_output=True, text=True,
+                         input=json.dumps([{"sheet": sheet, "items": items} for sheet, items in grown(problem)]))
+    wall = time.monotonic() - start
+    if run.returncode:
+        return None, wall, [run.stderr.strip()[-200:]]
+    return sum(json.loads(run.stdout)), wall, []
 
 
 def class_instances(repo, per_class):
@@ -121,7 +145,7 @@ def class_instances(repo, per_class):
                                "orientations": [0]} for i in items]}
 
 
-def table(title, instances, seconds, packingsolver=""):
+def table(title, instances, seconds, packingsolver="", maxrects=""):
     """Markdown rows: per mode, the sheets summed, % above the area bound, worst wall time, problems."""
     rows, bound = {}, 0
     runs = [(mode, lambda problem, mode=mode: laid_out(problem, *mode, seconds)) for mode in MODES]
@@ -129,6 +153,8 @@ def table(title, instances, seconds, packingsolver=""):
         runs += [(("packingsolver", kind), lambda problem, kind=kind: by_packingsolver(packingsolver, problem, kind,
                                                                                        seconds))
                  for kind in ("rectangle", "rectangleguillotine")]
+    if maxrects:
+        runs.append((("maxrects", 0), lambda problem: by_maxrects(maxrects, problem)))
     for name, problem in instances:
         bound += saw_checker.least_sheets(problem)
         for mode, run in runs:
@@ -140,8 +166,9 @@ def table(title, instances, seconds, packingsolver=""):
     out = ["", "**{}** at {} s: area bound {} sheets".format(title, seconds, bound), "",
            "| mode | sheets | above the bound % | slowest wall s | checker problems |", "|---|---|---|---|---|"]
     for (cuts, stages), (sheets, wall, found) in rows.items():
-        mode = ("FabGuide free" if cuts == "free" else "packingsolver {}".format(
-            "free (rectangle)" if stages == "rectangle" else "guillotine, 3 stages (rectangleguillotine 3NAR)")
+        mode = ("FabGuide free" if cuts == "free" else "MaxRects (npm maxrects-packer 2.7.4, one run)"
+                if cuts == "maxrects" else "packingsolver {}".format(
+                    "free (rectangle)" if stages == "rectangle" else "guillotine, 3 stages (rectangleguillotine 3NAR)")
                 if cuts == "packingsolver" else "FabGuide guillotine, {} stages".format(stages or "unlimited"))
         out.append("| {} | {} | {:.2f} | {:.2f} | {} |".format(mode, sheets, 100.0 * (sheets - bound) / bound, wall,
                                                                len(found) or "none"))
@@ -156,16 +183,18 @@ def main(argv):
     parser.add_argument("--classes", default="")
     parser.add_argument("--per-class", type=int, default=1)
     parser.add_argument("--packingsolver", default="", help="folder of packingsolver_rectangle(guillotine)")
+    parser.add_argument("--maxrects", default="", help="folder of npm's maxrects-packer (build_maxrects.sh)")
     args = parser.parse_args(argv)
     lines = ["## Sheets for a saw (issue 31)", "", "`python3 tests/bench/saw_benchmark.py {}`".format(" ".join(argv))]
     for seconds in [float(s) for s in args.seconds.split(",")]:
         lists = [("cut list {}".format(s), cutlists.problem(s)) for s in list(HELD_OUT)[:args.lists]]
         lines += table("{} generated shop cut lists (seeds {}-{})".format(len(lists), HELD_OUT[0],
                                                                           HELD_OUT[0] + len(lists) - 1),
-                       lists, seconds, args.packingsolver)
+                       lists, seconds, args.packingsolver, args.maxrects)
         if args.classes:
             lines += table("2BP classes I-X, {} instance(s) per class and size".format(args.per_class),
-                           list(class_instances(args.classes, args.per_class)), seconds, args.packingsolver)
+                           list(class_instances(args.classes, args.per_class)), seconds, args.packingsolver,
+                           args.maxrects)
     print("\n".join(lines))
 
 
