@@ -58,9 +58,9 @@ void run(const PackArguments& args)
     search.timeLimit = std::max(0.0, search.timeLimit - secondsSinceStart());  // start-up and reading count
     search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
     const material::Layout layout = material::pack(problem, search);
-    io::writeJsonFile(
-        args.output,
-        io::layoutToJson(layout, problem, args.strip ? io::PartNames::Indices : io::PartNames::Ids));
+    const nlohmann::json written =
+        io::layoutToJson(layout, problem, args.strip ? io::PartNames::Indices : io::PartNames::Ids);
+    io::writeJsonFile(args.output, written);
 
     std::printf("%zu parts on %zu board(s)\n", layout.placements.size(), layout.sheets.size());
     if (problem.strip)
@@ -76,9 +76,9 @@ void run(const PackArguments& args)
                 ++count, length += c.length();
         std::printf("saw cuts      %zu, %.1f m\n", count, length / 1000);
     }
-    if (problem.settings.commonLine && !out.options.asDesigned && layout.sawCuts.empty())
+    if (written.contains("common_line") && !out.options.asDesigned && layout.sawCuts.empty())
         std::printf("common line   %.1f m cut once for two parts\n",
-                    material::totals(layout, problem).commonLine / 1000);
+                    written["common_line"].get<double>() / 1000);
     std::printf("layout        %s\n", args.output.c_str());
     io::LayoutFiles named = out;
     named.title = std::filesystem::path(args.input).stem().stem().string();  // job.pack.json: job

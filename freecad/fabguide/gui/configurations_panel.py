@@ -12,6 +12,7 @@ from freecad.fabguide.gui import editing, function_viewproviders as vp, resource
 from freecad.fabguide.gui.posing import Poser
 from freecad.fabguide.i18n import translate
 
+
 def quantity_box(loader, unit, largest, parent):
     """A unit-aware spin box: it takes what FreeCAD's quantities take, "1 in", "90/2 °", and shows the value in
     the user's units; a value beyond ±`largest` is refused whole on OK (editing.widened). Made by a `loader` the
