@@ -93,7 +93,7 @@ def a_clamshell_from_plain_boxes_with_the_commands():
     assert abs(panel.angles[0].property("rawValue") - 180) < 1e-9, panel.angles[0].property("rawValue")
     panel.name.setText("Closed")
     assert not panel.offsets[0].isEnabled(), "a hinge has no offset"
-    [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton) if b.text() in ("OK", "&OK")][0].click()
+    guitest.task_button("OK").click()
     QtGui.QApplication.processEvents()
     closed = doc.getObjectsByLabel("Closed")[0]
     assert mech.ShownConfiguration == closed and [a for _, a, _ in configuration.poses(closed)] == [180.0]
@@ -132,13 +132,11 @@ def the_relationship_panel_colours_the_faces():
     form.findChild(QtGui.QPushButton, "add").click()  # the two picked faces, first to second
     assert lists[0].item(1).text() == "Lid.left -> Body.left", lists[0].item(1).text()
     lists[0].item(1).setText("Lid.left Body.left")  # mistyped: OK keeps the panel open and says why
-    buttons = {b.text().replace("&", ""): b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton)}
-    buttons["OK"].click()
+    guitest.task_button("OK").click()
     QtGui.QApplication.processEvents()
     status = form.findChild(QtGui.QLabel, "status").text()
     assert Gui.Control.activeDialog() and "must read 'Box.side -> Box.side'" in status, status
-    Gui.Control.activeDialog() and [b for b in Gui.getMainWindow().findChildren(QtGui.QPushButton)
-                                    if b.text() in ("Cancel", "&Cancel")][0].click()
+    guitest.task_button("Cancel").click()
     QtGui.QApplication.processEvents()
     assert len({c[:3] for c in lid.ViewObject.DiffuseColor}) == 1, "colours restored"
     Gui.Selection.addSelection(lid)

@@ -58,6 +58,15 @@ def pick(*picked):
             FreeCADGui.Selection.addSelection(obj)
 
 
+def task_button(text):
+    """The open task panel's button reading `text` ("OK", "Cancel"), as a user clicks it: hidden dialogs of
+    FreeCAD's own (FreeCAD 1.0's document recovery) have buttons reading the same."""
+    from PySide import QtGui
+
+    boxes = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible()]
+    return [b for box in boxes for b in box.buttons() if b.text().replace("&", "") == text][0]
+
+
 def told(command):
     """Runs `command`, which should tell the user something in a message box; closes the box and returns its
     text (None when no box came)."""

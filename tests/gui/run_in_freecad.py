@@ -39,7 +39,9 @@ def main(script):
         log_file = os.path.join(folder, "freecad.log")
         # FreeCAD 0.20's GUI takes its own options only after the file to run. Each test has its own user settings
         # (FreeCAD writes them when it quits, and when a preferences page is accepted): tests running at once in
-        # one HOME would otherwise see each other's.
+        # one HOME would otherwise see each other's. And its own cache, where FreeCAD 1.0 keeps documents' recovery
+        # files: one left by a FreeCAD that was killed would open the document recovery dialog in the next test.
+        env["XDG_CACHE_HOME"] = os.path.join(folder, "cache")
         command = ["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", "freecad", bootstrap, "--log-file", log_file,
                    "--user-cfg", os.path.join(folder, "user.cfg")]
         try:
