@@ -20,6 +20,7 @@ struct OptimiseArguments {
     std::string output;
     material::MinWastageOptions options;
     bool unguided = false;
+    bool keepDrawnEqual = false;
 };
 
 /// An offcut narrower than this (mm) is sawdust, not a board for the next job.
@@ -48,11 +49,24 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
     return entry;
 }
 
+/// `document` with the equal constraints of its boards drawn equal, each said, when asked for; the
+/// suggestions carry them.
+nlohmann::json withDrawnEqual(nlohmann::json document, bool keep)
+{
+    if (!keep)
+        return document;
+    for (const nlohmann::json& equal : io::drawnEqualConstraints(document)) {
+        std::printf("kept equal    %s\n", equal["name"].get<std::string>().c_str());
+        document["constraints"].push_back(equal);
+    }
+    return document;
+}
+
 void run(const OptimiseArguments& args)
 {
     io::checkWritableFolder(args.output);  // before the search, not after
     io::OutputBatch files;
-    const nlohmann::json document = io::readJsonFile(args.input);
+    const nlohmann::json document = withDrawnEqual(io::readJsonFile(args.input), args.keepDrawnEqual);
     const io::FlatpackDesign flatpack = io::readFlatpack(document);
     const material::ConstrainedDesign design(io::forSuggestions(flatpack));
     const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
@@ -140,6 +154,10 @@ void addOptimiseCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_flag("--unguided", args->unguided,
                   "shrink random part sizes instead of the layout's locking chains (the thesis' baseline)");
+    cmd->add_flag(
+        "--keep-drawn-equal", args->keepDrawnEqual,
+        "boards drawn the same size (posts, legs, rails) keep the same size: equal constraints added "
+        "and said");
     cmd->callback([args] { run(*args); });
 }
 

@@ -1,11 +1,13 @@
 #include "IO/FlatpackFormat.h"
 
+#include "Design/DrawnEqual.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace fabguide::io {
@@ -392,13 +394,16 @@ void readInnerVolumes(const Fields& root, Design& design)
     }
 }
 
+/// How far from its constraints a design read may be, in mm. 0.1 µm: the search holds its constraints to 1e-6
+/// mm and writes them with as many digits, so a reader as strict as the search could refuse a suggestion it
+/// wrote (issue 32).
+constexpr double kSatisfied = 1e-4;
+
 /// A design must satisfy its own constraints as given; the first five broken ones are named.
 void checkSatisfied(const Design& design)
 {
     const Eigen::VectorXd X = design.variables();
-    // Judged to 0.1 µm: the search holds its constraints to 1e-6 mm and writes them with as many digits, so a
-    // reader as strict as the search could refuse a suggestion it wrote (issue 32).
-    std::vector<std::string> broken = material::unsatisfied(design, X, 1e-4);
+    std::vector<std::string> broken = material::unsatisfied(design, X, kSatisfied);
     for (const std::string& name : material::ineffective(design, X))
         broken.push_back(name);
     if (broken.empty())
@@ -465,6 +470,33 @@ material::Design forSuggestions(const FlatpackDesign& f)
                                      material::sizeOf(b, axis) - material::constant(most)});
         }
     return design;
+}
+
+nlohmann::json drawnEqualConstraints(const nlohmann::json& document)
+{
+    const Design design = readFlatpack(document, Satisfied::NotRequired).design;
+    std::vector<std::set<std::string>> held;  // the refs of the equal constraints the document has already
+    for (const nlohmann::json& c : document.value("constraints", nlohmann::json::array()))
+        if (c.value("kind", "") == "equal")
+            held.push_back(c["refs"].get<std::set<std::string>>());
+    nlohmann::json constraints = nlohmann::json::array();
+    // Drawn alike as the reader judges a design satisfied: an equal constraint on them holds as they are.
+    for (const material::EqualSizes& equal : material::drawnEqual(design, kSatisfied)) {
+        const std::string size = std::string("size.") + "xyz"[equal.axis];
+        nlohmann::json refs = nlohmann::json::array(), ids = nlohmann::json::array();
+        for (int b : equal.boards) {
+            refs.push_back(design.boards[b].id + "." + size);
+            ids.push_back(design.boards[b].id);
+        }
+        const auto wanted = refs.get<std::set<std::string>>();
+        if (std::none_of(held.begin(), held.end(), [&](const std::set<std::string>& h) {
+                return std::includes(h.begin(), h.end(), wanted.begin(), wanted.end());
+            }))
+            constraints.push_back({{"kind", "equal"},
+                                   {"name", "drawn equal: " + size + " of " + joined(ids, ", ")},
+                                   {"refs", refs}});
+    }
+    return constraints;
 }
 
 nlohmann::json partsAt(const Design& design, const Eigen::VectorXd& X)

@@ -44,6 +44,12 @@ enum class Satisfied { Required, NotRequired };
 /// otherwise, when the design does not satisfy its own constraints (naming them).
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied = Satisfied::Required);
 
+/// The boards of `document` drawn equal (Design/DrawnEqual.h) as the "equal" constraints of the format it
+/// lacks:
+/// [{"kind": "equal", "name": "drawn equal: size.z of post, post 2", "refs": ["post.size.z",
+/// "post 2.size.z"]}], for the user to keep. The design need not satisfy its own constraints yet.
+nlohmann::json drawnEqualConstraints(const nlohmann::json& document);
+
 /// The parts at design vector X: [{"id", "position" (lower corner), "size"}].
 nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X);
 

@@ -419,7 +419,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="200"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="208"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1170,22 +1170,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="58"/>
         <source>Offset along the slide</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="122"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="124"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="125"/>
         <source>Stop</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1205,187 +1205,182 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
-        <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; its usage updates as you edit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="87"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="88"/>
         <source>Select the Part boxes your furniture is made of first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="103"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="105"/>
         <source>Import Flat-pack Design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="104"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="106"/>
         <source>Open a *.flatpack.json design: boxes, master boards, constraints and volumes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="116"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="118"/>
         <source>Cannot import {}: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="135"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="137"/>
         <source>Export Flat-pack Design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="136"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="138"/>
         <source>Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="168"/>
         <source>Pick an edge of a box for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="168"/>
         <source>Pick edges of boxes for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="176"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="178"/>
         <source>Equal Lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="177"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="179"/>
         <source>The picked edges of boards keep equal lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="181"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="183"/>
         <source>Sum of Lengths</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="182"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="184"/>
         <source>The lengths of the picked edges add up to the length of the last one picked</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="190"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="192"/>
         <source>Fixed Length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="193"/>
         <source>Each picked edge keeps its present length</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="200"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="202"/>
         <source>Length Range</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="201"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="203"/>
         <source>Each picked edge may change by at most 25 % (edit Min and Max of the constraint)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="211"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="213"/>
         <source>Equal Position</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="212"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="214"/>
         <source>The picked faces of boards stay level with each other (same coordinate along their normal)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="220"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="222"/>
         <source>Pick two or more parallel faces of boards for Equal Position.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="236"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="238"/>
         <source>Pick {} for {}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="246"/>
         <source>Ground Touching</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="245"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="247"/>
         <source>The picked boards keep standing on the ground (their lowest face at the lowest board&apos;s level)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="252"/>
         <source>Coplanar</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="251"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="253"/>
         <source>The picked parallel boards stay in one plane</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="258"/>
         <source>Snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="259"/>
         <source>Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="263"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="265"/>
         <source>Symmetric</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="264"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="266"/>
         <source>Two boards stay mirror images about the plane midway between them (along the axis that separates them)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="284"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="286"/>
         <source>Inner Volume</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="287"/>
         <source>Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="292"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="294"/>
         <source>Pick the one board the free space rests on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="303"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="305"/>
         <source>Outer Volume</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="304"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="306"/>
         <source>An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="314"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="316"/>
         <source>Design &apos;{}&apos; has no boxes to put an envelope round.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="325"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="327"/>
         <source>Suggest</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="326"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="328"/>
         <source>Search for design variations that keep your constraints and waste less material (or, for a design with Parameters, spreadsheet values within their ranges); preview and accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1788,7 +1783,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="341"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="349"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1974,22 +1969,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="249"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="257"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="272"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="280"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="289"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="297"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="347"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="355"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2275,47 +2270,47 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="44"/>
         <source>{} (current)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="44"/>
         <source>New configuration</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="84"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="85"/>
         <source>Configuration {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Cannot show it: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Moves: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Moves: nothing yet: tick the joints this configuration poses</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="135"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="136"/>
         <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="137"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="138"/>
         <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="141"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="143"/>
         <source>Select the flat-pack design to export.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2325,7 +2320,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="332"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="334"/>
         <source>Select the flat-pack design.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2574,7 +2569,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="337"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="339"/>
         <source>Design &apos;{}&apos;: {} could not be recomputed (see the report view). Mend that first: Suggest would start from their last shapes.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2586,6 +2581,11 @@ stopping: keeping the best found so far</source>
     <message>
         <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {:g} now, outside its range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
+        <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; boxes drawn the same size stay so (delete the &apos;drawn equal&apos; constraints to free them); its usage updates as you edit</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

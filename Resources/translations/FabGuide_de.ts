@@ -419,7 +419,7 @@
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="200"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="208"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
@@ -1177,22 +1177,22 @@ U/min</translation>
         <translation>Einen *.flatpack.json-Entwurf importieren oder exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="56"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
         <source>Angle: its sign is the way the part swings</source>
         <translation>Winkel: sein Vorzeichen gibt an, wohin das Teil schwenkt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="57"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="58"/>
         <source>Offset along the slide</source>
         <translation>Verschiebung entlang der Führung</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="121"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="122"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="124"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="125"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
@@ -1212,187 +1212,182 @@ U/min</translation>
         <translation>Flachpaket-Entwurf aus Quadern</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
-        <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; its usage updates as you edit</source>
-        <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="87"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="88"/>
         <source>Select the Part boxes your furniture is made of first.</source>
         <translation>Wählen Sie zuerst die Part-Quader, aus denen Ihr Möbel besteht.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="103"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="105"/>
         <source>Import Flat-pack Design</source>
         <translation>Flachpaket-Entwurf importieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="104"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="106"/>
         <source>Open a *.flatpack.json design: boxes, master boards, constraints and volumes</source>
         <translation>Einen *.flatpack.json-Entwurf öffnen: Quader, Rohplatten, Bedingungen und Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="116"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="118"/>
         <source>Cannot import {}: {}</source>
         <translation>{} kann nicht importiert werden: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="135"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="137"/>
         <source>Export Flat-pack Design</source>
         <translation>Flachpaket-Entwurf exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="136"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="138"/>
         <source>Write the selected design as *.flatpack.json (for `fabguide optimise` and bug reports)</source>
         <translation>Den gewählten Entwurf als *.flatpack.json schreiben (für `fabguide optimise` und Fehlerberichte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="168"/>
         <source>Pick an edge of a box for {}.</source>
         <translation>Wählen Sie eine Kante eines Quaders für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="166"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="168"/>
         <source>Pick edges of boxes for {}.</source>
         <translation>Wählen Sie Kanten von Quadern für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="176"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="178"/>
         <source>Equal Lengths</source>
         <translation>Gleiche Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="177"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="179"/>
         <source>The picked edges of boards keep equal lengths</source>
         <translation>Die gewählten Plattenkanten behalten gleiche Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="181"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="183"/>
         <source>Sum of Lengths</source>
         <translation>Summe der Längen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="182"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="184"/>
         <source>The lengths of the picked edges add up to the length of the last one picked</source>
         <translation>Die Längen der gewählten Kanten ergeben zusammen die Länge der zuletzt gewählten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="190"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="192"/>
         <source>Fixed Length</source>
         <translation>Feste Länge</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="191"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="193"/>
         <source>Each picked edge keeps its present length</source>
         <translation>Jede gewählte Kante behält ihre jetzige Länge</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="200"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="202"/>
         <source>Length Range</source>
         <translation>Längenbereich</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="201"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="203"/>
         <source>Each picked edge may change by at most 25 % (edit Min and Max of the constraint)</source>
         <translation>Jede gewählte Kante darf sich um höchstens 25 % ändern (Min und Max der Bedingung bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="211"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="213"/>
         <source>Equal Position</source>
         <translation>Gleiche Position</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="212"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="214"/>
         <source>The picked faces of boards stay level with each other (same coordinate along their normal)</source>
         <translation>Die gewählten Plattenflächen bleiben auf einer Höhe (gleiche Koordinate entlang ihrer Normalen)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="220"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="222"/>
         <source>Pick two or more parallel faces of boards for Equal Position.</source>
         <translation>Wählen Sie zwei oder mehr parallele Plattenflächen für „Gleiche Position“.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="236"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="238"/>
         <source>Pick {} for {}.</source>
         <translation>Wählen Sie {} für {}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="246"/>
         <source>Ground Touching</source>
         <translation>Auf dem Boden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="245"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="247"/>
         <source>The picked boards keep standing on the ground (their lowest face at the lowest board&apos;s level)</source>
         <translation>Die gewählten Platten bleiben auf dem Boden stehen (ihre unterste Fläche auf der Höhe der untersten Platte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="250"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="252"/>
         <source>Coplanar</source>
         <translation>Koplanar</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="251"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="253"/>
         <source>The picked parallel boards stay in one plane</source>
         <translation>Die gewählten parallelen Platten bleiben in einer Ebene</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="256"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="258"/>
         <source>Snap</source>
         <translation>Anliegen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="257"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="259"/>
         <source>Two touching boards stay touching, flush where they are flush (designs snap all contacts by default)</source>
         <translation>Zwei sich berührende Platten bleiben in Kontakt und bündig, wo sie bündig sind (Entwürfe halten standardmäßig alle Kontakte)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="263"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="265"/>
         <source>Symmetric</source>
         <translation>Symmetrisch</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="264"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="266"/>
         <source>Two boards stay mirror images about the plane midway between them (along the axis that separates them)</source>
         <translation>Zwei Platten bleiben spiegelbildlich zur Ebene in ihrer Mitte (entlang der Achse, die sie trennt)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="284"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="286"/>
         <source>Inner Volume</source>
         <translation>Inneres Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="285"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="287"/>
         <source>Space that must stay free, resting on the picked board (a shelf for binders); edit its size and place</source>
         <translation>Raum, der frei bleiben muss, auf der gewählten Platte (ein Fach für Ordner); Größe und Lage bearbeiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="292"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="294"/>
         <source>Pick the one board the free space rests on.</source>
         <translation>Wählen Sie die eine Platte, auf der der freie Raum liegt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="303"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="305"/>
         <source>Outer Volume</source>
         <translation>Äußeres Volumen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="304"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="306"/>
         <source>An envelope the selected design must stay inside (its box now, 10 % larger); edit its size and place</source>
         <translation>Eine Hülle, in der der gewählte Entwurf bleiben muss (sein jetziger Quader, 10 % größer); Größe und Lage bearbeiten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="314"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="316"/>
         <source>Design &apos;{}&apos; has no boxes to put an envelope round.</source>
         <translation>Entwurf '{}' hat keine Quader, um die eine Hülle gelegt werden kann.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="325"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="327"/>
         <source>Suggest</source>
         <translation>Vorschlagen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="326"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="328"/>
         <source>Search for design variations that keep your constraints and waste less material (or, for a design with Parameters, spreadsheet values within their ranges); preview and accept</source>
         <translation>Nach Entwurfsvarianten suchen, die Ihre Bedingungen einhalten und weniger Material verschwenden (oder, bei einem Entwurf mit Parametern, Tabellenwerte in ihren Bereichen); Vorschau und Übernehmen</translation>
     </message>
@@ -1798,7 +1793,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="341"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="349"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1985,22 +1980,22 @@ U/min</translation>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="249"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="257"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="272"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="280"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="289"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="297"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="347"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="355"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2292,47 +2287,47 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Ordner für den G-Code</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="44"/>
         <source>{} (current)</source>
         <translation>{} (aktuell)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="43"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="44"/>
         <source>New configuration</source>
         <translation>Neue Konfiguration</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="84"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="85"/>
         <source>Configuration {}</source>
         <translation>Konfiguration {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Cannot show it: {}</source>
         <translation>Kann sie nicht zeigen: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Moves: {}</source>
         <translation>Bewegt: {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="113"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="114"/>
         <source>Moves: nothing yet: tick the joints this configuration poses</source>
         <translation>Bewegt: noch nichts: haken Sie die Gelenke an, die diese Konfiguration stellt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="135"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="136"/>
         <source>The angle of {}: &quot;{}&quot; is not an angle from {:g} to {:g}; type it again.</source>
         <translation>Der Winkel von {}: &quot;{}&quot; ist kein Winkel von {:g} bis {:g}; geben Sie ihn erneut ein.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="137"/>
+        <location filename="../../freecad/fabguide/gui/configurations_panel.py" line="138"/>
         <source>The offset of {}: &quot;{}&quot; is not a length from {:g} to {:g}; type it again.</source>
         <translation>Die Verschiebung von {}: &quot;{}&quot; ist keine Länge von {:g} bis {:g}; geben Sie sie erneut ein.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="141"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="143"/>
         <source>Select the flat-pack design to export.</source>
         <translation>Wählen Sie den Flachpack-Entwurf, der exportiert werden soll.</translation>
     </message>
@@ -2342,7 +2337,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>In diesem Dokument gibt es noch keinen Flachpack-Entwurf.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="332"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="334"/>
         <source>Select the flat-pack design.</source>
         <translation>Wählen Sie den Flachpack-Entwurf.</translation>
     </message>
@@ -2595,7 +2590,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Wählen Sie das Layout, das gefräst werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/design_commands.py" line="337"/>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="339"/>
         <source>Design &apos;{}&apos;: {} could not be recomputed (see the report view). Mend that first: Suggest would start from their last shapes.</source>
         <translation>Entwurf '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster). Beheben Sie das zuerst: Vorschlagen ginge von ihren letzten Formen aus.</translation>
     </message>
@@ -2608,6 +2603,11 @@ hält an: das bisher Beste bleibt</translation>
         <location filename="../../freecad/fabguide/material/parametric.py" line="34"/>
         <source>Design &apos;{}&apos;: parameter &apos;{}&apos; is {:g} now, outside its range</source>
         <translation>Entwurf '{}': Parameter '{}' ist jetzt {:g}, außerhalb seines Bereichs</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
+        <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; boxes drawn the same size stay so (delete the &apos;drawn equal&apos; constraints to free them); its usage updates as you edit</source>
+        <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; gleich groß gezeichnete Quader bleiben gleich groß (löschen Sie die Bedingungen „drawn equal“, um sie freizugeben); die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
     </message>
 </context>
 <context>

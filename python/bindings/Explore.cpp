@@ -230,6 +230,13 @@ void bindExplore(py::module_& m)
         "A design dict whose boards break some of its constraints (one just added), with the boards moved or "
         "resized the least, sparsely, so that they hold: {solved, parts, broken (names still broken)}.");
     m.def(
+        "drawn_equal",
+        [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },
+        py::arg("design"),
+        "The equal constraints a design dict lacks that keep its boards drawn the same size so: [{kind, "
+        "name, "
+        "refs}], sizes along each in-plane axis.");
+    m.def(
         "absorb_edit", &absorbEdit, py::arg("valid"), py::arg("edited"),
         "The dynamic packer (thesis 5.3.2): when the edited design's parts no longer fit the master boards, "
         "shortens the parts that share a line across the board with the edited ones so they do, keeping the "

@@ -75,6 +75,8 @@ def boxes_become_a_design_with_live_usage():
     doc.recompute()
     assert d.MasterBoards[0].Thickness.Value == 12
     assert 0.5 < d.Usage <= 1 and d.Status.startswith("Usage"), d.Status
+    drawn = [c.Label for c in d.Group if design.is_constraint(c)]  # the sides drawn alike stay so, deletably
+    assert drawn == ["drawn equal: size.y of left, right", "drawn equal: size.z of left, right"], drawn
     state["parts"] = {p.Label: p for p in parts}
     rows = property_rows(parts[3])
     assert rows["FabGuide"] == [("Grain", "Free")], rows
@@ -104,7 +106,7 @@ def constraints_from_picked_edges_faces_and_boxes():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(parts["top"], "Edge2")
     Gui.runCommand("FabGuide_LengthRange")
-    constraints = [o for o in state["design"].Group if design.is_constraint(o)]
+    constraints = [o for o in state["design"].Group if design.is_constraint(o) and "drawn" not in o.Label]
     kinds = sorted(c.Kind for c in constraints)
     assert kinds == ["equal", "ground", "range", "symmetric"], kinds
     assert references.names(constraints[0].Refs) == ["left.size.z", "right.size.z"], constraints[0].Refs

@@ -590,6 +590,21 @@ def check_output(outdir, original, cli=None, reload=True):
     return results
 
 
+def drawn_equal_problems(original, suggestion, tol=TOL):
+    """Boards the original draws the same size (every side within 1e-4 mm) that the suggestion sizes apart: asked
+    for by `optimise --keep-drawn-equal` and by the designs FreeCAD makes from boxes."""
+    sizes = {p["id"]: p["size"] for p in suggestion.get("parts", [])}
+    groups = {}
+    for p in original.get("parts", []):
+        groups.setdefault(tuple(round(v / 1e-4) for v in p["size"]), []).append(p["id"])
+    problems = []
+    for ids in groups.values():
+        for other in ids[1:]:
+            if max(abs(a - b) for a, b in zip(sizes[ids[0]], sizes[other])) > tol:
+                problems.append("drawn equal: %s %s and %s %s" % (ids[0], sizes[ids[0]], other, sizes[other]))
+    return problems
+
+
 def alike_problems(suggestions):
     """Suggestions (designs, in order) with no board that differs by DISTINCT from an earlier one's."""
     problems = []

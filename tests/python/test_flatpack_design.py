@@ -253,6 +253,38 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     assert raised.value.field.startswith("constraints[0].")
 
 
+def test_boards_drawn_equal_get_equal_constraints_an_edit_carries_and_a_deletion_frees(doc):
+    boards = []
+    for k, (x, y) in enumerate([(0, 0), (482, 0), (0, 282), (482, 282)]):  # four legs under a top
+        leg = doc.addObject("Part::Box", "leg")
+        leg.Label, (leg.Length, leg.Width, leg.Height) = "leg {}".format(k + 1), (18, 18, 400)
+        leg.Placement.Base = FreeCAD.Vector(x, y, 0)
+        boards.append(leg)
+    top = doc.addObject("Part::Box", "top")
+    top.Label, (top.Length, top.Width, top.Height) = "top", (500, 300, 18)
+    top.Placement.Base = FreeCAD.Vector(0, 0, 400)
+    doc.recompute()
+    obj = design.create(doc, boards + [top], [master_board.create(doc, 1220, 610, 18)])
+    obj.Snap = False  # the legs held by nothing but being drawn alike
+    kept = design.keep_drawn_equal(obj)
+    assert sorted(c.Label for c in kept) == ["drawn equal: size.y of leg 1, leg 2, leg 3, leg 4",
+                                            "drawn equal: size.z of leg 1, leg 2, leg 3, leg 4"]
+    doc.recompute()
+    doc.openTransaction("taller leg")
+    boards[2].Height = 450
+    doc.recompute()
+    doc.commitTransaction()
+    assert [b.Height.Value for b in boards] == pytest.approx([450] * 4), obj.Status
+    doc.removeObject(next(c for c in kept if "size.z" in c.Label).Name)  # free them
+    doc.openTransaction("one leg taller")
+    boards[0].Height = 480
+    doc.recompute()
+    doc.commitTransaction()
+    assert [b.Height.Value for b in boards] == pytest.approx([480, 450, 450, 450]), obj.Status
+    again = design.keep_drawn_equal(obj)  # the three legs still alike, along the side no constraint holds
+    assert [c.Label for c in again] == ["drawn equal: size.z of leg 2, leg 3, leg 4"]
+
+
 @pytest.fixture
 def bookcase(doc, source_dir):
     """Four equal shelves between sides symmetric about the top, A4 binders resting on the bottom and on shelf 1."""

@@ -78,7 +78,8 @@ class DesignFromBoxes(Command):
     ICON, MENU = "FabGuide_FlatpackDesign.svg", QT_TRANSLATE_NOOP("FabGuide", "Flat-pack Design from Boxes")
     TIP = QT_TRANSLATE_NOOP("FabGuide", "Make a flat-pack design of the selected Part boxes (boards, their thinnest "
                                         "side the thickness), cut from the master boards selected with them, or a new "
-                                        "one of their thickness; its usage updates as you edit")
+                                        "one of their thickness; boxes drawn the same size stay so (delete the 'drawn "
+                                        "equal' constraints to free them); its usage updates as you edit")
     NEEDS = selecting(cuboids.is_box)
 
     def run(self, doc):
@@ -91,6 +92,7 @@ class DesignFromBoxes(Command):
                 # Its own master board unless the user picks one: a shared one changed for another design breaks it.
                 masters = selected(master_board.is_master_board) or [master_board.create(doc, thickness=thickness)]
                 obj = design.create(doc, boxes, masters)
+                design.keep_drawn_equal(obj)
                 decorate(obj)
                 doc.recompute()
         except design.DesignError as error:

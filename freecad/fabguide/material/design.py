@@ -182,6 +182,14 @@ def add_constraint(design, kind, label=None, named=None, **values):
     return obj
 
 
+def keep_drawn_equal(design):
+    """Equal constraints on the design's boards drawn the same size (posts, legs, rails), as the core infers them
+    (issue 32): the search no longer grows one leg of four; the user sees them in the design and deletes one to
+    free its boards."""
+    return [add_constraint(design, "equal", c["name"], Refs=c["refs"])
+            for c in fabguide_core.drawn_equal(flatpack(design))]
+
+
 def add_volume(design, kind, at, size, on=None, label=None):
     obj = design.Document.addObject("Part::FeaturePython", "Volume")
     Volume(obj)
