@@ -122,4 +122,35 @@ std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::Ve
     return X + alpha * delta;
 }
 
+ParametricDesign parametricBoards(std::vector<PartKind> parts, const std::vector<int>& grainAxes,
+                                  const ParametricDesign::SizesOf& boxesOf, Eigen::VectorXd start,
+                                  Eigen::VectorXd lower, Eigen::VectorXd upper)
+{
+    const Eigen::VectorXd sides = boxesOf(start);
+    if (sides.size() != static_cast<Eigen::Index>(3 * parts.size()) || grainAxes.size() != parts.size())
+        throw std::invalid_argument(
+            "parametric design: D(X) must give three sides and a grain axis per part");
+    std::vector<DesignBoard> boards(parts.size());
+    for (size_t i = 0; i < parts.size(); ++i) {
+        const Eigen::Vector3d size = sides.segment<3>(3 * static_cast<Eigen::Index>(i));
+        size.minCoeff(&boards[i].normal);
+        boards[i].grainAxis = grainAxes[i];
+        if (grainAxes[i] == boards[i].normal || grainAxes[i] < -1 || grainAxes[i] > 2)
+            throw std::invalid_argument("parametric design: part '" + parts[i].id +
+                                        "': its grain must run along one of its two long sides");
+        parts[i].followsGrain = grainAxes[i] >= 0;
+        parts[i].thickness = size[boards[i].normal];
+    }
+    auto sizesOf = [boxesOf, boards](const Eigen::VectorXd& X) {
+        const Eigen::VectorXd sides = boxesOf(X);
+        Eigen::VectorXd s(2 * static_cast<Eigen::Index>(boards.size()));
+        for (size_t i = 0; i < boards.size(); ++i)
+            for (int k = 0; k < 2; ++k)
+                s[2 * static_cast<Eigen::Index>(i) + k] =
+                    sides[3 * static_cast<Eigen::Index>(i) + boards[i].inPlane()[k]];
+        return s;
+    };
+    return ParametricDesign(std::move(parts), sizesOf, std::move(start), std::move(lower), std::move(upper));
+}
+
 }  // namespace fabguide::material

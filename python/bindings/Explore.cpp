@@ -167,29 +167,33 @@ py::object absorbEdit(const py::object& valid, const py::object& edited)
 }
 
 py::object optimiseParametric(const py::list& parts,
-                              const std::function<std::vector<double>(std::vector<double>)>& sizes,
+                              const std::function<std::vector<double>(std::vector<double>)>& sides,
                               const std::vector<double>& start, const std::vector<double>& lower,
                               const std::vector<double>& upper, const py::object& sheets, std::uint64_t seed,
                               double timeLimit, int rounds,
                               const std::function<void(double, double)>& progress, CancelToken* cancel)
 {
     std::vector<material::PartKind> kinds;
-    for (const py::handle& p : parts)
+    std::vector<int> grainAxes;
+    for (const py::handle& p : parts) {
         kinds.push_back(
             {p["id"].cast<std::string>(), p.contains("quantity") ? p["quantity"].cast<int>() : 1});
+        const std::string grain = p.contains("grain") ? p["grain"].cast<std::string>() : "free";
+        grainAxes.push_back(grain == "x" ? 0 : grain == "y" ? 1 : grain == "z" ? 2 : -1);
+    }
     const auto toVector = [](const std::vector<double>& v) {
         return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
     };
-    const material::ParametricDesign design(
-        kinds,
-        [sizes](const Eigen::VectorXd& X) {
-            const std::vector<double> s = sizes(std::vector<double>(X.data(), X.data() + X.size()));
+    const material::ParametricDesign design = material::parametricBoards(
+        kinds, grainAxes,
+        [sides](const Eigen::VectorXd& X) {
+            const std::vector<double> s = sides(std::vector<double>(X.data(), X.data() + X.size()));
             return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(s.data(), s.size()));
         },
         toVector(start), toVector(lower), toVector(upper));
     const nlohmann::json sheetsDoc = toJson(sheets);
     const material::MaterialSpace material(io::readMasterBoards(sheetsDoc), io::readSettings(sheetsDoc),
-                                           kinds);
+                                           design.parts());
     // D(X) is Python: one thread, on this one (FreeCAD documents recompute on the thread that owns them).
     material::MinWastageOptions o = options(seed, 1, timeLimit, rounds, true, progress, cancel);
     const material::Exploration e = material::minWastage(design, material, o);
@@ -242,13 +246,15 @@ void bindExplore(py::module_& m)
         "shortens the parts that share a line across the board with the edited ones so they do, keeping the "
         "edit and every constraint. Returns {fitted, parts, snapped (the lines saturated)}.");
     m.def(
-        "optimise_parametric", &optimiseParametric, py::arg("parts"), py::arg("sizes"), py::arg("start"),
+        "optimise_parametric", &optimiseParametric, py::arg("parts"), py::arg("sides"), py::arg("start"),
         py::arg("lower"), py::arg("upper"), py::arg("sheets"), py::arg("seed") = 1,
         py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("progress") = nullptr,
         py::arg("cancel") = nullptr,
-        "MINWASTAGE on a parametric design (thesis 5.4.2.2): sizes(parameters) -> [w0, h0, w1, h1, ...] for "
-        "parts [{id, quantity}], parameters within [lower, upper]; sheets is {boards, settings} as in "
-        "*.pack.json. Runs on this thread. Returns suggestions with their parameters and paths.");
+        "MINWASTAGE on a parametric design of boards (thesis 5.4.2.2): sides(parameters) -> [x0, y0, z0, x1, "
+        "...], the three sides of each of parts [{id, quantity, grain: 'x', 'y', 'z' or 'free'}], parameters "
+        "within [lower, upper]; each part is cut from master boards of its thinnest side, along their grain "
+        "if it has one. sheets is {boards, settings} as in *.pack.json. Runs on this thread. Returns "
+        "suggestions with their parameters and paths.");
 }
 
 }  // namespace fabguide::bindings

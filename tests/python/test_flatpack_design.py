@@ -166,7 +166,7 @@ def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
         sheet.set("A1", str(parameters[0]))
         sheet.set("A2", str(parameters[1]))
         doc.recompute()
-        return [v for b in boards.values() for v in (b.Length.Value, b.Width.Value)]
+        return [v for b in boards.values() for v in (b.Length.Value, b.Width.Value, b.Height.Value)]
 
     parts = [{"id": "side", "quantity": 2}, {"id": "end", "quantity": 2}, {"id": "bottom", "quantity": 1}]
     sheets = {"boards": [{"width": 900, "height": 600, "thickness": 12}], "settings": {"resolution": 1}}
@@ -218,6 +218,33 @@ def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
     obj.Parameters = ["Params.depth 1 2"]
     with pytest.raises(parametric.ParameterError, match="no spreadsheet 'Params' with an alias 'depth'"):
         parametric.parameters(obj)
+
+
+def test_a_parametric_design_cuts_each_board_from_its_thickness_along_its_grain(doc):
+    """Sides and ends with their grain up (y), a 6 mm bottom: every layout the parametric search gives lays each
+    board on master boards of its own thickness and the grained ones along the sheet's grain, at the parameters
+    of that layout (issue 32: the crates saved a sheet only by laying 21 parts across the grain)."""
+    sheet, boards = spreadsheet_box(doc)
+    boards["bottom"].Height = 6
+    doc.recompute()
+    grained, plain = master_board.create(doc, 900, 600, 12), master_board.create(doc, 900, 600, 6)
+    grained.Grain, grained.Count = "Along width", -1
+    obj = design.create(doc, list(boards.values()), [grained, plain])
+    boards["side"].Grain = boards["end"].Grain = "Y"
+    obj.Parameters = ["Params.side 200 400", "Params.height 100 300"]
+    doc.recompute()
+    result = parametric.optimise(obj, time_limit=4, rounds=1)
+    params = parametric.parameters(obj)
+    for laid, values in [(result["before"], [300, 170])] + [(s, s["parameters"]) for s in result["suggestions"]]:
+        parametric.set_values(obj, params, values, boxes_only=True)
+        sheets = laid["layout"]["boards"]
+        for at in laid["layout"]["placements"]:
+            b = boards[at["part"]]
+            sides = [b.Length.Value, b.Width.Value, b.Height.Value]
+            assert sheets[at["board"]]["thickness"] == min(sides), (at, sides)
+            if b.Grain == "Y":  # its y side along the sheet's width, the grain's way
+                assert at["rotation"] in (0, 180) and at["width"] == pytest.approx(sides[1]), (at, sides)
+    parametric.set_values(obj, params, [300, 170])
 
 
 def two_boards(doc, second_length):

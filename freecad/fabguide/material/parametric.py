@@ -64,13 +64,9 @@ def rounded(params, values, step=0.1):
     return [min(max(round(v / step) * step, low), high) for (_, _, low, high), v in zip(params, values)]
 
 
-def sizes(obj):
-    """Each box's material-space width and height: its two long sides, x before y before z."""
-    out = []
-    for box in design.boxes(obj):
-        lengths = [getattr(box, name).Value for name in cuboids.SIZES]
-        out += [lengths[a] for a in cuboids.in_plane(lengths)]
-    return out
+def sides(obj):
+    """Each box's three sides, x, y and z: the core makes them a board's width and height, along its grain."""
+    return [getattr(box, name).Value for box in design.boxes(obj) for name in cuboids.SIZES]
 
 
 def optimise(obj, seed=1, time_limit=8.0, rounds=3, progress=None, cancel=None):
@@ -82,14 +78,14 @@ def optimise(obj, seed=1, time_limit=8.0, rounds=3, progress=None, cancel=None):
     data = design.flatpack(obj)
     start = [value(sheet, alias) for sheet, alias, _, _ in params]
 
-    def sizes_at(values):
+    def sides_at(values):
         set_values(obj, params, values, boxes_only=True)
-        return sizes(obj)
+        return sides(obj)
 
-    parts = [{"id": box.Label, "quantity": 1} for box in design.boxes(obj)]
+    parts = [{"id": box.Label, "grain": getattr(box, "Grain", "Free").lower()} for box in design.boxes(obj)]
     try:
         return fabguide_core.optimise_parametric(
-            parts, sizes_at, start, [p[2] for p in params], [p[3] for p in params],
+            parts, sides_at, start, [p[2] for p in params], [p[3] for p in params],
             {"boards": data["boards"], "settings": data["settings"]}, seed=seed, time_limit=time_limit,
             rounds=rounds, progress=progress, cancel=cancel)
     finally:
