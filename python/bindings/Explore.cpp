@@ -234,6 +234,10 @@ void bindExplore(py::module_& m)
         "A design dict whose boards break some of its constraints (one just added), with the boards moved or "
         "resized the least, sparsely, so that they hold: {solved, parts, broken (names still broken)}.");
     m.def(
+        "check_design", [](const py::object& design) { io::readFlatpack(toJson(design)); }, py::arg("design"),
+        "Reads a *.flatpack.json design dict as every command does, laying nothing out: raises FormatError "
+        "naming a bad field, ConstraintError naming the constraints it breaks.");
+    m.def(
         "drawn_equal",
         [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },
         py::arg("design"),

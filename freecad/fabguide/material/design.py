@@ -490,7 +490,7 @@ def from_file(doc, path, label=None):
     """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes."""
     with open(path) as f:
         data = json.load(f)
-    fabguide_core.lay_out_design(data)  # refuse what the core cannot read, with its message
+    fabguide_core.check_design(data)  # refuse what the core cannot read, with its message
     masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
                                    b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"),
                                    b.get("cost", 1.0))
