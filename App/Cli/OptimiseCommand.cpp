@@ -62,6 +62,20 @@ nlohmann::json withDrawnEqual(nlohmann::json document, bool keep)
     return document;
 }
 
+/// Why no variation saved a sheet, as far as it is known: a bound says so, or one layout of the least design
+/// did (issue 32: never said as proved from a layout attempt alone).
+std::string whyNone(const material::Exploration& e, int sheets)
+{
+    if (e.leastSheets == 0 || e.leastSheets < sheets)
+        return "";
+    if (e.leastSheetsByArea >= sheets)
+        return ": shrunk as far as its constraints allow, its parts' area alone needs as many sheets";
+    return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its parts' "
+           "area "
+           "would fit on " +
+           std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
+}
+
 void run(const OptimiseArguments& args)
 {
     io::checkWritableFolder(args.output);  // before the search, not after
@@ -72,6 +86,7 @@ void run(const OptimiseArguments& args)
     const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
     material::MinWastageOptions options = args.options;
     options.guided = !args.unguided;
+    options.layoutOrder = flatpack.layoutOrder;
     options.progress = [](double done, double best) {
         std::fprintf(stderr, "\r%3.0f %%  best usage %.4f", 100 * done, best);
     };
@@ -86,6 +101,7 @@ void run(const OptimiseArguments& args)
                               {"seconds", exploration.seconds},
                               {"stopped", exploration.stopped},
                               {"least_sheets", exploration.leastSheets},
+                              {"least_sheets_by_area", exploration.leastSheetsByArea},
                               {"not_reopened", exploration.notReopened},
                               {"suggestions", nlohmann::json::array()}};
     const material::MaterialSpace::Figures& before = exploration.start.figures;
@@ -98,7 +114,7 @@ void run(const OptimiseArguments& args)
         const material::Suggestion& s = exploration.suggestions[k];
         const std::string name = "suggestion-" + std::to_string(k + 1);
         io::writeJsonFile((out / (name + ".flatpack.json")).string(),
-                          io::suggestionDocument(document, flatpack.design, s));
+                          io::suggestionDocument(document, flatpack.design, material, s));
         nlohmann::json entry = writeLayout(material, s.result, out, name);
         entry["usage_after"] = s.usage();
         entry["file"] = name + ".flatpack.json";
@@ -112,17 +128,18 @@ void run(const OptimiseArguments& args)
             std::printf(", cost %.2f -> %.2f", before.cost, after.cost);
         std::printf("  %s\n", (out / entry["file"].get<std::string>()).c_str());
     }
-    if (exploration.leastSheets > 0)  // why no sheet was saved, or how many more could be
-        std::printf("least design  %d sheets (every part as small as the constraints allow)\n",
-                    exploration.leastSheets);
+    if (exploration.leastSheets >
+        0)  // why no sheet was saved, or how many more could be: one layout, a bound
+        std::printf(
+            "least design  %d sheets as laid out, %ld by its parts' area alone (every part as small as "
+            "the constraints allow)\n",
+            exploration.leastSheets, exploration.leastSheetsByArea);
     if (exploration.notReopened > 0)
         std::printf("left out     %d design(s) that waste less but laid out afresh need more boards\n",
                     exploration.notReopened);
     if (exploration.suggestions.empty())
         std::printf("no design variation found that wastes less%s\n",
-                    exploration.leastSheets >= before.sheets
-                        ? ": shrunk as far as its constraints allow it needs as many sheets"
-                        : "");
+                    whyNone(exploration, before.sheets).c_str());
     std::printf("seconds       %.2f%s\n", exploration.seconds,
                 exploration.stopped ? " (stopped at the time limit)" : "");
     io::writeJsonFile((out / "summary.json").string(), summary);

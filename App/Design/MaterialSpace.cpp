@@ -43,6 +43,21 @@ GridLayout MaterialSpace::dock(const Eigen::VectorXd& sizes, const std::vector<i
     }
 }
 
+std::vector<int> MaterialSpace::unitsInOrder(const std::vector<int>& kinds) const
+{
+    std::vector<std::vector<int>> units(parts_.size());  // per kind, its units not yet taken, last first
+    for (int u = static_cast<int>(kindOf_.size()) - 1; u >= 0; --u)
+        units[kindOf_[u]].push_back(u);
+    std::vector<int> order;
+    for (int kind : kinds) {
+        if (kind < 0 || kind >= static_cast<int>(units.size()) || units[kind].empty())
+            return {};
+        order.push_back(units[kind].back());
+        units[kind].pop_back();
+    }
+    return order.size() == kindOf_.size() ? order : std::vector<int>{};
+}
+
 namespace {
 
 /// A unit's cells on its sheet: lower corner `at`, extent `length`, per material-space axis.

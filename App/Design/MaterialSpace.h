@@ -64,6 +64,10 @@ public:
     int sizeAlong(int unit, int rotation, int axis) const;
     /// The part kind of each unit.
     const std::vector<int>& kindOf() const { return kindOf_; }
+    /// The units in the order of `kinds` (a part kind per unit, as a layout's docking order names them: the
+    /// order a design file keeps with it); empty unless `kinds` names each part kind as many times as its
+    /// quantity.
+    std::vector<int> unitsInOrder(const std::vector<int>& kinds) const;
 
 private:
     /// Sheet s's strips left whole above its layout (the full width) and beside it (up to the layout's top),

@@ -3,6 +3,7 @@
 #include "Core/Parallel.h"
 #include "Design/FewerSheets.h"
 #include "Layout/Deadline.h"
+#include "Layout/MaxRects.h"
 
 #include <algorithm>
 #include <cmath>
@@ -191,13 +192,26 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
 
 }  // namespace
 
+std::vector<int> kindsInOrder(const MaterialSpace& material, const GridLayout& layout)
+{
+    std::vector<int> kinds;
+    for (int unit : orderOf(layout))
+        kinds.push_back(material.kindOf()[unit]);
+    return kinds;
+}
+
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
-                    double seconds, const std::atomic<bool>* cancel)
+                    double seconds, const std::atomic<bool>* cancel, const std::vector<int>& order)
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
     const Deadline stop(Clock::time_point::max(), cancel);
     GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
+    if (const std::vector<int> units = material.unitsInOrder(order); !units.empty()) {
+        GridLayout kept = material.dock(sizes, units);  // the layout the file was written with
+        if (designLayout(material, X, sizes, kept).score() < designLayout(material, X, sizes, layout).score())
+            layout = std::move(kept);
+    }
     if (!layout.unplaced.empty() && seconds < kSearchOn && !stop.cancelled())  // a short share: search on
         layout = searchedLayout(material, sizes, seed, kSearchOn, cancel);
     if (!layout.unplaced.empty() && stop.cancelled())
@@ -218,8 +232,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     const auto deadline = started + seconds(0.85 * std::max(0.0, options.timeLimit));
     Exploration exploration;
     // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
-    exploration.start =
-        layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4), options.cancel);
+    exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4),
+                               options.cancel, options.layoutOrder);
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
     // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.
@@ -228,6 +242,7 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                     std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)), options.cancel);
     exploration.leastSheets =
         saved.least && saved.least->layout.unplaced.empty() ? saved.least->figures.sheets : 0;
+    exploration.leastSheetsByArea = saved.least ? sheetsByArea(material.problem(saved.least->sizes)) : 0;
     for (DesignLayout& d : saved.designs) {
         pool.push_back({d, orderOf(d.layout), {exploration.start, d}});
         entries.push_back(pool.back());
@@ -257,12 +272,16 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         if (exploration.stopped)
             break;
     }
-    // A suggestion is a design the user goes on with: reopened, its own layout (the search above) must cut it
-    // from boards that cost no more. The exploration's slides reach tight layouts a fresh search may not.
+    // A suggestion is a design the user goes on with: reopened, its own layout (the search above, or docking
+    // in the order its file keeps) must cut it from boards that cost no more. The exploration's slides reach
+    // tight layouts neither may.
     const auto reopens = [&](const DesignLayout& d) {
-        const GridLayout fresh = searchedLayout(
-            material, d.sizes, options.seed, std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2)));
-        return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
+        const auto noDearer = [&](const GridLayout& fresh) {
+            return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
+        };
+        return noDearer(material.dock(d.sizes, orderOf(d.layout))) ||
+               noDearer(searchedLayout(material, d.sizes, options.seed,
+                                       std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2))));
     };
     exploration.suggestions =
         diverse(std::move(pool), exploration.start, options.suggestions, reopens, exploration.notReopened);

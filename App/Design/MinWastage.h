@@ -21,6 +21,9 @@ struct MinWastageOptions {
     double timeLimit = 8;    ///< seconds; the search ends with what it has found
     bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
     const std::atomic<bool>* cancel = nullptr;
+    /// The design's layout order as its file keeps it (a part kind per unit; empty: none): the user's design
+    /// laid out in it besides the search, so a suggestion reopens on the sheets it was found on.
+    std::vector<int> layoutOrder;
     /// Called on the caller's thread after each task: fraction done, usage of the best design so far.
     std::function<void(double, double)> progress;
 };
@@ -39,15 +42,23 @@ struct Exploration {
     bool stopped = false;  ///< cancelled, or the time limit ended it
     int designsImproved = 0;
     int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
+    /// What the least design's parts' area alone needs (sheetsByArea): a bound no layout of it beats, where
+    /// leastSheets is one layout found (0: no least design).
+    long leastSheetsByArea = 0;
     int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
     double usageBefore() const { return 1 - start.wastage; }
 };
 
 /// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
-/// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over). Throws PackingError
+/// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over), or docked in `order` (a
+/// part kind per unit, as a design file keeps its layout's order) when that is better. Throws PackingError
 /// naming a part left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
-                    double seconds = 10, const std::atomic<bool>* cancel = nullptr);
+                    double seconds = 10, const std::atomic<bool>* cancel = nullptr,
+                    const std::vector<int>& order = {});
+
+/// The part kind of each unit of `layout` in its docking order: what a design file keeps of its layout.
+std::vector<int> kindsInOrder(const MaterialSpace& material, const GridLayout& layout);
 
 /// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first), after FEWERSHEETS (a fifth of the
 /// time limit) whose designs the rounds improve on. Every suggestion keeps the design's constraints (it comes

@@ -394,6 +394,29 @@ void readInnerVolumes(const Fields& root, Design& design)
     }
 }
 
+/// "layout_order": a part id per unit laid out, each part as many times as its quantity (empty when absent).
+std::vector<int> readLayoutOrder(const Fields& root, const Design& design)
+{
+    const nlohmann::json& ids = root.array("layout_order", true);
+    std::vector<int> order;
+    std::vector<int> left;
+    for (const material::DesignBoard& b : design.boards)
+        left.push_back(b.quantity);
+    for (size_t i = 0; i < ids.size(); ++i) {
+        const std::string path = at("layout_order", i);
+        if (!ids[i].is_string())
+            throw FormatError(path + ": must be a part id");
+        const int part = boardIndex(design, ids[i].get<std::string>(), path);
+        if (left[part]-- == 0)
+            throw FormatError(path + ": part \"" + ids[i].get<std::string>() +
+                              "\" more times than its quantity");
+        order.push_back(part);
+    }
+    if (!order.empty() && std::any_of(left.begin(), left.end(), [](int n) { return n > 0; }))
+        throw FormatError("layout_order: must name every part as many times as its quantity");
+    return order;
+}
+
 /// How far from its constraints a design read may be, in mm. 0.1 µm: the search holds its constraints to 1e-6
 /// mm and writes them with as many digits, so a reader as strict as the search could refuse a suggestion it
 /// wrote (issue 32).
@@ -422,7 +445,9 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     checkNumbers(document);
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
-    FlatpackDesign result{{}, readMasterBoards(document), readSettings(document)};
+    FlatpackDesign result;
+    result.boards = readMasterBoards(document);
+    result.settings = readSettings(document);
     checkGrid(result.settings, result.boards);
     if (result.settings.cuts == material::Cuts::Guillotine)
         throw FormatError(
@@ -451,6 +476,7 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     design.bounds.insert(design.bounds.end(), apart.begin(), apart.end());
     // The title names the design in FreeCAD; a suggestion's usage and path are written for people.
     root.text("title", "");
+    result.layoutOrder = readLayoutOrder(root, design);
     root.noOthers({"settings", "boards", "usage", "path"});
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
@@ -537,6 +563,7 @@ nlohmann::json measures(const material::DesignLayout& d)
 }
 
 nlohmann::json suggestionDocument(const nlohmann::json& document, const Design& design,
+                                  const material::MaterialSpace& material,
                                   const material::Suggestion& suggestion, size_t steps)
 {
     nlohmann::json out = withParts(document, design, suggestion.result.X);
@@ -548,6 +575,10 @@ nlohmann::json suggestionDocument(const nlohmann::json& document, const Design& 
         path.push_back({{"usage", 1 - step.wastage}, {"parts", partsAt(design, step.X)}});
     }
     out["path"] = path;
+    nlohmann::json order = nlohmann::json::array();
+    for (int kind : material::kindsInOrder(material, suggestion.result.layout))
+        order.push_back(design.boards[kind].id);
+    out["layout_order"] = order;
     return out;
 }
 

@@ -24,6 +24,9 @@ struct FlatpackDesign {
     material::PackSettings settings;
     double maxGrowth =
         1.5;  ///< settings.max_growth: how many times its length now a suggestion may make a side
+    /// "layout_order": the parts in the order its layout docked them (a part index per unit; empty: none), as
+    /// a suggestion is written, so that it reopens on the sheets it was found on.
+    std::vector<int> layoutOrder;
 };
 
 /// The design the suggestions are searched in: `f`'s, with no board side longer than maxGrowth times its
@@ -61,10 +64,12 @@ nlohmann::json withParts(nlohmann::json document, const material::Design& design
 /// "largest_offcut": [w, h] mm}.
 nlohmann::json measures(const material::DesignLayout& d);
 
-/// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage" and
-/// "path": [{"usage", "parts"}] from the user's design to the suggestion, at most `steps` of them (evenly
-/// picked, first and last kept).
+/// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage", "path":
+/// [{"usage", "parts"}] from the user's design to the suggestion, at most `steps` of them (evenly picked,
+/// first and last kept), and "layout_order": the part ids in the order its layout docked them (`material`'s
+/// units).
 nlohmann::json suggestionDocument(const nlohmann::json& document, const material::Design& design,
+                                  const material::MaterialSpace& material,
                                   const material::Suggestion& suggestion, size_t steps = 40);
 
 }  // namespace fabguide::io

@@ -1778,7 +1778,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="69"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="83"/>
         <source>Suggest cannot change {}: their sizes or places are set by expressions. Give Design &apos;{}&apos; the spreadsheet aliases that drive them as Parameters (&apos;Sheet.alias min max&apos;), and Suggest changes those.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1788,47 +1788,47 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="338"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="349"/>
         <source>Usage now: {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="187"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="201"/>
         <source>Searching for designs that waste less...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="222"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="236"/>
         <source>Searching... best usage so far {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="230"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="244"/>
         <source>&lt;b&gt;No suggestions:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="253"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="264"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="257"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="268"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="275"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="286"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="318"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="329"/>
         <source>usage {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="353"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="364"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation type="unfinished"></translation>
@@ -2046,7 +2046,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/parametric.py" line="81"/>
+        <location filename="../../freecad/fabguide/material/parametric.py" line="77"/>
         <source>Design &apos;{}&apos; has no Parameters</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2459,13 +2459,8 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="247"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="261"/>
         <source> (stopped)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="250"/>
-        <source>; with every board as small as they allow it still needs {} sheet(s)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2586,6 +2581,16 @@ stopping: keeping the best found so far</source>
     <message>
         <location filename="../../freecad/fabguide/gui/design_commands.py" line="79"/>
         <source>Make a flat-pack design of the selected Part boxes (boards, their thinnest side the thickness), cut from the master boards selected with them, or a new one of their thickness; boxes drawn the same size stay so (delete the &apos;drawn equal&apos; constraints to free them); its usage updates as you edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="68"/>
+        <source>; with every board as small as they allow, their area alone needs {} sheet(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="70"/>
+        <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -41,6 +41,7 @@ nlohmann::json explorationJson(const material::MaterialSpace& material, const ma
                           {"seconds", e.seconds},
                           {"stopped", e.stopped},
                           {"least_sheets", e.leastSheets},
+                          {"least_sheets_by_area", e.leastSheetsByArea},
                           {"suggestions", nlohmann::json::array()}};
     for (const material::Suggestion& s : e.suggestions) {
         nlohmann::json entry = layoutJson(material, s.result);
@@ -84,7 +85,7 @@ py::object layOutDesign(const py::object& document, std::uint64_t seed)
     material::DesignLayout laid;
     {
         py::gil_scoped_release release;
-        laid = material::layOut(design, material, seed);
+        laid = material::layOut(design, material, seed, 10, nullptr, f.layoutOrder);
     }
     return fromJson(layoutJson(material, laid));
 }
@@ -96,10 +97,11 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
     const io::FlatpackDesign f = io::readFlatpack(doc);
     const material::ConstrainedDesign design(io::forSuggestions(f));
     const material::MaterialSpace material(f.boards, f.settings, design.parts());
-    const material::Exploration e =
-        explore(design, material, options(seed, threads, timeLimit, rounds, guided, progress, cancel));
+    material::MinWastageOptions o = options(seed, threads, timeLimit, rounds, guided, progress, cancel);
+    o.layoutOrder = f.layoutOrder;
+    const material::Exploration e = explore(design, material, o);
     return fromJson(explorationJson(material, e, [&](const material::Suggestion& s, nlohmann::json& entry) {
-        entry["design"] = io::suggestionDocument(doc, f.design, s);
+        entry["design"] = io::suggestionDocument(doc, f.design, material, s);
     }));
 }
 

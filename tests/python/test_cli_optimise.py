@@ -137,3 +137,18 @@ def test_bad_designs_are_refused_with_the_field_named(fabguide_cli, source_dir, 
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out")
     assert run.returncode == 1 and "settings.cuts: the zero-waste design search" in run.stderr, run.stderr
+
+
+def test_a_layout_order_that_is_not_the_parts_is_refused_by_name(fabguide_cli, source_dir, tmp_path):
+    with open(os.path.join(source_dir, "examples", "coffee-table.flatpack.json")) as f:
+        design = json.load(f)
+    ids = [p["id"] for p in design["parts"]]
+    path = tmp_path / "ordered.flatpack.json"
+    for order, said in ((ids[:1] + ["legs"] + ids[2:], 'layout_order[1]: no part "legs"'),
+                        (ids + ids[:1], 'layout_order[4]: part "{}" more times than its quantity'.format(ids[0])),
+                        (ids[1:], "layout_order: must name every part as many times as its quantity")):
+        path.write_text(json.dumps(dict(design, layout_order=order)))
+        run = optimise(fabguide_cli, str(path), tmp_path / "out")
+        assert run.returncode == 1 and said in run.stderr, run.stderr
+    path.write_text(json.dumps(dict(design, layout_order=ids[::-1])))  # any order of the parts: laid out
+    assert optimise(fabguide_cli, str(path), tmp_path / "out", "--time-limit", "1").returncode == 0

@@ -118,10 +118,13 @@ def test_a_suggestion_applied_keeps_every_constraint_and_wastes_less(doc, table)
     assert best["sheets"] < before["sheets"] or (best["sheets"] == before["sheets"] and
                                                  best["waste_m2"] < before["waste_m2"])
     doc.openTransaction("accept")
-    design.apply_parts(table, best["design"]["parts"])
+    design.apply_parts(table, best["design"]["parts"], laid=best)
+    order = [p["part"] for p in best["layout"]["placements"]]
+    assert design.flatpack(table)["layout_order"] == order == best["design"]["layout_order"]
     doc.recompute()
     doc.commitTransaction()
     assert table.Usage == pytest.approx(best["usage"], abs=0.02)
+    assert len(json.loads(table.LayoutJson)["layout"]["boards"]) == best["sheets"]  # on the sheets suggested
     assert all(c.Status == design.SATISFIED for c in table.Group if design.is_constraint(c))
     fabguide_core.lay_out_design(design.flatpack(table))  # reads back: every constraint holds
 

@@ -57,6 +57,20 @@ def driven_by_expressions(box):
     return any(path.split(".")[0].lstrip(".") in cuboids.SIZES + ("Placement",) for path, _ in box.ExpressionEngine)
 
 
+def why_none(result):
+    """Why no variation saved a sheet, as far as it is known: the least design's area bound, or one layout of it
+    (issue 32: a layout attempt is not said as a proof)."""
+    sheets, least = result["before"]["sheets"], result.get("least_sheets", 0)
+    by_area = result.get("least_sheets_by_area", 0)
+    if not least or least < sheets:
+        return ""
+    if by_area >= sheets:
+        return translate("FabGuide", "; with every board as small as they allow, their area alone needs {} "
+                                     "sheet(s)").format(by_area)
+    return translate("FabGuide", "; with every board as small as they allow it was laid out on {} sheet(s), though "
+                                 "their area would fit on {}: more time may save one").format(least, by_area)
+
+
 class Boxes:
     """Suggestions as boards' sizes and places (a design of boxes with constraints)."""
 
@@ -92,8 +106,8 @@ class Boxes:
     def show(self, state):
         design.write_parts(self.obj, state, self.start)
 
-    def apply(self, state):
-        design.apply_parts(self.obj, state, self.start["parts"] if self.start else None)
+    def apply(self, state, suggestion=None):
+        design.apply_parts(self.obj, state, self.start["parts"] if self.start else None, suggestion)
 
 
 class Aliases:
@@ -118,7 +132,7 @@ class Aliases:
     def show(self, state):
         parametric.set_values(self.obj, self.params, parametric.rounded(self.params, state), boxes_only=True)
 
-    def apply(self, state):
+    def apply(self, state, suggestion=None):
         parametric.set_values(self.obj, self.params, parametric.rounded(self.params, state))
 
 
@@ -246,10 +260,7 @@ class SuggestPanel:
         self.bar.setValue(100)
         stopped = translate("FabGuide", " (stopped)") if self.stopped else ""
         if not suggestions:
-            least = result.get("least_sheets", 0)
-            why = translate("FabGuide", "; with every board as small as they allow it still needs {} "
-                                        "sheet(s)").format(least) \
-                if least and least >= result["before"]["sheets"] else ""
+            why = why_none(result)
             self.message.setText(translate("FabGuide", "No variation of this design wastes less within its "
                                                        "constraints{}{}.").format(
                 why, stopped))
@@ -327,9 +338,10 @@ class SuggestPanel:
     def apply(self):
         """The design at the slider as one undo step, with the ticked parts' sizes locked."""
         state, _ = self.current()
+        at_end = self.slider.value() == self.slider.maximum()
         self.preview(self.original)
         self.doc.openTransaction("Accept suggestion")
-        self.target.apply(state)
+        self.target.apply(state, self.result["suggestions"][self.chosen] if at_end else None)
         if self.target.can_lock:
             self.lock(state)
         self.doc.recompute()

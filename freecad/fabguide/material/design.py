@@ -285,6 +285,15 @@ def volume_dicts(obj):
     return inner, outer
 
 
+def layout_order(obj):
+    """The boxes' labels in the order the design's last layout placed them (LayoutJson), when they are its boxes:
+    the core docks that order besides its search, so a design stays on the sheets it was laid out on."""
+    if not obj.LayoutJson:
+        return []
+    ids = [p["part"] for p in json.loads(obj.LayoutJson)["layout"]["placements"]]
+    return ids if sorted(ids) == sorted(box.Label for box in boxes(obj)) else []
+
+
 def snapshot(obj):
     """The boxes and inner volumes as they are now: {parts, inner_volumes}, a start for write_parts."""
     return {"parts": parts_of(obj), "inner_volumes": volume_dicts(obj)[0]}
@@ -304,6 +313,8 @@ def flatpack(obj, parts=None):
                "parts": parts if parts is not None else parts_of(obj),
                "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
                "inner_volumes": inner}
+        if layout_order(obj):
+            doc["layout_order"] = layout_order(obj)
         if outer:
             doc["outer_volume"] = outer
         return doc
@@ -477,11 +488,14 @@ def saying_changes(obj, start=None):
             FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, change))
 
 
-def apply_parts(obj, parts, start=None):
+def apply_parts(obj, parts, start=None, laid=None):
     """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept); the changes are
-    said from `start` (the design before the suggestions were previewed)."""
+    said from `start` (the design before the suggestions were previewed). `laid`: the suggestion's {layout,
+    problem}, whose order the next layout docks, so the design shows the sheets it was suggested on."""
     with saying_changes(obj, start):
         write_parts(obj, parts)
+    if laid is not None:
+        obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
     obj.Valid = json.dumps(parts_of(obj))
     obj.touch()
 
