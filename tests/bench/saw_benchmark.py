@@ -72,7 +72,7 @@ def grown(problem):
         if parts:
             groups.append(((board["width"] - 2 * trim + gap, board["height"] - 2 * trim + gap),
                            [(p["width"] + gap, p["height"] + gap, p.get("quantity", 1),
-                             p.get("orientations") == [0] or (p.get("follow_grain") and
+                             p.get("orientations") == [0] or (bool(p.get("follow_grain")) and
                                                               board.get("grain", "none") != "none"))
                             for p in parts]))
     return groups
