@@ -77,7 +77,7 @@ material::Exploration explore(const material::DesignSpace& design, const materia
     return material::minWastage(design, material, o);
 }
 
-py::object layOutDesign(const py::object& document, std::uint64_t seed)
+py::object layOutDesign(const py::object& document, std::uint64_t seed, double seconds)
 {
     const io::FlatpackDesign f = io::readFlatpack(toJson(document));
     const material::ConstrainedDesign design(f.design);
@@ -85,7 +85,7 @@ py::object layOutDesign(const py::object& document, std::uint64_t seed)
     material::DesignLayout laid;
     {
         py::gil_scoped_release release;
-        laid = material::layOut(design, material, seed, 10, nullptr, f.layoutOrder);
+        laid = material::layOut(design, material, seed, seconds, nullptr, f.layoutOrder);
     }
     return fromJson(layoutJson(material, laid));
 }
@@ -214,8 +214,11 @@ py::object optimiseParametric(const py::list& parts,
 
 void bindExplore(py::module_& m)
 {
-    m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1,
-          "A *.flatpack.json design dict laid out on its master boards: {usage, layout, problem}. Raises "
+    m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1, py::arg("seconds") = 10.0,
+          "A *.flatpack.json design dict laid out on its master boards by an ordering search of at most "
+          "`seconds` "
+          "(on to 10 s when a part is left over), or docked in its layout_order when that is better: {usage, "
+          "layout, problem}. Raises "
           "FormatError naming a bad field or a broken constraint, PackingError naming a part that does not "
           "fit.");
     m.def(

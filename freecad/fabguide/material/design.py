@@ -17,7 +17,8 @@ from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 SATISFIED = "Satisfied"
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
 KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
-GRAINS = ("Free", "X", "Y", "Z")  # a box's Grain: none, or the model axis its wood's grain runs along
+GRAINS = ("Free", "X", "Y", "Z")
+LIVE_SECONDS = 2.0  # the layout search of a recompute, as Suggest gives the design as drawn at its default 8 s  # a box's Grain: none, or the model axis its wood's grain runs along
 
 
 class DesignError(ValueError):
@@ -407,9 +408,11 @@ def lay_out_satisfied(obj, edited, note):
 
 
 def laid_out(obj, edited):
-    """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py)."""
-    return background.run("Laying out " + obj.Label, lambda cancel: fabguide_core.lay_out_design(edited),
-                          stoppable=False)
+    """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py): live, in LIVE_SECONDS
+    of search besides its last layout's order (a design of 46 boards searched its 10 s on every edit)."""
+    return background.run("Laying out " + obj.Label,
+                          lambda cancel: fabguide_core.lay_out_design(edited, seconds=LIVE_SECONDS),
+                          seconds=LIVE_SECONDS, stoppable=False)
 
 
 def absorb(obj, edited, start):
