@@ -1,6 +1,7 @@
 # FabGuide: the two commands a user needs, wrapping CMake (see README.md).
 #   make          install missing Debian packages, build everything into build/
 #   make test     ... then run every test (C++, headless FreeCAD, FreeCAD GUI under Xvfb)
+#   make check    ... then the fast tier: the C++ tests, the style check and the Python suites of a few seconds
 #   make demo     ... then install the workbench into FreeCAD and run it on a bundled example
 #   make install  ... then install the workbench (MOD_DIR=... to choose the folder)
 #   make bench    ... then regenerate docs/benchmarks.md
@@ -31,7 +32,7 @@ CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG
 SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) -DFABGUIDE_SANITIZE=ON >/dev/null
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
-.PHONY: all deps test demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
+.PHONY: all deps test check demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
 	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14 translations
 
 all: deps
@@ -43,6 +44,9 @@ deps:
 
 test: all
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) $(CTEST_ARGS)
+
+check: all
+	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS) -L "cpp|style|fast"
 
 install: all
 	cmake --install $(BUILD) $(if $(MOD_DIR),--prefix $(MOD_DIR)) >/dev/null
