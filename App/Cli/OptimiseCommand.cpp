@@ -128,8 +128,8 @@ void run(const OptimiseArguments& args)
             std::printf(", cost %.2f -> %.2f", before.cost, after.cost);
         std::printf("  %s\n", (out / entry["file"].get<std::string>()).c_str());
     }
-    if (exploration.leastSheets >
-        0)  // why no sheet was saved, or how many more could be: one layout, a bound
+    // Why no sheet was saved, or how many more could be: one layout of the least design, and a bound.
+    if (exploration.leastSheets > 0)
         std::printf(
             "least design  %d sheets as laid out, %ld by its parts' area alone (every part as small as "
             "the constraints allow)\n",

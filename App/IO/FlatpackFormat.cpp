@@ -261,22 +261,21 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
     if (board.quantity < 1)
         throw FormatError(part.pathOf("quantity") + ": must be at least 1");
     board.size.minCoeff(&board.normal);
-    if (part.has(
-            "grain")) {  // "x", "y" or "z": the grain runs along that axis of the model; "free": no grain
+    if (part.has("grain")) {
         const std::string grain = part.text("grain");
-        const char* axes[] = {"x", "y", "z"};
-        const auto axis = std::find(std::begin(axes), std::end(axes), grain);
-        const std::string face = std::string(axes[board.normal == 0 ? 1 : 0]) + " or " +
+        const std::optional<int> axis = grainAxisNamed(grain);
+        const char* axes = "xyz";
+        const std::string face = std::string(1, axes[board.normal == 0 ? 1 : 0]) + " or " +
                                  axes[board.normal == 2 ? 1 : 2];  // the axes in the board's plane
-        if (axis != std::end(axes) && axis - std::begin(axes) == board.normal)
+        if (axis == board.normal)
             throw FormatError(part.pathOf("grain") + ": \"" + grain +
                               "\" runs across the board, through its " + show(board.size[board.normal]) +
                               " mm thickness; choose an axis of its face (" + face + ") or \"free\"");
-        if (grain != "free" && axis == std::end(axes))
+        if (!axis)
             throw FormatError(part.pathOf("grain") + ": must be \"free\" or an axis of the board's face (" +
                               face + "), got \"" + grain + "\"");
-        board.followsGrain = grain != "free";
-        board.grainAxis = grain == "free" ? -1 : static_cast<int>(axis - std::begin(axes));
+        board.followsGrain = *axis >= 0;
+        board.grainAxis = *axis;
     }
     if (board.size.minCoeff() <= 0)
         throw FormatError(part.pathOf("size") + ": every side must be longer than 0");
@@ -439,6 +438,15 @@ void checkSatisfied(const Design& design)
 }
 
 }  // namespace
+
+std::optional<int> grainAxisNamed(const std::string& grain)
+{
+    if (grain == "free")
+        return -1;
+    if (grain.size() == 1 && grain[0] >= 'x' && grain[0] <= 'z')
+        return grain[0] - 'x';
+    return std::nullopt;
+}
 
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
 {

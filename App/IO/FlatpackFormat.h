@@ -9,6 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+#include <string>
+
 namespace fabguide::io {
 
 constexpr int kFlatpackFormatVersion = 1;
@@ -43,14 +46,17 @@ struct ConstraintError : FormatError {
 /// Whether a design read must already satisfy its constraints.
 enum class Satisfied { Required, NotRequired };
 
+/// A part's "grain" (docs/formats.md): the model axis "x", "y" or "z" it runs along (0, 1, 2), or -1 for
+/// "free"; nothing for any other word.
+std::optional<int> grainAxisNamed(const std::string& grain);
+
 /// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, and, unless told
 /// otherwise, when the design does not satisfy its own constraints (naming them).
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied = Satisfied::Required);
 
 /// The boards of `document` drawn equal (Design/DrawnEqual.h) as the "equal" constraints of the format it
-/// lacks:
-/// [{"kind": "equal", "name": "drawn equal: size.z of post, post 2", "refs": ["post.size.z",
-/// "post 2.size.z"]}], for the user to keep. The design need not satisfy its own constraints yet.
+/// lacks, for the user to keep: [{"kind": "equal", "name": "drawn equal: size.z of post, post 2", "refs":
+/// ["post.size.z", "post 2.size.z"]}]. The design need not satisfy its own constraints yet.
 nlohmann::json drawnEqualConstraints(const nlohmann::json& document);
 
 /// The parts at design vector X: [{"id", "position" (lower corner), "size"}].

@@ -181,7 +181,11 @@ py::object optimiseParametric(const py::list& parts,
         kinds.push_back(
             {p["id"].cast<std::string>(), p.contains("quantity") ? p["quantity"].cast<int>() : 1});
         const std::string grain = p.contains("grain") ? p["grain"].cast<std::string>() : "free";
-        grainAxes.push_back(grain == "x" ? 0 : grain == "y" ? 1 : grain == "z" ? 2 : -1);
+        const std::optional<int> axis = io::grainAxisNamed(grain);
+        if (!axis)
+            throw io::FormatError("parts[" + std::to_string(grainAxes.size()) +
+                                  "].grain: must be \"free\", \"x\", \"y\" or \"z\", got \"" + grain + "\"");
+        grainAxes.push_back(*axis);
     }
     const auto toVector = [](const std::vector<double>& v) {
         return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
@@ -216,11 +220,9 @@ void bindExplore(py::module_& m)
 {
     m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1, py::arg("seconds") = 10.0,
           "A *.flatpack.json design dict laid out on its master boards by an ordering search of at most "
-          "`seconds` "
-          "(on to 10 s when a part is left over), or docked in its layout_order when that is better: {usage, "
-          "layout, problem}. Raises "
-          "FormatError naming a bad field or a broken constraint, PackingError naming a part that does not "
-          "fit.");
+          "`seconds` (on to 10 s when a part is left over), or docked in its layout_order when that is "
+          "better: {usage, layout, problem}. Raises FormatError naming a bad field or a broken constraint, "
+          "PackingError naming a part that does not fit.");
     m.def(
         "optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
         py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
@@ -246,9 +248,8 @@ void bindExplore(py::module_& m)
         "drawn_equal",
         [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },
         py::arg("design"),
-        "The equal constraints a design dict lacks that keep its boards drawn the same size so: [{kind, "
-        "name, "
-        "refs}], sizes along each in-plane axis.");
+        "The equal constraints a design dict lacks that keep its boards drawn the same size so: "
+        "[{kind, name, refs}], sizes along each in-plane axis.");
     m.def(
         "absorb_edit", &absorbEdit, py::arg("valid"), py::arg("edited"),
         "The dynamic packer (thesis 5.3.2): when the edited design's parts no longer fit the master boards, "

@@ -174,6 +174,9 @@ def test_a_parametric_design_driven_by_a_spreadsheet_is_optimised(doc):
 
     parts = [{"id": "side", "quantity": 2}, {"id": "end", "quantity": 2}, {"id": "bottom", "quantity": 1}]
     sheets = {"boards": [{"width": 900, "height": 600, "thickness": 12}], "settings": {"resolution": 1}}
+    with pytest.raises(fabguide_core.FormatError, match='parts.1..grain: must be "free", "x", "y" or "z", got "Y"'):
+        fabguide_core.optimise_parametric([parts[0], dict(parts[1], grain="Y")], sizes, [300, 170], [200, 100],
+                                          [400, 300], sheets)
     result = fabguide_core.optimise_parametric(parts, sizes, [300, 170], [200, 100], [400, 300], sheets,
                                                rounds=2, time_limit=30)
     best = result["suggestions"][0]

@@ -17,8 +17,8 @@ from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 SATISFIED = "Satisfied"
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
 KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
-GRAINS = ("Free", "X", "Y", "Z")
-LIVE_SECONDS = 2.0  # the layout search of a recompute, as Suggest gives the design as drawn at its default 8 s  # a box's Grain: none, or the model axis its wood's grain runs along
+GRAINS = ("Free", "X", "Y", "Z")  # a box's Grain: none, or the model axis its wood's grain runs along
+LIVE_SECONDS = 2.0  # the layout search of a recompute, as Suggest gives the design as drawn at its default 8 s
 
 
 class DesignError(ValueError):
@@ -314,8 +314,9 @@ def flatpack(obj, parts=None):
                "parts": parts if parts is not None else parts_of(obj),
                "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
                "inner_volumes": inner}
-        if layout_order(obj):
-            doc["layout_order"] = layout_order(obj)
+        order = layout_order(obj)
+        if order:
+            doc["layout_order"] = order
         if outer:
             doc["outer_volume"] = outer
         return doc
