@@ -284,142 +284,142 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="35"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="36"/>
         <source>Master boards to cut the boards from</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="37"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="38"/>
         <source>Grid cell size tau (thesis 5.4.1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
         <source>Width of the cut</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="41"/>
         <source>Extra material between parts</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="42"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="43"/>
         <source>Margin cut off every master board edge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="44"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
         <source>Shortest side a board may shrink to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="46"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="49"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="52"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="53"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="55"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="56"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="59"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="60"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="62"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
         <source>Laid out, or what is wrong</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="65"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="68"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="71"/>
         <source>The last layout and its problem (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
         <source>What must hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Fixed value or sum offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="111"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
         <source>Satisfied, or what breaks it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="134"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along x</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along z</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Satisfied, or the boards that break it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="208"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="209"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
@@ -719,17 +719,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
         <source>Right side of a sum</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -965,12 +965,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="163"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="164"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="186"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="187"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation type="unfinished"></translation>
@@ -1626,18 +1626,18 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="488"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="489"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
         <source>Export Printable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="495"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1783,12 +1783,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="349"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="362"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="349"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="350"/>
         <source>Usage now: {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1828,7 +1828,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="364"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="365"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation type="unfinished"></translation>
@@ -1959,74 +1959,74 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="122"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="123"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="154"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="155"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="257"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="258"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="280"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="281"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="297"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="307"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="355"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="368"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="147"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="148"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="164"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="165"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="195"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="198"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="199"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="202"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="203"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="230"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="231"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="284"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="292"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="293"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2148,22 +2148,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
         <source>Mend the model as the note below says.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
         <source>Change or delete one of the relationships.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="205"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="207"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="208"/>
         <source>Or move the parts that meet apart.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2396,17 +2396,17 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="505"/>
         <source>Select the printable to export.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="505"/>
         <source>There is no printable in this document yet.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="508"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="509"/>
         <source>Folder for the print files</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2469,17 +2469,17 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="28"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
         <source>Design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="30"/>
         <source>master boards</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="92"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="93"/>
         <source>Constraint</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2504,7 +2504,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="289"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2569,7 +2569,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="289"/>
         <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2591,6 +2591,26 @@ stopping: keeping the best found so far</source>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="70"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <source>Solving &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="119"/>
+        <source>Making the bodies of &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="414"/>
+        <source>Laying out &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="143"/>
+        <source>Laying out &apos;{}&apos; ({} boards)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -284,142 +284,142 @@
         <translation>Andere Seite des Umrissrechtecks</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="35"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="36"/>
         <source>Master boards to cut the boards from</source>
         <translation>Rohplatten, aus denen die Platten geschnitten werden</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="37"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="38"/>
         <source>Grid cell size tau (thesis 5.4.1)</source>
         <translation>Rasterzellgröße tau (Dissertation 5.4.1)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="39"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
         <source>Width of the cut</source>
         <translation>Breite des Schnitts</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="40"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="41"/>
         <source>Extra material between parts</source>
         <translation>Zusätzliches Material zwischen Teilen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="42"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="43"/>
         <source>Margin cut off every master board edge</source>
         <translation>Rand, der an jeder Kante der Rohplatte abgeschnitten wird</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="44"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
         <source>Shortest side a board may shrink to</source>
         <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="46"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation>Platten, die sich berühren, bleiben in Berührung (Kantenfang)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="49"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation>Wie viel Mal ihre jetzige Länge Vorschlagen die Seite einer Platte machen darf (1,5: um die Hälfte länger), damit eine Leiste eine Leiste bleibt; Ihre eigenen Änderungen sind nicht begrenzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="52"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="53"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation>Ein Quader, den Sie ändern, behält seine neue Größe und Lage, während sich der Rest den Vorgaben anpasst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="55"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="56"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation>Tabellen-Aliase, die die Quader über Ausdrücke steuern, als 'Sheet.alias min max' (Dissertation 5.4.2.2); sind sie angegeben, ändert Vorschlagen diese statt der Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="59"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="60"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation>Teilefläche / umschließendes Rechteck des Layouts (Dissertation 5.2.3)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="62"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
         <source>Laid out, or what is wrong</source>
         <translation>Ausgelegt, oder was nicht stimmt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="65"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation>Was die letzte Neuberechnung oder der letzte übernommene Vorschlag, der Platten bewegte, getan hat: Größe alt → neu, wie weit</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="68"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation>Platten nach der letzten gültigen Neuberechnung (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="71"/>
         <source>The last layout and its problem (JSON)</source>
         <translation>Das letzte Layout und seine Aufgabe (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="96"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
         <source>What must hold</source>
         <translation>Was gelten muss</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Fixed value or sum offset</source>
         <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="111"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
         <source>Satisfied, or what breaks it</source>
         <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="133"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="134"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Size along x</source>
         <translation>Größe entlang x</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along y</source>
         <translation>Größe entlang y</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along z</source>
         <translation>Größe entlang z</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Satisfied, or the boards that break it</source>
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="208"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="209"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
@@ -719,17 +719,17 @@
         <translation>Das Layout, aus dem dies erstellt wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation>Quader und was von ihnen (size.x, centre.z, min.y, max.x): gleich, symmetrisch (zwei), Summe (linke Seite), fest und Bereich (einer)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="102"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
         <source>Right side of a sum</source>
         <translation>Rechte Seite einer Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation>Symmetrisch zu dieser Referenz (leer: jetzige Mitte)</translation>
     </message>
@@ -967,12 +967,12 @@ U/min</translation>
         <translation>Doppelgelenk '{}': wählen Sie eine Fläche eines Quaders von '{}' für {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="163"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="164"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation>Mechanismus '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="186"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="187"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation>{}: diese können nicht zugleich gelten: {}. {}
@@ -1634,19 +1634,19 @@ U/min</translation>
         <translation>In einem Stück druckbare Körper des gewählten (oder einzigen) Mechanismus: Spalte, Hohlräume, Scharnierstifte und Gabeln, Gelenklenker; entlang jeder Bewegung geprüft</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="488"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="489"/>
         <source>{}: least clearance {:.3f} mm ({})
 </source>
         <translation>{}: kleinstes Spiel {:.3f} mm ({})
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="493"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
         <source>Export Printable</source>
         <translation>Druckbares exportieren</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="494"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="495"/>
         <source>Write the selected printable as STL, 3MF and STEP: the assembly and one file per body</source>
         <translation>Das gewählte Druckbare als STL, 3MF und STEP schreiben: die Baugruppe und eine Datei je Körper</translation>
     </message>
@@ -1793,12 +1793,12 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="349"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="362"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="349"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="350"/>
         <source>Usage now: {:.3f}</source>
         <translation>Nutzung jetzt: {:.3f}</translation>
     </message>
@@ -1838,7 +1838,7 @@ U/min</translation>
         <translation>Nutzung {:.3f}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="364"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="365"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation>FabGuide: die Größe von {} festgesetzt
@@ -1970,76 +1970,76 @@ U/min</translation>
         <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="122"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="123"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="154"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="155"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="257"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="258"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="280"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="281"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="297"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="307"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="355"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="368"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="147"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="148"/>
         <source>Layout &apos;{}&apos;: {}{}</source>
         <translation>Layout '{}': {}{}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="164"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="165"/>
         <source>{}: {} parts on {} master board(s), usage {:.1%}, sheet utilisation {:.1%}
 </source>
         <translation>{}: {} Teile auf {} Rohplatte(n), Nutzung {:.1%}, Plattenausnutzung {:.1%}
 </translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="195"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="196"/>
         <source>Layout &apos;{}&apos;: no boards to lay out (add FabGuide boards to Boards)</source>
         <translation>Layout '{}': keine Platten auszulegen (fügen Sie FabGuide-Platten zu Boards hinzu)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="198"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="199"/>
         <source>Layout &apos;{}&apos;: no master boards (add one to MasterBoards)</source>
         <translation>Layout '{}': keine Rohplatten (fügen Sie eine zu MasterBoards hinzu)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="202"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="203"/>
         <source>Layout &apos;{}&apos;: board &apos;{}&apos; has no shape; recompute it first</source>
         <translation>Layout '{}': Platte '{}' hat keine Form; erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="230"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="231"/>
         <source>Layout &apos;{}&apos;: {} lie in one plane and touch, so they are cut as one piece; set their Quantity to 1</source>
         <translation>Layout '{}': {} liegen in einer Ebene und berühren sich, werden also als ein Stück geschnitten; setzen Sie ihre Quantity auf 1</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="284"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="285"/>
         <source>Layout &apos;{}&apos; has not been computed yet: recompute it first</source>
         <translation>Layout '{}' wurde noch nicht berechnet: erst neu berechnen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="292"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="293"/>
         <source>{} Mend that first: what was made now would show the last layout that could be made, not the boards as they are.</source>
         <translation>{} Beheben Sie das zuerst: was jetzt erstellt würde, zeigte das letzte Layout, das erstellt werden konnte, nicht die Platten, wie sie sind.</translation>
     </message>
@@ -2163,22 +2163,22 @@ U/min</translation>
         <translation>eine Konfiguration</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="202"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
         <source>Mend the model as the note below says.</source>
         <translation>Beheben Sie das Modell, wie der Hinweis unten sagt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
         <source>Change or delete one of the relationships.</source>
         <translation>Ändern oder löschen Sie eine der Beziehungen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="205"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation>Oder geben Sie einen Quader frei (Locks des Mechanismus).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="207"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="208"/>
         <source>Or move the parts that meet apart.</source>
         <translation>Oder rücken Sie die Teile, die aufeinandertreffen, auseinander.</translation>
     </message>
@@ -2414,17 +2414,17 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Wählen Sie den Mechanismus, der gedruckt werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="505"/>
         <source>Select the printable to export.</source>
         <translation>Wählen Sie das Druckteil, das exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="504"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="505"/>
         <source>There is no printable in this document yet.</source>
         <translation>In diesem Dokument gibt es noch kein Druckteil.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/function_commands.py" line="508"/>
+        <location filename="../../freecad/fabguide/gui/function_commands.py" line="509"/>
         <source>Folder for the print files</source>
         <translation>Ordner für die Druckdateien</translation>
     </message>
@@ -2490,17 +2490,17 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Platte</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="28"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
         <source>Design</source>
         <translation>Entwurf</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="29"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="30"/>
         <source>master boards</source>
         <translation>Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="92"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="93"/>
         <source>Constraint</source>
         <translation>Vorgabe</translation>
     </message>
@@ -2525,7 +2525,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>0 oder mehr</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="289"/>
         <source>Layout &apos;{}&apos; is in error.</source>
         <translation>Layout '{}' ist fehlerhaft.</translation>
     </message>
@@ -2590,7 +2590,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Entwurf '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster). Beheben Sie das zuerst: Vorschlagen ginge von ihren letzten Formen aus.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/layout.py" line="288"/>
+        <location filename="../../freecad/fabguide/material/layout.py" line="289"/>
         <source>Layout &apos;{}&apos;: {} could not be recomputed (see the report view).</source>
         <translation>Layout '{}': {} konnte(n) nicht neu berechnet werden (siehe Ausgabefenster).</translation>
     </message>
@@ -2613,6 +2613,26 @@ hält an: das bisher Beste bleibt</translation>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="70"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation>; mit jeder Platte so klein, wie sie es zulassen, wurde er auf {} Rohplatte(n) verlegt, obwohl ihre Fläche auf {} passen würde: mehr Zeit spart vielleicht eine</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <source>Solving &apos;{}&apos;</source>
+        <translation>'{}' wird gelöst</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/function/printable.py" line="119"/>
+        <source>Making the bodies of &apos;{}&apos;</source>
+        <translation>Die Körper von '{}' werden erzeugt</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="414"/>
+        <source>Laying out &apos;{}&apos;</source>
+        <translation>'{}' wird angeordnet</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/layout.py" line="143"/>
+        <source>Laying out &apos;{}&apos; ({} boards)</source>
+        <translation>'{}' wird angeordnet ({} Platten)</translation>
     </message>
 </context>
 <context>

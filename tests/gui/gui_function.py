@@ -4,13 +4,16 @@ the relationship panel, a conflict shown in red, undo, a box renamed and deleted
 the 3-D view and panels."""
 # expects error: Part 'Lid part' has no boxes: add a Part::Box to its Cuboids
 # expects error: Joint 'Lid hinge': choose the Edge it turns about
+# expects error: Making the bodies of 'cabinet printable': cancelled; it keeps its last result
 import json
 import os
 import tempfile
+import threading
+import time
 
 import FreeCAD
 import FreeCADGui as Gui
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 from freecad.fabguide.core import fabguide_core
 import guitest
@@ -59,6 +62,46 @@ def the_configurations_panel_shows_the_doors_stowed():
     Gui.ActiveDocument.resetEdit()
     QtGui.QApplication.processEvents()
     assert door.ViewObject.RootNode.getNumChildren() == children, "the preview's transforms are gone"
+
+
+def a_long_print_shows_its_progress_and_cancel_keeps_the_last_bodies():
+    """The cabinet takes seconds to print: FreeCAD keeps drawing, shows what runs, and Cancel leaves the bodies
+    of the last print (issue 34: nothing freezes FreeCAD)."""
+    doc, mech = state["cabinet"], state["mech"]
+    FreeCAD.setActiveDocument(doc.Name)
+    seen = []
+
+    def on_the_dialog(cancel):
+        def look():  # runs from FreeCAD's event loop while the print runs: FreeCAD is not frozen
+            dialogs = [w for w in QtGui.QApplication.topLevelWidgets()
+                       if isinstance(w, QtGui.QProgressDialog) and w.isVisible()]
+            if not dialogs:
+                return QtCore.QTimer.singleShot(100, look)
+            seen.append(dialogs[0].labelText())
+            if cancel:
+                print("screenshot: " + guitest.screenshot("function_print_progress", dialogs[0]))
+                dialogs[0].cancel()
+        QtCore.QTimer.singleShot(100, look)
+
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(mech)
+    on_the_dialog(cancel=False)
+    Gui.runCommand("FabGuide_MakePrintable")
+    made = [o for o in doc.Objects if o.Label == mech.Label + " printable"][0]
+    assert seen and seen[0].startswith("Making the bodies of 'cabinet printable'"), seen
+    assert not made.Error, made.Error
+    volumes = {c.BodyName: c.Shape.Volume for c in made.Group if not c.Shape.isNull()}
+    assert sum(volumes.values()) > 0
+    made.Gap = 0.5
+    on_the_dialog(cancel=True)
+    started = time.monotonic()
+    doc.recompute()
+    assert time.monotonic() - started < 5, "Cancel returns at once; the print goes on unused on its thread"
+    assert len(seen) == 2 and made.Error.startswith("Making the bodies of 'cabinet printable': cancelled"), made.Error
+    assert {c.BodyName: c.Shape.Volume for c in made.Group if not c.Shape.isNull()} == volumes, "the last print's bodies stay"
+    while len(threading.enumerate()) > 1 and time.monotonic() - started < 60:  # the abandoned print ends
+        guitest.settle(0.2)
+    assert len(threading.enumerate()) == 1, threading.enumerate()
 
 
 def a_clamshell_from_plain_boxes_with_the_commands():
@@ -387,6 +430,7 @@ def a_sloppy_kitchen_cabinet_solves_with_its_notes_and_overlaps_in_red():
 guitest.run([
     import_the_cabinet,
     the_configurations_panel_shows_the_doors_stowed,
+    a_long_print_shows_its_progress_and_cancel_keeps_the_last_bodies,
     a_clamshell_from_plain_boxes_with_the_commands,
     the_relationship_panel_colours_the_faces,
     a_conflict_turns_the_parts_red_and_undo_takes_it_back,

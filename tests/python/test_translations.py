@@ -14,7 +14,8 @@ import pytest
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
 PACKAGE = os.path.join(SOURCE, "freecad", "fabguide")
 TRANSLATIONS = os.path.join(SOURCE, "Resources", "translations")
-SAID = {"tell", "setText", "setToolTip", "setWindowTitle", "PrintMessage", "PrintWarning", "PrintError"}
+SAID = {"tell", "setText", "setToolTip", "setWindowTitle", "setLabelText", "QProgressDialog", "PrintMessage",
+        "PrintWarning", "PrintError"}
 BOXES = {"warning", "information", "question", "critical"}  # QMessageBox's: (parent, title, text)
 
 
@@ -47,6 +48,8 @@ def unmarked(text):
     for node in ast.walk(ast.parse(text)):
         if isinstance(node, ast.Call):
             name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+            if name == "run" and getattr(node.func, "value", None) and getattr(node.func.value, "id", "") == "background":
+                name = "tell"  # background.run's title is shown in its progress dialog
             args = node.args[1:3] if name in BOXES else node.args[:1] if name in SAID else []
             if name == "add" and len(node.args) >= 5 and str(getattr(node.args[1], "value", "")).startswith("App::"):
                 args = node.args[4:5]  # a property's tooltip: FreeCAD translates it in the context App::Property
@@ -71,9 +74,10 @@ def test_every_string_a_user_reads_is_marked_for_translation():
 
 def test_the_check_finds_what_bypasses_translation():
     assert [t for _, t in unmarked('tell("Pick a box.")\nraise BoardError("{}: no shape".format(x))\n'
+                                   'background.run("Laying out " + label, work)\n'
                                    'class C:\n    ICON, MENU = "a.svg", "Make Board"\n'
                                    'add(obj, "App::PropertyLength", "Kerf", "Layout", "Width of the cut", 3)\n')] == \
-        ["Pick a box.", "{}: no shape", "Make Board", "Width of the cut"]
+        ["Pick a box.", "{}: no shape", "Laying out ", "Make Board", "Width of the cut"]
     assert unmarked('tell(translate("FabGuide", "Pick a box."))\nraise BoardError(str(error))\n'
                     'MENU = QT_TRANSLATE_NOOP("FabGuide", "Make Board")\n') == []
 

@@ -158,7 +158,8 @@ def solve(obj):
     drawn_sizes = drawn(obj)
     data = model(obj, edited, drawn_sizes)
     try:
-        solved = background.run("Solving " + obj.Label, lambda cancel: fabguide_core.solve(data), stoppable=False)
+        solved = background.run(translate("FabGuide", "Solving '{}'").format(obj.Label),
+                                lambda cancel: fabguide_core.solve(data), stoppable=False)
     except fabguide_core.FormatError as error:
         raise MechanismError(translate("FabGuide", "Mechanism '{}': {}").format(
             obj.Label, messages.in_words(str(error), data, messages.WORKSLIKE)))

@@ -116,7 +116,7 @@ def bodies(obj):
         raise PrintableError(translate("FabGuide", "Printable '{}': choose the Mechanism to print").format(obj.Label))
     try:
         arguments = mechanism.model(obj.Mechanism), obj.Gap.Value, obj.CheckMotion, obj.Scale, fit(obj)
-        return background.run("Making {} printable".format(obj.Label),
+        return background.run(translate("FabGuide", "Making the bodies of '{}'").format(obj.Label),
                               lambda cancel: fabguide_core.printable(*arguments), stoppable=False)
     except (fabguide_core.FormatError, RuntimeError) as error:
         raise PrintableError(translate("FabGuide", "Printable '{}': {}").format(

@@ -485,8 +485,9 @@ class MakePrintable(Command):
             vp.colour_bodies(made, added)
             mech.ViewObject.Visibility = False
             doc.recompute()
-        FreeCAD.Console.PrintMessage(translate("FabGuide", "{}: least clearance {:.3f} mm ({})\n").format(
-            made.Label, made.MinimumClearance.Value, made.ClearanceAt))
+        if not made.Error:  # a failure or a cancel was said by the recompute
+            FreeCAD.Console.PrintMessage(translate("FabGuide", "{}: least clearance {:.3f} mm ({})\n").format(
+                made.Label, made.MinimumClearance.Value, made.ClearanceAt))
 
 
 class ExportPrintable(Command):

@@ -411,7 +411,7 @@ def lay_out_satisfied(obj, edited, note):
 def laid_out(obj, edited):
     """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py): live, in LIVE_SECONDS
     of search besides its last layout's order (a design of 46 boards searched its 10 s on every edit)."""
-    return background.run("Laying out " + obj.Label,
+    return background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
                           lambda cancel: fabguide_core.lay_out_design(edited, seconds=LIVE_SECONDS),
                           seconds=LIVE_SECONDS, stoppable=False)
 

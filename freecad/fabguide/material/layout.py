@@ -139,8 +139,9 @@ class Layout(properties.Proxy):
             problem["parts"] = pieces(obj, joined, boards)
             # The search runs on a thread of its own (background.py): it is given values, never FreeCAD objects.
             search = dict(iterations=obj.Iterations, seed=obj.Seed, time_limit=obj.TimeLimit)
+            count = sum(p.get("quantity", 1) for p in problem["parts"])
             result = background.run(
-                "Laying out {} ({} boards)".format(obj.Label, sum(p.get("quantity", 1) for p in problem["parts"])),
+                translate("FabGuide", "Laying out '{}' ({} boards)").format(obj.Label, count),
                 lambda cancel: fabguide_core.pack(problem, cancel=cancel, **search), seconds=obj.TimeLimit)
         except (fabguide_core.FormatError, fabguide_core.PackingError, RuntimeError) as error:
             said = messages.in_words(str(error), problem, messages.PACK)
