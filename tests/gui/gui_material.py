@@ -124,6 +124,10 @@ def guillotine_cuts_chosen_in_the_panel_give_the_saw_cuts():
 def a_long_layout_shows_its_progress_and_stops_with_the_best_so_far():
     doc, layout = state["doc"], state["layout"]
     layout.Iterations, layout.TimeLimit = 10 ** 9, 300  # a search that would run for five minutes
+    master = [o for o in doc.Objects if hasattr(o, "Count")][0]
+    master.Count = 0  # as many as needed
+    for board in state["boards"]:
+        board.Quantity = 12  # 60 boards, as the layout that froze FreeCAD for 60 s
     seen = {}
 
     def press_stop():  # runs from FreeCAD's event loop while the search runs: FreeCAD is not frozen
@@ -137,9 +141,13 @@ def a_long_layout_shows_its_progress_and_stops_with_the_best_so_far():
 
     QtCore.QTimer.singleShot(1000, press_stop)
     doc.recompute()
-    assert "Laying out" in seen.get("label", "") and "at most 300 s" in seen["label"], seen
-    assert not layout.Error and layout.SheetCount >= 1 and 0.5 < layout.Usage <= 1, layout.Error
+    assert "(60 boards)" in seen.get("label", "") and "at most 300 s" in seen["label"], seen
+    assert not layout.Error and layout.SheetCount >= 6 and 0.5 < layout.Usage <= 1, layout.Error
+    assert len(json.loads(layout.LayoutJson)["placements"]) == 60
     layout.Iterations, layout.TimeLimit = -1, 60
+    master.Count = 1
+    for board in state["boards"]:
+        board.Quantity = 1
     doc.recompute()
 
 
