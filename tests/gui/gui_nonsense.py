@@ -160,6 +160,8 @@ def a_design_of_nonsense():
     doc.recompute()
     said = told("FabGuide_OuterVolume", (shelf, None))
     assert said == ["Design 'Bookshelf' has no boxes to put an envelope round."], said
+    for path in guitest.screenshots_at_screen_sizes("nonsense"):  # the report view: sentences, no traceback
+        print("screenshot: " + path)
 
 
 guitest.run([a_clamshell, links_to_the_wrong_objects_are_refused_as_typed,

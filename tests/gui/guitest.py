@@ -10,7 +10,7 @@ import traceback
 
 import FreeCAD
 import FreeCADGui
-from PySide import QtCore
+from PySide import QtCore, QtGui
 
 
 def _path(name):
@@ -61,8 +61,6 @@ def pick(*picked):
 def task_button(text):
     """The open task panel's button reading `text` ("OK", "Cancel"), as a user clicks it: hidden dialogs of
     FreeCAD's own (FreeCAD 1.0's document recovery) have buttons reading the same."""
-    from PySide import QtGui
-
     boxes = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible()]
     return [b for box in boxes for b in box.buttons() if b.text().replace("&", "") == text][0]
 
@@ -70,7 +68,6 @@ def task_button(text):
 def told(command):
     """Runs `command`, which should tell the user something in a message box; closes the box and returns its
     text (None when no box came)."""
-    from PySide import QtGui
 
     seen, running = [], [True]
 
@@ -99,7 +96,6 @@ class MessageBoxes:
         self.timer.start(50)
 
     def answer(self):
-        from PySide import QtGui
 
         box = QtGui.QApplication.activeModalWidget()
         if isinstance(box, QtGui.QMessageBox):
@@ -138,11 +134,23 @@ def screenshots_at_screen_sizes(name):
     return paths
 
 
+def show_model_tab():
+    """The Model tab (tree and properties) in front of Tasks: a tab of the combo view's QTabWidget on 0.20, of
+    tabified dock widgets on 1.0; both have a QTabBar."""
+    for bar in FreeCADGui.getMainWindow().findChildren(QtGui.QTabBar):
+        for i in range(bar.count()):
+            if bar.tabText(i).replace("&", "") == "Model":
+                bar.setCurrentIndex(i)
+    settle()
+
+
 def screenshot(name, window=None):
     """Grab the FreeCAD window (panels, toolbars), or another top-level `window` (a dialog), into
     $FABGUIDE_SCREENSHOTS/name.png; returns the path. The 3-D view is OpenGL, which a window grab leaves blank:
-    see view_image."""
+    see view_image. With no task panel open, the Model tab is shown."""
     path = _path(name)
+    if window is None and not FreeCADGui.Control.activeDialog():
+        show_model_tab()  # FreeCAD 1.0 leaves the empty Tasks tab in front when a panel closes
     settle()
     FreeCADGui.updateGui()
     if not (window or FreeCADGui.getMainWindow()).grab().save(path):
@@ -175,7 +183,6 @@ def looks_like_its_reference(path, name):
     difference at most TOLERANCE; AssertionError saying by how much otherwise."""
     import shutil
 
-    from PySide import QtGui
 
     reference = os.path.join(REFERENCES, ".".join(FreeCAD.Version()[:2]), name + ".png")
     if os.environ.get("FABGUIDE_UPDATE_REFERENCES") == "1":
@@ -202,7 +209,6 @@ def looks_like_its_reference(path, name):
 def keys(widget, text="", key=None):
     """Types `text` into `widget` key by key as a user does (each keystroke its own events), then presses `key`
     (QtCore.Qt.Key_Return, ...) if given. Debian's PySide has no QtTest."""
-    from PySide import QtGui
 
     strokes = [(ord(ch.upper()), ch) for ch in text] + ([(key, "")] if key is not None else [])
     for code, ch in strokes:
@@ -214,7 +220,6 @@ def keys(widget, text="", key=None):
 def with_file_dialog(name, path, command):
     """Runs FreeCAD command `command` with QFileDialog.`name` (getOpenFileName, getSaveFileName) answering
     `path`, as if the user had picked it (a modal dialog would stop the test)."""
-    from PySide import QtGui
 
     original = getattr(QtGui.QFileDialog, name)
     setattr(QtGui.QFileDialog, name, staticmethod(lambda *args, **kwargs: (path, "")))
