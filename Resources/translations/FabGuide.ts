@@ -1783,7 +1783,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="362"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="365"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1984,7 +1984,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="368"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2604,13 +2604,18 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="414"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="417"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/material/layout.py" line="143"/>
         <source>Laying out &apos;{}&apos; ({} boards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="309"/>
+        <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

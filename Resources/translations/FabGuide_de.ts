@@ -1793,7 +1793,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="362"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="365"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1995,7 +1995,7 @@ U/min</translation>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="368"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2625,7 +2625,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Die Körper von '{}' werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="414"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="417"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation>'{}' wird angeordnet</translation>
     </message>
@@ -2633,6 +2633,11 @@ hält an: das bisher Beste bleibt</translation>
         <location filename="../../freecad/fabguide/material/layout.py" line="143"/>
         <source>Laying out &apos;{}&apos; ({} boards)</source>
         <translation>'{}' wird angeordnet ({} Platten)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="309"/>
+        <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
+        <translation>keine Quader zum Anordnen (die Part-Quader des Möbels in den Entwurf ziehen)</translation>
     </message>
 </context>
 <context>

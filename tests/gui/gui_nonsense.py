@@ -12,7 +12,7 @@ line.
 # expects error: Configuration 'Open': HingeAngle must be a finite number; kept -90.00 °
 # expects error: Printable 'Mechanism printable': Mechanism must be a Mechanism; kept 'Mechanism'
 # expects error: Design 'Bookshelf': MasterBoards must be master boards; kept 'MasterBoard'
-# expects error: Design 'Bookshelf': parts: at least one part is needed
+# expects error: Design 'Bookshelf': no boxes to lay out (drag the furniture's Part boxes into the design)
 # expects error: Joint 'Lid hinge': 'Lid.Face99' is not an edge of the box
 # expects error: 'Shelf side': its Length, Width, Height and Placement must be finite numbers
 import math

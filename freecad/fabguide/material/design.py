@@ -305,6 +305,9 @@ def flatpack(obj, parts=None):
     try:
         if not obj.MasterBoards:
             raise DesignError(translate("FabGuide", "add a master board (MasterBoards)"))
+        if parts is None and not boxes(obj):
+            raise DesignError(translate("FabGuide", "no boxes to lay out (drag the furniture's Part boxes into the "
+                                                    "design)"))
         inner, outer = volume_dicts(obj)
         doc = {"format": "fabguide.flatpack", "version": 1,
                "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
