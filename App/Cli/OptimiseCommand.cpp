@@ -62,18 +62,19 @@ nlohmann::json withDrawnEqual(nlohmann::json document, bool keep)
     return document;
 }
 
-/// Why no variation saved a sheet, as far as it is known: a bound says so, or one layout of the least design
-/// did (issue 32: never said as proved from a layout attempt alone).
-std::string whyNone(const material::Exploration& e, int sheets)
+/// Why no variation saved a sheet, in the core's one reading of it (Exploration::noSheetSaved).
+std::string whyNone(const material::Exploration& e)
 {
-    if (e.leastSheets == 0 || e.leastSheets < sheets)
-        return "";
-    if (e.leastSheetsByArea >= sheets)
-        return ": shrunk as far as its constraints allow, its parts' area alone needs as many sheets";
-    return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its parts' "
-           "area "
-           "would fit on " +
-           std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
+    switch (e.noSheetSaved()) {
+        case material::Exploration::NoSheetSaved::ByArea:
+            return ": shrunk as far as its constraints allow, its parts' area alone needs as many sheets";
+        case material::Exploration::NoSheetSaved::LaidOut:
+            return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its "
+                   "parts' area would fit on " +
+                   std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
+        default:
+            return "";
+    }
 }
 
 void run(const OptimiseArguments& args)
@@ -102,6 +103,7 @@ void run(const OptimiseArguments& args)
                               {"stopped", exploration.stopped},
                               {"least_sheets", exploration.leastSheets},
                               {"least_sheets_by_area", exploration.leastSheetsByArea},
+                              {"no_sheet_saved", material::nameOf(exploration.noSheetSaved())},
                               {"not_reopened", exploration.notReopened},
                               {"suggestions", nlohmann::json::array()}};
     const material::MaterialSpace::Figures& before = exploration.start.figures;
@@ -138,8 +140,7 @@ void run(const OptimiseArguments& args)
         std::printf("left out     %d design(s) that waste less but laid out afresh need more boards\n",
                     exploration.notReopened);
     if (exploration.suggestions.empty())
-        std::printf("no design variation found that wastes less%s\n",
-                    whyNone(exploration, before.sheets).c_str());
+        std::printf("no design variation found that wastes less%s\n", whyNone(exploration).c_str());
     std::printf("seconds       %.2f%s\n", exploration.seconds,
                 exploration.stopped ? " (stopped at the time limit)" : "");
     io::writeJsonFile((out / "summary.json").string(), summary);

@@ -289,4 +289,23 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     return exploration;
 }
 
+Exploration::NoSheetSaved Exploration::noSheetSaved() const
+{
+    if (leastSheets == 0 || leastSheets < start.figures.sheets)
+        return NoSheetSaved::Unknown;
+    return leastSheetsByArea >= start.figures.sheets ? NoSheetSaved::ByArea : NoSheetSaved::LaidOut;
+}
+
+const char* nameOf(Exploration::NoSheetSaved why)
+{
+    switch (why) {
+        case Exploration::NoSheetSaved::ByArea:
+            return "area";
+        case Exploration::NoSheetSaved::LaidOut:
+            return "laid_out";
+        default:
+            return "";
+    }
+}
+
 }  // namespace fabguide::material

@@ -47,7 +47,16 @@ struct Exploration {
     long leastSheetsByArea = 0;
     int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
     double usageBefore() const { return 1 - start.wastage; }
+
+    /// Why no variation saves a sheet, as far as it is known (never from one layout attempt alone): the least
+    /// design's area needs as many sheets (ByArea), or one layout of it took as many though its area needs
+    /// fewer (LaidOut: more time may save one). Unknown when it was not laid out or took fewer sheets.
+    enum class NoSheetSaved { Unknown, ByArea, LaidOut };
+    NoSheetSaved noSheetSaved() const;
 };
+
+/// "" (Unknown), "area" or "laid_out": the summary's `no_sheet_saved`.
+const char* nameOf(Exploration::NoSheetSaved why);
 
 /// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
 /// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over), or docked in `order` (a

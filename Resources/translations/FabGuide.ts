@@ -1778,7 +1778,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="83"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="82"/>
         <source>Suggest cannot change {}: their sizes or places are set by expressions. Give Design &apos;{}&apos; the spreadsheet aliases that drive them as Parameters (&apos;Sheet.alias min max&apos;), and Suggest changes those.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1788,47 +1788,47 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="350"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="349"/>
         <source>Usage now: {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="201"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="200"/>
         <source>Searching for designs that waste less...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="236"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="235"/>
         <source>Searching... best usage so far {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="243"/>
         <source>&lt;b&gt;No suggestions:&lt;/b&gt; {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="264"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="263"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="268"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="267"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="286"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="285"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="329"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="328"/>
         <source>usage {:.3f}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="365"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="364"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation type="unfinished"></translation>
@@ -2459,7 +2459,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="261"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="260"/>
         <source> (stopped)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2584,12 +2584,12 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="68"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
         <source>; with every board as small as they allow, their area alone needs {} sheet(s)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="70"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1788,7 +1788,7 @@ U/min</translation>
         <translation>&lt;b style='color:#b22222'&gt;{}&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="83"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="82"/>
         <source>Suggest cannot change {}: their sizes or places are set by expressions. Give Design &apos;{}&apos; the spreadsheet aliases that drive them as Parameters (&apos;Sheet.alias min max&apos;), and Suggest changes those.</source>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
@@ -1798,47 +1798,47 @@ U/min</translation>
         <translation>Entwurf '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="350"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="349"/>
         <source>Usage now: {:.3f}</source>
         <translation>Nutzung jetzt: {:.3f}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="201"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="200"/>
         <source>Searching for designs that waste less...</source>
         <translation>Suche nach Entwürfen mit weniger Verschnitt...</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="236"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="235"/>
         <source>Searching... best usage so far {:.3f}</source>
         <translation>Suche... beste Nutzung bisher {:.3f}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="244"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="243"/>
         <source>&lt;b&gt;No suggestions:&lt;/b&gt; {}</source>
         <translation>&lt;b&gt;Keine Vorschläge:&lt;/b&gt; {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="264"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="263"/>
         <source>No variation of this design wastes less within its constraints{}{}.</source>
         <translation>Keine Variante dieses Entwurfs hat innerhalb seiner Vorgaben weniger Verschnitt{}{}.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="268"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="267"/>
         <source>{} suggestion(s) in {:.1f} s{}. Pick one; slide along its path; OK applies it.</source>
         <translation>{} Vorschlag/Vorschläge in {:.1f} s{}. Wählen Sie einen; fahren Sie seinen Pfad entlang; OK übernimmt ihn.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="286"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="285"/>
         <source>Suggestion {}: {} sheet(s) (now {}), waste {:.3f} m² (now {:.3f}), largest offcut {:.0f} x {:.0f} mm, usage {:.3f} (now {:.3f})</source>
         <translation>Vorschlag {}: {} Platte(n) (jetzt {}), Verschnitt {:.3f} m² (jetzt {:.3f}), größter Rest {:.0f} x {:.0f} mm, Nutzung {:.3f} (jetzt {:.3f})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="329"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="328"/>
         <source>usage {:.3f}</source>
         <translation>Nutzung {:.3f}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="365"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="364"/>
         <source>FabGuide: locked the size of {}
 </source>
         <translation>FabGuide: die Größe von {} festgesetzt
@@ -2480,7 +2480,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>&lt;br&gt;Das Lösen hat geändert:{}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="261"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="260"/>
         <source> (stopped)</source>
         <translation> (angehalten)</translation>
     </message>
@@ -2605,12 +2605,12 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; gleich groß gezeichnete Quader bleiben gleich groß (löschen Sie die Bedingungen „drawn equal“, um sie freizugeben); die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="68"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
         <source>; with every board as small as they allow, their area alone needs {} sheet(s)</source>
         <translation>; mit jeder Platte so klein, wie sie es zulassen, braucht allein ihre Fläche {} Rohplatte(n)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="70"/>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation>; mit jeder Platte so klein, wie sie es zulassen, wurde er auf {} Rohplatte(n) verlegt, obwohl ihre Fläche auf {} passen würde: mehr Zeit spart vielleicht eine</translation>
     </message>

@@ -42,6 +42,7 @@ nlohmann::json explorationJson(const material::MaterialSpace& material, const ma
                           {"stopped", e.stopped},
                           {"least_sheets", e.leastSheets},
                           {"least_sheets_by_area", e.leastSheetsByArea},
+                          {"no_sheet_saved", material::nameOf(e.noSheetSaved())},
                           {"suggestions", nlohmann::json::array()}};
     for (const material::Suggestion& s : e.suggestions) {
         nlohmann::json entry = layoutJson(material, s.result);

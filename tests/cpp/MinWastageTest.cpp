@@ -214,3 +214,21 @@ TEST(DynamicPackerTest, AnEditNoBoardCanHoldIsNotAbsorbed)
     u[sizeVariable(3, 1)] = 1300 - start.X[sizeVariable(3, 1)];  // the shelf deeper than any board
     EXPECT_FALSE(dynamicPacker(design, material, start.X, start.layout, u).fitted);
 }
+
+TEST(ExplorationTest, NoSheetSavedIsSaidOnlyFromABoundOrALayoutOfTheLeastDesign)
+{
+    Exploration e;
+    e.start.figures.sheets = 3;
+    using Why = Exploration::NoSheetSaved;
+    EXPECT_EQ(e.noSheetSaved(), Why::Unknown);  // the least design was not laid out
+    e.leastSheets = 2;
+    e.leastSheetsByArea = 2;
+    EXPECT_EQ(e.noSheetSaved(), Why::Unknown);  // it saves a sheet
+    e.leastSheets = 3;
+    EXPECT_EQ(e.noSheetSaved(), Why::LaidOut);  // one layout took 3, its area needs 2: not proved
+    e.leastSheetsByArea = 3;
+    EXPECT_EQ(e.noSheetSaved(), Why::ByArea);
+    EXPECT_STREQ(nameOf(Why::ByArea), "area");
+    EXPECT_STREQ(nameOf(Why::LaidOut), "laid_out");
+    EXPECT_STREQ(nameOf(Why::Unknown), "");
+}

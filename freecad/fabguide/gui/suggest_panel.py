@@ -58,17 +58,16 @@ def driven_by_expressions(box):
 
 
 def why_none(result):
-    """Why no variation saved a sheet, as far as it is known: the least design's area bound, or one layout of it
-    (issue 32: a layout attempt is not said as a proof)."""
-    sheets, least = result["before"]["sheets"], result.get("least_sheets", 0)
-    by_area = result.get("least_sheets_by_area", 0)
-    if not least or least < sheets:
-        return ""
-    if by_area >= sheets:
+    """Why no variation saved a sheet, as the core knows it (issue 32: a layout attempt is not said as a proof)."""
+    why = result.get("no_sheet_saved", "")
+    if why == "area":
         return translate("FabGuide", "; with every board as small as they allow, their area alone needs {} "
-                                     "sheet(s)").format(by_area)
-    return translate("FabGuide", "; with every board as small as they allow it was laid out on {} sheet(s), though "
-                                 "their area would fit on {}: more time may save one").format(least, by_area)
+                                     "sheet(s)").format(result["least_sheets_by_area"])
+    if why == "laid_out":
+        return translate("FabGuide", "; with every board as small as they allow it was laid out on {} sheet(s), though "
+                                     "their area would fit on {}: more time may save one").format(
+            result["least_sheets"], result["least_sheets_by_area"])
+    return ""
 
 
 class Boxes:
