@@ -188,9 +188,10 @@ def failed_inputs(obj):
 
 
 def fail(obj, message):
-    """Marks `obj` failed with `message` (said in the report view once), or not failed when it is empty."""
+    """Marks `obj` failed with `message` (said in the report view once), or not failed when it is empty. A failure
+    that repeats an input's own (a mechanism failing for its joint's missing edge) is not said a second time."""
     if obj.Error != message:
-        if message:
+        if message and not any(getattr(o, "Error", "") and o.Error in message for o in obj.OutListRecursive):
             FreeCAD.Console.PrintError(message + "\n")
         obj.Error = message
 

@@ -117,8 +117,12 @@ def commands_on_wrong_picks_say_one_sentence():
 
 def an_edge_that_does_not_exist_is_a_sentence():
     hinge, lid = state["hinge"], state["lid"]
+    before = guitest.report_view().count("'Lid.Face99' is not an edge of the box")
     typed(hinge, "Edge", (lid, ["Face99"]))
     assert "'Lid.Face99' is not an edge of the box" in hinge.Error, hinge.Error
+    mech = next(o for o in hinge.InList if mechanism.is_mechanism(o))
+    assert hinge.Error in mech.Error, mech.Error  # the mechanism fails for it, and does not say it again
+    assert guitest.report_view().count("'Lid.Face99' is not an edge of the box") == before + 1
 
 
 def a_folder_picked_as_a_file_is_said():

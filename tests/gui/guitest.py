@@ -144,6 +144,12 @@ def show_model_tab():
     settle()
 
 
+def report_view():
+    """The text of FreeCAD's report view, as the user reads it."""
+    return next(w.toPlainText() for w in FreeCADGui.getMainWindow().findChildren(QtGui.QTextEdit)
+                if w.metaObject().className() == "Gui::DockWnd::ReportOutput")
+
+
 def screenshot(name, window=None):
     """Grab the FreeCAD window (panels, toolbars), or another top-level `window` (a dialog), into
     $FABGUIDE_SCREENSHOTS/name.png; returns the path. The 3-D view is OpenGL, which a window grab leaves blank:
