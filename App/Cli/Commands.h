@@ -7,7 +7,7 @@
 
 namespace fabguide::cli {
 
-/// A search's --seed: a whole number a double holds exactly (-1 and 2^64 were taken and wrapped, issue 35).
+/// A search's --seed: a whole number a double holds exactly (-1 and 2^64 were taken and wrapped).
 inline const CLI::Range kSeeds(0LL, 9007199254740991LL);
 
 /// A number from `min` to `max`. CLI::Range alone lets "nan" through: it compares false both ways.
@@ -34,7 +34,7 @@ inline constexpr const char* kPrintableSummary =
 
 void addPrintableCommand(CLI::App& app);
 /// `fabguide printable` hands its command line to fabguide-print, the program beside fabguide that loads
-/// OpenCASCADE: loading it took 50 ms of every other command's start-up (issue 30, item 5).
+/// OpenCASCADE: loading it took 50 ms of every other command's start-up.
 void addPrintableForward(CLI::App& app);
 void addOptimiseCommand(CLI::App& app);
 

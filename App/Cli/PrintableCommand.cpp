@@ -87,7 +87,7 @@ int run(const PrintableArguments& args)
         std::printf("scale %.4g: fits %s mm%s\n", fitted.scale, args.fit.c_str(),
                     fitted.turned ? ", turned a quarter about z" : "");
     const function::Model& model = fitted.model;
-    // Joint geometry placed where it clears (issue 15, item 1), then checked as written.
+    // Joint geometry placed where it clears, then checked as written.
     const printable::Checked placed = printable::placedByCheck(model, fitted.printable, printer);
     fitted.printable = placed.printable;
     const printable::Printable& made = fitted.printable;

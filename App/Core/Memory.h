@@ -1,4 +1,4 @@
-// The memory a run may use (issue 35): the big structures' sizes are estimated against it before they are
+// The memory a run may use: the big structures' sizes are estimated against it before they are
 // made and refused with the field that makes them big named; the command line also sets it as the process'
 // data limit, so an allocation past it fails as std::bad_alloc, reported in a sentence.
 #pragma once

@@ -32,7 +32,7 @@ struct CorrectedChange {
 /// design breaks an effectiveness constraint, bisects on alpha for the first break, holds the constraints
 /// that broke there as equalities and goes on; when nothing more can be held, returns the best partial
 /// change (thesis 5.3.5.3: the solver's callers accept partial solutions). Past `deadline`, the partial
-/// change reached so far (none at first): one correction of a large design takes seconds (issue 35).
+/// change reached so far (none at first): one correction of a large design takes seconds.
 CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, const Eigen::VectorXd& u,
                               const Deadline& deadline = {});
 

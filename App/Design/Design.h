@@ -23,7 +23,7 @@ struct DesignBoard {
         -1;  ///< the axis (0 x, 1 y, 2 z) the grain runs along in the model; -1: the first in-plane
     /// The in-plane axes: the board's width in material space runs along the first, its height along the
     /// second (thesis 5.2.2: w = l^x, h = l^y in the part's own frame); the grain axis first when it is set,
-    /// so a board that follows the grain has it along its length whichever way it stands (issue 14).
+    /// so a board that follows the grain has it along its length whichever way it stands.
     std::array<int, 2> inPlane() const;
 };
 
@@ -68,7 +68,7 @@ struct InnerVolume {
     int on = 0;
     /// Per axis, the face of its board the volume keeps its distance from as the board changes (5.1: the
     /// space travels with its board): -1 the lower face, +1 the upper one, whichever it was drawn nearer
-    /// (issue 32: anchored at the centre, a board shrunk to the volume's length left an off-centre volume
+    /// (anchored at the centre, a board shrunk to the volume's length left an off-centre volume
     /// hanging over).
     std::array<int, 3> anchor{-1, -1, -1};
     Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< the volume's lower corner from its anchors
@@ -113,7 +113,7 @@ struct Snapping {
 };
 Snapping snapping(const Design& design, int a, int b, double tolerance = 1e-6);
 
-/// Physical validity (issue 14) as bounds of the exploration, not filters after it: boards that do not
+/// Physical validity as bounds of the exploration, not filters after it: boards that do not
 /// overlap in the design never do ("apart: a/b", each pair kept on the side of the axis it is most apart
 /// along, for pairs within `margin` mm: in furniture, every pair, since a rail may grow 300 mm towards a
 /// shelf; a sweep beyond), and no board goes below the

@@ -103,7 +103,7 @@ private:
 /// A parametric design of boards whose D(X), `boxesOf`, gives each part's three sides (x, y, z). Each part is
 /// cut from master boards as thick as its thinnest side at the start, its material-space width along its
 /// grain axis (`grainAxes`, -1: none) as DesignBoard::inPlane orders a board's sides: parametric designs
-/// honour grain and thickness as constrained ones do (issue 32).
+/// honour grain and thickness as constrained ones do.
 ParametricDesign parametricBoards(std::vector<PartKind> parts, const std::vector<int>& grainAxes,
                                   const ParametricDesign::SizesOf& boxesOf, Eigen::VectorXd start,
                                   Eigen::VectorXd lower, Eigen::VectorXd upper);

@@ -1,4 +1,4 @@
-// Boards drawn equal (issue 32, functional growth only): the posts, legs, rails and cleats a maker drew the
+// Boards drawn equal (functional growth only): the posts, legs, rails and cleats a maker drew the
 // same size are meant to stay so. Kept by the equal constraints of thesis 5.1 on their sizes, inferred here
 // for the user to see and delete, as edge snapping keeps boards that touch touching.
 #pragma once

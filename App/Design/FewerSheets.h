@@ -1,4 +1,4 @@
-// Saving a sheet (issue 14, past the thesis): GROWPARTS and SHRINKPARTS change a design one grid cell at a
+// Saving a sheet (past the thesis): GROWPARTS and SHRINKPARTS change a design one grid cell at a
 // time inside its layout, so they never free a whole master board. This shrinks the design as far as its
 // constraints allow, lays it out afresh, and when that needs fewer sheets looks for the least shrink that
 // still does.

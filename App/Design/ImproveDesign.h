@@ -19,7 +19,7 @@ struct DesignLayout {
     GridLayout layout;
     double wastage = 1;
     MaterialSpace::Figures figures;
-    /// What the search minimises (issue 14): the boards' cost first (in sheets of the cheapest; the sheets
+    /// What the search minimises: the boards' cost first (in sheets of the cheapest; the sheets
     /// bought when every board costs the same), then the thesis' wastage, which favours compact layouts;
     /// infinite when a part is left over.
     double score() const

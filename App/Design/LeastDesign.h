@@ -1,4 +1,4 @@
-// The least design (issue 14, for saving a sheet): every part as small as the design's constraints allow.
+// The least design (for saving a sheet): every part as small as the design's constraints allow.
 #pragma once
 
 #include "Design/Design.h"

@@ -37,7 +37,7 @@ public:
     /// unplaced.
     double wastage(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 
-    /// What a maker reads off a layout (issue 14): master boards bought (those that cost something: an
+    /// What a maker reads off a layout: master boards bought (those that cost something: an
     /// offcut already owned does not) and their cost, m² of the boards used not in parts, and the largest
     /// offcut left whole (the strip beside or above a sheet's layout, width × height in mm).
     struct Figures {
@@ -50,7 +50,7 @@ public:
     };
     Figures figures(const GridLayout& layout, const Eigen::VectorXd& sizes) const;
 
-    /// The leftovers of a layout's sheets as master boards for the next job (issue 14): per sheet the strip
+    /// The leftovers of a layout's sheets as master boards for the next job: per sheet the strip
     /// above its layout (the sheet's full width) and the strip beside it (up to the layout's top), each kept
     /// when both its sides are at least `least` mm; whole millimetres, the next job trims them itself; cost
     /// 0, so that job uses them before new sheets.

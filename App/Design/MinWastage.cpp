@@ -122,7 +122,7 @@ constexpr double kWindow = 0.03;    // of the bought area: suggestions after the
 constexpr double kUnchanged = 1.0;  // mm of part lengths (their norm) within which a design is the user's
 constexpr double kDistinct = 10.0;  // mm one part length at least differs by between two suggestions
 
-/// How far apart a maker sees two designs: the largest change of any one part length (issue 32: suggestions
+/// How far apart a maker sees two designs: the largest change of any one part length (suggestions
 /// 1 and 2 within 2 mm of each other showed the same design twice).
 double apart(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
 {

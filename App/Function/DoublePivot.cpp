@@ -280,7 +280,7 @@ bool doubled(const Model& model, const Joint& one, const Joint& two)
     return squared(a.pivot, b.pivot) < width * width && squared(a.basePivot, b.basePivot) < width * width;
 }
 
-/// A four-bar (issue 13.5): links `first` and `second` both move their part against one base, along
+/// A four-bar: links `first` and `second` both move their part against one base, along
 /// fourBarPath in configuration k. Why it fails, or
 /// "" when the part arrives where the configuration puts it, clear of the parts standing still, its links
 /// clear of each other's pins (linksClear) all the way.

@@ -40,7 +40,7 @@ struct FourBarTurns {
     double first = 0, second = 0, part = 0;
 };
 
-/// A four-bar (issue 13.5) moving a fraction t of the way to configuration k, at `steps` even steps: the
+/// A four-bar moving a fraction t of the way to configuration k, at `steps` even steps: the
 /// first link turns evenly, the shorter way, to its place; the second follows on the branch it starts on (the
 /// meeting point of its two circles nearest its last place). Ends early where the links cannot stay joined.
 std::vector<FourBarTurns> fourBarPath(const Model& model, const Joint& first, const Joint& second, int k,

@@ -61,7 +61,7 @@ Eigen::VectorXd polished(const Eigen::VectorXd& target, const std::vector<Linear
     return violation(candidate, rows) <= violation(x, rows) + 1e-9 ? candidate : x;
 }
 
-/// Coordinates the solve makes equal come out equal to the last bit (issue 13): a coordinate within the
+/// Coordinates the solve makes equal come out equal to the last bit: a coordinate within the
 /// tolerance of the user's value is the user's value; the coordinates that active constraints x_i − x_j = d
 /// (and x_i = d) tie together are set from one value: a fixed one, else one the user's, else their mean;
 /// then every coordinate is rounded to the nanometre.

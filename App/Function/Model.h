@@ -74,7 +74,7 @@ struct Expression {
 /// any planar motion but a pure shift being such a turn); stage 2 of the solve moves the pivots along their
 /// cuboids' longest in-plane axis so the link can take the part there.
 ///
-/// A fixed joint (issue 15) holds the part rigidly to its base: it has no poses, the part is carried with its
+/// A fixed joint holds the part rigidly to its base: it has no poses, the part is carried with its
 /// base, and print-in-place fuses the two into one body (a toaster lever's knob on its lever).
 struct Joint {
     std::string name;

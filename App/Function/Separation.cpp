@@ -22,7 +22,7 @@ Box boxOf(const Model& model, int cuboid, int configuration)
     return posedBounds(model, cuboid, configuration);
 }
 
-/// The poses in which print-in-place makes room for a fit inside (thesis 4.5.1, issue 30): by (inner part,
+/// The poses in which print-in-place makes room for a fit inside (thesis 4.5.1): by (inner part,
 /// enclosing part, pose), the configurations of the fits whose room the pose is in: the modelled pose, each
 /// fit's configuration and the poses on the way to it.
 using Rooms = std::map<std::tuple<int, int, int>, std::set<int>>;

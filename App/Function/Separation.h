@@ -1,4 +1,4 @@
-// Keeping parts apart (issue 13, after the packing constraints of thesis 4.2.1–4.2.2): in every
+// Keeping parts apart (after the packing constraints of thesis 4.2.1–4.2.2): in every
 // configuration, the material of two parts never overlaps. Each pair of solid cuboids of different parts
 // that come near is kept apart by a linear constraint chosen from the model as drawn: one stays on its side
 // of the other along an axis, or stays inside the other's cavity (leaving only through its openings).
@@ -36,7 +36,7 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
 
 /// Solid cuboids (inner, outer) of different parts, the inner one drawn at least half inside the outer one's
 /// material (its box less its cavities) as modelled, where nothing lets them overlap (no fixed joint, no fit
-/// inside's room; issue 36): a part made before the cavity it goes in. Keeping them apart would move or
+/// inside's room): a part made before the cavity it goes in. Keeping them apart would move or
 /// shrink parts no relationship names, so the solve does not try.
 std::vector<std::pair<int, int>> drawnInside(const Model& model);
 
@@ -59,7 +59,7 @@ struct Choice {
 /// they make in all the poses `judged` (those and the rest of the motion): kept out pose by pose as
 /// inferSeparation keeps them out, held by one cavity all the way, or kept apart along one axis all the way.
 /// A pocket door turning into its bay stays within the bay's opening all the way, not out of the carcass at
-/// the ends and in the bay between, nor in the neighbouring bay its hinge was drawn a hair into (issue 30).
+/// the ends and in the bay between, nor in the neighbouring bay its hinge was drawn a hair into.
 std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
                                  const std::vector<int>& judged);
 

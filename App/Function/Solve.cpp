@@ -213,7 +213,7 @@ std::string millimetres(double mm)
 
 namespace {
 
-/// Whether a part that fits inside the cavity goes out through side `side` (issue 30): in a configuration
+/// Whether a part that fits inside the cavity goes out through side `side`: in a configuration
 /// where no fit of it in the cavity is measured, a cuboid of it that must fit lies at least half beyond that
 /// side, across the cavity (a shelf pulled out of the oven). A part drawn out of its cavity is not (the room
 /// print-in-place cuts on its way in makes its passage).
@@ -647,8 +647,8 @@ std::vector<LinearConstraint> twinsApart(const std::vector<std::pair<int, int>>&
 /// tell twins apart. The least change would rather thin a part than move it (a laptop's 8 mm screen made 1 mm
 /// thick so that its hinge edge moves 8 mm back; then no hinge fits it): a size it cuts to less than half of
 /// what the user drew is held as it was before this solve, and the parts move instead. What the user drew is
-/// `drawn`, so that successive solves cannot halve a size again and again (issue 36: a door 20 mm, then 10.2,
-/// then 5.1). Twins stay alike (issue 36: the left door thinned, the right not). Both where the relationships
+/// `drawn`, so that successive solves cannot halve a size again and again (a door 20 mm, then 10.2,
+/// then 5.1). Twins stay alike (the left door thinned, the right not). Both where the relationships
 /// allow.
 LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& drawing,
                               const std::vector<LinearConstraint>& rows, const Eigen::VectorXd* start)
@@ -711,7 +711,7 @@ constexpr int kMotionSamples = 64;
 /// apart it may try where the first ones conflict.
 constexpr int kRounds = 100, kRevisions = 32;
 
-/// The model with each configuration's motion sampled (issue 30): the poses a fraction i / kMotionSamples of
+/// The model with each configuration's motion sampled: the poses a fraction i / kMotionSamples of
 /// the way there, turns in the first half and slides in the second (as print-in-place moves the parts),
 /// appended after the model's configurations, each `along` its own. Only fractions where something moves: no
 /// turning half without a turn, no sliding half without a slide; the turning half of a configuration that
@@ -803,7 +803,7 @@ SolveResult solve(const Model& model)
     const std::vector<LinearConstraint> relationships = constraints(model);
     drawing.twins = twins(model, relationships);
     LeastChangeResult r = leastChange(target, drawing, relationships, nullptr);
-    // Parts kept apart (issue 13): each pair of parts that come near keeps the side (or the cavity) it takes
+    // Parts kept apart: each pair of parts that come near keeps the side (or the cavity) it takes
     // in that solution, the arrangement the relationships give; pairs the solve then brings together are
     // added round by round (constraint generation: the pairs stay few).
     // They are kept apart along every motion too, at the poses on the way (motionSampled) where they meet.

@@ -42,7 +42,7 @@ Point2 turned(Point2 p, int degrees)
             return {p.y, -p.x};
         case 0:
             return p;
-        default: {  // free rotation (issue 16): any whole degree
+        default: {  // free rotation: any whole degree
             const double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
             return {c * p.x - s * p.y, s * p.x + c * p.y};
         }

@@ -356,7 +356,7 @@ void addSettingConstraints(const Fields& settings, Design& design)
 }
 
 /// An inner volume stands on its board: along the board's plane the board stays under the volume's whole
-/// footprint, or overhangs it no more than drawn (issue 32: pantry shelves went from 542 to 60 mm deep under
+/// footprint, or overhangs it no more than drawn (pantry shelves went from 542 to 60 mm deep under
 /// 300 mm jar spaces).
 void addStandsOn(Design& design, const material::InnerVolume& v)
 {
@@ -377,7 +377,7 @@ void readInnerVolumes(const Fields& root, Design& design)
         v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
         v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
         v.size = volume.vector3("size");
-        if (v.size.minCoeff() <= 0)  // a space no part could be kept out of (issue 32)
+        if (v.size.minCoeff() <= 0)  // a space no part could be kept out of
             throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
         const Eigen::Vector3d position = volume.vector3("position");
         const material::DesignBoard& on = design.boards[v.on];
@@ -418,7 +418,7 @@ std::vector<int> readLayoutOrder(const Fields& root, const Design& design)
 
 /// How far from its constraints a design read may be, in mm. 0.1 µm: the search holds its constraints to 1e-6
 /// mm and writes them with as many digits, so a reader as strict as the search could refuse a suggestion it
-/// wrote (issue 32).
+/// wrote.
 constexpr double kSatisfied = 1e-4;
 
 /// A design must satisfy its own constraints as given; the first five broken ones are named.

@@ -16,7 +16,7 @@ namespace fabguide::io {
 
 constexpr int kFlatpackFormatVersion = 1;
 
-/// Boards to cut (quantities added up) the design exploration finishes in its time limit (issue 35): 300
+/// Boards to cut (quantities added up) the design exploration finishes in its time limit: 300
 /// snapped in a row took 3.3 s of a 2 s limit (one correction of their constraints, or one QP of their
 /// sheets, takes seconds), 1,000 took 21 s (each layout docked whole).
 constexpr long kMostDesignBoards = 200;
@@ -33,7 +33,7 @@ struct FlatpackDesign {
 };
 
 /// The design the suggestions are searched in: `f`'s, with no board side longer than maxGrowth times its
-/// length now (issue 32: a 60 mm batten grown into a 373 mm panel, a cleat into a board). Only the search is
+/// length now (a 60 mm batten grown into a 373 mm panel, a cleat into a board). Only the search is
 /// held to it: the user's own edits and the files read are not.
 material::Design forSuggestions(const FlatpackDesign& f);
 
@@ -66,7 +66,7 @@ nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X)
 /// and the outer volume as they were.
 nlohmann::json withParts(nlohmann::json document, const material::Design& design, const Eigen::VectorXd& X);
 
-/// What a maker reads off a laid-out design (issue 14): {"usage" (thesis 5.2.3), "sheets", "waste_m2",
+/// What a maker reads off a laid-out design: {"usage" (thesis 5.2.3), "sheets", "waste_m2",
 /// "largest_offcut": [w, h] mm}.
 nlohmann::json measures(const material::DesignLayout& d);
 

@@ -1,5 +1,5 @@
 // Every file a layout goes to the shop with, written as one set: what `fabguide pack` and FreeCAD's Export
-// Cut Sheets both write (issue 35: a set is replaced whole, whoever writes it).
+// Cut Sheets both write (a set is replaced whole, whoever writes it).
 #pragma once
 
 #include "Layout/CutSheet.h"

@@ -28,7 +28,7 @@ material::PackSettings readSettings(const nlohmann::json& document);
 std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& document);
 
 /// Throws FormatError naming settings.resolution when a grid cell is larger than a master board's side: that
-/// board would hold no cell, and nothing could be laid on it (issue 35).
+/// board would hold no cell, and nothing could be laid on it.
 void checkGrid(const material::PackSettings& settings, const std::vector<material::MasterBoard>& boards);
 
 /// Reads a `*.pack.json` document. Throws FormatError naming the offending field.

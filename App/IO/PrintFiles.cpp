@@ -264,7 +264,7 @@ std::vector<std::string> writePrintFiles(const printable::Printable& printable, 
     };
     write(printable.bodies, "assembly");
     // Each body's stem its own: "a b" and "a-b" both read a-b, a body named "assembly" or "report" would
-    // replace those files, and Windows keeps CON, NUL, COM1... for devices (issue 35).
+    // replace those files, and Windows keeps CON, NUL, COM1... for devices.
     std::set<std::string> taken{"assembly", "report"};
     for (const printable::Body& b : printable.bodies) {
         const std::string stem = fileName(b.name);

@@ -1,4 +1,4 @@
-// The shop's paperwork for a layout (issue 31): a printable report and labels for the parts, drawn with
+// The shop's paperwork for a layout: a printable report and labels for the parts, drawn with
 // cairo.
 #pragma once
 

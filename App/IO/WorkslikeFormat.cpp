@@ -113,7 +113,7 @@ int partNamed(const function::Model& model, const std::string& name, const std::
 
 const char* kAxes[] = {"x", "y", "z"};
 
-/// What `solve` finishes in seconds (issue 35: a 3,000-joint chain took 104 s), far beyond any product (a few
+/// What `solve` finishes in seconds (a 3,000-joint chain took 104 s), far beyond any product (a few
 /// hundred cuboids, joints a few deep, a few configurations): cuboids, joints in a chain to the ground,
 /// cuboids times configurations (each configuration's motion is sampled at up to 63 poses).
 constexpr size_t kMostCuboids = 10000, kDeepestChain = 64, kMostPosedCuboids = 100000;

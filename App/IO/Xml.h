@@ -7,7 +7,7 @@ namespace fabguide::io {
 
 /// `text` as every file format takes it on one line: invalid UTF-8 and control characters (line breaks, tabs,
 /// NUL) each become U+FFFD, the replacement character. XML 1.0 refuses them even escaped, and in a DXF a line
-/// break inside a value shifts every group code after it (issue 35).
+/// break inside a value shifts every group code after it.
 std::string plainText(const std::string& text);
 
 /// plainText with &, <, > and " escaped, for an element's text or an attribute's value.

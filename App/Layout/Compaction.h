@@ -1,4 +1,4 @@
-// Compaction on the parts' real outlines (issue 16, item 3): the grid keeps each part up to a cell off its
+// Compaction on the parts' real outlines: the grid keeps each part up to a cell off its
 // neighbours; sliding every part toward the strip's start (or a sheet's corner) until its outline meets
 // another's gives back what the grid lost between them.
 #pragma once

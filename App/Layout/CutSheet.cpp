@@ -12,7 +12,7 @@ namespace fabguide::material {
 namespace {
 
 /// The text a label can carry: an id of more than 60 bytes is cut (at a character, not inside one) and ends
-/// in "..." (a 1 MB id drawn in strokes took 41 s and a DXF of hundreds of MB, issue 35).
+/// in "..." (a 1 MB id drawn in strokes took 41 s and a DXF of hundreds of MB).
 std::string labelText(const std::string& id)
 {
     constexpr size_t kLongest = 60;
@@ -24,7 +24,7 @@ std::string labelText(const std::string& id)
     return id.substr(0, cut) + "...";
 }
 
-/// A part's label (issue 16): at the point of its material farthest from its edges and holes, along its
+/// A part's label: at the point of its material farthest from its edges and holes, along its
 /// longer side (a freely turned part's own, kept within a quarter turn of upright), as large as fits the
 /// circle free there (a text n characters long is about 0.6 n of its height wide) between 2 and 12 mm.
 Label labelOf(const PartSpec& spec, const geometry::Outline& placed, const Placement& p, size_t k)

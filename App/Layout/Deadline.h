@@ -1,6 +1,6 @@
 // When a time-limited layout search must stop: a time on the steady clock, or at once when the one who asked
 // for the layout cancels it (the FreeCAD Layout's Cancel). Every stage of `pack` checks it where it checks
-// the time, so a cancelled search ends within one step and returns the best layout it has (issue 34).
+// the time, so a cancelled search ends within one step and returns the best layout it has.
 #pragma once
 
 #include <atomic>

@@ -1,4 +1,4 @@
-// Guillotine layouts for a saw (issue 31): every sheet comes apart by straight cuts from edge to edge, in at
+// Guillotine layouts for a saw: every sheet comes apart by straight cuts from edge to edge, in at
 // most settings.stages changes of direction, and the cuts come in the order a person makes them.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Part-in-hole nesting (issue 16; thesis 5.5.4 names it as a limit): small parts laid inside other parts'
+// Part-in-hole nesting (thesis 5.5.4 names it as a limit): small parts laid inside other parts'
 // holes before the layout, so a coaster is cut from a stool seat's hand hole instead of from fresh board.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Labels as strokes (issue 31): lines a laser, router or CAM engraves as they are, where SVG or DXF text
+// Labels as strokes: lines a laser, router or CAM engraves as they are, where SVG or DXF text
 // would be dropped or set in another font. Hershey's Simplex Roman (Debian's hershey-fonts-data, read by
 // libhersheyfont).
 #pragma once

@@ -1,5 +1,5 @@
 // MaxRects (J. Jylänki, "A Thousand Ways to Pack the Bin", 2010) in millimetres: the layout of jobs made of
-// rectangles at shop scale (issue 16), where rasterising thousands of parts for Docking would take minutes.
+// rectangles at shop scale, where rasterising thousands of parts for Docking would take minutes.
 // pack() compares it with Docking's search on smaller jobs and keeps the better layout.
 #pragma once
 

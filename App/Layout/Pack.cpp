@@ -119,7 +119,7 @@ double gridBytes(const PackProblem& problem)
            (problem.strip ? stripCells * kBytesPerStripCell * cores() : 0);
 }
 
-/// Refuses an irregular job whose grid would pass the memory limit (issue 35), before anything is rasterised;
+/// Refuses an irregular job whose grid would pass the memory limit, before anything is rasterised;
 /// a job of rectangles is laid out without the grid then.
 void checkMemory(const PackProblem& problem)
 {
@@ -417,7 +417,7 @@ bool gridOutOfReach(const PackProblem& problem, long units, const Deadline& dead
 }
 
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
-/// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking (issue 31). Three stages:
+/// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking. Three stages:
 /// in its share of the time, unlimited stages (four stage counts a sheet) made a quarter of the runs and
 /// needed 2 sheets more on the 2BP classes (docs/benchmarks.md). Its saw cuts are dropped: the cuts are free.
 Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t seed, Deadline deadline)
@@ -466,7 +466,7 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             if (units > kDockedUnits)
                 throw;
         }
-        // Docking's grid alone would outlast the time limit (issue 31: 0.2 s took 0.5) at the speed this
+        // Docking's grid alone would outlast the time limit (0.2 s took 0.5) at the speed this
         // process gets: on a loaded machine a share of a core, measured on MaxRects' run (1 s took 1.5).
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const double share =
@@ -494,13 +494,13 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
             return *lower;
     }
     // Many irregular parts: MaxRects on their bounding boxes in a tenth of the time, a layout in hand should
-    // Docking's first pass not end by the deadline (issue 35: 400 pieces took 22 s of a 5 s limit).
+    // Docking's first pass not end by the deadline (400 pieces took 22 s of a 5 s limit).
     const bool many = !rectangles && units > kBoxedUnits;
     const bool cut = rectangles || many;  // first passes cut at the deadline: a layout is in hand
     std::optional<Layout> boxed;
     if (many)
         boxed = boundingBoxes(problem, deadline.sooner(started + seconds(0.1 * search.timeLimit)));
-    // Rasterising the outlines alone would outlast the time limit (issue 35: 100 parts of 10^8 cells took
+    // Rasterising the outlines alone would outlast the time limit (100 parts of 10^8 cells took
     // minutes): the bounding boxes' layout is the one in hand.
     if (const double rasterising = rectangles ? 0 : rasterSeconds(problem);
         rasterising > deadline.secondsLeft()) {

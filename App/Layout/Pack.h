@@ -52,7 +52,7 @@ struct PartSpec {
 PartSpec rectangularPart(std::string id, double width, double height, int quantity = 1,
                          std::vector<int> orientations = {0, 90, 180, 270});
 
-/// How the sheets are cut (issue 31): `Free`, any outline anywhere (a CNC or laser follows it); `Guillotine`,
+/// How the sheets are cut: `Free`, any outline anywhere (a CNC or laser follows it); `Guillotine`,
 /// straight cuts from edge to edge only (a panel, track or table saw), in at most `stages` changes of
 /// direction.
 enum class Cuts { Free, Guillotine };
@@ -131,7 +131,7 @@ bool better(const Layout& a, const Layout& b);
 constexpr double kLongest = 20000, kMostCells = 2e8;
 constexpr long kMostUnits = 50000;
 
-/// Grid cells rasterised a second (a shop cut list's 1.8·10^8 took 0.25 s on this kind of machine, issue 31):
+/// Grid cells rasterised a second (a shop cut list's 1.8·10^8 took 0.25 s on this kind of machine):
 /// a job of rectangles is laid out by MaxRects alone when Docking's grid would take longer than the time
 /// left.
 constexpr double kRasterCellsPerSecond = 5e8;

@@ -30,7 +30,7 @@ Footprint rasterise(const geometry::Outline& outline, double resolution, double 
     // The outline as the grid can tell it: contours within a twentieth of a cell (grown by as much, so the
     // footprint still covers the part), holes that could free no cell left out (they stay material), and each
     // row cut with the holes that reach it. A 100,000-point circle or 10,000 pin holes took 18 s and 24 s
-    // here, past any time limit (issue 35).
+    // here, past any time limit.
     const double tolerance = resolution / 20;
     geometry::Outline coarse{geometry::simplified(outline.outer, tolerance), {}};
     bool moved = coarse.outer.size() != outline.outer.size();  // no vertex left out: nothing to grow by

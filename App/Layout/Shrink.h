@@ -1,4 +1,4 @@
-// Strip shrinking by overlap minimisation (issue 16, item 3; past the thesis, after Egeblad et al. 2007 and
+// Strip shrinking by overlap minimisation (past the thesis, after Egeblad et al. 2007 and
 // Gardeyn & Wauters' sparrow 2025): a feasible strip of irregular parts is cut shorter, the parts squeezed
 // together, and the overlaps that leaves are separated again by moving one part at a time to where it
 // overlaps the others least, the pairs that keep overlapping weighing more each round (guided local search).

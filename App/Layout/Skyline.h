@@ -1,4 +1,4 @@
-// Strip packing of rectangles by a tree search on the skyline at a target height (issue 16): the lowest,
+// Strip packing of rectangles by a tree search on the skyline at a target height: the lowest,
 // leftmost gap of the skyline is filled by a part put at its left end, or left as waste while the waste
 // the target height allows lasts. In a packing without waste that gap is always some part's lower-left
 // corner, so the search is complete at the area's lower bound; limited by nodes, it is restarted with the
@@ -27,7 +27,7 @@ struct SkylineBudget {
 };
 
 /// The most units the skyline search lays: it goes a level deeper per unit, each level with a copy of the
-/// skyline (199,999 units overflowed the stack, issue 35); the largest benchmark instance has 3,152.
+/// skyline (199,999 units overflowed the stack); the largest benchmark instance has 3,152.
 constexpr long kSkylineUnits = 5000;
 
 /// The lowest strip of `problem` (rectangles; kerf + spacing around every part, trim along the strip's

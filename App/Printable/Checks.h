@@ -1,4 +1,4 @@
-// Checking printable bodies (thesis 4.5, issue 6): every solid valid, and the parts apart by at least the gap
+// Checking printable bodies (thesis 4.5): every solid valid, and the parts apart by at least the gap
 // as printed and all along every configuration's motion.
 #pragma once
 
@@ -26,7 +26,7 @@ struct Check {
 /// than `enough` are not measured.
 Check check(const function::Model& model, const Printable& printable, double enough, int samples = 32);
 
-/// A print that passes the check, where joint geometry can make it pass (issue 15, item 1): while the nearest
+/// A print that passes the check, where joint geometry can make it pass: while the nearest
 /// two bodies come within the gap near joints' geometry (jointsInTheWay), the nearest joint not yet moved has
 /// its other places made and checked, the nearest kept; when none clears, the check's `where` names the
 /// joints tried and what they meet.

@@ -405,7 +405,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             beside = {k, near};
         }
     }
-    // Its place (issue 15, item 1): along the whole length, or its middle, first or second half.
+    // Its place: along the whole length, or its middle, first or second half.
     const double half = (hi - lo) / 2;
     if (place > 0 && half < 4 * (r.outer + g))
         throw std::invalid_argument("joint '" + joint.name +

@@ -34,7 +34,7 @@ struct RailPlace {
     double dir, plane, from, to, low, high;
 };
 
-/// The places for slide j's rails (issue 15, item 1): each contact of a cuboid of the part with one of
+/// The places for slide j's rails: each contact of a cuboid of the part with one of
 /// another part across the slide axis, less the cavities that open under it (a well), the largest strip
 /// first.
 std::vector<RailPlace> railPlaces(const Model& m, int j);

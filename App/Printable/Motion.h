@@ -26,7 +26,7 @@ gp_Trsf jointMotion(const function::Model& model, int j, int configuration, doub
 /// configuration, with every other such part.
 bool standsStill(const function::Model& model, int part);
 
-/// The parts printed as one body each (issue 15): each part a joint moves on its own with the parts fixed to
+/// The parts printed as one body each: each part a joint moves on its own with the parts fixed to
 /// it (fixed joints), and the parts that stand still grouped where they touch each other's material as
 /// modelled (a carcass and its legs, a shelf against a cupboard's walls, an insert on a well's floor never
 /// move apart: one body, no gap between them; a part loose in a cavity touches no wall and stays its own),

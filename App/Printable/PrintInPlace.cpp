@@ -217,7 +217,7 @@ Size extentOf(const Model& model)
 }
 
 /// The largest print FabGuide makes, mm along any side: beyond the largest printers (the thesis' bunk bed
-/// is 2.1 m at 1:1), where meshing curved joints to a printer's precision takes ever longer (issue 35: a
+/// is 2.1 m at 1:1), where meshing curved joints to a printer's precision takes ever longer (a
 /// model at 1e6 mm, or --scale 100, did not finish).
 constexpr double kLargestPrint = 5000;
 

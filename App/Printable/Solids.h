@@ -24,7 +24,7 @@ using Coordinates = std::array<double, 6>;
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// What the Boolean operations are for while it lives (issue 15): the part their errors name, and a time
+/// What the Boolean operations are for while it lives: the part their errors name, and a time
 /// budget for that part's operations, so that OpenCASCADE stuck on a shape ends in an error naming the part
 /// and the operation rather than a hang. Nests, one stack per thread; a work without a budget (0) takes its
 /// enclosing one's seconds, counted afresh.

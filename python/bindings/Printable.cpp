@@ -61,7 +61,7 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
 {
     printable::Fitted m = made(model, gap, scale, fit);
     printable::Check c;
-    if (check) {  // joint geometry placed where it clears (issue 15, item 1), as checked
+    if (check) {  // joint geometry placed where it clears, as checked
         const printable::Checked placed =
             geometry([&] { return printable::placedByCheck(m.model, m.printable, {gap}); });
         m.printable = placed.printable;

@@ -1,6 +1,6 @@
 // Google Benchmark: the works-like least-change solve (thesis 4.4) on the example and on synthetic
 // mechanisms of N cuboids, cold and during a drag (small edits, each warm-started from the last solution).
-// Targets (issue 3): <= 5 ms per fixture, <= 200 ms at 1000 cuboids.
+// Targets: <= 5 ms per fixture, <= 200 ms at 1000 cuboids.
 #include "Function/Solve.h"
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"

@@ -1,4 +1,4 @@
-"""Irregular strip packing on the nine ESICUP instances (issue 16, item 3): `fabguide pack --strip` on each for a
+"""Irregular strip packing on the nine ESICUP instances: `fabguide pack --strip` on each for a
 time limit, the density (the pieces' area over the strip's height times the length used, computed here from the
 instance) beside the best published one, each layout checked on the real outlines by outline_check. Run alone:
 python3 tests/bench/esicup_benchmark.py [build-dir] [seconds]."""

@@ -1,4 +1,4 @@
-"""Generated products (issue 30, tests/gen): 2000 products solved and checked, 200 of them printed fitted to a
+"""Generated products (tests/gen): 2000 products solved and checked, 200 of them printed fitted to a
 desktop printer and checked, with the failures by class; and how long a solve takes from the command line
 (start-up included) on the products and on a wall of 510 cuboids. Part of `make bench`; on its own:
 python3 tests/bench/generated_products_benchmark.py [PRODUCTS PRINTS]."""

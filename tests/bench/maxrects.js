@@ -1,4 +1,4 @@
-// A plain MaxRects beside FabGuide in tests/bench/saw_benchmark.py (issue 31): npm's maxrects-packer, installed by
+// A plain MaxRects beside FabGuide in tests/bench/saw_benchmark.py: npm's maxrects-packer, installed by
 // tests/bench/build_maxrects.sh into FOLDER, with its defaults (max-edge rule, its own sort), one run.
 //     node maxrects.js FOLDER < groups.json
 // Reads [{"sheet": [w, h], "items": [[w, h, copies, fixed], ...]}, ...] (kerf already added) and prints the bins

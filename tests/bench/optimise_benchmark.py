@@ -1,4 +1,4 @@
-"""Zero-waste design exploration on the Table 5.1 designs (thesis 5.5) and the furniture suite (issue 14): sheets,
+"""Zero-waste design exploration on the Table 5.1 designs (thesis 5.5) and the furniture suite: sheets,
 waste, usage and the largest offcut before -> after and wall time per design with `fabguide optimise`, beside the
 thesis' numbers, and layout-guided shrinking against random part choice (thesis Fig. 5.20c-d).
 Run alone: python3 tests/bench/optimise_benchmark.py [build-dir]."""
@@ -57,7 +57,7 @@ def run(build):
 
 
 def suite(build):
-    """The furniture suite of tests/data/flatpack (issue 14), seed 1, 8 s each."""
+    """The furniture suite of tests/data/flatpack, seed 1, 8 s each."""
     folder = os.path.join(ROOT, "tests", "data", "flatpack")
     rows = []
     for file in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:

@@ -1,4 +1,4 @@
-"""Perfect packings generated from a seed (issue 16): a board cut into rectangles with no waste, so its height
+"""Perfect packings generated from a seed: a board cut into rectangles with no waste, so its height
 is the optimal strip height.
 
 Guillotine packings cut the largest piece left straight across; pinwheel packings split it into five pieces

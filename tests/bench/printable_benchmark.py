@@ -101,7 +101,7 @@ SUITE = os.path.join(ROOT, "tests", "data", "printable")
 
 
 def suite(build):
-    """The product suite of tests/data/printable (issue 15): each model fitted to the build volume and sliced."""
+    """The product suite of tests/data/printable: each model fitted to the build volume and sliced."""
     rows = []
     for file in sorted(f for f in os.listdir(SUITE) if f.endswith(".workslike.json")):
         with tempfile.TemporaryDirectory() as out:
@@ -130,8 +130,8 @@ WALLS = os.path.join(ROOT, "tests", "data", "workslike")
 
 
 def wall_line(build, rows, columns):
-    """A wall of rows x columns cabinets (make_wall.py; 3 cuboids each) printed at 1:1: the scale target of issue 15
-    is 200 cuboids within 60 s."""
+    """A wall of rows x columns cabinets (make_wall.py; 3 cuboids each) printed at 1:1: the scale target is 200
+    cuboids within 60 s."""
     with tempfile.TemporaryDirectory() as out:
         model = os.path.join(out, "wall.workslike.json")
         subprocess.run([sys.executable, os.path.join(WALLS, "make_wall.py"), "--rows", str(rows), "--columns",

@@ -1,4 +1,4 @@
-"""Sheets first, against known answers (issue 32): generated designs of 50-100 boards in two thicknesses whose
+"""Sheets first, against known answers: generated designs of 50-100 boards in two thicknesses whose
 least design is known to fit on fewer sheets than the boards as drawn (tests/gen/savable_designs.py), at three
 amounts of slack in that known layout, each run through `fabguide optimise --seed 1 --threads 2`. Per design:
 the sheets known to be enough, the sheets as drawn, the sheets of the best suggestion, the least design as laid

@@ -1,4 +1,4 @@
-"""Sheets for a saw (issue 31): FabGuide's free layouts (Docking and MaxRects) beside its guillotine layouts
+"""Sheets for a saw: FabGuide's free layouts (Docking and MaxRects) beside its guillotine layouts
 (3 stages, and unlimited) on shop cut lists generated from held-out seeds (tests/gen/cutlists.py) and, when
 packingsolver's repository is given, on the classic two-dimensional bin-packing classes (Berkey & Wang I-VI,
 Martello & Vigo VII-X; items not turned, as the classes define them). Each layout is judged by the independent

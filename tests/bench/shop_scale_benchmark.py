@@ -1,4 +1,4 @@
-"""Shop-scale layout (issue 16, item 2): jobs of 1000 and 5000 rectangular parts on 2440 × 1220 mm sheets,
+"""Shop-scale layout: jobs of 1000 and 5000 rectangular parts on 2440 × 1220 mm sheets,
 generated from a seed, laid out by `fabguide pack` with its time limit; each layout judged by the independent
 layout checker, its sheets set beside the least any layout could use (the parts' area over a sheet's, rounded
 up). The same parts also go on a strip 2440 mm wide (`pack --strip`, no kerf: the OR-Datasets format has none),
@@ -90,7 +90,7 @@ def table(rows, strip_rows):
              "out by MaxRects in millimetres, no raster: four orders by four rules (best short side, long side, area fit, "
              "bottom-left), then sheet by sheet with the best fitting of the parts left, the best layout kept; so never "
              "more sheets than a MaxRects best-short-side-fit greedy. *Least* = the parts' area over a "
-             "sheet's, rounded up: no layout can use fewer. Anchor (issue 16): 5000 parts took 195 s before, a "
+             "sheet's, rounded up: no layout can use fewer. Anchor: 5000 parts took 195 s before, a "
              "MaxRects greedy 1.2 s for the same sheets. Every layout passes the independent layout checker.", "",
              "| parts | time limit s | seconds | sheets | least | sheet utilisation | checker |", "|---|---|---|---|---|---|---|"]
     for r in rows:

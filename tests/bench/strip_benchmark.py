@@ -70,7 +70,7 @@ def table(results, time_limit):
              "bound; else MaxRects bisects the height until 95 %, Docking's ordering search takes the rest; the "
              "lowest strip wins. Generated perfect packings: `tests/bench/perfect_packings.py`, guillotine and "
              "pinwheel cuts, 15-250 items, boards 2440 x 1220, 1220 x 2440, 1830 x 1220, 1000 x 1000, 600 x 400 mm; "
-             "seeds 1-10 were looked at while tuning the search, 21-30 and 31-40 are held out. Targets (issue 16): mean gap "
+             "seeds 1-10 were looked at while tuning the search, 21-30 and 31-40 are held out. Targets: mean gap "
              "≤ 1.5 % on C and N, ≤ 3.0 % on the generated, at ≤ 1 s per instance. Anchors (issue 16, mean gap, "
              "1 s): FabGuide before 2.04 (C), 1.93 (N), 5.73 (perfect packings); MaxRects best of 4 rules "
              "(Jylänki) 2.74, 2.14, 4.61; best of all anchors per instance 1.90, 1.52, 3.54.".format(time_limit),

@@ -1,4 +1,4 @@
-"""The sloppy works-like suite (tests/data/workslike, issue 13): each model solved by `fabguide solve`, how much
+"""The sloppy works-like suite (tests/data/workslike): each model solved by `fabguide solve`, how much
 the solve changed it, how long it took, and what the independent checker (tests/python/workslike_checker.py)
 says of the result; contradictory models must be refused naming what their expectations list.
 Run alone: python3 tests/bench/workslike_suite_benchmark.py [build-dir]."""

@@ -1,4 +1,4 @@
-// Compaction on the parts' real outlines: a strip (issue 16, item 3), parts on sheets slid together (issue
+// Compaction on the parts' real outlines: a strip, parts on sheets slid together (issue
 // 31).
 #include "Layout/Compaction.h"
 

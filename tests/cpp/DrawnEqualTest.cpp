@@ -1,4 +1,4 @@
-// Boards drawn equal (issue 32): alike on every side and lying the same way, in groups, once per in-plane
+// Boards drawn equal: alike on every side and lying the same way, in groups, once per in-plane
 // axis.
 #include "Design/DrawnEqual.h"
 

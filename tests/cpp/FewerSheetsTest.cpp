@@ -1,4 +1,4 @@
-// Saving a sheet (issue 14): the least design's linear programme on a suite bookcase, and FEWERSHEETS on a
+// Saving a sheet: the least design's linear programme on a suite bookcase, and FEWERSHEETS on a
 // suite TV bench that needs two sheets as drawn and one when its boards are a little smaller.
 #include "Design/FewerSheets.h"
 #include "Design/LeastDesign.h"
@@ -49,7 +49,7 @@ TEST(LeastDesignTest, ShrinksEveryPartToWhatItsConstraintsAllow)
     // The top narrower, but not below what the binders on the bottom (800 mm wide) leave; thicknesses stay.
     EXPECT_LT((*least)[sizeVariable(2, 0)], 864 - 1);
     EXPECT_GE((*least)[sizeVariable(2, 0)], 800);
-    // The bottom and shelf 1 stay under the binders they hold (265 mm deep; issue 32), and shelves 2-4 with
+    // The bottom and shelf 1 stay under the binders they hold (265 mm deep), and shelves 2-4 with
     // them, their depths equal; the sides may go from 300 to 280 mm deep.
     for (int b : {3, 5, 6, 7, 8})
         EXPECT_GE((*least)[sizeVariable(b, 1)], 265 - 1e-6) << f.design.boards[b].id;

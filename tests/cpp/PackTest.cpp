@@ -66,7 +66,7 @@ TEST(Pack, KeepsKerfSpacingAndTrim)
 TEST(Pack, ACancelledSearchStopsWithAValidLayout)
 {
     // Cancelled as it starts, a search with neither a time limit nor an end to its work still returns, with
-    // each stage's first layout (the FreeCAD Layout's Stop, issue 34): on sheets free or sawn, and in a
+    // each stage's first layout (the FreeCAD Layout's Stop): on sheets free or sawn, and in a
     // strip.
     const std::atomic<bool> cancelled{true};
     OrderingSearchOptions options;

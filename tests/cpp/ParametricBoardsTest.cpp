@@ -1,4 +1,4 @@
-// Parametric designs of boards (issue 32): sides to material sizes along the grain, the thickness from the
+// Parametric designs of boards: sides to material sizes along the grain, the thickness from the
 // thinnest side, a grain through the thickness refused by name.
 #include "Design/DesignSpace.h"
 

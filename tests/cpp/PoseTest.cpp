@@ -189,7 +189,7 @@ TEST(Pose, JointAndConfigurationErrorsNameTheField)
 
 TEST(Pose, ModelsSolveCannotFinishAreRefusedByName)
 {
-    // Issue 35: a 3,000-joint chain took 104 s. A chain of 64 reads; 65, more than 10,000 cuboids, or more
+    // A 3,000-joint chain took 104 s. A chain of 64 reads; 65, more than 10,000 cuboids, or more
     // than 100,000 cuboids times configurations are refused, each naming where.
     const auto chain = [](int joints) {
         json d = {{"format", "fabguide.workslike"},

@@ -47,7 +47,7 @@ TEST(Raster, ClearanceGrowsEveryEdgeByHalf)
 
 TEST(Raster, ADenseCircleAndAPlateOfPinHolesRasteriseCoveringTheirMaterial)
 {
-    // Issue 35: a 100,000-point circle and 10,000 holes once took 18 s and 24 s to rasterise.
+    // A 100,000-point circle and 10,000 holes once took 18 s and 24 s to rasterise.
     const int n = 100000;
     Outline disc;
     for (int k = 0; k < n; ++k)

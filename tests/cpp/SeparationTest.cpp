@@ -1,4 +1,4 @@
-// Parts kept apart, openings kept open, walls kept, results exact (issue 13).
+// Parts kept apart, openings kept open, walls kept, results exact.
 #include "Function/Separation.h"
 #include "Function/Solve.h"
 #include "IO/WorkslikeFormat.h"
@@ -65,7 +65,7 @@ TEST(Separation, OverlappingPartsMoveApartByTheLeastChange)
 
 TEST(Separation, APartDrawnInsideAnotherBeforeItsCavityIsNamedAndNothingChanges)
 {
-    // Issue 36: a tray drawn inside a carcass, its cavity not made yet. Keeping them apart shrank the carcass
+    // A tray drawn inside a carcass, its cavity not made yet. Keeping them apart shrank the carcass
     // (800 -> 665 mm) and the top standing on it: edits no relationship asked for.
     json d = {
         {"parts",

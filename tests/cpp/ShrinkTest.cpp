@@ -1,4 +1,4 @@
-// Strip shrinking by overlap minimisation (issue 16, item 3).
+// Strip shrinking by overlap minimisation.
 #include "Layout/Shrink.h"
 
 #include "PackingTestSupport.h"

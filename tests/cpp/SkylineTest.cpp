@@ -92,7 +92,7 @@ TEST(Skyline, AGuillotinePerfectPackingOfTwentyFivePiecesComesWithinAStepOfItsAr
     const auto layout = skylineStrip(problem, {kSkylineWorkPerSecond, 1}, kNoDeadline);
     ASSERT_TRUE(layout);
     EXPECT_DOUBLE_EQ(leastStripHeight(problem), 40);
-    EXPECT_LE(layout->stripHeight, 41);  // its perfect packing is not found within the work (issue 16)
+    EXPECT_LE(layout->stripHeight, 41);  // its perfect packing is not found within the work
     expectValidStrip(problem, *layout);
 }
 

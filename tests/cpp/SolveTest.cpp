@@ -63,7 +63,7 @@ TEST(Solve, APartIsMovedRatherThanThinnedToNothing)
 TEST(Solve, SuccessiveSolvesDoNotThinAPartAgainAndAgain)
 {
     // A door drawn 20 mm thick, thinned to 10.2 mm by an earlier solve (just above half), now made flush with
-    // a stop 5 mm nearer: thinned again it would be 5.2 mm, a quarter of what the user drew (issue 36: 20
+    // a stop 5 mm nearer: thinned again it would be 5.2 mm, a quarter of what the user drew (20
     // -> 10.2
     // -> 5.1 mm). Held against its drawn 20 mm it keeps its 10.2 mm and moves instead.
     json d = json::parse(R"({"format": "fabguide.workslike", "version": 1,
@@ -88,7 +88,7 @@ TEST(Solve, SuccessiveSolvesDoNotThinAPartAgainAndAgain)
 TEST(Solve, TwinsThatARelationshipNamesTogetherStayAlike)
 {
     // Two doors drawn alike and kept level by one relationship; a stop then thins the left one from 20 to 12
-    // mm. The right door, its twin, is thinned alike (issue 36: the left door 5.1 mm, the right one 13.7). A
+    // mm. The right door, its twin, is thinned alike (the left door 5.1 mm, the right one 13.7). A
     // part drawn alike that no relationship names with them (the shelf) stays as drawn.
     json d = json::parse(R"({"format": "fabguide.workslike", "version": 1,
       "parts": [{"name": "left", "cuboids": [{"name": "left", "min": [0, 0, 0], "max": [100, 20, 200]}]},

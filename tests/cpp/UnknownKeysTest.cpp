@@ -1,4 +1,4 @@
-// Every object of every FabGuide format refuses a key it does not know, naming it (issue 35, deliver 6): a
+// Every object of every FabGuide format refuses a key it does not know, naming it: a
 // generator takes each example and test file, adds a misspelt key to one object at a time, and expects the
 // reader to refuse exactly that key. Objects whose keys are names the user chose (a configuration's poses)
 // are the only ones that take any key.

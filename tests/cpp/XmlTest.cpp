@@ -1,4 +1,4 @@
-// Names as users typed them, made safe for every file (issue 35).
+// Names as users typed them, made safe for every file.
 #include "IO/Xml.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-"""Random command lines for every command (issue 35: the fuzzers cover the CLI options). Each run picks a command,
+"""Random command lines for every command (the fuzzers cover the CLI options). Each run picks a command,
 an input and some of the options its --help lists (so a new option is fuzzed without a word here), with values
 valid, at their limits, and nonsense. Whatever the line, the run must finish (exit 0) or refuse it in one line
 (exit 1, "fabguide: error: ..."): no crash, no traceback, no hang, under 2 GB, nothing written outside its folder.

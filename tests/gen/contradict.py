@@ -1,4 +1,4 @@
-"""Making a product contradictory on purpose (issue 30), with the conflict known: the parts it concerns are
+"""Making a product contradictory on purpose, with the conflict known: the parts it concerns are
 drawn exactly and locked (a user's typed sizes), so no design holds, and the error must name what is in every
 set of contradicting constraints (the required names), and one of each group of alternatives.
 

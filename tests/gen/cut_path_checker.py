@@ -1,4 +1,4 @@
-"""Independent check of the machine's cut paths in a DXF cut sheet of rectangular parts (issue 31, common-line
+"""Independent check of the machine's cut paths in a DXF cut sheet of rectangular parts (common-line
 cutting): every edge of every part, grown by half the kerf, is cut over its whole length; no stretch is cut
 twice; nothing is cut that is not some part's edge. Reads the DXF with ezdxf and the layout JSON; plain Python,
 sharing nothing with the writer. `problems(...)` returns a list of problems, empty when the sheet is right."""

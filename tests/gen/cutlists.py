@@ -1,4 +1,4 @@
-"""Shop cut lists as a cabinet maker writes them (issue 31): kitchens and wardrobes of cabinets drawn from a seed,
+"""Shop cut lists as a cabinet maker writes them: kitchens and wardrobes of cabinets drawn from a seed,
 each cabinet's carcass, shelves, rails, doors and drawer fronts; carcass parts from 18 mm white melamine
 (2800 x 2070 mm, no grain), doors and fronts from 19 mm oak veneered board (2500 x 1250 mm, grain along its length)
 that follow the grain (a door's length, along x, is its height: grain runs up a door). Identical parts are merged into one line with a quantity, as a cut list has them:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generated products at scale (issue 30): each seed's product (products.py) is made contradictory for one seed in
+"""Generated products at scale: each seed's product (products.py) is made contradictory for one seed in
 three (contradict.py), drawn roughly (roughen.py), solved by `fabguide solve` and judged: a solvable product must
 solve to a model the independent checker passes, a contradictory one must exit 1 naming its known conflict, and
 a sample of the solved ones must print (`fabguide printable --fit`) with every print check passing

@@ -1,4 +1,4 @@
-"""Near-limit and hostile inputs for every command (issue 35): sizes just inside and just past what the readers
+"""Near-limit and hostile inputs for every command: sizes just inside and just past what the readers
 accept, shapes and counts that once hung or took all the memory, names that break files, nonsense values.
 Each case states what a run must do: finish (exit 0) or refuse in one line naming the field (exit 1 and the
 given words); either way within its seconds and under 2 GB (`--memory 2G` is passed too).

@@ -1,4 +1,4 @@
-"""Kills at random moments (issue 35): a command, or FreeCAD's Export Cut Sheets, writes its set of files over the
+"""Kills at random moments: a command, or FreeCAD's Export Cut Sheets, writes its set of files over the
 set an earlier run of another job left in the same folder and is killed, by SIGKILL or SIGTERM, at a random moment, its writes and renames
 slowed by strace half of the time. Then the folder, read as fabguide reads it (a commit journal the kill left is
 completed first: this file's own reading of the journal), must hold one whole set, the old or the new; and after

@@ -1,4 +1,4 @@
-"""An independent checker of print-in-place output (issue 30): it reads what `fabguide printable` wrote (the STL
+"""An independent checker of print-in-place output: it reads what `fabguide printable` wrote (the STL
 of each body, report.json for the names, scale and gap) and the model it printed, and shares no code with
 FabGuide.
 

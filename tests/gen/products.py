@@ -1,4 +1,4 @@
-"""Products with known answers (issue 30): a grammar that composes works-like products, each valid by
+"""Products with known answers: a grammar that composes works-like products, each valid by
 construction, then drawn roughly by a separate pass (roughen.py), a third of them made contradictory with the
 conflict known (contradict.py).
 

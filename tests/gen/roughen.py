@@ -1,4 +1,4 @@
-"""Drawing a product roughly, as designers draw (issue 30): a pass separate from the grammar that knows only the
+"""Drawing a product roughly, as designers draw: a pass separate from the grammar that knows only the
 *.workslike.json it is given. Sizes and positions off by 1-8 mm, parts pushed into the parts they touch, the
 cuboids of a part pulled up to 4 mm apart, fronts (the covering parts of a cover) off their openings by up to
 7 mm: on furniture (500 mm and more); on smaller products in proportion, down to a quarter (a phone drawn 2 mm

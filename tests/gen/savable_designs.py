@@ -1,4 +1,4 @@
-"""Flat-pack designs with a sheet known to be savable (issue 32, "sheets first, proved"): 50-100 boards of two
+"""Flat-pack designs with a sheet known to be savable ("sheets first, proved"): 50-100 boards of two
 thicknesses, each free to shrink within a range down to a least size. The least sizes are cut from a known
 layout (a guillotine cut of whole sheets, tests/bench/perfect_packings.py, each piece shrunk by the kerf and a
 slack), so every board at its least fits on `saved` sheets per thickness; the boards as drawn are grown until

@@ -1,4 +1,4 @@
-"""Independent check of a guillotine layout (issue 31): on each sheet, the listed saw cuts, made in their order,
+"""Independent check of a guillotine layout: on each sheet, the listed saw cuts, made in their order,
 each run straight from edge to edge of the one piece it lies in, their kerf touches no part, their stages are
 as listed and within the limit (a trim one stage past it only parts one part from waste), and every part ends in
 a piece of its own no larger than the part and half the clearance round it. The layout's own validity (demand,

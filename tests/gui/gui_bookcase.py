@@ -1,4 +1,4 @@
-"""A bookcase bound to a spreadsheet, as a furniture designer models one (issue 36): Part boxes whose sizes and
+"""A bookcase bound to a spreadsheet, as a furniture designer models one: Part boxes whose sizes and
 places are expressions of a spreadsheet's aliases; boards and a layout made from them, a flat-pack design with the
 aliases as Parameters, Suggest, undo, save and reopen; with the mistakes people make on the way (a word typed
 into a size cell, a misspelt or out-of-range parameter, a negative height, the spreadsheet deleted). Each mistake

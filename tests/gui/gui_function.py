@@ -66,7 +66,7 @@ def the_configurations_panel_shows_the_doors_stowed():
 
 def a_long_print_shows_its_progress_and_cancel_keeps_the_last_bodies():
     """The cabinet takes seconds to print: FreeCAD keeps drawing, shows what runs, and Cancel leaves the bodies
-    of the last print (issue 34: nothing freezes FreeCAD)."""
+    of the last print (nothing freezes FreeCAD)."""
     doc, mech = state["cabinet"], state["mech"]
     FreeCAD.setActiveDocument(doc.Name)
     seen = []

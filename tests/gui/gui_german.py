@@ -1,4 +1,4 @@
-"""FabGuide in German (issue 34): with FreeCAD's language set to German before the workbench first loads, its
+"""FabGuide in German: with FreeCAD's language set to German before the workbench first loads, its
 toolbars, drop-down buttons, commands and their tips, what a command tells the user, task panels and property
 tooltips come from Resources/translations/FabGuide_de.qm; screenshots of the German workbench at 1366 and 1920 px."""
 import os

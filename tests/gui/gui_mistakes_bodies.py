@@ -1,4 +1,4 @@
-"""A new user's bedside cabinet from PartDesign Bodies and a Part Extrude (issue 36), with their mistakes: the Pad
+"""A new user's bedside cabinet from PartDesign Bodies and a Part Extrude, with their mistakes: the Pad
 picked in the 3-D view rather than its Body, a block and an empty Body picked as boards, a Pad made thicker than any
 master board, the document saved and reopened. Each mistake is one sentence; the board follows the Body.
 """

@@ -1,4 +1,4 @@
-"""A new user's drawer session, full of mistakes (issue 36): a carcass with a top, a drawer front and a tray drawn
+"""A new user's drawer session, full of mistakes: a carcass with a top, a drawer front and a tray drawn
 inside the carcass, made parts before the cavity; a Geometric picked from a face and an edge; an angle typed out of
 range and Enter pressed in a Configurations field. Nothing changes that no relationship asks for, every mistake is
 a sentence (the runner fails on any traceback or unexpected red line).

@@ -1,4 +1,4 @@
-"""A new user's bookcase session, full of mistakes (issue 36): two designs side by side, a master board resized for
+"""A new user's bookcase session, full of mistakes: two designs side by side, a master board resized for
 one of them, a seed of -1, exports of a layout in error, panels opened over panels, "1e9" typed as a kerf, Enter
 pressed in a field, the pages made twice, the document saved. Every mistake is one sentence (the runner fails on
 any traceback or unexpected red line), nothing is changed the user did not ask for, nothing stale is written.

@@ -1,4 +1,4 @@
-"""Nonsense everywhere (issue 36): what a tester typed and picked in a session that found tracebacks, a crash and
+"""Nonsense everywhere: what a tester typed and picked in a session that found tracebacks, a crash and
 a change undo could not take back. A part among its own boxes, links to the wrong kind of object, a minimum size of
 1e-300, nan in a list of angles or a box's Length, an edge picked for a slide, two faces of one box made flush,
 boxes already in parts made a mechanism, an edge that does not exist, a folder picked as a file, an envelope round

@@ -1,5 +1,5 @@
 """Task panels close with their document and on undo, and stop what they run: no panel is left working on a closed
-document, no search or timer outlives it (issue 34)."""
+document, no search or timer outlives it."""
 import os
 import time
 

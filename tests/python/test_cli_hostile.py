@@ -66,7 +66,7 @@ def strip_placements(cli, folder, instance, seconds):
 
 
 def test_a_strip_of_49999_items_is_laid_out_whole(fabguide_cli, tmp_path):
-    """Issue 35: a strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit);
+    """A strip of 199,999 demanded items crashed (the skyline search goes a level deeper per unit);
     50,000 parts are the most accepted now."""
     assert strip_placements(fabguide_cli, tmp_path, {
         "Name": "many", "Objects": [{"Length": 1000, "Height": 1000, "Stock": None, "Cost": 1}],
@@ -74,7 +74,7 @@ def test_a_strip_of_49999_items_is_laid_out_whole(fabguide_cli, tmp_path):
 
 
 def test_a_strip_of_2000_irregular_pieces_ends_with_every_piece_laid(fabguide_cli, tmp_path):
-    """Issue 35: 2,000 irregular pieces did not finish (Docking's first pass had no deadline, and one part's
+    """2,000 irregular pieces did not finish (Docking's first pass had no deadline, and one part's
     positions on a tall strip took seconds); past the deadline the pieces' bounding boxes are laid instead."""
     piece = {"id": 0, "demand": 2000, "allowed_orientations": [0.0, 180.0],
              "shape": {"type": "simple_polygon",
@@ -179,7 +179,7 @@ def test_an_interrupted_search_leaves_the_last_results_and_exits_130_or_143(fabg
 
 
 def test_runs_killed_at_random_moments_leave_one_whole_set_and_no_stray_file(fabguide_cli):
-    """Issue 35: pack, optimise, printable and FreeCAD's Export Cut Sheets killed (SIGKILL or SIGTERM) at random
+    """Pack, optimise, printable and FreeCAD's Export Cut Sheets killed (SIGKILL or SIGTERM) at random
     moments, their writes and renames slowed half of the time: the folder always reads as the old set or the new
     one, never mixed, and after the next run holds that run's set and nothing else (tests/gen/kills.py; 100 kills
     in the benchmark)."""
@@ -227,7 +227,7 @@ def test_memory_is_an_option_of_every_command_in_sizes_a_person_writes(fabguide_
 
 
 def test_irregular_grids_past_the_memory_limit_are_refused_before_they_are_made(fabguide_cli, tmp_path):
-    """Issue 35: 100 boards' worth of irregular parts at 1 mm needed 72 GB of grid and took all the machine had."""
+    """100 boards' worth of irregular parts at 1 mm needed 72 GB of grid and took all the machine had."""
     document = {"format": "fabguide.pack", "version": 1, "settings": {"resolution": 1, "kerf": 0},
                 "boards": [{"width": 20000, "height": 10000, "count": 100}],
                 "parts": [{"id": "p{}".format(k), "quantity": 1,
@@ -255,7 +255,7 @@ def test_an_esicup_strip_past_the_memory_limit_is_refused_naming_its_pieces_not_
 
 
 def test_a_strip_of_tall_rectangles_is_laid_out_within_the_memory_without_the_grid(fabguide_cli, tmp_path):
-    """Issue 35: 300 items up to 1 km tall on a strip at 1 mm took 4.6 GB of grid and 21 s of a 5 s limit."""
+    """300 items up to 1 km tall on a strip at 1 mm took 4.6 GB of grid and 21 s of a 5 s limit."""
     rng = random.Random(1)
     items = [{"Length": rng.randint(50, 300), "Height": rng.randint(100000, 1000000), "Demand": 1}
              for _ in range(300)]
@@ -279,7 +279,7 @@ def test_a_run_out_of_memory_says_so_in_a_sentence(fabguide_cli, tmp_path):
 
 
 def test_an_equality_of_100000_references_is_refused_by_name(fabguide_cli, source_dir, tmp_path):
-    """Issue 35: its name, every reference joined, was copied into each of its 99,999 equations (24 GB)."""
+    """Its name, every reference joined, was copied into each of its 99,999 equations (24 GB)."""
     with open(os.path.join(source_dir, "examples", "chest.flatpack.json")) as f:
         design = json.load(f)
     design["constraints"].append({"kind": "equal", "refs": ["plinth-front.size.z"] * 100000})
@@ -293,7 +293,7 @@ def test_an_equality_of_100000_references_is_refused_by_name(fabguide_cli, sourc
 
 
 def test_sixty_near_limit_and_hostile_inputs_finish_or_are_refused_by_name(fabguide_cli):
-    """Issue 35: tests/gen/hostile.py's cases across pack, solve, printable and optimise each end with exit 0, or
+    """The cases of tests/gen/hostile.py across pack, solve, printable and optimise each end with exit 0, or
     exit 1 naming the field, under 2 GB. Their time is judged by the benchmark run of the same script, not here:
     a test does not assert on wall time."""
     rows = list(hostile.results(fabguide_cli, limit=2.0, timed=False))
@@ -302,7 +302,7 @@ def test_sixty_near_limit_and_hostile_inputs_finish_or_are_refused_by_name(fabgu
 
 
 def test_random_command_lines_finish_or_are_refused_in_one_line(fabguide_cli):
-    """Issue 35: every command's options (read from its --help) given values valid, at their limits and nonsense,
+    """Every command's options (read from its --help) given values valid, at their limits and nonsense,
     and output paths that are folders, links out of the folder or pipes: each run exits 0, or 1 with one line
     'fabguide: error: ...', under 2 GB, writing nothing through the link (tests/gen/cli_options.py; ten minutes of
     it in the benchmark)."""

@@ -75,7 +75,7 @@ def test_the_sofa_bunks_facing_pivots_get_links_in_recesses(fabguide_cli, source
 
 
 def test_overlapping_parts_are_refused_by_name(fabguide_cli, source_dir, tmp_path):
-    # The box with a lid, its drawer modelled inside a solid body with no cavity: refused as drawn (issue 36),
+    # The box with a lid, its drawer modelled inside a solid body with no cavity: refused as drawn,
     # rather than moving the drawer or shrinking the body, with what to do.
     model = json.load(open(os.path.join(source_dir, "examples", "box-with-lid.workslike.json")))
     model["parts"][0]["cuboids"] = model["parts"][0]["cuboids"][:1]
@@ -240,7 +240,7 @@ def test_bodies_whose_names_read_alike_get_files_of_their_own(fabguide_cli, sour
 
 
 def test_a_print_longer_than_5_m_is_refused_before_any_geometry(fabguide_cli, source_dir, tmp_path):
-    """Issue 35: a model at 1e6 mm or --scale 100 did not finish (meshing its joints to 0.01 mm). The cabinet is
+    """A model at 1e6 mm or --scale 100 did not finish (meshing its joints to 0.01 mm). The cabinet is
     600 mm wide: at 100 it would be 60 m, refused at once (the 2.1 m sofa bunk prints at 1:1, above)."""
     run, out = printable(fabguide_cli, source_dir, tmp_path, "cabinet", "--scale", "100")
     assert run.returncode == 1

@@ -1,4 +1,4 @@
-"""Common-line cutting (issue 31) on shop cut lists generated from seeds (tests/gen/cutlists.py), kerf, trim and
+"""Common-line cutting on shop cut lists generated from seeds (tests/gen/cutlists.py), kerf, trim and
 spacing varied per seed: every layout judged by the independent layout checker (its parts, slid together, still a
 kerf apart and inside the trim) and every DXF sheet by the independent cut-path checker
 (tests/gen/cut_path_checker.py: every part's edge cut, none twice, nothing cut off the parts' edges), which is

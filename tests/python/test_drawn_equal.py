@@ -1,4 +1,4 @@
-"""Boards drawn equal stay equal (issue 32, functional growth only): `fabguide optimise --keep-drawn-equal` on the
+"""Boards drawn equal stay equal (functional growth only): `fabguide optimise --keep-drawn-equal` on the
 suite's designs with posts, legs, rails and shelves drawn alike; every suggestion is judged by the independent
 checker (flatpack_checker.py, drawn_equal_problems besides its every other check), itself shown to catch one rail
 grown alone. The search is bounded by --rounds as well as time."""

@@ -192,7 +192,7 @@ def test_inner_volume_moves_with_its_board_and_must_stay_free():
 
 
 def test_a_board_shrunk_from_under_its_inner_volume_fails():
-    """Issue 32: the box, drawn 10 mm from the shelf's front edge and 200 mm deep, moves with that edge; the shelf
+    """The box, drawn 10 mm from the shelf's front edge and 200 mm deep, moves with that edge; the shelf
     may not shrink from under it."""
     sugg = suggestion()
     part(sugg, "shelf")["size"][1] = 209

@@ -262,7 +262,7 @@ def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):
 def test_a_parametric_design_cuts_each_board_from_its_thickness_along_its_grain(doc):
     """Sides and ends with their grain up (y), a 6 mm bottom: every layout the parametric search gives lays each
     board on master boards of its own thickness and the grained ones along the sheet's grain, at the parameters
-    of that layout (issue 32: the crates saved a sheet only by laying 21 parts across the grain)."""
+    of that layout (the crates saved a sheet only by laying 21 parts across the grain)."""
     sheet, boards = spreadsheet_box(doc)
     boards["bottom"].Height = 6
     doc.recompute()

@@ -22,7 +22,7 @@ SUITE = os.path.join(HERE, "..", "data", "flatpack")
 EXAMPLES = os.path.join(HERE, "..", "..", "examples")
 TIME_LIMIT = 4.0  # s: the suite runs in make test on two platforms (docs/benchmarks.md runs 8 s)
 TIME_LIMITS = {}  # per design, where the whole suite needs it shorter
-WALL_SLACK = 1.0  # s the command may take beyond its time limit (issue 14: within 1 s)
+WALL_SLACK = 1.0  # s the command may take beyond its time limit (within 1 s)
 
 
 def suite_designs():

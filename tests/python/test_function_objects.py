@@ -45,7 +45,7 @@ def clamshell(doc, just=True):
 
 
 def test_a_pose_takes_units_and_an_expression(doc):
-    """A configuration's angle is a property of its own (issue 34): typed with a unit, or bound to a spreadsheet
+    """A configuration's angle is a property of its own: typed with a unit, or bound to a spreadsheet
     cell, and the mechanism solves in the pose the cell gives."""
     mech, body, lid, cover = clamshell(doc)
     closed = next(o for o in mech.Group if configuration.is_configuration(o))
@@ -503,7 +503,7 @@ def test_a_solve_that_changes_nothing_lists_no_changes(doc):
 
 
 def test_successive_solves_do_not_thin_a_part_below_half_of_what_was_drawn(doc, tmp_path):
-    """Issue 36: a door drawn 20 mm thick, made flush with one stop (thinned to 10.2 mm, just above half), then
+    """A door drawn 20 mm thick, made flush with one stop (thinned to 10.2 mm, just above half), then
     with a stop 5 mm nearer: it keeps its 10.2 mm and moves, rather than thinning to 5.2 (a quarter of what was
     drawn). The drawn size is saved with the document, and written to the exported model."""
     door, stop = box(doc, "Door", (0, 0, 0), (100, 20, 200)), box(doc, "Stop", (0, 10.2, 0), (100, 30, 10))
@@ -537,7 +537,7 @@ def test_successive_solves_do_not_thin_a_part_below_half_of_what_was_drawn(doc, 
 @pytest.mark.parametrize("solved, drawn", [("null", "garbage"), ('{"Box": "x"}', "[1, 2]"), ("{", '{"Box": [1e999]}')])
 def test_nonsense_in_the_hidden_memory_of_solves_is_forgotten_not_a_traceback(doc, solved, drawn):
     """A script (or Show all in the property editor) can write anything into Solved and Drawn: the mechanism then
-    solves as a new one would, without a traceback (issue 36)."""
+    solves as a new one would, without a traceback."""
     mech, body, lid, cover = clamshell(doc)
     mech.Solved, mech.Drawn = solved, drawn
     body.Length = 70

@@ -1,4 +1,4 @@
-"""Generated products with known answers (issue 30, tests/gen): products valid by construction, drawn roughly,
+"""Generated products with known answers (tests/gen): products valid by construction, drawn roughly,
 a third made contradictory with the conflict known, solved by `fabguide solve` and judged by the independent
 checker; a sample printed and judged by the print checker. Every seed that ever failed is kept in
 tests/gen/regressions.json and runs here too. `make fuzz-products` runs thousands."""

@@ -417,7 +417,7 @@ def test_core_errors_name_what_the_user_named(doc):
      "Master board 'MasterBoard': Thickness must be greater than 0; kept 12"),
     (lambda doc: layout.create(doc, *shelf_unit(doc)), "RotationStep", 7,
      "Layout 'Layout': RotationStep must be 0 or a divisor of 90 (e.g. 15, 30, 45); kept 0"),
-    (lambda doc: master_board.create(doc, 1000, 600, 12), "Width", float("inf"),  # from a script: issue 35
+    (lambda doc: master_board.create(doc, 1000, 600, 12), "Width", float("inf"),  # from a script
      "Master board 'MasterBoard': Width must be a finite number; kept 1"),
     (lambda doc: layout.create(doc, *shelf_unit(doc)), "TimeLimit", float("nan"),
      "Layout 'Layout': TimeLimit must be a finite number; kept"),
@@ -455,7 +455,7 @@ HOSTILE_LABELS = ["line\nbreak", "bell\u0007 del\u007f", 'quote " & <tag>', "com
 
 
 def test_export_of_hostile_labels_gives_files_real_parsers_read_inside_the_folder(doc, tmp_path):
-    """Issue 35, the FreeCAD exports: boards and a layout labelled as users and scripts label them export files
+    """The FreeCAD exports: boards and a layout labelled as users and scripts label them export files
     that XML, DXF and CSV parsers read, named inside the folder given."""
     import csv
     import ezdxf

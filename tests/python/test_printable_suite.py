@@ -1,4 +1,4 @@
-"""The product suite of tests/data/printable (issue 15): products drawn as designers draw them, not from the
+"""The product suite of tests/data/printable: products drawn as designers draw them, not from the
 thesis, each printed in place fitted to a desktop printer (250 x 210 x 210 mm). Judged by what the run wrote
 (report.json: every body valid and in one piece, the least clearance at 32 poses of every motion at least the
 gap, the size inside the build volume) and by admesh reading the STL closed, not by the words it printed.

@@ -1,4 +1,4 @@
-"""Sheets first, against known answers (issue 32): generated designs of 50-100 boards in two thicknesses whose
+"""Sheets first, against known answers: generated designs of 50-100 boards in two thicknesses whose
 least design is known to fit on fewer sheets than the boards as drawn (tests/gen/savable_designs.py, with the
 layout that shows it, checked here). `fabguide optimise` must save those sheets, every suggestion passing the
 independent checker, and its area bound must never claim more sheets than the known layout takes.

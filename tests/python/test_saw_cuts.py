@@ -1,4 +1,4 @@
-"""Guillotine layouts for a saw (issue 31) on shop cut lists generated from seeds (tests/gen/cutlists.py: kitchens
+"""Guillotine layouts for a saw on shop cut lists generated from seeds (tests/gen/cutlists.py: kitchens
 and wardrobes, two materials, grain on the fronts), with kerf, trim, spacing, stages and the first cut's direction
 varied per seed; every layout judged by the independent saw checker (tests/gen/saw_checker.py), which is itself
 shown to reject spoiled layouts. The search is bounded by work (--iterations), not by time."""

@@ -1,4 +1,4 @@
-"""Translations (issue 34): every user-visible string of the workbench goes through translate() or is marked with
+"""Translations: every user-visible string of the workbench goes through translate() or is marked with
 QT_TRANSLATE_NOOP; Resources/translations/FabGuide.ts lists exactly what the code and the panels' .ui files mark
 (`make translations` updates it); each FabGuide_<language>.qm is compiled from its .ts; the German translation
 covers every command, drop-down button, toolbar and menu."""

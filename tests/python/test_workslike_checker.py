@@ -368,7 +368,7 @@ def test_a_slide_through_a_wall_is_a_problem_on_the_way():
 
 def test_print_in_place_cuts_the_room_a_fit_inside_sweeps_and_no_more():
     """A fit inside the enclosing part's box (no cavity): the print cuts what the inner parts sweep on the way
-    to the fit's configuration (issue 30). Measured in 'away', the tray's way out through the wall is cut;
+    to the fit's configuration. Measured in 'away', the tray's way out through the wall is cut;
     measured as modelled, only the tray's place is, and its way out through the wall is a collision."""
     m = cabinet_with_drawer()
     m["joints"] = [{"name": "drawer slide", "type": "slide", "part": "drawer", "axis": "x"}]

@@ -58,7 +58,7 @@ def driven_by_expressions(box):
 
 
 def why_none(result):
-    """Why no variation saved a sheet, as the core knows it (issue 32: a layout attempt is not said as a proof)."""
+    """Why no variation saved a sheet, as the core knows it (a layout attempt is not said as a proof)."""
     why = result.get("no_sheet_saved", "")
     if why == "area":
         return translate("FabGuide", "; with every board as small as they allow, their area alone needs {} "

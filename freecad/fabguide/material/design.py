@@ -184,8 +184,8 @@ def add_constraint(design, kind, label=None, named=None, **values):
 
 
 def keep_drawn_equal(design):
-    """Equal constraints on the design's boards drawn the same size (posts, legs, rails), as the core infers them
-    (issue 32): the search no longer grows one leg of four; the user sees them in the design and deletes one to
+    """Equal constraints on the design's boards drawn the same size (posts, legs, rails), as the core infers them:
+    the search no longer grows one leg of four; the user sees them in the design and deletes one to
     free its boards."""
     return [add_constraint(design, "equal", c["name"], Refs=c["refs"])
             for c in fabguide_core.drawn_equal(flatpack(design))]
