@@ -310,8 +310,8 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
             Printable other;
             try {
                 other = makePrintable(m, printer, places);
-            } catch (const std::invalid_argument&) {
-                continue;  // no room there (a hinge's half too short for its round parts)
+            } catch (const NoRoom&) {
+                continue;  // another place may have room
             }
             const Check checked = check(m, other, g, samples);
             if (checked.clearance > c.clearance) {

@@ -371,8 +371,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     if (slim) {
         const double least = leastOuter(g);
         if (r.outer <= least)
-            throw std::invalid_argument("joint '" + joint.name +
-                                        "': its round parts are as thin as they print");
+            throw NoRoom("joint '" + joint.name + "': its round parts are as thin as they print");
         r = sized(2 * std::max(least, 0.75 * r.outer), g);
         std::ostringstream note;
         note.precision(2);
@@ -397,19 +396,18 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
             else
                 lo = std::max(lo, mid + g / 2);
             if (hi - lo < 4 * (r.outer + g))
-                throw std::invalid_argument(
-                    "joint '" + joint.name + "': no room for its pin and yokes beside joint '" +
-                    m.joints[k].name + "': their axes are " + function::millimetres(near) +
-                    " mm apart as printed and share " + function::millimetres(2 * (hi - lo)) +
-                    " mm along them: move the parts apart, or print larger");
+                throw NoRoom("joint '" + joint.name + "': no room for its pin and yokes beside joint '" +
+                             m.joints[k].name + "': their axes are " + function::millimetres(near) +
+                             " mm apart as printed and share " + function::millimetres(2 * (hi - lo)) +
+                             " mm along them: move the parts apart, or print larger");
             beside = {k, near};
         }
     }
     // Its place: along the whole length, or its middle, first or second half.
     const double half = (hi - lo) / 2;
     if (place > 0 && half < 4 * (r.outer + g))
-        throw std::invalid_argument("joint '" + joint.name +
-                                    "': its edge is too short for its round parts in half " + "its length");
+        throw NoRoom("joint '" + joint.name + "': its edge is too short for its round parts in half " +
+                     "its length");
     if (place == 1)
         lo += half / 2, hi -= half / 2;
     else if (place == 2)
@@ -568,13 +566,13 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const double width = at.high - at.low,
                  centre = std::clamp((at.low + at.high) / 2, centres(h).first, centres(h).second);
     if (h < 2 * g || !fits(h) || to - from < 4 * h)
-        throw std::invalid_argument(
-            "joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
-            m.cuboids[at.base].name + "' over " + function::millimetres(width) + " x " +
-            function::millimetres(to - from) + " mm of material, too little for rails " +
-            function::millimetres(h) + " mm deep at a " + function::millimetres(g) + " mm gap (they need " +
-            function::millimetres(6 * g) + " x " + function::millimetres(8 * g) + " mm, and parts " +
-            function::millimetres(5 * g) + " mm thick): widen the contact, or print larger");
+        throw NoRoom("joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
+                     m.cuboids[at.base].name + "' over " + function::millimetres(width) + " x " +
+                     function::millimetres(to - from) + " mm of material, too little for rails " +
+                     function::millimetres(h) + " mm deep at a " + function::millimetres(g) +
+                     " mm gap (they need " + function::millimetres(6 * g) + " x " +
+                     function::millimetres(8 * g) + " mm, and parts " + function::millimetres(5 * g) +
+                     " mm thick): widen the contact, or print larger");
     // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
     // groove's is the same offset outwards by the gap, edge by edge.
     auto tongue = [&](double grow, double start, double length) {

@@ -7,7 +7,16 @@
 
 #include <gp_Ax1.hxx>
 
+#include <stdexcept>
+
 namespace fabguide::printable {
+
+/// A joint's geometry has no room at the place asked for (a half of the edge too short for the hinge's round
+/// parts, round parts too thin to slim, its yokes beside another joint's, rails over too little material):
+/// another place may have it. Checks tries the others; elsewhere it is said as any invalid_argument.
+struct NoRoom : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
 
 /// A double pivot's link body: "<joint> link" (the joint's name alone when it already ends in "link").
 std::string linkName(const Joint& joint);
