@@ -220,7 +220,7 @@ CorrectedChange correctChange(const Design& design, const Eigen::VectorXd& X, co
         if (added == 0 || deadline.passed()) {
             for (const DesignConstraint& c : held)
                 best.limits.push_back(c.name);
-            for (const std::string& name : broken.empty() ? ineffective(design, atR) : broken)
+            for (const std::string& name : broken.empty() ? said(ineffective(design, atR)) : broken)
                 if (!isHeld(name))
                     best.limits.push_back(name);
             return best;

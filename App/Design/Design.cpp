@@ -128,18 +128,18 @@ bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, do
 
 namespace {
 
-/// E(X) of thesis 5.3.5.1 term by term: calls broken(name) for each effectiveness constraint X breaks, until
-/// it returns false.
+/// E(X) of thesis 5.3.5.1 term by term: calls broken(Ineffective) for each effectiveness constraint X
+/// breaks, until it returns false.
 template <typename Broken>
 void visitBroken(const Design& design, const Eigen::VectorXd& X, Broken&& broken)
 {
     for (const DesignConstraint& bound : design.bounds)
-        if (bound.expression.value(X) > 1e-7 && !broken(bound.name))
+        if (bound.expression.value(X) > 1e-7 && !broken(Ineffective{bound.name, ""}))
             return;
     for (const InnerVolume& volume : design.innerVolumes)
         for (size_t b = 0; b < design.boards.size(); ++b)
             if (intrudes(volume, static_cast<int>(b), X) &&
-                !broken(volume.name + " (entered by " + design.boards[b].id + ")"))
+                !broken(Ineffective{volume.name, design.boards[b].id}))
                 return;
 }
 
@@ -148,18 +148,31 @@ void visitBroken(const Design& design, const Eigen::VectorXd& X, Broken&& broken
 bool effective(const Design& design, const Eigen::VectorXd& X)
 {
     bool holds = true;
-    visitBroken(design, X, [&](const std::string&) { return holds = false; });
+    visitBroken(design, X, [&](const Ineffective&) { return holds = false; });
     return holds;
 }
 
-std::vector<std::string> ineffective(const Design& design, const Eigen::VectorXd& X)
+std::string Ineffective::said() const
 {
-    std::vector<std::string> broken;
-    visitBroken(design, X, [&](std::string name) {
-        broken.push_back(std::move(name));
+    return enteredBy.empty() ? name : name + " (entered by " + enteredBy + ")";
+}
+
+std::vector<Ineffective> ineffective(const Design& design, const Eigen::VectorXd& X)
+{
+    std::vector<Ineffective> broken;
+    visitBroken(design, X, [&](Ineffective one) {
+        broken.push_back(std::move(one));
         return true;
     });
     return broken;
+}
+
+std::vector<std::string> said(const std::vector<Ineffective>& broken)
+{
+    std::vector<std::string> out;
+    for (const Ineffective& one : broken)
+        out.push_back(one.said());
+    return out;
 }
 
 std::vector<std::string> unsatisfied(const Design& design, const Eigen::VectorXd& X, double tolerance)

@@ -98,8 +98,17 @@ bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, do
 /// E(X) of thesis 5.3.5.1: every bound holds and no board enters an inner volume.
 bool effective(const Design& design, const Eigen::VectorXd& X);
 
-/// The effectiveness constraints X breaks, by name (empty when E(X) is true).
-std::vector<std::string> ineffective(const Design& design, const Eigen::VectorXd& X);
+/// An effectiveness constraint X breaks: a bound's name, or an inner volume's and the board entering it.
+struct Ineffective {
+    std::string name, enteredBy;
+    std::string said() const;  ///< "name", or "name (entered by board)"
+};
+
+/// The effectiveness constraints X breaks (empty when E(X) is true).
+std::vector<Ineffective> ineffective(const Design& design, const Eigen::VectorXd& X);
+
+/// Each one's said().
+std::vector<std::string> said(const std::vector<Ineffective>& broken);
 
 /// The design constraints X breaks by more than `tolerance` mm, by name.
 std::vector<std::string> unsatisfied(const Design& design, const Eigen::VectorXd& X, double tolerance = 1e-6);

@@ -425,16 +425,21 @@ constexpr double kSatisfied = 1e-4;
 void checkSatisfied(const Design& design)
 {
     const Eigen::VectorXd X = design.variables();
-    std::vector<std::string> broken = material::unsatisfied(design, X, kSatisfied);
-    for (const std::string& name : material::ineffective(design, X))
-        broken.push_back(name);
+    std::vector<std::string> broken = material::unsatisfied(design, X, kSatisfied), names = broken;
+    for (const material::Ineffective& one : material::ineffective(design, X)) {
+        broken.push_back(one.said());
+        if (std::find(names.begin(), names.end(), one.name) == names.end())
+            names.push_back(one.name);
+    }
     if (broken.empty())
         return;
-    std::string names;
+    std::string listed;
     for (size_t k = 0; k < broken.size() && k < 5; ++k)
-        names += (k ? "; " : "") + broken[k];
-    throw ConstraintError("the design does not satisfy its own constraints: " + names +
-                          (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""));
+        listed += (k ? "; " : "") + broken[k];
+    throw ConstraintError(
+        "the design does not satisfy its own constraints: " + listed +
+            (broken.size() > 5 ? "; and " + std::to_string(broken.size() - 5) + " more" : ""),
+        std::move(names));
 }
 
 }  // namespace

@@ -37,10 +37,15 @@ struct FlatpackDesign {
 /// held to it: the user's own edits and the files read are not.
 material::Design forSuggestions(const FlatpackDesign& f);
 
-/// A design that does not satisfy its own constraints (the message names them): a FormatError the caller may
-/// answer by moving the boards (thesis 5.3.5.2).
+/// A design that does not satisfy its own constraints (the message names them, and `names` lists every one,
+/// constraints and inner volumes by their own names): a FormatError the caller may answer by moving the
+/// boards (thesis 5.3.5.2).
 struct ConstraintError : FormatError {
-    using FormatError::FormatError;
+    ConstraintError(const std::string& message, std::vector<std::string> broken)
+        : FormatError(message), names(std::move(broken))
+    {
+    }
+    std::vector<std::string> names;
 };
 
 /// Whether a design read must already satisfy its constraints.

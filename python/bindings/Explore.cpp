@@ -148,7 +148,7 @@ py::object satisfyDesign(const py::object& document)
     }
     const Eigen::VectorXd Y = d ? Eigen::VectorXd(X + *d) : X;
     if (d)
-        broken = material::ineffective(f.design, Y);
+        broken = material::said(material::ineffective(f.design, Y));
     return fromJson({{"solved", broken.empty()}, {"parts", io::partsAt(f.design, Y)}, {"broken", broken}});
 }
 

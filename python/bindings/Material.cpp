@@ -157,24 +157,27 @@ std::vector<std::string> reportSvgs(const py::object& problemDict, const py::obj
     return io::reportSvgs(layout, problem, title);
 }
 
-/// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names.
+/// FormatError (a ValueError) and its ConstraintError, each carrying `field`, the path of the field it names,
+/// and `names`, the constraints and inner volumes a ConstraintError is about (empty for any other).
 void bindFormatErrors(py::module_& m)
 {
     static const py::exception<io::FormatError> formatError(m, "FormatError", PyExc_ValueError);
     static const py::exception<io::ConstraintError> constraintError(m, "ConstraintError", formatError.ptr());
     py::register_exception_translator([](std::exception_ptr thrown) {
-        const auto raise = [](const py::object& type, const io::FormatError& error) {
+        const auto raise = [](const py::object& type, const io::FormatError& error,
+                              const std::vector<std::string>& names) {
             py::object raised = type(error.what());
             raised.attr("field") = error.field();
+            raised.attr("names") = py::cast(names);
             PyErr_SetObject(type.ptr(), raised.ptr());
         };
         try {
             if (thrown)
                 std::rethrow_exception(thrown);
         } catch (const io::ConstraintError& error) {
-            raise(constraintError, error);
+            raise(constraintError, error, error.names);
         } catch (const io::FormatError& error) {
-            raise(formatError, error);
+            raise(formatError, error, {});
         }
     });
 }

@@ -153,6 +153,12 @@ TEST(CorrectionTest, TheFormatNamesWhatItCannotRead)
         "snap, range)");
     EXPECT_EQ(error({{{"kind", "fixed"}, {"ref", "top.size.x"}, {"value", 650}, {"name", "top 650"}}}),
               "the design does not satisfy its own constraints: top 650");
+    try {
+        table({{{"kind", "fixed"}, {"ref", "top.size.x"}, {"value", 650}, {"name", "top 650"}}});
+        ADD_FAILURE() << "no ConstraintError";
+    } catch (const io::ConstraintError& e) {
+        EXPECT_EQ(e.names, std::vector<std::string>{"top 650"});
+    }
     EXPECT_EQ(error({{{"kind", "snap"}, {"parts", {"shelf", "top"}}}}),
               "constraints[0]: shelf and top do not touch");
     try {
@@ -161,5 +167,13 @@ TEST(CorrectionTest, TheFormatNamesWhatItCannotRead)
         ADD_FAILURE() << "a negative inner volume read";
     } catch (const io::FormatError& e) {
         EXPECT_STREQ(e.what(), "inner_volumes[0].size: every side must be longer than 0");
+    }
+    try {  // the top enters the books' space: the message says by what, `names` the volume's own name
+        table(nlohmann::json::array(),
+              {{{"name", "books"}, {"on", "shelf"}, {"position", {20, 60, 162}}, {"size", {100, 200, 300}}}});
+        ADD_FAILURE() << "no ConstraintError";
+    } catch (const io::ConstraintError& e) {
+        EXPECT_STREQ(e.what(), "the design does not satisfy its own constraints: books (entered by top)");
+        EXPECT_EQ(e.names, std::vector<std::string>{"books"});
     }
 }

@@ -32,7 +32,7 @@ double area(const DesignSpace& design, const Eigen::VectorXd& X)
 void expectValid(const Design& design, const Eigen::VectorXd& X)
 {
     EXPECT_TRUE(unsatisfied(design, X).empty()) << unsatisfied(design, X).front();
-    EXPECT_TRUE(ineffective(design, X).empty()) << ineffective(design, X).front();
+    EXPECT_TRUE(ineffective(design, X).empty()) << ineffective(design, X).front().said();
 }
 
 }  // namespace

@@ -312,11 +312,15 @@ def test_a_new_constraint_that_does_not_hold_moves_the_boards_the_least(doc):
     design.add_constraint(obj, "fixed", "b is 340", Refs=["b.size.x"], Value=340)
     doc.recompute()
     assert obj.Error and obj.Status.startswith("Constraints broken:")
-    with pytest.raises(fabguide_core.ConstraintError, match="does not satisfy its own constraints: a is 300"):
+    marked = {c.Label: c.Status.startswith("Broken") for c in obj.Group if design.is_constraint(c)}
+    assert marked == {"same length": False, "a is 300": True, "b is 340": False}, marked
+    with pytest.raises(fabguide_core.ConstraintError, match="does not satisfy its own constraints: a is 300") as broken:
         fabguide_core.lay_out_design(design.flatpack(obj))  # a FormatError of its own kind, told apart by type
+    assert broken.value.names == ["a is 300"]  # what it is about, read as an attribute, not from the words
     with pytest.raises(fabguide_core.FormatError) as raised:
         fabguide_core.lay_out_design(dict(design.flatpack(obj), constraints=[{"name": "x", "type": "fixed"}]))
     assert raised.value.field.startswith("constraints[0].")
+    assert raised.value.names == []
 
 
 def test_boards_drawn_equal_get_equal_constraints_an_edit_carries_and_a_deletion_frees(doc):

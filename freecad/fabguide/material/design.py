@@ -354,7 +354,7 @@ def recompute(obj):
         laid, note = lay_out_satisfied(obj, edited, note)
     except fabguide_core.FormatError as error:
         said = messages.in_words(str(error), edited, messages.FLATPACK)
-        mark_constraints(obj, said)
+        mark_constraints(obj, said, concerned(error, edited))
         obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
                       else "Design '" + obj.Label + "': {}").format(said)
         raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
@@ -436,13 +436,25 @@ def absorb(obj, edited, start):
     return laid, "; edit absorbed: " + ", ".join(absorbed["snapped"])
 
 
-def mark_constraints(obj, error):
-    """Each constraint and volume named in `error` shows it; the others are satisfied."""
+def mark_constraints(obj, said, names=()):
+    """The constraints and volumes named in `names` show `said`; the others are satisfied."""
     for c in obj.Group:
         if is_constraint(c) or is_volume(c):
-            status = "Broken: " + error if c.Label in error else SATISFIED
+            status = "Broken: " + said if c.Label in names else SATISFIED
             if c.Status != status:
                 c.Status = status
+
+
+def concerned(error, edited):
+    """The names of the constraints and inner volumes the core's FormatError `error` is about: a ConstraintError's
+    own, or the one whose field it names (constraints[2].refs[0], inner_volumes[0].size)."""
+    names = set(error.names)
+    steps = messages.STEP.findall(error.field)
+    if steps and steps[0][0] in ("constraints", "inner_volumes") and steps[0][1]:
+        listed = edited.get(steps[0][0], [])
+        if int(steps[0][1]) < len(listed):
+            names.add(listed[int(steps[0][1])].get("name"))
+    return names
 
 
 def write_parts(obj, parts, start=None):
