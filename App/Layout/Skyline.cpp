@@ -14,7 +14,7 @@ namespace fabguide::material {
 
 namespace {
 
-constexpr double kHair = 1e-6;  // mm: what counts as the same height or width
+constexpr double kSameSize = 1e-6;  // mm: what counts as the same height or width
 // Candidates a node keeps for its backtracking: about one node in 4,000 tries more on the benchmark's largest
 // strips, and a strip of thousands of units would otherwise hold thousands at each of its thousands of levels
 // (3,000 rectangles: 259 MB, now 40 MB).
@@ -51,7 +51,8 @@ std::vector<Kind> kindsOf(const PackProblem& problem, double clearance)
             return {};  // a part that lies no square way on the strip: Docking's to place
         std::vector<std::pair<double, double>> sizes;
         for (const Pose& pose : poses)
-            sizes.emplace_back(std::round(pose.w / kHair) * kHair, std::round(pose.h / kHair) * kHair);
+            sizes.emplace_back(std::round(pose.w / kSameSize) * kSameSize,
+                               std::round(pose.h / kSameSize) * kSameSize);
         std::sort(sizes.begin(), sizes.end());
         const auto [at, added] = index.emplace(sizes, kinds.size());
         if (added)
@@ -161,11 +162,12 @@ private:
                 continue;
             for (size_t p = 0; p < kinds_[k].poses.size(); ++p) {
                 const Pose& pose = kinds_[k].poses[p];
-                if (pose.w > s.w + kHair || s.y + pose.h > height_ + kHair)
+                if (pose.w > s.w + kSameSize || s.y + pose.h > height_ + kSameSize)
                     continue;
-                const bool exact = pose.w > s.w - kHair;
+                const bool exact = pose.w > s.w - kSameSize;
                 const double top = s.y + pose.h;
-                const bool level = std::abs(top - near) < kHair || (exact && std::abs(top - far) < kHair);
+                const bool level =
+                    std::abs(top - near) < kSameSize || (exact && std::abs(top - far) < kSameSize);
                 const double score = scores_[k][p] * (shuffled_ ? jitter(random_) : 1.0);
                 found.push_back({{!level, !exact, -score}, static_cast<int>(k), static_cast<int>(p)});
             }
@@ -199,11 +201,11 @@ private:
     /// Merges segment `at` with its neighbours of the same height.
     void merge(size_t at)
     {
-        if (at + 1 < skyline_.size() && std::abs(skyline_[at + 1].y - skyline_[at].y) < kHair) {
+        if (at + 1 < skyline_.size() && std::abs(skyline_[at + 1].y - skyline_[at].y) < kSameSize) {
             skyline_[at].w += skyline_[at + 1].w;
             skyline_.erase(skyline_.begin() + static_cast<long>(at) + 1);
         }
-        if (at > 0 && std::abs(skyline_[at - 1].y - skyline_[at].y) < kHair) {
+        if (at > 0 && std::abs(skyline_[at - 1].y - skyline_[at].y) < kSameSize) {
             skyline_[at - 1].w += skyline_[at].w;
             skyline_.erase(skyline_.begin() + static_cast<long>(at));
         }
@@ -217,7 +219,7 @@ private:
         const Segment unit{right ? s.x + s.w - pose.w : s.x, pose.w, s.y + pose.h};
         puts_.push_back({c.kind, c.pose, unit.x, s.y});
         take(c.kind, 1);
-        if (pose.w > s.w - kHair) {
+        if (pose.w > s.w - kSameSize) {
             skyline_[at] = {s.x, s.w, unit.y};
         } else if (right) {
             skyline_[at].w -= pose.w;
@@ -236,8 +238,8 @@ private:
         const auto fits = [&](const Pose& pose) {
             double run = 0;
             for (const Segment& s : skyline_) {
-                run = s.y + pose.h <= height_ + kHair ? run + s.w : 0;
-                if (run >= pose.w - kHair)
+                run = s.y + pose.h <= height_ + kSameSize ? run + s.w : 0;
+                if (run >= pose.w - kSameSize)
                     return true;
             }
             return false;
@@ -328,11 +330,11 @@ private:
     {
         if (unitsLeft_ == 0)
             return true;
-        if (outOfWork() || wasteInValleys() > wasteLeft_ + kHair || !roomForTallest())
+        if (outOfWork() || wasteInValleys() > wasteLeft_ + kSameSize || !roomForTallest())
             return false;
         const auto lowest =
             std::min_element(skyline_.begin(), skyline_.end(),
-                             [](const Segment& a, const Segment& b) { return a.y < b.y - kHair; });
+                             [](const Segment& a, const Segment& b) { return a.y < b.y - kSameSize; });
         const size_t at = static_cast<size_t>(lowest - skyline_.begin());
         const std::vector<Segment> before = skyline_;
         for (std::vector<Candidate> found = candidates(at); !found.empty(); found.pop_back()) {
@@ -350,7 +352,7 @@ private:
         // Left as waste: the gap raised to its lower neighbour.
         const auto [left, right] = neighbours(at);
         const double level = std::min(left, right), waste = skyline_[at].w * (level - skyline_[at].y);
-        if (level == HUGE_VAL || waste > wasteLeft_ + kHair)
+        if (level == HUGE_VAL || waste > wasteLeft_ + kSameSize)
             return false;
         wasteLeft_ -= waste;
         skyline_[at].y = level;
@@ -404,19 +406,19 @@ std::vector<Segment> skylineOf(const std::vector<Put>& puts, const std::vector<K
         std::vector<Segment> raised;
         for (const Segment& s : skyline) {
             const double a = std::max(s.x, x0), b = std::min(s.x + s.w, x1);
-            if (b <= a + kHair || s.y >= top) {
+            if (b <= a + kSameSize || s.y >= top) {
                 raised.push_back(s);
                 continue;
             }
-            if (a > s.x + kHair)
+            if (a > s.x + kSameSize)
                 raised.push_back({s.x, a - s.x, s.y});
             raised.push_back({a, b - a, top});
-            if (s.x + s.w > b + kHair)
+            if (s.x + s.w > b + kSameSize)
                 raised.push_back({b, s.x + s.w - b, s.y});
         }
         skyline.clear();
         for (const Segment& s : raised)
-            if (!skyline.empty() && std::abs(skyline.back().y - s.y) < kHair)
+            if (!skyline.empty() && std::abs(skyline.back().y - s.y) < kSameSize)
                 skyline.back().w += s.w;
             else
                 skyline.push_back(s);
@@ -438,7 +440,7 @@ Layout layoutOf(const PackProblem& problem, std::vector<Kind> kinds, const std::
         const int part = kind.parts[static_cast<size_t>(--kind.left)];
         int rotation = 0;  // parts of a kind lie alike, each turned its own way to do so
         for (const Pose& own : posesOn(problem.parts[part], problem.boards[0], clearance))
-            if (std::abs(own.w - pose.w) < kHair && std::abs(own.h - pose.h) < kHair)
+            if (std::abs(own.w - pose.w) < kSameSize && std::abs(own.h - pose.h) < kSameSize)
                 rotation = own.rotation;
         layout.placements.push_back(
             {part, 0, s.trim + put.x, s.trim + put.y, rotation, pose.w - clearance, pose.h - clearance});
@@ -456,7 +458,7 @@ Layout layoutOf(const PackProblem& problem, std::vector<Kind> kinds, const std::
 /// Whether the strip's width and every size are whole numbers (of millimetres).
 bool allWhole(const std::vector<Kind>& kinds, double width)
 {
-    const auto whole = [](double v) { return std::abs(v - std::round(v)) < kHair; };
+    const auto whole = [](double v) { return std::abs(v - std::round(v)) < kSameSize; };
     bool all = whole(width);
     for (const Kind& kind : kinds)
         for (const Pose& pose : kind.poses)
@@ -484,7 +486,7 @@ Strip stripOf(const PackProblem& problem)
     for (const Kind& kind : strip.kinds) {
         double lowest = HUGE_VAL;
         for (const Pose& pose : kind.poses)
-            if (pose.w <= strip.width + kHair)
+            if (pose.w <= strip.width + kSameSize)
                 lowest = std::min(lowest, pose.h);
         strip.area += kind.area * kind.left;
         strip.units += kind.left;
@@ -492,7 +494,8 @@ Strip stripOf(const PackProblem& problem)
     }
     strip.whole = allWhole(strip.kinds, strip.width);
     strip.step = strip.whole ? 1.0 : s.resolution;
-    strip.least = std::ceil(std::max(strip.area / strip.width, tallest) / strip.step - kHair) * strip.step;
+    strip.least =
+        std::ceil(std::max(strip.area / strip.width, tallest) / strip.step - kSameSize) * strip.step;
     return strip;
 }
 
@@ -547,7 +550,7 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
     // Greedily (no height, waste as it comes: one node a unit or a gap, past the budget and deadline); then a
     // short search at heights bisected between the lower bound and the lowest strip found.
     tried(HUGE_VAL, 0, static_cast<long>(2 * strip.units) + 1, std::nullopt);
-    for (double low = least; ceiling - low > step + kHair && left();) {
+    for (double low = least; ceiling - low > step + kSameSize && left();) {
         const double height = std::floor((low + ceiling) / 2 / step) * step;
         if (!tried(height, 0, nodesFor(strip.units), std::nullopt))
             low = height;
@@ -555,14 +558,14 @@ std::optional<Layout> skylineStrip(const PackProblem& problem, const SkylineBudg
     // Then rounds just below the lowest strip found. Five in six keep a random number of its first units,
     // up to all that lie below the target, and search the rest again: from its top to the whole strip. The
     // sixth starts afresh, every fourth of those at the lower bound.
-    for (long round = 1; least < ceiling - kHair && left(); ++round) {
+    for (long round = 1; least < ceiling - kSameSize && left(); ++round) {
         const double target = std::max(least, ceiling - step);
         if (round % 6 == 0) {
             tried(round % 24 == 0 ? least : target, 0, nodesFor(strip.units), random());
             continue;
         }
         size_t below = 0;
-        while (below < best.size() && topOf(best[below], strip.kinds) <= target + kHair)
+        while (below < best.size() && topOf(best[below], strip.kinds) <= target + kSameSize)
             ++below;
         const size_t kept = std::uniform_int_distribution<size_t>(0, below)(random);
         tried(target, kept, nodesFor(static_cast<double>(best.size() - kept)), random());
