@@ -171,10 +171,10 @@ class ConfigurationsPanel:
         return True
 
     def close(self):
-        self.cleanup()
+        self.abandon()
         editing.close_panel(self.mech.Document)
 
-    def cleanup(self):
+    def abandon(self):
         """Stops the animation and removes the preview from the 3-D view (idempotent)."""
         self.timer.stop()
         self.poser.clear()

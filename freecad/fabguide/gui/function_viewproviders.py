@@ -1,7 +1,5 @@
 """View providers of the works-like objects: icons, parts holding their boxes in the tree, joint axes drawn
 in the 3-D view, conflicting parts shown in red, and the task panels opened by double-click."""
-import FreeCADGui
-
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import configuration, joints, mechanism, parts, printable, relationships
 from freecad.fabguide.gui import editing
@@ -24,21 +22,10 @@ class ViewProviderMechanism(EditedByDoubleClick, ViewProvider):
                 if j.ViewObject and hasattr(j.ViewObject.Proxy, "redraw"):
                     j.ViewObject.Proxy.redraw()
 
-    def setEdit(self, vobj, mode=0):
+    def panel_for(self, obj):
         from freecad.fabguide.gui.configurations_panel import ConfigurationsPanel
 
-        panel = editing.show(lambda: ConfigurationsPanel(vobj.Object), vobj.Object.Document)
-        if panel is None:  # another panel is open: it stays the one shown
-            return False
-        self.panel = panel
-        return True
-
-    def unsetEdit(self, vobj, mode=0):
-        if getattr(self, "panel", None) is not None:
-            self.panel.cleanup()  # also when edit mode ends without OK or Cancel
-            self.panel = None
-        FreeCADGui.Control.closeDialog()
-        return True
+        return ConfigurationsPanel(obj)
 
 
 class ViewProviderPart(ViewProvider):

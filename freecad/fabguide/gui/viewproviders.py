@@ -35,10 +35,26 @@ class ViewProvider(properties.Stateless):
 
 
 class EditedByDoubleClick:
-    """Mixin for view providers whose setEdit opens a task panel."""
+    """Mixin for view providers whose double-click opens their task panel, made by `panel_for(obj)`: one panel at a
+    time, and its work (a pending layout, an animation and its preview) abandoned when edit mode ends, however it
+    ends."""
 
     def doubleClicked(self, vobj):
         editing.edit(vobj.Object)
+        return True
+
+    def setEdit(self, vobj, mode=0):
+        panel = editing.show(lambda: self.panel_for(vobj.Object), vobj.Object.Document)
+        if panel is None:  # another panel is open: it stays the one shown
+            return False
+        self.panel = panel
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        if getattr(self, "panel", None) is not None:
+            self.panel.abandon()  # also when edit mode ends without OK or Cancel
+            self.panel = None
+        FreeCADGui.Control.closeDialog()
         return True
 
 
@@ -69,21 +85,10 @@ class ViewProviderLayout(EditedByDoubleClick, ViewProvider):
 
             QtCore.QTimer.singleShot(0, lambda: colour_layout(obj))
 
-    def setEdit(self, vobj, mode=0):
+    def panel_for(self, obj):
         from freecad.fabguide.gui.layout_panel import LayoutPanel
 
-        panel = editing.show(lambda: LayoutPanel(vobj.Object), vobj.Object.Document)
-        if panel is None:  # another panel is open: it stays the one shown
-            return False
-        self.panel = panel
-        return True
-
-    def unsetEdit(self, vobj, mode=0):
-        if getattr(self, "panel", None) is not None:
-            self.panel.abandon()  # also when edit mode ends without OK or Cancel: no layout after the pause
-            self.panel = None
-        FreeCADGui.Control.closeDialog()
-        return True
+        return LayoutPanel(obj)
 
 
 def colour_layout(obj):
