@@ -309,117 +309,112 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
-        <source>Shortest side a board may shrink to</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="49"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="50"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="53"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="54"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="56"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="57"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="60"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="61"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
         <source>Laid out, or what is wrong</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="65"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="66"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="71"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
         <source>The last layout and its problem (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
         <source>What must hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
         <source>Fixed value or sum offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="111"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="117"/>
         <source>Satisfied, or what breaks it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="134"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along x</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Size along z</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
         <source>Satisfied, or the boards that break it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="209"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="210"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
@@ -719,17 +714,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="100"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Right side of a sum</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -746,6 +741,11 @@
     <message>
         <location filename="../../freecad/fabguide/properties.py" line="38"/>
         <source>The FabGuide version that wrote this</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
+        <source>Shortest side a board may shrink to; 0: twice each board&apos;s own thickness, as a file without min_length</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1783,7 +1783,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="365"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="367"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1959,32 +1959,32 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="123"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="124"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="155"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="156"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="258"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="281"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="282"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="307"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="308"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="373"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2479,7 +2479,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="93"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="94"/>
         <source>Constraint</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2604,7 +2604,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="417"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="419"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2614,7 +2614,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="309"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="310"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -309,117 +309,112 @@
         <translation>Rand, der an jeder Kante der Rohplatte abgeschnitten wird</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
-        <source>Shortest side a board may shrink to</source>
-        <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf</translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="47"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="48"/>
         <source>Boards that touch stay touching (edge snapping)</source>
         <translation>Platten, die sich berühren, bleiben in Berührung (Kantenfang)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="49"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="50"/>
         <source>How many times its length now Suggest may make a board&apos;s side (1.5: half as long again), so a batten stays a batten; your own edits are not held</source>
         <translation>Wie viel Mal ihre jetzige Länge Vorschlagen die Seite einer Platte machen darf (1,5: um die Hälfte länger), damit eine Leiste eine Leiste bleibt; Ihre eigenen Änderungen sind nicht begrenzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="53"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="54"/>
         <source>A box you edit keeps its new size and place while the rest adapts to the constraints</source>
         <translation>Ein Quader, den Sie ändern, behält seine neue Größe und Lage, während sich der Rest den Vorgaben anpasst</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="56"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="57"/>
         <source>Spreadsheet aliases that drive the boxes by expressions, as &apos;Sheet.alias min max&apos; (thesis 5.4.2.2); when given, Suggest changes these instead of the boxes</source>
         <translation>Tabellen-Aliase, die die Quader über Ausdrücke steuern, als 'Sheet.alias min max' (Dissertation 5.4.2.2); sind sie angegeben, ändert Vorschlagen diese statt der Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="60"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="61"/>
         <source>Part area / layout bounding rectangle (thesis 5.2.3)</source>
         <translation>Teilefläche / umschließendes Rechteck des Layouts (Dissertation 5.2.3)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="63"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="64"/>
         <source>Laid out, or what is wrong</source>
         <translation>Ausgelegt, oder was nicht stimmt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="65"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="66"/>
         <source>What the last recompute or accepted suggestion that moved boards did: size old → new, how far</source>
         <translation>Was die letzte Neuberechnung oder der letzte übernommene Vorschlag, der Platten bewegte, getan hat: Größe alt → neu, wie weit</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="69"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="70"/>
         <source>Boards after the last valid recompute (JSON)</source>
         <translation>Platten nach der letzten gültigen Neuberechnung (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="71"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
         <source>The last layout and its problem (JSON)</source>
         <translation>Das letzte Layout und seine Aufgabe (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="97"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
         <source>What must hold</source>
         <translation>Was gelten muss</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
         <source>Fixed value or sum offset</source>
         <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="111"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="117"/>
         <source>Satisfied, or what breaks it</source>
         <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="134"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="137"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
         <source>Size along x</source>
         <translation>Größe entlang x</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along y</source>
         <translation>Größe entlang y</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Size along z</source>
         <translation>Größe entlang z</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
         <source>Satisfied, or the boards that break it</source>
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="209"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="210"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
@@ -719,17 +714,17 @@
         <translation>Das Layout, aus dem dies erstellt wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="100"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation>Quader und was von ihnen (size.x, centre.z, min.y, max.x): gleich, symmetrisch (zwei), Summe (linke Seite), fest und Bereich (einer)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="103"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
         <source>Right side of a sum</source>
         <translation>Rechte Seite einer Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="114"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation>Symmetrisch zu dieser Referenz (leer: jetzige Mitte)</translation>
     </message>
@@ -747,6 +742,11 @@
         <location filename="../../freecad/fabguide/properties.py" line="38"/>
         <source>The FabGuide version that wrote this</source>
         <translation>Die FabGuide-Version, die dies geschrieben hat</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="45"/>
+        <source>Shortest side a board may shrink to; 0: twice each board&apos;s own thickness, as a file without min_length</source>
+        <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf; 0: die doppelte Dicke jeder Platte, wie in einer Datei ohne min_length</translation>
     </message>
 </context>
 <context>
@@ -1793,7 +1793,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="365"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="367"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1970,32 +1970,32 @@ U/min</translation>
         <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="123"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="124"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="155"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="156"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="258"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="281"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="282"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="307"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="308"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="373"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2500,7 +2500,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="93"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="94"/>
         <source>Constraint</source>
         <translation>Vorgabe</translation>
     </message>
@@ -2625,7 +2625,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Die Körper von '{}' werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="417"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="419"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation>'{}' wird angeordnet</translation>
     </message>
@@ -2635,7 +2635,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>'{}' wird angeordnet ({} Platten)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="309"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="310"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation>keine Quader zum Anordnen (die Part-Quader des Möbels in den Entwurf ziehen)</translation>
     </message>

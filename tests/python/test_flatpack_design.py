@@ -233,6 +233,23 @@ def test_every_suite_design_exports_as_it_was_imported(doc, path):
         (b["width"], b["height"], b["thickness"]) for b in original["boards"]]
     for key, value in original.get("settings", {}).items():
         assert exported["settings"].get(key, value) == pytest.approx(value), key
+    assert exported["settings"]["min_length"] == original["settings"]["min_length"]
+
+
+def test_a_file_without_min_length_keeps_each_board_to_twice_its_own_thickness(doc, tmp_path):
+    """The format's default: FreeCAD's MinimumLength 0 stands for it (it had taken twice the first master board's
+    thickness for every board, so a 6 mm back could not shrink below 36 mm where the command line allows 12)."""
+    with open(SUITE[0]) as f:
+        original = json.load(f)
+    del original["settings"]["min_length"]
+    path = tmp_path / "design.flatpack.json"
+    path.write_text(json.dumps(original))
+    obj = design.from_file(doc, str(path))
+    assert obj.MinimumLength.Value == 0
+    exported = design.flatpack(obj)
+    assert "min_length" not in exported["settings"]
+    obj.MinimumLength = 50
+    assert design.flatpack(obj)["settings"]["min_length"] == 50
 
 
 def test_a_design_driven_by_spreadsheet_aliases_is_suggested_new_values(doc):

@@ -43,7 +43,8 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyLength", "Trim", "Layout",
             QT_TRANSLATE_NOOP("App::Property", "Margin cut off every master board edge"), 5)
         add(obj, "App::PropertyLength", "MinimumLength", "Design",
-            QT_TRANSLATE_NOOP("App::Property", "Shortest side a board may shrink to"), 60)
+            QT_TRANSLATE_NOOP("App::Property", "Shortest side a board may shrink to; 0: twice each board's own "
+                                               "thickness, as a file without min_length"), 60)
         add(obj, "App::PropertyBool", "Snap", "Design",
             QT_TRANSLATE_NOOP("App::Property", "Boards that touch stay touching (edge snapping)"), True)
         add(obj, "App::PropertyFloat", "MaxGrowth", "Design",
@@ -311,12 +312,13 @@ def flatpack(obj, parts=None):
         inner, outer = volume_dicts(obj)
         doc = {"format": "fabguide.flatpack", "version": 1,
                "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
-                            "trim": obj.Trim.Value, "min_length": obj.MinimumLength.Value, "snap": obj.Snap,
-                            "max_growth": obj.MaxGrowth},
+                            "trim": obj.Trim.Value, "snap": obj.Snap, "max_growth": obj.MaxGrowth},
                "boards": [master_board.as_problem_board(m) for m in obj.MasterBoards],
                "parts": parts if parts is not None else parts_of(obj),
                "constraints": [constraint_dict(c) for c in obj.Group if is_constraint(c)],
                "inner_volumes": inner}
+        if obj.MinimumLength.Value > 0:  # else the format's own: twice each board's thickness
+            doc["settings"]["min_length"] = obj.MinimumLength.Value
         order = layout_order(obj)
         if order:
             doc["layout_order"] = order
@@ -541,7 +543,7 @@ def from_file(doc, path, label=None):
     s = data.get("settings", {})
     obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
     obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
-    obj.MinimumLength, obj.Snap = s.get("min_length", 2 * data["boards"][0]["thickness"]), s.get("snap", True)
+    obj.MinimumLength, obj.Snap = s.get("min_length", 0), s.get("snap", True)
     obj.MaxGrowth = s.get("max_growth", 1.5)
     for c in data.get("constraints", []):
         values = {}
