@@ -2,6 +2,7 @@
 // take, the functional relationships the parts must satisfy, and the user's locked dimensions.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <utility>
@@ -98,6 +99,17 @@ struct JointPose {
     double angle = 0, offset = 0;
     std::array<double, 3> pole{};
 };
+
+/// Along the motion from the base configuration (t = 0) to a pose (t = 1) turns come first, slides second:
+/// the share of the pose's angle and of its offset reached at t (a pocket door swings open, then slides in).
+inline double turnedAt(double t)
+{
+    return std::min(1.0, 2 * t);
+}
+inline double slidAt(double t)
+{
+    return std::max(0.0, 2 * t - 1);
+}
 
 /// A configuration (thesis 4.1.2): the joints' poses in which a relationship must hold. Joints not
 /// mentioned stay as modelled (the base configuration).

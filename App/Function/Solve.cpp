@@ -734,8 +734,8 @@ Model motionSampled(Model model)
             Configuration on = model.configurations[k];
             on.along = k;
             for (JointPose& pose : on.poses) {
-                pose.angle *= std::min(1.0, 2 * t);
-                pose.offset *= std::max(0.0, 2 * t - 1);
+                pose.angle *= turnedAt(t);
+                pose.offset *= slidAt(t);
             }
             model.configurations.push_back(on);
         }

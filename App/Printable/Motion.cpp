@@ -31,16 +31,6 @@ gp_Trsf turn(const gp_Ax1& axis, double degrees)
     return t;
 }
 
-/// Turns happen in the first half of a motion, slides in the second.
-double turning(double t)
-{
-    return std::min(1.0, 2 * t);
-}
-double sliding(double t)
-{
-    return std::max(0.0, 2 * t - 1);
-}
-
 gp_Trsf shift(int axis, double by)
 {
     gp_Trsf t;
@@ -119,14 +109,14 @@ gp_Trsf jointMotion(const Model& model, int j, int configuration, double t)
     const Joint& joint = model.joints[j];
     switch (joint.type) {
         case Joint::Type::Hinge:
-            return turn(hingeAxis(model, joint), turning(t) * pose->angle);
+            return turn(hingeAxis(model, joint), function::turnedAt(t) * pose->angle);
         case Joint::Type::Slide:
-            return shift(joint.axis, sliding(t) * pose->offset);
+            return shift(joint.axis, function::slidAt(t) * pose->offset);
         case Joint::Type::SlidingHinge:
-            return shift(joint.axis, sliding(t) * pose->offset) *
-                   turn(hingeAxis(model, joint), turning(t) * pose->angle);
+            return shift(joint.axis, function::slidAt(t) * pose->offset) *
+                   turn(hingeAxis(model, joint), function::turnedAt(t) * pose->angle);
         case Joint::Type::DoublePivot: {
-            const FourBar f = fourBar(model, j, *pose, configuration, turning(t));
+            const FourBar f = fourBar(model, j, *pose, configuration, function::turnedAt(t));
             return turn(f.link, f.linkDegrees) * turn(f.part, f.partDegrees);
         }
         case Joint::Type::Fixed:  // no poses: it rides on its base
@@ -241,7 +231,7 @@ gp_Trsf linkMotion(const Model& model, int j, int configuration, double t)
     const Joint& joint = model.joints[j];
     gp_Trsf own;
     if (const JointPose* pose = poseOf(model, j, configuration)) {
-        const FourBar f = fourBar(model, j, *pose, configuration, turning(t));
+        const FourBar f = fourBar(model, j, *pose, configuration, function::turnedAt(t));
         own = turn(f.link, f.linkDegrees);
     }
     return partMotion(model, joint.base, configuration, t) * own;
