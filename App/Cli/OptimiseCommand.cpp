@@ -97,15 +97,9 @@ void run(const OptimiseArguments& args)
     const std::filesystem::path out(args.output);
     std::filesystem::create_directories(out);
     io::replaceSetOf((out / "summary.json").string());  // a suggestion not found again goes with the new set
-    nlohmann::json summary = {{"usage_before", exploration.usageBefore()},
-                              {"before", writeLayout(material, exploration.start, out, "before")},
-                              {"seconds", exploration.seconds},
-                              {"stopped", exploration.stopped},
-                              {"least_sheets", exploration.leastSheets},
-                              {"least_sheets_by_area", exploration.leastSheetsByArea},
-                              {"no_sheet_saved", material::nameOf(exploration.noSheetSaved())},
-                              {"not_reopened", exploration.notReopened},
-                              {"suggestions", nlohmann::json::array()}};
+    nlohmann::json summary = io::explorationFigures(exploration);
+    summary["before"] = writeLayout(material, exploration.start, out, "before");
+    summary["suggestions"] = nlohmann::json::array();
     const material::MaterialSpace::Figures& before = exploration.start.figures;
     std::printf("usage before  %.4f  (%zu parts)  %d sheets, waste %.3f m2\n", exploration.usageBefore(),
                 flatpack.design.boards.size(), before.sheets, before.waste);

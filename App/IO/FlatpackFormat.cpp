@@ -566,6 +566,17 @@ nlohmann::json withParts(nlohmann::json document, const Design& design, const Ei
     return document;
 }
 
+nlohmann::json explorationFigures(const material::Exploration& e)
+{
+    return {{"usage_before", e.usageBefore()},
+            {"seconds", e.seconds},
+            {"stopped", e.stopped},
+            {"least_sheets", e.leastSheets},
+            {"least_sheets_by_area", e.leastSheetsByArea},
+            {"no_sheet_saved", material::nameOf(e.noSheetSaved())},
+            {"not_reopened", e.notReopened}};
+}
+
 nlohmann::json measures(const material::DesignLayout& d)
 {
     return {{"usage", 1 - d.wastage},

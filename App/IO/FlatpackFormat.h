@@ -75,6 +75,11 @@ nlohmann::json withParts(nlohmann::json document, const material::Design& design
 /// "largest_offcut": [w, h] mm}.
 nlohmann::json measures(const material::DesignLayout& d);
 
+/// An exploration's figures, as `fabguide optimise`'s summary.json and the binding's result both give them:
+/// {"usage_before", "seconds", "stopped", "least_sheets", "least_sheets_by_area", "no_sheet_saved",
+/// "not_reopened"} (docs/formats.md).
+nlohmann::json explorationFigures(const material::Exploration& e);
+
 /// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage", "path":
 /// [{"usage", "parts"}] from the user's design to the suggestion, at most `steps` of them (evenly picked,
 /// first and last kept), and "layout_order": the part ids in the order its layout docked them (`material`'s

@@ -30,20 +30,16 @@ nlohmann::json layoutJson(const material::MaterialSpace& material, const materia
     return out;
 }
 
-/// An exploration as a dict: {usage_before, before, seconds, stopped, suggestions: [{usage, layout, problem,
-/// ...}]}, `describe` adding what a suggestion is in its design's own terms.
+/// An exploration as a dict: its figures as summary.json gives them (io::explorationFigures), "before" and
+/// "suggestions": [{usage, layout, problem, ...}], `describe` adding what a suggestion is in its design's own
+/// terms.
 template <typename Describe>
 nlohmann::json explorationJson(const material::MaterialSpace& material, const material::Exploration& e,
                                Describe&& describe)
 {
-    nlohmann::json out = {{"usage_before", e.usageBefore()},
-                          {"before", layoutJson(material, e.start)},
-                          {"seconds", e.seconds},
-                          {"stopped", e.stopped},
-                          {"least_sheets", e.leastSheets},
-                          {"least_sheets_by_area", e.leastSheetsByArea},
-                          {"no_sheet_saved", material::nameOf(e.noSheetSaved())},
-                          {"suggestions", nlohmann::json::array()}};
+    nlohmann::json out = io::explorationFigures(e);
+    out["before"] = layoutJson(material, e.start);
+    out["suggestions"] = nlohmann::json::array();
     for (const material::Suggestion& s : e.suggestions) {
         nlohmann::json entry = layoutJson(material, s.result);
         describe(s, entry);
@@ -224,13 +220,14 @@ void bindExplore(py::module_& m)
           "`seconds` (on to 10 s when a part is left over), or docked in its layout_order when that is "
           "better: {usage, layout, problem}. Raises FormatError naming a bad field or a broken constraint, "
           "PackingError naming a part that does not fit.");
-    m.def(
-        "optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
-        py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
-        py::arg("progress") = nullptr, py::arg("cancel") = nullptr,
-        "MINWASTAGE on a *.flatpack.json design dict: {usage_before, before, seconds, stopped, suggestions: "
-        "[{usage, layout, problem, design (with path)}]}. progress(fraction, best_usage) is called on this "
-        "thread; cancel is a CancelToken.");
+    m.def("optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
+          py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
+          py::arg("progress") = nullptr, py::arg("cancel") = nullptr,
+          "MINWASTAGE on a *.flatpack.json design dict: the figures of summary.json (usage_before, seconds, "
+          "stopped, least_sheets, least_sheets_by_area, no_sheet_saved, not_reopened), before, and "
+          "suggestions: "
+          "[{usage, layout, problem, design (with path)}]. progress(fraction, best_usage) is called on this "
+          "thread; cancel is a CancelToken.");
     m.def("correct_design", &correctDesign, py::arg("valid"), py::arg("edited"),
           "Keeps an edited design valid (thesis 5.3.5): valid is a design dict satisfying its constraints, "
           "edited "

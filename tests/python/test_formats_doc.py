@@ -60,3 +60,9 @@ def test_every_key_of_an_optimise_summary_is_in_formats_md(fabguide_cli, source_
     assert summary["suggestions"], "the coffee table has a suggestion to read the keys of"
     written = keys(summary)
     assert written - named(section(source_dir, "`*.flatpack.json`")) == set()
+    # The binding gives the same figures under the same names (one serialiser, io::explorationFigures).
+    from freecad.fabguide.core import fabguide_core
+
+    with open(os.path.join(source_dir, "examples", "coffee-table.flatpack.json"), encoding="utf-8") as f:
+        result = fabguide_core.optimise(json.load(f), time_limit=1, rounds=1)
+    assert set(result) == set(summary)
