@@ -296,16 +296,4 @@ Exploration::NoSheetSaved Exploration::noSheetSaved() const
     return leastSheetsByArea >= start.figures.sheets ? NoSheetSaved::ByArea : NoSheetSaved::LaidOut;
 }
 
-const char* nameOf(Exploration::NoSheetSaved why)
-{
-    switch (why) {
-        case Exploration::NoSheetSaved::ByArea:
-            return "area";
-        case Exploration::NoSheetSaved::LaidOut:
-            return "laid_out";
-        default:
-            return "";
-    }
-}
-
 }  // namespace fabguide::material

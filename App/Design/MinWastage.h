@@ -55,9 +55,6 @@ struct Exploration {
     NoSheetSaved noSheetSaved() const;
 };
 
-/// "" (Unknown), "area" or "laid_out": the summary's `no_sheet_saved`.
-const char* nameOf(Exploration::NoSheetSaved why);
-
 /// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
 /// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over), or docked in `order` (a
 /// part kind per unit, as a design file keeps its layout's order) when that is better. Throws PackingError

@@ -442,6 +442,19 @@ void checkSatisfied(const Design& design)
         std::move(names));
 }
 
+/// "" (Unknown), "area" or "laid_out": summary.json's `no_sheet_saved`.
+const char* nameOf(material::Exploration::NoSheetSaved why)
+{
+    switch (why) {
+        case material::Exploration::NoSheetSaved::ByArea:
+            return "area";
+        case material::Exploration::NoSheetSaved::LaidOut:
+            return "laid_out";
+        default:
+            return "";
+    }
+}
+
 }  // namespace
 
 std::optional<int> grainAxisNamed(const std::string& grain)
@@ -573,7 +586,7 @@ nlohmann::json explorationFigures(const material::Exploration& e)
             {"stopped", e.stopped},
             {"least_sheets", e.leastSheets},
             {"least_sheets_by_area", e.leastSheetsByArea},
-            {"no_sheet_saved", material::nameOf(e.noSheetSaved())},
+            {"no_sheet_saved", nameOf(e.noSheetSaved())},
             {"not_reopened", e.notReopened}};
 }
 

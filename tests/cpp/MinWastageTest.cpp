@@ -224,11 +224,11 @@ TEST(ExplorationTest, NoSheetSavedIsSaidOnlyFromABoundOrALayoutOfTheLeastDesign)
     e.leastSheets = 2;
     e.leastSheetsByArea = 2;
     EXPECT_EQ(e.noSheetSaved(), Why::Unknown);  // it saves a sheet
+    EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "");
     e.leastSheets = 3;
     EXPECT_EQ(e.noSheetSaved(), Why::LaidOut);  // one layout took 3, its area needs 2: not proved
+    EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "laid_out");
     e.leastSheetsByArea = 3;
     EXPECT_EQ(e.noSheetSaved(), Why::ByArea);
-    EXPECT_STREQ(nameOf(Why::ByArea), "area");
-    EXPECT_STREQ(nameOf(Why::LaidOut), "laid_out");
-    EXPECT_STREQ(nameOf(Why::Unknown), "");
+    EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "area");
 }
