@@ -1,12 +1,15 @@
 #include "Layout/Guillotine.h"
 
+#include "Layout/GuillotineBeam.h"
 #include "Layout/MaxRects.h"
 
 #include <algorithm>
+#include <deque>
 #include <iterator>
 #include <limits>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
@@ -55,12 +58,13 @@ struct Lead {
     Pose pose;
 };
 
-/// One sheet filled by slabs, stage by stage (Guillotine.h).
+/// One sheet filled by slabs, stage by stage (Guillotine.h), the units picked by the rules or taken from a
+/// beam search's steps for the sheet (`script`, its first step leading the first slab).
 class Filler {
 public:
     Filler(const PackProblem& problem, const std::vector<int>& order, const Fill& rules,
            const std::vector<std::vector<Pose>>& poses, const Piece& sheet, std::vector<int>& remaining,
-           Layout& layout)
+           Layout& layout, std::deque<SawStep>* script = nullptr)
         : problem_(problem),
           order_(order),
           rules_(rules),
@@ -68,6 +72,7 @@ public:
           sheet_(sheet),
           remaining_(remaining),
           layout_(layout),
+          script_(script),
           clearance_(problem.settings.kerf + problem.settings.spacing)
     {
     }
@@ -119,6 +124,8 @@ private:
     /// depth across best (the order breaking ties).
     std::optional<Lead> pick(const Piece& piece, int a, int stage, double room) const
     {
+        if (script_)
+            return scripted(stage);
         const int b = 1 - a;
         std::optional<Lead> best;
         std::tuple<double, int, double> bestKey{std::numeric_limits<double>::max(), 0, 0};
@@ -141,12 +148,18 @@ private:
         return best;
     }
 
-    /// Whether `size` fits in `room` leaving none of it or a strip a cut can take off: one wider than half
-    /// the clearance, so that the cut's middle stays on the board (no trim) or short of the piece's last cut.
-    bool leaves(double room, double size) const
+    /// The script's next step when it goes where a pick of `stage` puts its unit.
+    std::optional<Lead> scripted(int stage) const
     {
-        return size <= room + kHair && (size >= room - kHair || size < room - clearance_ / 2 - kHair);
+        constexpr Where kPicked[] = {Where::Slab, Where::Column, Where::After};  // by stage
+        if (script_->empty() || script_->front().where != kPicked[stage - 1])
+            return std::nullopt;
+        const Lead lead{script_->front().part, script_->front().pose};
+        script_->pop_front();
+        return lead;
     }
+
+    bool leaves(double room, double size) const { return leavesSawable(room, size, clearance_); }
 
     /// The last stage's slab holds its lead alone, at its start; a trim cut across parts it from the waste
     /// beyond it along `b`.
@@ -195,6 +208,7 @@ private:
     const Piece& sheet_;
     std::vector<int>& remaining_;
     Layout& layout_;
+    std::deque<SawStep>* script_;
     double clearance_;
 };
 
@@ -209,6 +223,35 @@ std::vector<SawCut> edgeTrims(const MasterBoard& board, const PackSettings& s)
             {"0.2", 0, false, {0, h - in}, {w, h - in}},
             {"0.3", 0, false, {in, in}, {in, h - in}},
             {"0.4", 0, false, {w - in, in}, {w - in, h - in}}};
+}
+
+/// The usable piece of a board of `kind`: the board less its trim, a clearance added at the far edges.
+Piece sheetOf(const PackProblem& problem, int kind)
+{
+    Piece sheet;
+    std::tie(sheet.size[0], sheet.size[1]) = usableSize(problem.boards[kind], problem.settings);
+    return sheet;
+}
+
+/// The sheet of `kind` last opened in `layout` filled by `fill` (the rules' picks in `order`, or `script`'s
+/// steps), with its cuts (the edge trims first) and its bounding area.
+void sawSheet(const PackProblem& problem, int kind, const Fill& fill, const std::vector<int>& order,
+              const std::vector<std::vector<Pose>>& poses, std::vector<int>& remaining, Layout& layout,
+              std::deque<SawStep>* script = nullptr)
+{
+    const Piece sheet = sheetOf(problem, kind);
+    const size_t placed = layout.placements.size();
+    std::vector<SawCut> cuts = edgeTrims(problem.boards[kind], problem.settings);
+    Filler(problem, order, fill, poses, sheet, remaining, layout, script)
+        .fill(sheet, fill.firstAxis, 1, {}, "", {}, cuts);
+    layout.sawCuts.push_back(std::move(cuts));
+    double right = 0, top = 0;
+    for (size_t k = placed; k < layout.placements.size(); ++k) {
+        const Placement& p = layout.placements[k];
+        right = std::max(right, p.x + p.width - problem.settings.trim);
+        top = std::max(top, p.y + p.height - problem.settings.trim);
+    }
+    layout.boundingArea += right * top;
 }
 
 /// One run: sheet after sheet, each filled from its whole by the rules. Nothing when `deadline` passes
@@ -231,41 +274,27 @@ std::optional<Layout> run(const PackProblem& problem, const Rules& rules,
         const int kind = sheetKindFor(problem, problem.parts[first], left);
         if (kind < 0)
             throw ranOut(problem.parts[first], units - placed - 1);
-        const MasterBoard& board = problem.boards[kind];
         openSheet(problem, kind, left, layout);
-        Piece sheet;
-        std::tie(sheet.size[0], sheet.size[1]) = usableSize(board, problem.settings);
-        const auto filled = [&](const Fill& fill, std::vector<SawCut>& cuts) {
-            Filler(problem, rules.order, fill, poses[kind], sheet, remaining, layout)
-                .fill(sheet, fill.firstAxis, 1, {}, "", {}, cuts);
-        };
+        const Piece sheet = sheetOf(problem, kind);
         const Fill* best = &rules.fills.front();
         double most = -1;
         for (const Fill& fill : rules.fills) {  // each tried, then undone
             const std::vector<int> before = remaining;
             const double area = layout.partArea;
             std::vector<SawCut> scratch;
-            filled(fill, scratch);
+            Filler(problem, rules.order, fill, poses[kind], sheet, remaining, layout)
+                .fill(sheet, fill.firstAxis, 1, {}, "", {}, scratch);
             if (layout.partArea - area > most + kHair)
                 most = layout.partArea - area, best = &fill;
             remaining = before, layout.partArea = area;
             layout.placements.resize(placed);
         }
-        std::vector<SawCut> cuts = edgeTrims(board, problem.settings);
-        filled(*best, cuts);
+        sawSheet(problem, kind, *best, rules.order, poses[kind], remaining, layout);
         if (static_cast<long>(layout.placements.size()) == placed)
             throw PackingError(
-                "part '" + problem.parts[first].id + "' cannot be sawn from '" + board.name +
+                "part '" + problem.parts[first].id + "' cannot be sawn from '" + problem.boards[kind].name +
                 "': it would leave a strip narrower than half the kerf + spacing at the board's "
                 "edge, which a saw cannot take off; set a trim, or a size that leaves none");
-        layout.sawCuts.push_back(std::move(cuts));
-        double right = 0, top = 0;
-        for (size_t k = placed; k < layout.placements.size(); ++k) {
-            const Placement& p = layout.placements[k];
-            right = std::max(right, p.x + p.width - problem.settings.trim);
-            top = std::max(top, p.y + p.height - problem.settings.trim);
-        }
-        layout.boundingArea += right * top;
     }
     return layout;
 }
@@ -301,6 +330,66 @@ std::vector<int> lastFirst(const std::vector<int>& order, const Layout& layout)
     std::vector<int> result = order;
     std::stable_partition(result.begin(), result.end(), [&](int p) { return last[p]; });
     return result;
+}
+
+/// `steps` (a beam search's, for parts cut from boards of `kind`) laid on new sheets of `kind` in `layout`,
+/// in `stages`.
+void replay(const PackProblem& problem, int kind, int stages, const std::vector<std::vector<Pose>>& poses,
+            const std::vector<SawStep>& steps, std::vector<int>& remaining, std::vector<int>& left,
+            Layout& layout)
+{
+    for (size_t k = 0; k < steps.size();) {
+        const Fill fill{steps[k].axis, stages, true};
+        std::deque<SawStep> script{steps[k]};
+        script.front().where = Where::Slab;
+        for (++k; k < steps.size() && steps[k].where != Where::Sheet; ++k)
+            script.push_back(steps[k]);
+        openSheet(problem, kind, left, layout);
+        sawSheet(problem, kind, fill, {}, poses, remaining, layout, &script);
+        if (!script.empty())
+            throw std::logic_error("a beam search's step does not fit where the search laid it");
+    }
+}
+
+/// The beam search's layout (GuillotineBeam.h): the parts of each board kind (the kind a sheet is opened for
+/// them) on sheets of their own, in 3 stages (2 when the limit is 2), each sheet's first cuts along one of
+/// `axes`; searches up to `widest` wide, each kind's with an equal share of the time. Nothing when a search
+/// finds none or the limit is one stage.
+std::optional<Layout> beamed(const PackProblem& problem, const std::vector<int>& axes,
+                             const std::vector<std::vector<std::vector<Pose>>>& poses, long widest,
+                             Deadline deadline)
+{
+    const PackSettings& s = problem.settings;
+    if (s.stages == 1)
+        return std::nullopt;
+    std::vector<int> stock, kindOf, kinds;
+    for (const MasterBoard& board : problem.boards)
+        stock.push_back(board.count);
+    for (const PartSpec& part : problem.parts) {
+        kindOf.push_back(sheetKindFor(problem, part, stock));
+        if (kindOf.back() < 0)
+            return std::nullopt;
+        if (std::find(kinds.begin(), kinds.end(), kindOf.back()) == kinds.end())
+            kinds.push_back(kindOf.back());
+    }
+    const int stages = s.stages == 2 ? 2 : 3;
+    Layout layout;
+    std::vector<int> left = stock, remaining;
+    for (const PartSpec& part : problem.parts)
+        remaining.push_back(part.quantity);
+    int searches = static_cast<int>(kinds.size());
+    for (int kind : kinds) {
+        BeamProblem beam{{}, poses[kind], {}, axes, stages, s.kerf + s.spacing, stock[kind]};
+        std::tie(beam.size[0], beam.size[1]) = usableSize(problem.boards[kind], s);
+        for (size_t p = 0; p < problem.parts.size(); ++p)
+            beam.quantities.push_back(kindOf[p] == kind ? problem.parts[p].quantity : 0);
+        const std::optional<std::vector<SawStep>> steps =
+            beamSearch(beam, widest, deadline.share(searches--));
+        if (!steps)
+            return std::nullopt;
+        replay(problem, kind, stages, poses[kind], *steps, remaining, left, layout);
+    }
+    return layout;
 }
 
 }  // namespace
@@ -343,6 +432,9 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Dea
             tried.push_back(alone);
         }
     }
+    // The beam search first, in a quarter of the time: on sheets that must be filled nearly whole it finds
+    // layouts no order of the rules does; the rules' runs take the rest (docs/benchmarks.md).
+    const std::optional<Layout> beam = beamed(problem, axes, poses, runs, deadline.share(4));
     std::optional<Layout> best;
     std::optional<PackingError> ranOutFirst;
     Rules bestRules = tried.front();
@@ -368,6 +460,8 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Dea
         if (!best || fuller(*layout, *best))
             best = std::move(layout), bestRules = rules;
     }
+    if (beam && (!best || fuller(*beam, *best)))
+        return *beam;
     if (!best)
         throw *ranOutFirst;
     return *best;
