@@ -73,6 +73,16 @@ def design(seed, slack=SLACK):
     return document, {"saved": sum(sheets.values()), "drawn_at_least": int(drawn_at_least), "layout": layout}
 
 
+def least_pack_problem(known):
+    """The least design's boards, as the known layout has them, as a pack problem (docs/formats.md, *.pack.json):
+    by construction they fit on known["saved"] sheets."""
+    return {"format": "fabguide.pack", "version": 1,
+            "settings": {k: SETTINGS[k] for k in ("resolution", "kerf", "spacing", "trim")},
+            "boards": [{"name": "{} mm".format(t), "width": SHEET[0], "height": SHEET[1], "thickness": t, "count": -1}
+                       for t in THICKNESSES],
+            "parts": [{"id": pid, "width": w, "height": h, "thickness": t} for pid, t, _, _, _, w, h in known["layout"]]}
+
+
 def main(argv):
     out = argv[1]
     seeds = range(1, 6) if len(argv) < 3 else [int(s) for s in argv[2].split(",")]

@@ -16,6 +16,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "gen"))
 import cutlists  # noqa: E402
 import saw_checker  # noqa: E402
+import savable_designs  # noqa: E402
 
 SEEDS = range(0, 150)
 
@@ -29,11 +30,11 @@ def varied(seed):
     return problem
 
 
-def laid_out(cli, problem, tmp_path, *options):
+def laid_out(cli, problem, tmp_path, *options, iterations=20):
     src, out = tmp_path / "cutlist.pack.json", tmp_path / "layout.json"
     src.write_text(json.dumps(problem))
-    run = subprocess.run([cli, "pack", str(src), "-o", str(out), "--iterations", "20", "--time-limit", "600",
-                          *options], capture_output=True, text=True)
+    run = subprocess.run([cli, "pack", str(src), "-o", str(out), "--iterations", str(iterations), "--time-limit",
+                          "600", *options], capture_output=True, text=True)
     return run, (json.loads(out.read_text()) if run.returncode == 0 else None)
 
 
@@ -58,6 +59,19 @@ def small_bins(seed):
             "boards": [{"name": "bin", "width": 10, "height": 10, "count": -1}],
             "parts": [{"id": "item {}".format(k), "width": rng.randint(1, 10), "height": rng.randint(1, 10),
                        "orientations": [0]} for k in range(rng.choice([20, 40, 60, 80, 100]))]}
+
+
+@pytest.mark.parametrize("seed", range(1, 6))
+def test_boards_cut_from_whole_sheets_at_92_percent_go_back_on_those_sheets(fabguide_cli, tmp_path, seed):
+    """The least designs of tests/gen/savable_designs.py at slack 0.96: 53-94 boards in two thicknesses, cut from
+    4-6 whole sheets by construction and filling them to 92 %. One greedy fill per order left a sheet more on
+    every one of them; the beam search finds the sheets they came from."""
+    _, known = savable_designs.design(seed, slack=0.96)
+    problem = savable_designs.least_pack_problem(known)
+    run, layout = laid_out(fabguide_cli, problem, tmp_path, "--cuts", "guillotine", "--stages", "3", iterations=128)
+    assert run.returncode == 0, run.stderr
+    assert len(layout["boards"]) == known["saved"], run.stdout
+    assert saw_checker.problems(layout, problem) == []
 
 
 @pytest.mark.parametrize("seed", range(0, 60))
