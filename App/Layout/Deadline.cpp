@@ -13,10 +13,16 @@ double Deadline::secondsLeft() const
 
 Deadline Deadline::share(int parts) const
 {
+    return fraction(1.0 / std::max(1, parts));
+}
+
+Deadline Deadline::fraction(double f) const
+{
     if (at == Clock::time_point::max())
         return *this;
     const Clock::time_point now = Clock::now();
-    return Deadline(at <= now ? at : now + (at - now) / std::max(1, parts), cancel);
+    return Deadline(at <= now ? at : now + std::chrono::duration_cast<Clock::duration>((at - now) * f),
+                    cancel);
 }
 
 }  // namespace fabguide::material

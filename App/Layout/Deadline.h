@@ -31,6 +31,8 @@ struct Deadline {
     Deadline sooner(Clock::time_point t) const { return Deadline(t < at ? t : at, cancel); }
     /// The same cancel, with a 1/`parts` share of the time left (none left: none; no time limit: none).
     Deadline share(int parts) const;
+    /// The same cancel, with the fraction `f` (0-1) of the time left.
+    Deadline fraction(double f) const;
 };
 
 }  // namespace fabguide::material

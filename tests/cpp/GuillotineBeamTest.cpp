@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <numeric>
 #include <random>
@@ -105,4 +106,21 @@ TEST(GuillotineBeam, NothingWhenTheSheetsRunOutOrTheTimeIsUp)
     problem.boards[0].count = 3;
     const Deadline past(std::chrono::steady_clock::now());
     EXPECT_FALSE(beamSearch(beamProblem(problem, 3), 16, past));
+}
+
+TEST(Deadline, AFractionOfTheTimeLeftKeepsTheCancelAndNoLimitStaysNone)
+{
+    using Clock = std::chrono::steady_clock;
+    const std::atomic<bool> cancel{false};
+    const Deadline tenSeconds(Clock::now() + std::chrono::seconds(10), &cancel);
+    const Clock::time_point before = Clock::now();
+    const Deadline threeQuarters = tenSeconds.fraction(0.75);
+    const Clock::time_point after = Clock::now();
+    // Whenever the call ran, between `before` and `after`: three quarters of the time left then.
+    EXPECT_GE(threeQuarters.at, before + (tenSeconds.at - before) * 3 / 4 - std::chrono::microseconds(1));
+    EXPECT_LE(threeQuarters.at, after + (tenSeconds.at - after) * 3 / 4 + std::chrono::microseconds(1));
+    EXPECT_EQ(threeQuarters.cancel, &cancel);
+    EXPECT_EQ(Deadline().fraction(0.5).at, Clock::time_point::max());
+    const Deadline past(Clock::now());
+    EXPECT_TRUE(past.fraction(0.5).passed());
 }
