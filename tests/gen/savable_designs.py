@@ -80,7 +80,8 @@ def least_pack_problem(known):
             "settings": {k: SETTINGS[k] for k in ("resolution", "kerf", "spacing", "trim")},
             "boards": [{"name": "{} mm".format(t), "width": SHEET[0], "height": SHEET[1], "thickness": t, "count": -1}
                        for t in THICKNESSES],
-            "parts": [{"id": pid, "width": w, "height": h, "thickness": t} for pid, t, _, _, _, w, h in known["layout"]]}
+            "parts": [{"id": pid, "width": w, "height": h, "thickness": t}
+                      for pid, t, _, _, _, w, h in known["layout"]]}
 
 
 def main(argv):
