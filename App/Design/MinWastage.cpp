@@ -162,7 +162,7 @@ int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
 }
 
 /// The suggestions: of the designs a maker would take over the user's (never on more sheets, never the
-/// design unchanged), `count` chosen by nextPick that reopen.
+/// design unchanged), `count` chosen by nextPick that reopen (`reopens` may give one a layout that does).
 template <typename Reopens>
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count,
                                 Reopens&& reopens, int& notReopened)
@@ -272,16 +272,23 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         if (exploration.stopped)
             break;
     }
-    // A suggestion is a design the user goes on with: reopened, its own layout (the search above, or docking
-    // in the order its file keeps) must cut it from boards that cost no more. The exploration's slides reach
-    // tight layouts neither may.
-    const auto reopens = [&](const DesignLayout& d) {
+    // A suggestion is a design the user goes on with: reopened, docking in the order its file keeps must cut
+    // it from boards that cost no more, whatever time the reopening search gets. The exploration's slides
+    // reach tight layouts docking may not: a fresh search's layout, docked in its own order, then stands in
+    // for it.
+    const auto reopens = [&](DesignLayout& d) {
         const auto noDearer = [&](const GridLayout& fresh) {
             return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
         };
-        return noDearer(material.dock(d.sizes, orderOf(d.layout))) ||
-               noDearer(searchedLayout(material, d.sizes, options.seed,
-                                       std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2))));
+        if (noDearer(material.dock(d.sizes, orderOf(d.layout))))
+            return true;
+        GridLayout docked = material.dock(
+            d.sizes, orderOf(searchedLayout(material, d.sizes, options.seed,
+                                            std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2)))));
+        if (!noDearer(docked))
+            return false;
+        d = designLayout(material, d.X, d.sizes, std::move(docked));
+        return true;
     };
     exploration.suggestions =
         diverse(std::move(pool), exploration.start, options.suggestions, reopens, exploration.notReopened);
