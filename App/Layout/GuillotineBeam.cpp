@@ -9,14 +9,16 @@
 namespace fabguide::material {
 
 namespace {
-
 constexpr double kHair = 1e-9;             // mm: what counts as touching
 constexpr long kMostCandidates = 1 << 20;  // partial layouts grown at one depth, 32 MB
+}  // namespace
 
-bool sawable(double room, double size, double clearance)
+bool leavesSawable(double room, double size, double clearance)
 {
     return size <= room + kHair && (size >= room - kHair || size < room - clearance / 2 - kHair);
 }
+
+namespace {
 
 double along(const Pose& pose, int axis)
 {
@@ -48,6 +50,12 @@ struct Partial {
         return k;
     }
 };
+
+/// How a complete layout ranks, lower better: its sheets, then what its last sheet holds.
+std::pair<long, double> rank(const Partial& n)
+{
+    return {n.at.sheets, n.lastSheet};
+}
 
 /// A partial layout yet to be chosen, as little as ranks it: its rank and how it grows from its parent.
 struct Candidate {
@@ -125,7 +133,7 @@ private:
                     out.push_back({next->guide, next->laid, index, part, pose, where});
     }
 
-    bool leaves(double room, double size) const { return sawable(room, size, p_.clearance); }
+    bool leaves(double room, double size) const { return leavesSawable(room, size, p_.clearance); }
 
     double guided(const Partial& n) const
     {
@@ -241,8 +249,7 @@ std::optional<std::pair<Partial, std::vector<SawStep>>> search(const BeamProblem
     }
     size_t best = 0;
     for (size_t k = 1; k < level.size(); ++k)
-        if (std::pair{level[k].at.sheets, level[k].lastSheet} <
-            std::pair{level[best].at.sheets, level[best].lastSheet})
+        if (rank(level[k]) < rank(level[best]))
             best = k;
     std::vector<SawStep> steps(units);
     for (long depth = units - 1, k = static_cast<long>(best); depth >= 0; --depth) {
@@ -254,11 +261,6 @@ std::optional<std::pair<Partial, std::vector<SawStep>>> search(const BeamProblem
 
 }  // namespace
 
-bool leavesSawable(double room, double size, double clearance)
-{
-    return sawable(room, size, clearance);
-}
-
 std::optional<std::vector<SawStep>> beamSearch(const BeamProblem& problem, long widest, Deadline deadline)
 {
     long branching = 0;  // the partial layouts one grows into at most
@@ -266,7 +268,6 @@ std::optional<std::vector<SawStep>> beamSearch(const BeamProblem& problem, long 
         branching += problem.quantities[p] > 0 ? 3 * static_cast<long>(problem.poses[p].size()) : 0;
     widest = std::min(widest, std::max(1L, kMostCandidates / std::max(1L, branching)));
     std::optional<std::pair<Partial, std::vector<SawStep>>> best;
-    const auto rank = [](const Partial& n) { return std::pair{n.at.sheets, n.lastSheet}; };
     std::vector<Candidate> candidates;
     for (long width = 1; !deadline.passed(); width *= 2) {
         for (int axis : problem.axes)
