@@ -52,10 +52,12 @@ double edgeTrimAt(const PackSettings& s)
     return s.trim > 0 ? s.trim - s.kerf / 2 : 0;
 }
 
-/// A unit taken to lead a slab: its part and its pose.
+/// A unit taken to lead a slab: its part, its pose, and the sizes of the slabs it leads along x and y when
+/// longer than its own (a beam search's steps grow them).
 struct Lead {
     int part = -1;
     Pose pose;
+    double extent[2] = {0, 0};
 };
 
 /// One sheet filled by slabs, stage by stage (Guillotine.h), the units picked by the rules or taken from a
@@ -102,7 +104,8 @@ public:
             }
             Piece slab = piece;
             slab.at[a] = at;
-            slab.size[a] = along(lead->pose, a);
+            slab.size[a] = std::max(along(lead->pose, a), lead->extent[a]);
+            lead->extent[a] = 0;  // the deeper slabs it leads along `a` are its own size
             at += slab.size[a];
             const bool whole = n == 1 && at >= end - kHair;
             const std::string name = whole            ? number
@@ -154,7 +157,8 @@ private:
         constexpr Where kPicked[] = {Where::Slab, Where::Column, Where::After};  // by stage
         if (script_->empty() || script_->front().where != kPicked[stage - 1])
             return std::nullopt;
-        const Lead lead{script_->front().part, script_->front().pose};
+        const SawStep& step = script_->front();
+        const Lead lead{step.part, step.pose, {step.extent[0], step.extent[1]}};
         script_->pop_front();
         return lead;
     }

@@ -92,17 +92,22 @@ public:
     {
     }
 
-    /// The candidates `from` (the `index`-th of its depth) grows into by one unit; a new sheet only when
-    /// nothing else fits.
+    /// The candidates `from` (the `index`-th of its depth) grows into by one unit. After packingsolver's
+    /// dominance rule: no new column when a unit fits after the last without growing its column or slab, no
+    /// new slab when one fits in the slab without growing it, a new sheet only when nothing else fits.
     void grow(const Partial& from, int index, const std::vector<int>& remaining,
               std::vector<Candidate>& out) const
     {
         const size_t before = out.size();
-        for (Where where : {Where::After, Where::Column, Where::Slab})
-            if (from.at.sheets > 0 && (where != Where::After || p_.stages >= 3))
-                growAt(from, index, remaining, where, out);
+        bool keptColumn = false, keptSlab = false;
+        if (from.at.sheets > 0 && p_.stages >= 3)
+            growAt(from, index, remaining, Where::After, out, keptColumn, keptSlab);
+        if (from.at.sheets > 0 && !keptColumn)
+            growAt(from, index, remaining, Where::Column, out, keptColumn, keptSlab);
+        if (from.at.sheets > 0 && !keptSlab)
+            growAt(from, index, remaining, Where::Slab, out, keptColumn, keptSlab);
         if (out.size() == before && (p_.sheets < 0 || from.at.sheets < p_.sheets))
-            growAt(from, index, remaining, Where::Sheet, out);
+            growAt(from, index, remaining, Where::Sheet, out, keptColumn, keptSlab);
     }
 
     /// `from` grown by a unit of `part` in its `pose`-th pose at `where`; nothing when it does not fit there.
@@ -124,13 +129,20 @@ public:
     }
 
 private:
+    /// The candidates grown at `where`; `keptColumn` and `keptSlab` set when one leaves the open column and
+    /// slab (or the slab) their sizes.
     void growAt(const Partial& from, int index, const std::vector<int>& remaining, Where where,
-                std::vector<Candidate>& out) const
+                std::vector<Candidate>& out, bool& keptColumn, bool& keptSlab) const
     {
         for (int part = 0; part < static_cast<int>(remaining.size()); ++part)
             for (int pose = 0; remaining[part] > 0 && pose < static_cast<int>(p_.poses[part].size()); ++pose)
-                if (const std::optional<Partial> next = child(from, index, part, pose, where))
+                if (const std::optional<Partial> next = child(from, index, part, pose, where)) {
                     out.push_back({next->guide, next->laid, index, part, pose, where});
+                    keptSlab = keptSlab || ((where == Where::After || where == Where::Column) &&
+                                            next->at.slab == from.at.slab);
+                    keptColumn = keptColumn || (where == Where::After && next->at.slab == from.at.slab &&
+                                                next->at.column == from.at.column);
+                }
     }
 
     bool leaves(double room, double size) const { return leavesSawable(room, size, p_.clearance); }
@@ -149,44 +161,60 @@ private:
         return lost;
     }
 
-    /// Lays a unit of extents `pa` along a and `pb` across at `where` in `n`, adding the area it closes off
-    /// to its waste; false when it does not fit there.
+    /// `extent` (a slab's or column's size, the units laid in it reaching `filled`) made to hold `size`
+    /// within `room`: kept when the units leave a strip a cut can take off, grown to `size` when it fits and
+    /// the strip it adds beside the units laid can be cut off; false when neither.
+    bool holds(double& extent, double filled, double size, double room) const
+    {
+        if (size <= extent + kHair)
+            return leaves(extent - filled, size - filled);
+        if (!leaves(room, size) || !leaves(size, extent))
+            return false;
+        extent = size;
+        return true;
+    }
+
+    /// Lays a unit of extents `pa` along a and `pb` across at `where` in `n`, growing the open slab and
+    /// column to hold it, and adds the area it closes off to its waste; false when it does not fit there.
     bool placed(Partial& n, Where where, double pa, double pb) const
     {
         Frontier& f = n.at;
+        const Frontier was = f;
         // What closing the open column, slab and sheet leaves unused.
         const double column = f.column * (f.slab - f.filled),
                      slab = (p_.size[b_] - f.columnAt - f.column) * f.slab,
                      sheet = (p_.size[a_] - f.slabAt - f.slab) * p_.size[b_];
         switch (where) {
             case Where::After:
-                if (!leaves(f.slab - f.filled, pa) || !leaves(f.column, pb))
+                if (!holds(f.column, 0, pb, p_.size[b_] - f.columnAt) ||
+                    !holds(f.slab, f.filled, f.filled + pa, p_.size[a_] - f.slabAt))
                     return false;
-                n.waste += (f.column - pb) * pa;
+                n.waste += (f.column - pb) * pa + (f.column - was.column) * was.filled +
+                           (f.slab - was.slab) * f.columnAt;
                 f.filled += pa;
                 return true;
             case Where::Column:
-                if (!leaves(p_.size[b_] - f.columnAt - f.column, pb) || !leaves(f.slab, pa))
+                if (!leaves(p_.size[b_] - f.columnAt - f.column, pb))
                     return false;
-                n.waste += column;
                 f.columnAt += f.column;
+                if (!holds(f.slab, 0, pa, p_.size[a_] - f.slabAt))
+                    return false;
+                n.waste += column + (f.slab - was.slab) * f.columnAt;
                 break;
             case Where::Slab:
                 if (!leaves(p_.size[a_] - f.slabAt - f.slab, pa) || !leaves(p_.size[b_], pb))
                     return false;
                 n.waste += column + slab;
-                f.slabAt += f.slab, f.columnAt = 0;
+                f.slabAt += f.slab, f.columnAt = 0, f.slab = pa;
                 break;
             case Where::Sheet:
                 if (!leaves(p_.size[a_], pa) || !leaves(p_.size[b_], pb))
                     return false;
                 if (f.sheets > 0)
                     n.waste += column + slab + sheet;
-                ++f.sheets, f.slabAt = 0, f.columnAt = 0;
+                ++f.sheets, f.slabAt = 0, f.columnAt = 0, f.slab = pa;
                 break;
         }
-        if (where != Where::Column)
-            f.slab = pa;
         f.column = pb, f.filled = pa;
         return true;
     }
@@ -259,6 +287,24 @@ std::optional<std::pair<Partial, std::vector<SawStep>>> search(const BeamProblem
     return std::pair{level[best], std::move(steps)};
 }
 
+/// Sets each step's `extent`: the size of the slab it leads along its axis (its longest column) and of the
+/// column it leads across (its widest unit), as the units after it grew them.
+void measureLeads(std::vector<SawStep>& steps)
+{
+    SawStep *slab = nullptr, *column = nullptr;
+    double filled = 0;
+    for (SawStep& step : steps) {
+        const int a = step.axis, b = 1 - a;
+        filled = (step.where == Where::After ? filled : 0) + along(step.pose, a);
+        if (step.where == Where::Sheet || step.where == Where::Slab)
+            slab = &step;
+        if (step.where != Where::After)
+            column = &step;
+        slab->extent[a] = std::max(slab->extent[a], filled);
+        column->extent[b] = std::max(column->extent[b], along(step.pose, b));
+    }
+}
+
 }  // namespace
 
 std::optional<std::vector<SawStep>> beamSearch(const BeamProblem& problem, long widest, Deadline deadline)
@@ -281,6 +327,7 @@ std::optional<std::vector<SawStep>> beamSearch(const BeamProblem& problem, long 
     }
     if (!best)
         return std::nullopt;
+    measureLeads(best->second);
     return std::move(best->second);
 }
 

@@ -13,16 +13,18 @@ namespace fabguide::material {
 
 /// Where a step puts its unit, in the order a saw's layout is filled: on a new sheet, leading a new
 /// first-stage slab, leading a new second-stage slab in it, or after the last unit of that slab (third
-/// stage).
+/// stage). A slab grows to hold what follows in it, as far as its sheet allows.
 enum class Where { Sheet, Slab, Column, After };
 
-/// One unit laid: its part, its pose on the sheet and where it goes; on a new sheet, also the axis along
-/// which that sheet's first-stage slabs follow one another (0: x, 1: y).
+/// One unit laid: its part, its pose on the sheet and where it goes; the axis along which its sheet's
+/// first-stage slabs follow one another (0: x, 1: y); and the sizes of the slabs it leads along x and y
+/// (0: the unit's own), as grown by the units after it.
 struct SawStep {
     int part = -1;
     Pose pose;
     Where where = Where::Sheet;
     int axis = 1;
+    double extent[2] = {0, 0};
 };
 
 /// Whether `size` fits in `room` leaving none of it or a strip a cut can take off: one wider than half the

@@ -15,8 +15,8 @@ using fabguide::material::testing::expectValid;
 namespace {
 
 /// `sheets` whole 2440 x 1220 boards cut in three stages at random (slabs across, columns in a slab, pieces
-/// in a column, none under 150 mm), each piece less the kerf and then times `slack`: parts that fit on
-/// `sheets` boards by construction, in a shuffled order.
+/// in a column, none under 150 mm), each piece less the kerf and then times `slack` (to 0.1 mm): parts that
+/// fit on `sheets` boards by construction, in a shuffled order.
 PackProblem cutFromSheets(unsigned seed, int sheets, double slack)
 {
     PackProblem problem;
@@ -25,6 +25,7 @@ PackProblem cutFromSheets(unsigned seed, int sheets, double slack)
     problem.settings.trim = 10;
     const double kerf = problem.settings.kerf, width = 2440 - 20 + kerf, height = 1220 - 20 + kerf;
     std::mt19937 random(seed);
+    const auto tenths = [](double mm) { return std::floor(mm * 10 + 1e-6) / 10; };  // rounded down
     // Cuts `length` into pieces of `from`-`to`, the last one taking what is left under `from`.
     const auto pieces = [&](double length, double from, double to) {
         std::vector<double> cut;
@@ -41,8 +42,8 @@ PackProblem cutFromSheets(unsigned seed, int sheets, double slack)
             for (double column : pieces(width, 150, 900))
                 for (double piece : pieces(slab, 150, slab))
                     problem.parts.push_back(rectangularPart("p" + std::to_string(problem.parts.size()),
-                                                            std::floor((column - kerf) * slack),
-                                                            std::floor((piece - kerf) * slack)));
+                                                            tenths((column - kerf) * slack),
+                                                            tenths((piece - kerf) * slack)));
     std::shuffle(problem.parts.begin(), problem.parts.end(), random);
     return problem;
 }
@@ -73,6 +74,22 @@ TEST(GuillotineBeam, PartsCutFromSheetsAt96PercentGoBackOnThoseSheets)
     for (unsigned seed = 1; seed <= 6; ++seed) {
         const int sheets = 2 + static_cast<int>(seed % 2);
         PackProblem problem = cutFromSheets(seed, sheets, 0.96);
+        problem.settings.cuts = Cuts::Guillotine;
+        problem.settings.stages = 3;
+        const Layout layout = guillotine(problem, 64, seed, Deadline());
+        EXPECT_EQ(layout.sheets.size(), static_cast<size_t>(sheets)) << "seed " << seed;
+        expectValid(problem, layout);
+    }
+}
+
+TEST(GuillotineBeam, PartsCutFromSheetsAt97PercentGoBackOnThoseSheetsBySlabsGrown)
+{
+    // Most of those slabs are as long as a column of several pieces, longer than any one piece: the search
+    // lays them out by growing a slab to hold the pieces after its lead. Without it, seeds 2 and 4 take a
+    // sheet more.
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        const int sheets = 2 + static_cast<int>(seed % 2);
+        PackProblem problem = cutFromSheets(seed, sheets, 0.97);
         problem.settings.cuts = Cuts::Guillotine;
         problem.settings.stages = 3;
         const Layout layout = guillotine(problem, 64, seed, Deadline());
