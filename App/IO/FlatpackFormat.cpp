@@ -28,26 +28,26 @@ int boardIndex(const Design& design, const std::string& id, const std::string& p
     for (size_t b = 0; b < design.boards.size(); ++b)
         if (design.boards[b].id == id)
             return static_cast<int>(b);
-    throw FormatError(path + ": no part \"" + id + "\"");
+    throw FormatError(path, "no part \"" + id + "\"");
 }
 
 int axisOf(const std::string& name, const std::string& path)
 {
     if (name == "x" || name == "y" || name == "z")
         return name[0] - 'x';
-    throw FormatError(path + ": axis must be x, y or z, got \"" + name + "\"");
+    throw FormatError(path, "axis must be x, y or z, got \"" + name + "\"");
 }
 
 /// "part.size.x", "part.centre.y", "part.min.z" or "part.max.x" as a linear expression.
 Linear reference(const Design& design, const nlohmann::json& json, const std::string& path)
 {
     if (!json.is_string())
-        throw FormatError(path + ": must be a reference like \"top.size.x\", got " + json.dump());
+        throw FormatError(path, "must be a reference like \"top.size.x\", got " + json.dump());
     const std::string text = json.get<std::string>();
     const size_t last = text.rfind('.'),
                  middle = last == std::string::npos ? last : text.rfind('.', last - 1);
     if (middle == std::string::npos || middle == 0)
-        throw FormatError(path + ": \"" + text + "\" is not <part>.<size|centre|min|max>.<x|y|z>");
+        throw FormatError(path, "\"" + text + "\" is not <part>.<size|centre|min|max>.<x|y|z>");
     const int board = boardIndex(design, text.substr(0, middle), path);
     const std::string what = text.substr(middle + 1, last - middle - 1);
     const int axis = axisOf(text.substr(last + 1), path);
@@ -59,19 +59,19 @@ Linear reference(const Design& design, const nlohmann::json& json, const std::st
         return material::lowerFace(board, axis);
     if (what == "max")
         return material::upperFace(board, axis);
-    throw FormatError(path + ": \"" + what + "\" in \"" + text + "\" must be size, centre, min or max");
+    throw FormatError(path, "\"" + what + "\" in \"" + text + "\" must be size, centre, min or max");
 }
 
 std::vector<Linear> references(const Design& design, const Fields& c, const std::string& key, size_t least)
 {
     const nlohmann::json& list = c.array(key);
     if (list.size() < least)
-        throw FormatError(c.pathOf(key) + ": needs at least " + std::to_string(least) + " references");
+        throw FormatError(c.pathOf(key), "needs at least " + std::to_string(least) + " references");
     const size_t distinct = 12 * design.boards.size();  // size, centre, min and max on three axes
     if (list.size() > distinct)
-        throw FormatError(c.pathOf(key) + ": " + std::to_string(list.size()) + " references, more than the " +
-                          std::to_string(distinct) + " different ones a design of " +
-                          std::to_string(design.boards.size()) + " boards has");
+        throw FormatError(c.pathOf(key), std::to_string(list.size()) + " references, more than the " +
+                                             std::to_string(distinct) + " different ones a design of " +
+                                             std::to_string(design.boards.size()) + " boards has");
     std::vector<Linear> refs;
     for (size_t k = 0; k < list.size(); ++k)
         refs.push_back(reference(design, list[k], at(c.pathOf(key), k)));
@@ -82,12 +82,12 @@ std::vector<int> partsOf(const Design& design, const Fields& c, size_t least)
 {
     const nlohmann::json& list = c.array("parts");
     if (list.size() < least)
-        throw FormatError(c.pathOf("parts") + ": needs at least " + std::to_string(least) + " parts");
+        throw FormatError(c.pathOf("parts"), "needs at least " + std::to_string(least) + " parts");
     std::vector<int> parts;
     for (size_t k = 0; k < list.size(); ++k) {
         const std::string path = at(c.pathOf("parts"), k);
         if (!list[k].is_string())
-            throw FormatError(path + ": must be a part id");
+            throw FormatError(path, "must be a part id");
         parts.push_back(boardIndex(design, list[k].get<std::string>(), path));
     }
     return parts;
@@ -161,7 +161,7 @@ struct ConstraintReader {
     {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         if (refs.size() != 2)
-            throw FormatError(c.pathOf("refs") + ": symmetric takes two references");
+            throw FormatError(c.pathOf("refs"), "symmetric takes two references");
         const Linear about = !c.has("about") ? material::constant((refs[0] + refs[1]).value(X) / 2)
                              : json["about"].is_number()
                                  ? material::constant(json["about"].get<double>())
@@ -185,8 +185,8 @@ struct ConstraintReader {
         const int normal = design.boards[parts[0]].normal;
         for (int b : parts)
             if (design.boards[b].normal != normal)
-                throw FormatError(c.pathOf("parts") + ": " + design.boards[b].id + " is not parallel to " +
-                                  design.boards[parts[0]].id);
+                throw FormatError(c.pathOf("parts"),
+                                  design.boards[b].id + " is not parallel to " + design.boards[parts[0]].id);
         for (size_t k = 1; k < parts.size(); ++k)
             equal(named(joined(c.array("parts"), ", ")),
                   material::centreOf(parts[k], normal) - material::centreOf(parts[0], normal));
@@ -195,10 +195,10 @@ struct ConstraintReader {
     {
         const std::vector<int> parts = partsOf(design, c, 2);
         if (parts.size() != 2)
-            throw FormatError(c.pathOf("parts") + ": snap takes two parts");
+            throw FormatError(c.pathOf("parts"), "snap takes two parts");
         if (!addSnapping(design, parts[0], parts[1]))
-            throw FormatError(path + ": " + design.boards[parts[0]].id + " and " +
-                              design.boards[parts[1]].id + " do not touch");
+            throw FormatError(
+                path, design.boards[parts[0]].id + " and " + design.boards[parts[1]].id + " do not touch");
     }
     void rangeKind(const std::string& path)
     {
@@ -207,7 +207,7 @@ struct ConstraintReader {
         const double low = c.number("min", fraction > 0 ? value * (1 - fraction) : -HUGE_VAL);
         const double high = c.number("max", fraction > 0 ? value * (1 + fraction) : HUGE_VAL);
         if (!c.has("min") && !c.has("max") && !(fraction > 0))
-            throw FormatError(path + ": a range needs min, max or fraction");
+            throw FormatError(path, "a range needs min, max or fraction");
         // A named range names both its ends: "table height (min)", "table height (max)".
         const auto end = [&](const char* side, const std::string& fallback) {
             return c.has("name") ? c.text("name") + " (" + side + ")" : fallback;
@@ -243,8 +243,9 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
     else if (r.kind == "range")
         r.rangeKind(path);
     else
-        throw FormatError(c.pathOf("kind") + ": unknown constraint \"" + r.kind +
-                          "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
+        throw FormatError(c.pathOf("kind"),
+                          "unknown constraint \"" + r.kind +
+                              "\" (equal, sum, fixed, symmetric, ground, coplanar, snap, range)");
     c.noOthers();
 }
 
@@ -259,7 +260,7 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
     board.quantity = part.integer("quantity", 1);
     board.followsGrain = part.flag("follow_grain", false);
     if (board.quantity < 1)
-        throw FormatError(part.pathOf("quantity") + ": must be at least 1");
+        throw FormatError(part.pathOf("quantity"), "must be at least 1");
     board.size.minCoeff(&board.normal);
     if (part.has("grain")) {
         const std::string grain = part.text("grain");
@@ -268,17 +269,18 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
         const std::string face = std::string(1, axes[board.normal == 0 ? 1 : 0]) + " or " +
                                  axes[board.normal == 2 ? 1 : 2];  // the axes in the board's plane
         if (axis == board.normal)
-            throw FormatError(part.pathOf("grain") + ": \"" + grain +
-                              "\" runs across the board, through its " + show(board.size[board.normal]) +
-                              " mm thickness; choose an axis of its face (" + face + ") or \"free\"");
+            throw FormatError(part.pathOf("grain"), "\"" + grain + "\" runs across the board, through its " +
+                                                        show(board.size[board.normal]) +
+                                                        " mm thickness; choose an axis of its face (" + face +
+                                                        ") or \"free\"");
         if (!axis)
-            throw FormatError(part.pathOf("grain") + ": must be \"free\" or an axis of the board's face (" +
-                              face + "), got \"" + grain + "\"");
+            throw FormatError(part.pathOf("grain"), "must be \"free\" or an axis of the board's face (" +
+                                                        face + "), got \"" + grain + "\"");
         board.followsGrain = *axis >= 0;
         board.grainAxis = *axis;
     }
     if (board.size.minCoeff() <= 0)
-        throw FormatError(part.pathOf("size") + ": every side must be longer than 0");
+        throw FormatError(part.pathOf("size"), "every side must be longer than 0");
     if (std::none_of(thicknesses.begin(), thicknesses.end(),
                      [&](double t) { return material::ofThickness(board.size[board.normal], t); })) {
         std::string all;
@@ -286,8 +288,8 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
             if (std::find(thicknesses.begin(), thicknesses.begin() + k, thicknesses[k]) ==
                 thicknesses.begin() + k)
                 all += (all.empty() ? "" : ", ") + show(thicknesses[k]);
-        throw FormatError(part.pathOf("size") + ": its thinnest side " + show(board.size[board.normal]) +
-                          " must be the thickness of a master board (" + all + ")");
+        throw FormatError(part.pathOf("size"), "its thinnest side " + show(board.size[board.normal]) +
+                                                   " must be the thickness of a master board (" + all + ")");
     }
     part.noOthers();
     return board;
@@ -317,21 +319,23 @@ void readParts(const Fields& root, const std::vector<double>& thicknesses, Desig
     long units = 0;
     for (size_t i = 0; i < parts.size(); ++i) {
         if (static_cast<long>(i) >= kMostDesignBoards)
-            throw FormatError("parts: more than " + std::to_string(kMostDesignBoards) +
-                              " boards; FabGuide explores designs of up to that (lay a larger job out with "
-                              "`fabguide pack`)");
+            throw FormatError(
+                "parts", "more than " + std::to_string(kMostDesignBoards) +
+                             " boards; FabGuide explores designs of up to that (lay a larger job out with "
+                             "`fabguide pack`)");
         design.boards.push_back(readPart(parts[i], at("parts", i), thicknesses));
         if ((units += design.boards.back().quantity) > kMostDesignBoards)
             throw FormatError(
-                at("parts", i) + ".quantity: more than " + std::to_string(kMostDesignBoards) +
-                " boards to cut in all; FabGuide explores designs of up to that (lay a larger job "
-                "out with `fabguide pack`)");
+                at("parts", i) + ".quantity",
+                "more than " + std::to_string(kMostDesignBoards) +
+                    " boards to cut in all; FabGuide explores designs of up to that (lay a larger job "
+                    "out with `fabguide pack`)");
         for (size_t j = 0; j < i; ++j)
             if (design.boards[j].id == design.boards[i].id)
-                throw FormatError(at("parts", i) + ".id: \"" + design.boards[i].id + "\" is used twice");
+                throw FormatError(at("parts", i) + ".id", "\"" + design.boards[i].id + "\" is used twice");
     }
     if (design.boards.empty())
-        throw FormatError("parts: at least one part is needed");
+        throw FormatError("parts", "at least one part is needed");
 }
 
 /// What "settings" asks of every board: no in-plane side below min_length (or its present length if shorter),
@@ -378,7 +382,7 @@ void readInnerVolumes(const Fields& root, Design& design)
         v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
         v.size = volume.vector3("size");
         if (v.size.minCoeff() <= 0)  // a space no part could be kept out of
-            throw FormatError(volume.pathOf("size") + ": every side must be longer than 0");
+            throw FormatError(volume.pathOf("size"), "every side must be longer than 0");
         const Eigen::Vector3d position = volume.vector3("position");
         const material::DesignBoard& on = design.boards[v.on];
         for (int axis = 0; axis < 3; ++axis) {  // its nearer face, the lower one on a tie
@@ -404,15 +408,15 @@ std::vector<int> readLayoutOrder(const Fields& root, const Design& design)
     for (size_t i = 0; i < ids.size(); ++i) {
         const std::string path = at("layout_order", i);
         if (!ids[i].is_string())
-            throw FormatError(path + ": must be a part id");
+            throw FormatError(path, "must be a part id");
         const int part = boardIndex(design, ids[i].get<std::string>(), path);
         if (left[part]-- == 0)
-            throw FormatError(path + ": part \"" + ids[i].get<std::string>() +
-                              "\" more times than its quantity");
+            throw FormatError(path,
+                              "part \"" + ids[i].get<std::string>() + "\" more times than its quantity");
         order.push_back(part);
     }
     if (!order.empty() && std::any_of(left.begin(), left.end(), [](int n) { return n > 0; }))
-        throw FormatError("layout_order: must name every part as many times as its quantity");
+        throw FormatError("layout_order", "must name every part as many times as its quantity");
     return order;
 }
 
@@ -477,13 +481,13 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     checkGrid(result.settings, result.boards);
     if (result.settings.cuts == material::Cuts::Guillotine)
         throw FormatError(
-            "settings.cuts: the zero-waste design search lays its parts out for free cuts (CNC, laser); "
-            "lay a chosen design out for a saw with `fabguide pack --cuts guillotine` or a FreeCAD "
-            "Layout");
+            "settings.cuts",
+            "the zero-waste design search lays its parts out for free cuts (CNC, laser); lay a "
+            "chosen design out for a saw with `fabguide pack --cuts guillotine` or a FreeCAD Layout");
     std::vector<double> thicknesses;
     for (size_t i = 0; i < result.boards.size(); ++i) {
         if (!(result.boards[i].thickness > 0))
-            throw FormatError(at("boards", i) + ".thickness: must be greater than 0");
+            throw FormatError(at("boards", i) + ".thickness", "must be greater than 0");
         thicknesses.push_back(result.boards[i].thickness);
     }
     Design& design = result.design;

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace fabguide::io {
@@ -18,12 +17,21 @@ std::string show(double x)
     return out.str();
 }
 
-std::string FormatError::field() const
+FormatError::FormatError(const std::string& field, const std::string& why)
+    : std::runtime_error(field + ": " + why), field_(field)
 {
-    static const std::regex path(R"(([A-Za-z_]\w*(\[\d+\]|\.[A-Za-z_]\w*)*): [\s\S]*)");
-    std::smatch match;
-    const std::string message = what();
-    return std::regex_match(message, match, path) ? match[1].str() : "";
+}
+
+FormatError::FormatError(const std::string& field, const std::string& subject, const std::string& why)
+    : std::runtime_error(field + " ('" + subject + "'): " + why), field_(field)
+{
+}
+
+FormatError FormatError::inFile(const std::string& path) const
+{
+    FormatError error(path + ": " + what());
+    error.field_ = field_;
+    return error;
 }
 
 namespace {
@@ -59,9 +67,12 @@ std::string refused(const nlohmann::json& value, double largest, int depth)
 
 void checkNumbers(const nlohmann::json& document, double largest)
 {
-    std::string why = refused(document, largest, 0);
-    if (!why.empty())
-        throw FormatError(why[0] == '.' ? why.substr(1) : "document" + why);
+    const std::string why = refused(document, largest, 0);
+    if (why.empty())
+        return;
+    const size_t colon = why.rfind(": ");  // after the path, whatever its keys hold
+    const std::string path = why.substr(0, colon);
+    throw FormatError(path[0] == '.' ? path.substr(1) : "document" + path, why.substr(colon + 2));
 }
 
 nlohmann::json readJsonFile(const std::string& path)
@@ -83,7 +94,7 @@ nlohmann::json readJsonFile(const std::string& path)
     try {
         checkNumbers(document);
     } catch (const FormatError& e) {
-        throw FormatError(path + ": " + e.what());
+        throw e.inFile(path);
     }
     return document;
 }
@@ -101,7 +112,7 @@ void writeJsonFile(const std::string& path, const nlohmann::json& value)
 Fields::Fields(const nlohmann::json& object, std::string path) : object_(object), path_(std::move(path))
 {
     if (!object_.is_object())
-        throw FormatError((path_.empty() ? std::string("document") : path_) + ": must be a JSON object");
+        throw FormatError(path_.empty() ? "document" : path_, "must be a JSON object");
 }
 
 const nlohmann::json* Fields::find(const std::string& key) const
@@ -117,14 +128,14 @@ double Fields::number(const std::string& key, std::optional<double> fallback,
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key) + ": missing (a number is required)");
+            throw FormatError(pathOf(key), "missing (a number is required)");
         return *fallback;
     }
     if (!value->is_number() || !std::isfinite(value->get<double>()))
-        throw FormatError(pathOf(key) + ": must be a number, got " + value->dump());
+        throw FormatError(pathOf(key), "must be a number, got " + value->dump());
     const double x = value->get<double>();
     if (minimum && x < *minimum)
-        throw FormatError(pathOf(key) + ": must be at least " + show(*minimum) + ", got " + show(x));
+        throw FormatError(pathOf(key), "must be at least " + show(*minimum) + ", got " + show(x));
     return x;
 }
 
@@ -132,7 +143,7 @@ double Fields::positive(const std::string& key) const
 {
     const double x = number(key);
     if (!(x > 0))
-        throw FormatError(pathOf(key) + ": must be greater than 0, got " + show(x));
+        throw FormatError(pathOf(key), "must be greater than 0, got " + show(x));
     return x;
 }
 
@@ -141,12 +152,12 @@ int Fields::integer(const std::string& key, std::optional<int> fallback) const
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key) + ": missing (a whole number is required)");
+            throw FormatError(pathOf(key), "missing (a whole number is required)");
         return *fallback;
     }
     if (!value->is_number_integer() || std::abs(value->get<double>()) > kLargestNumber)
-        throw FormatError(pathOf(key) + ": must be a whole number of at most " + show(kLargestNumber) +
-                          ", got " + value->dump());
+        throw FormatError(pathOf(key), "must be a whole number of at most " + show(kLargestNumber) +
+                                           ", got " + value->dump());
     return value->get<int>();
 }
 
@@ -155,11 +166,11 @@ std::string Fields::text(const std::string& key, std::optional<std::string> fall
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key) + ": missing (a string is required)");
+            throw FormatError(pathOf(key), "missing (a string is required)");
         return *fallback;
     }
     if (!value->is_string())
-        throw FormatError(pathOf(key) + ": must be a string, got " + value->dump());
+        throw FormatError(pathOf(key), "must be a string, got " + value->dump());
     return value->get<std::string>();
 }
 
@@ -167,7 +178,7 @@ bool Fields::flag(const std::string& key, bool fallback) const
 {
     const nlohmann::json* value = find(key);
     if (value && !value->is_boolean())
-        throw FormatError(pathOf(key) + ": must be true or false, got " + value->dump());
+        throw FormatError(pathOf(key), "must be true or false, got " + value->dump());
     return value ? value->get<bool>() : fallback;
 }
 
@@ -205,10 +216,10 @@ void Fields::only(const std::vector<std::string>& known) const
         std::string knownList;
         for (const std::string& k : known)
             knownList += (knownList.empty() ? "" : ", ") + k;
-        throw FormatError(pathOf(key) + ": no such key" +
-                          (closest != known.end() && editDistance(key, *closest) <= 2
-                               ? "; did you mean \"" + *closest + "\"?"
-                               : " (known: " + knownList + ")"));
+        throw FormatError(pathOf(key),
+                          "no such key" + (closest != known.end() && editDistance(key, *closest) <= 2
+                                               ? "; did you mean \"" + *closest + "\"?"
+                                               : " (known: " + knownList + ")"));
     }
 }
 
@@ -229,10 +240,10 @@ void Fields::noOthers(const std::vector<std::string>& alsoKnown) const
 void Fields::header(const std::string& format, int version) const
 {
     if (text("format", format) != format)
-        throw FormatError("format: expected \"" + format + "\", got \"" + text("format") + "\"");
+        throw FormatError("format", "expected \"" + format + "\", got \"" + text("format") + "\"");
     if (const int given = integer("version", version); given != version)
-        throw FormatError("version: this FabGuide reads version " + std::to_string(version) +
-                          ", the file is version " + std::to_string(given));
+        throw FormatError("version", "this FabGuide reads version " + std::to_string(version) +
+                                         ", the file is version " + std::to_string(given));
     text("description", "");  // free text for people, in any document
 }
 
@@ -247,7 +258,7 @@ Eigen::Vector3d Fields::vector3(const std::string& key) const
 {
     const nlohmann::json& value = array(key);
     if (value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
-        throw FormatError(pathOf(key) + ": must be [x, y, z], got " + value.dump());
+        throw FormatError(pathOf(key), "must be [x, y, z], got " + value.dump());
     return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
 }
 
@@ -257,11 +268,11 @@ const nlohmann::json& Fields::array(const std::string& key, bool optional) const
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!optional)
-            throw FormatError(pathOf(key) + ": missing (an array is required)");
+            throw FormatError(pathOf(key), "missing (an array is required)");
         return empty;
     }
     if (!value->is_array())
-        throw FormatError(pathOf(key) + ": must be an array, got " + value->dump());
+        throw FormatError(pathOf(key), "must be an array, got " + value->dump());
     return *value;
 }
 

@@ -12,10 +12,21 @@
 namespace fabguide::io {
 
 /// Malformed input: the message names the offending field, e.g. "parts[2].width: must be > 0".
-struct FormatError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-    /// The field path the message starts with ("parts[2].width"), or "" when it names none.
-    std::string field() const;
+class FormatError : public std::runtime_error {
+public:
+    /// A field refused: "field: why", `field` its path in the document ("parts[2].width").
+    FormatError(const std::string& field, const std::string& why);
+    /// A field refused, the name it holds said after it: "field ('subject'): why".
+    FormatError(const std::string& field, const std::string& subject, const std::string& why);
+    /// A mistake that names no field.
+    explicit FormatError(const std::string& message) : std::runtime_error(message) {}
+    /// The path of the field refused, or "" when the error names none.
+    const std::string& field() const { return field_; }
+    /// The same error, read from the file at `path`: the file named before the message.
+    FormatError inFile(const std::string& path) const;
+
+private:
+    std::string field_;
 };
 
 /// A number as people write it in messages: 0, -3, 0.25.

@@ -24,8 +24,8 @@ std::vector<int> readOrientations(const Fields& part)
     std::vector<int> orientations;
     for (size_t k = 0; k < list.size(); ++k) {
         if (!list[k].is_number_integer() || list[k].get<int>() % 90 != 0)
-            throw FormatError(at(part.pathOf("orientations"), k) + ": must be 0, 90, 180 or 270, got " +
-                              list[k].dump());
+            throw FormatError(at(part.pathOf("orientations"), k),
+                              "must be 0, 90, 180 or 270, got " + list[k].dump());
         orientations.push_back(((list[k].get<int>() % 360) + 360) % 360);
     }
     return orientations;
@@ -35,7 +35,7 @@ std::vector<int> readOrientations(const Fields& part)
 geometry::Point2 readPoint(const nlohmann::json& point, const std::string& path)
 {
     if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number())
-        throw FormatError(path + ": must be a point [x, y], got " + point.dump());
+        throw FormatError(path, "must be a point [x, y], got " + point.dump());
     return {point[0].get<double>(), point[1].get<double>()};
 }
 
@@ -43,7 +43,7 @@ geometry::Point2 readPoint(const nlohmann::json& point, const std::string& path)
 geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& path, bool outer)
 {
     if (!json.is_array() || json.size() < 3)
-        throw FormatError(path + ": must be a list of at least 3 [x, y] points");
+        throw FormatError(path, "must be a list of at least 3 [x, y] points");
     geometry::Polygon polygon;
     for (size_t k = 0; k < json.size(); ++k) {
         const geometry::Point2 q = readPoint(json[k], at(path, k));
@@ -54,14 +54,14 @@ geometry::Polygon readPolygon(const nlohmann::json& json, const std::string& pat
            polygon.front().y == polygon.back().y)
         polygon.pop_back();  // closed by repeating the first point
     if (polygon.size() < 3)
-        throw FormatError(path + ": must be a list of at least 3 different [x, y] points");
+        throw FormatError(path, "must be a list of at least 3 different [x, y] points");
     if (const auto [i, j] = geometry::selfCrossing(polygon); i >= 0)
-        throw FormatError(path + ": crosses itself (its edges from point " + std::to_string(i) +
-                          " and from point " + std::to_string(j) +
-                          " meet); draw it as one closed loop that does not touch itself");
+        throw FormatError(path, "crosses itself (its edges from point " + std::to_string(i) +
+                                    " and from point " + std::to_string(j) +
+                                    " meet); draw it as one closed loop that does not touch itself");
     const double area = geometry::signedArea(polygon);
     if (std::abs(area) < 1e-9)
-        throw FormatError(path + ": encloses no area");
+        throw FormatError(path, "encloses no area");
     if ((area > 0) != outer)
         std::reverse(polygon.begin(), polygon.end());
     return polygon;
@@ -80,13 +80,14 @@ geometry::Outline readOutline(const Fields& part)
             inside += std::abs(geometry::signedArea(piece));
         const double area = std::abs(geometry::signedArea(outline.holes.back()));
         if (inside < area * (1 - 1e-4))  // Clipper rounds to 0.1 µm
-            throw FormatError(path + (inside > 0 ? ": crosses the outline" : ": lies outside the outline") +
-                              "; a hole must be inside the part");
+            throw FormatError(path,
+                              std::string(inside > 0 ? "crosses the outline" : "lies outside the outline") +
+                                  "; a hole must be inside the part");
     }
     if (const int touching = geometry::holeTouchingOuter(outline); touching >= 0)
         throw FormatError(
-            at(part.pathOf("holes"), touching) +
-            ": touches the outline; a hole must lie inside the part with material all round it (a "
+            at(part.pathOf("holes"), touching),
+            "touches the outline; a hole must lie inside the part with material all round it (a "
             "notch is part of the outline)");
     return outline;
 }
@@ -135,19 +136,18 @@ std::array<std::string, 4> readEdgeBanding(const Fields& part)
         return banding;
     const nlohmann::json& found = part.value("edge_banding");
     if (!found.is_object())
-        throw FormatError(path + ": must map sides (L1, L2, W1, W2) to band names, got " + found.dump());
+        throw FormatError(path, "must map sides (L1, L2, W1, W2) to band names, got " + found.dump());
     const Fields bands(found, path);
     for (const auto& [side, band] : found.items()) {
         const auto& names = sideNames();
         const auto at = std::find(names.begin(), names.end(), side);
         if (at == names.end())
-            throw FormatError(bands.pathOf(side) +
-                              ": not a side of the part; use L1, L2 (along its length), W1 or "
-                              "W2 (along its width)");
+            throw FormatError(
+                bands.pathOf(side),
+                "not a side of the part; use L1, L2 (along its length), W1 or W2 (along its width)");
         banding[at - names.begin()] = bands.text(side);
         if (banding[at - names.begin()].empty())
-            throw FormatError(bands.pathOf(side) +
-                              ": the band's name is empty (leave the side out for none)");
+            throw FormatError(bands.pathOf(side), "the band's name is empty (leave the side out for none)");
     }
     return banding;
 }
@@ -160,8 +160,7 @@ material::PartSpec readPart(const nlohmann::json& json, const std::string& path,
     readShape(part, p);
     p.quantity = part.integer("quantity", 1);
     if (p.quantity < 1)
-        throw FormatError(part.pathOf("quantity") + ": must be at least 1, got " +
-                          std::to_string(p.quantity));
+        throw FormatError(part.pathOf("quantity"), "must be at least 1, got " + std::to_string(p.quantity));
     p.orientations = readOrientations(part);
     p.followsGrain = part.flag("follow_grain", p.followsGrain);
     p.thickness = part.number("thickness", 0.0, 0.0);
@@ -182,7 +181,7 @@ Value named(const Fields& fields, const std::string& key,
     std::string listed;
     for (size_t k = 0; k < names.size(); ++k)
         listed += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + ("\"" + names[k].first + "\"");
-    throw FormatError(fields.pathOf(key) + ": must be " + listed + ", got \"" + text + "\"");
+    throw FormatError(fields.pathOf(key), "must be " + listed + ", got \"" + text + "\"");
 }
 
 /// The name `names` gives `value`.
@@ -230,7 +229,7 @@ material::PackSettings readSettings(const nlohmann::json& document)
                    "max_growth"});  // the last three: a flat-pack design's
     result.resolution = settings.number("resolution", 0.5);
     if (!(result.resolution > 0))
-        throw FormatError("settings.resolution: must be greater than 0");
+        throw FormatError("settings.resolution", "must be greater than 0");
     result.kerf = settings.number("kerf", 0.0, 0.0);
     result.spacing = settings.number("spacing", 0.0, 0.0);
     result.trim = settings.number("trim", 0.0, 0.0);
@@ -239,13 +238,13 @@ material::PackSettings readSettings(const nlohmann::json& document)
     result.tabBelow = settings.number("tab_below", 300.0, 0.0);
     result.rotationStep = settings.integer("rotation_step", 0);
     if (result.rotationStep < 0 || (result.rotationStep > 0 && 90 % result.rotationStep != 0))
-        throw FormatError("settings.rotation_step: must divide 90 (e.g. 15, 30, 45) or be 0, got " +
-                          std::to_string(result.rotationStep));
+        throw FormatError("settings.rotation_step", "must divide 90 (e.g. 15, 30, 45) or be 0, got " +
+                                                        std::to_string(result.rotationStep));
     result.cuts = named(settings, "cuts", cutsNames());
     result.stages = settings.integer("stages", 0);
     if (result.stages < 0)
-        throw FormatError("settings.stages: must be 0 (unlimited) or a number of stages, got " +
-                          std::to_string(result.stages));
+        throw FormatError("settings.stages", "must be 0 (unlimited) or a number of stages, got " +
+                                                 std::to_string(result.stages));
     result.firstCut = named(settings, "first_cut", firstCutNames());
     result.commonLine = settings.flag("common_line", false);
     return result;
@@ -265,14 +264,13 @@ material::MasterBoard readMasterBoard(const nlohmann::json& json, const std::str
     b.cost = board.number("cost", 1.0, 0.0);
     const std::string grain = board.text("grain", "none");
     if (grain != "none" && grain != "width" && grain != "height")
-        throw FormatError(board.pathOf("grain") + ": must be \"none\", \"width\" or \"height\", got \"" +
-                          grain + "\"");
+        throw FormatError(board.pathOf("grain"),
+                          "must be \"none\", \"width\" or \"height\", got \"" + grain + "\"");
     b.grain = grain == "width"    ? material::Grain::AlongWidth
               : grain == "height" ? material::Grain::AlongHeight
                                   : material::Grain::None;
     if (b.count == 0 || b.count < -1)
-        throw FormatError(board.pathOf("count") +
-                          ": must be a positive number of boards, or -1 for unlimited");
+        throw FormatError(board.pathOf("count"), "must be a positive number of boards, or -1 for unlimited");
     return b;
 }
 
@@ -283,7 +281,7 @@ std::vector<material::MasterBoard> readMasterBoards(const nlohmann::json& docume
     for (size_t i = 0; i < boards.size(); ++i)
         result.push_back(readMasterBoard(boards[i], at("boards", i)));
     if (result.empty())
-        throw FormatError("boards: at least one master board is needed");
+        throw FormatError("boards", "at least one master board is needed");
     return result;
 }
 
@@ -291,10 +289,10 @@ void checkGrid(const material::PackSettings& settings, const std::vector<materia
 {
     for (size_t i = 0; i < boards.size(); ++i)
         if (settings.resolution > std::min(boards[i].width, boards[i].height))
-            throw FormatError("settings.resolution: a cell of " + show(settings.resolution) +
-                              " mm is larger than master board '" + boards[i].name + "' (" +
-                              show(boards[i].width) + " x " + show(boards[i].height) + " mm, boards[" +
-                              std::to_string(i) + "])");
+            throw FormatError("settings.resolution",
+                              "a cell of " + show(settings.resolution) + " mm is larger than master board '" +
+                                  boards[i].name + "' (" + show(boards[i].width) + " x " +
+                                  show(boards[i].height) + " mm, boards[" + std::to_string(i) + "])");
 }
 
 material::PackProblem readPackProblem(const nlohmann::json& document)
@@ -311,11 +309,12 @@ material::PackProblem readPackProblem(const nlohmann::json& document)
     for (size_t i = 0; i < parts.size(); ++i) {
         problem.parts.push_back(readPart(parts[i], at("parts", i), i));
         if (const auto [known, added] = ids.emplace(problem.parts[i].id, i); !added)
-            throw FormatError(at("parts", i) + ".id: \"" + problem.parts[i].id + "\" is used by parts[" +
-                              std::to_string(known->second) + "] too; give each part its own id");
+            throw FormatError(at("parts", i) + ".id", "\"" + problem.parts[i].id + "\" is used by parts[" +
+                                                          std::to_string(known->second) +
+                                                          "] too; give each part its own id");
     }
     if (problem.parts.empty())
-        throw FormatError("parts: at least one part is needed");
+        throw FormatError("parts", "at least one part is needed");
     root.noOthers({"settings", "boards"});  // read by readSettings and readMasterBoards
     return problem;
 }
@@ -344,23 +343,23 @@ material::PackProblem readEsicupInstance(const nlohmann::json& document)
     for (size_t i = 0; i < items.size(); ++i) {
         const Fields item(items[i], at("items", i));
         if (!item.has("shape") || !items[i]["shape"].is_object())
-            throw FormatError(item.pathOf("shape") +
-                              ": must be {\"type\": \"simple_polygon\", \"data\": [[x, y], ...]}");
+            throw FormatError(item.pathOf("shape"),
+                              "must be {\"type\": \"simple_polygon\", \"data\": [[x, y], ...]}");
         const Fields shape(items[i]["shape"], item.pathOf("shape"));
         if (shape.text("type") != "simple_polygon")
-            throw FormatError(shape.pathOf("type") + ": only \"simple_polygon\" shapes are read");
+            throw FormatError(shape.pathOf("type"), "only \"simple_polygon\" shapes are read");
         geometry::Polygon outline = readPolygon(shape.array("data"), shape.pathOf("data"), true);
         for (geometry::Point2& q : outline)
             q = {q.y, -q.x};  // a quarter clockwise: still counter-clockwise
         material::PartSpec p{std::to_string(i), geometry::placed({outline, {}}, 0, 0, 0), 1, {}, {}, {}};
         p.quantity = item.integer("demand", 1);
         if (p.quantity < 1)
-            throw FormatError(item.pathOf("demand") + ": must be at least 1");
+            throw FormatError(item.pathOf("demand"), "must be at least 1");
         const nlohmann::json& turns = item.array("allowed_orientations", true);
         for (size_t k = 0; k < turns.size(); ++k) {
             const double degrees = turns[k].is_number() ? turns[k].get<double>() : -1;
             if (degrees < 0 || degrees >= 360 || std::fmod(degrees, 90) != 0)
-                throw FormatError(at(item.pathOf("allowed_orientations"), k) + ": must be 0, 90, 180 or 270");
+                throw FormatError(at(item.pathOf("allowed_orientations"), k), "must be 0, 90, 180 or 270");
             p.orientations.push_back(static_cast<int>(degrees));
         }
         if (p.orientations.empty())
@@ -368,7 +367,7 @@ material::PackProblem readEsicupInstance(const nlohmann::json& document)
         problem.parts.push_back(p);
     }
     if (problem.parts.empty())
-        throw FormatError("items: no items to pack");
+        throw FormatError("items", "no items to pack");
     return problem;
 }
 
@@ -382,7 +381,7 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
     const Fields root(document, "");
     const nlohmann::json& objects = root.array("Objects");
     if (objects.empty())
-        throw FormatError("Objects: the strip (Objects[0]) is missing");
+        throw FormatError("Objects", "the strip (Objects[0]) is missing");
     material::PackProblem problem;
     problem.strip = true;
     problem.settings.resolution = 1;
@@ -397,11 +396,11 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
             material::rectangularPart(std::to_string(i), item.positive("Length"), item.positive("Height"));
         p.quantity = item.integer("Demand", 1);
         if (p.quantity < 1)
-            throw FormatError(item.pathOf("Demand") + ": must be at least 1");
+            throw FormatError(item.pathOf("Demand"), "must be at least 1");
         problem.parts.push_back(p);
     }
     if (problem.parts.empty())
-        throw FormatError("Items: no items to pack");
+        throw FormatError("Items", "no items to pack");
     return problem;
 }
 
@@ -430,10 +429,10 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
             placement.part = static_cast<int>(found - problem.parts.begin());
         }
         if (placement.part < 0 || placement.part >= static_cast<int>(problem.parts.size()))
-            throw FormatError(p.pathOf("part") + ": no such part in the problem");
+            throw FormatError(p.pathOf("part"), "no such part in the problem");
         placement.sheet = p.integer("board");
         if (placement.sheet < 0 || placement.sheet >= static_cast<int>(layout.sheets.size()))
-            throw FormatError(p.pathOf("board") + ": no such board in the layout");
+            throw FormatError(p.pathOf("board"), "no such board in the layout");
         placement.x = p.number("x");
         placement.y = p.number("y");
         placement.rotation = p.integer("rotation");
@@ -446,7 +445,7 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
     const nlohmann::json& sawn = root.array("saw_cuts", true);
     for (size_t i = 0; i < sawn.size(); ++i) {
         if (!sawn[i].is_array())
-            throw FormatError(at("saw_cuts", i) + ": must be the list of one board's saw cuts");
+            throw FormatError(at("saw_cuts", i), "must be the list of one board's saw cuts");
         layout.sawCuts.emplace_back();
         for (size_t k = 0; k < sawn[i].size(); ++k) {
             const Fields c(sawn[i][k], at(at("saw_cuts", i), k));
@@ -457,8 +456,8 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
         }
     }
     if (!sawn.empty() && sawn.size() != layout.sheets.size())
-        throw FormatError("saw_cuts: one list per board, " + std::to_string(layout.sheets.size()) + ", got " +
-                          std::to_string(sawn.size()));
+        throw FormatError("saw_cuts", "one list per board, " + std::to_string(layout.sheets.size()) +
+                                          ", got " + std::to_string(sawn.size()));
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
     root.noOthers({"sheet_utilisation", "waste_area", "cut_length", "common_line"});  // written for people
@@ -469,7 +468,7 @@ std::vector<material::Board3> readBoards3(const nlohmann::json& document)
 {
     checkNumbers(document);
     if (!document.is_array())
-        throw FormatError("boards: must be a list of boards");
+        throw FormatError("boards", "must be a list of boards");
     std::vector<material::Board3> boards;
     for (size_t i = 0; i < document.size(); ++i) {
         const Fields board(document[i], at("boards", i));
@@ -477,7 +476,7 @@ std::vector<material::Board3> readBoards3(const nlohmann::json& document)
                            board.vector3("u"), board.vector3("v"), board.positive("thickness")};
         if (std::abs(b.u.norm() - 1) > 1e-6 || std::abs(b.v.norm() - 1) > 1e-6 ||
             std::abs(b.u.dot(b.v)) > 1e-6)
-            throw FormatError(board.pathOf("u") + ", v: must be perpendicular unit vectors");
+            throw FormatError(board.pathOf("u") + ", v", "must be perpendicular unit vectors");
         boards.push_back(b);
     }
     return boards;

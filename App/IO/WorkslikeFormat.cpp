@@ -29,7 +29,7 @@ int cuboidNamed(const function::Model& model, const std::string& name, const std
     for (size_t c = 0; c < model.cuboids.size(); ++c)
         if (model.cuboids[c].name == name)
             return static_cast<int>(c);
-    throw FormatError(path + ": no cuboid named '" + name + "'");
+    throw FormatError(path, "no cuboid named '" + name + "'");
 }
 
 /// "cuboid.side" or "cuboid.width|depth|height" as an expression (a size is right − left), times `factor`.
@@ -37,12 +37,12 @@ function::Expression quantity(const function::Model& model, const nlohmann::json
                               const std::string& path, double factor = 1)
 {
     if (!value.is_string())
-        throw FormatError(path + ": must be a quantity such as \"lid.top\" or \"lid.height\", got " +
-                          value.dump());
+        throw FormatError(path,
+                          "must be a quantity such as \"lid.top\" or \"lid.height\", got " + value.dump());
     const std::string text = value.get<std::string>();
     const size_t dot = text.rfind('.');
     if (dot == std::string::npos)
-        throw FormatError(path + ": \"" + text + "\" must be cuboid.side or cuboid.size");
+        throw FormatError(path, "\"" + text + "\" must be cuboid.side or cuboid.size");
     const int c = cuboidNamed(model, text.substr(0, dot), path);
     const std::string what = text.substr(dot + 1);
     for (int k = 0; k < 6; ++k)
@@ -52,15 +52,15 @@ function::Expression quantity(const function::Model& model, const nlohmann::json
         return {{{factor, Face{c, static_cast<Side>(2 * size->second + 1)}},
                  {-factor, Face{c, static_cast<Side>(2 * size->second)}}},
                 0};
-    throw FormatError(path + ": \"" + what +
-                      "\" is not left, right, near, far, bottom, top, width, depth or height");
+    throw FormatError(path,
+                      "\"" + what + "\" is not left, right, near, far, bottom, top, width, depth or height");
 }
 
 Face face(const function::Model& model, const nlohmann::json& value, const std::string& path)
 {
     const function::Expression e = quantity(model, value, path);
     if (e.terms.size() != 1)
-        throw FormatError(path + ": must name a face such as \"lid.top\", not a size");
+        throw FormatError(path, "must name a face such as \"lid.top\", not a size");
     return e.terms[0].second;
 }
 
@@ -89,7 +89,7 @@ std::array<double, 3> point(const Fields& fields, const std::string& key)
 {
     const nlohmann::json& p = fields.array(key);
     if (p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
-        throw FormatError(fields.pathOf(key) + ": must be [x, y, z], got " + p.dump());
+        throw FormatError(fields.pathOf(key), "must be [x, y, z], got " + p.dump());
     return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
 }
 
@@ -99,7 +99,7 @@ std::array<double, 3> drawnSizes(const Fields& cuboid)
     const std::array<double, 3> sizes = point(cuboid, "drawn");
     for (double size : sizes)
         if (!(size > 0))
-            throw FormatError(cuboid.pathOf("drawn") + ": sizes must be more than 0");
+            throw FormatError(cuboid.pathOf("drawn"), "sizes must be more than 0");
     return sizes;
 }
 
@@ -108,7 +108,7 @@ int partNamed(const function::Model& model, const std::string& name, const std::
     for (size_t p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].name == name)
             return static_cast<int>(p);
-    throw FormatError(path + ": no part named '" + name + "'");
+    throw FormatError(path, "no part named '" + name + "'");
 }
 
 const char* kAxes[] = {"x", "y", "z"};
@@ -125,7 +125,7 @@ int axisNamed(const nlohmann::json& value, const std::string& path, const char* 
                           ? std::find(std::begin(kAxes), std::end(kAxes), value.get<std::string>())
                           : std::end(kAxes);
     if (axis == std::end(kAxes))
-        throw FormatError(path + ": must be " + shape + ", got " + value.dump());
+        throw FormatError(path, std::string("must be ") + shape + ", got " + value.dump());
     return static_cast<int>(axis - std::begin(kAxes));
 }
 
@@ -144,22 +144,22 @@ std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, c
     const nlohmann::json& pivot = j.array(key);
     const std::string path = j.pathOf(key);
     if (pivot.size() != 2 || !pivot[1].is_array() || pivot[1].size() != 3)
-        throw FormatError(path + ": must be [\"cuboid.side\", [x, y, z]], a point on that face");
+        throw FormatError(path, "must be [\"cuboid.side\", [x, y, z]], a point on that face");
     const Face f = face(model, pivot[0], path + "[0]");
     const auto& cuboids = model.parts[part].cuboids;
     if (std::find(cuboids.begin(), cuboids.end(), f.cuboid) == cuboids.end())
-        throw FormatError(path + "[0]: '" + function::faceName(model, f) + "' is not a face of part '" +
-                          model.parts[part].name + "'");
+        throw FormatError(path + "[0]", "'" + function::faceName(model, f) + "' is not a face of part '" +
+                                            model.parts[part].name + "'");
     const int n = function::axisOf(f.side);
     std::array<double, 2> offsets{};
     for (int k = 0; k < 2; ++k) {
         const int a = (n + 1 + k) % 3;
         if (!pivot[1][a].is_number())
-            throw FormatError(path + "[1]: must be [x, y, z]");
+            throw FormatError(path + "[1]", "must be [x, y, z]");
         const auto& c = model.cuboids[f.cuboid].coordinates;
         offsets[k] = pivot[1][a].get<double>() - c[2 * a];
         if (offsets[k] < -1e-6 || offsets[k] > c[2 * a + 1] - c[2 * a] + 1e-6)
-            throw FormatError(path + "[1]: the point lies off " + function::faceName(model, f));
+            throw FormatError(path + "[1]", "the point lies off " + function::faceName(model, f));
     }
     return {f, offsets};
 }
@@ -167,11 +167,11 @@ std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, c
 void readPivots(const function::Model& model, const Fields& j, function::Joint& joint)
 {
     if (joint.base < 0)
-        throw FormatError(j.pathOf("base") + ": a double pivot links its part to a base part");
+        throw FormatError(j.pathOf("base"), "a double pivot links its part to a base part");
     std::tie(joint.pivotFace, joint.pivot) = readPivot(model, j, "pivot", joint.part);
     std::tie(joint.basePivotFace, joint.basePivot) = readPivot(model, j, "base_pivot", joint.base);
     if (function::axisOf(joint.pivotFace.side) != function::axisOf(joint.basePivotFace.side))
-        throw FormatError(j.pathOf("base_pivot") + ": the pivots' faces must be parallel (coplanar)");
+        throw FormatError(j.pathOf("base_pivot"), "the pivots' faces must be parallel (coplanar)");
 }
 
 /// A pivot as written: [face, [x, y, z]] at the solved coordinates.
@@ -195,42 +195,43 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
     joint.name = j.text("name");
     for (const function::Joint& other : model.joints)
         if (other.name == joint.name)
-            throw FormatError(j.pathOf("name") + ": '" + joint.name + "' is used twice");
+            throw FormatError(j.pathOf("name"), "'" + joint.name + "' is used twice");
     joint.part = partNamed(model, j.text("part"), j.pathOf("part"));
     const std::string type = j.text("type");
     for (const function::Joint& other : model.joints)  // parallel links: double pivots posed alike
         if (other.part == joint.part &&
             !(type == "double_pivot" && other.type == function::Joint::Type::DoublePivot))
-            throw FormatError(j.pathOf("part") + ": '" + model.parts[joint.part].name +
-                              "' is already moved by joint '" + other.name + "'");
+            throw FormatError(j.pathOf("part"), "'" + model.parts[joint.part].name +
+                                                    "' is already moved by joint '" + other.name + "'");
     if (j.has("base")) {
         joint.base = partNamed(model, j.text("base"), j.pathOf("base"));
         if (joint.base == joint.part)
-            throw FormatError(j.pathOf("base") + ": a part cannot hang on itself");
+            throw FormatError(j.pathOf("base"), "a part cannot hang on itself");
     }
     const auto known = kJointTypes.find(type);
     if (known == kJointTypes.end())
         throw FormatError(
-            j.pathOf("type") + ": \"" + type +
-            "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot, fixed)");
+            j.pathOf("type"),
+            "\"" + type +
+                "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot, fixed)");
     joint.type = known->second;
     if (joint.type == function::Joint::Type::Fixed && joint.base < 0)
-        throw FormatError(j.pathOf("base") + ": a fixed joint holds its part to a base part");
+        throw FormatError(j.pathOf("base"), "a fixed joint holds its part to a base part");
     if (joint.type == function::Joint::Type::DoublePivot)
         readPivots(model, j, joint);
     if (joint.turns()) {
         const nlohmann::json& edge = j.array("edge");
         if (edge.size() != 2)
-            throw FormatError(j.pathOf("edge") + ": must name the two faces that meet at the hinge's edge");
+            throw FormatError(j.pathOf("edge"), "must name the two faces that meet at the hinge's edge");
         joint.edgeA = face(model, edge[0], at(j.pathOf("edge"), 0));
         joint.edgeB = face(model, edge[1], at(j.pathOf("edge"), 1));
         const auto& cuboids = model.parts[joint.part].cuboids;
         if (joint.edgeA.cuboid != joint.edgeB.cuboid ||
             std::find(cuboids.begin(), cuboids.end(), joint.edgeA.cuboid) == cuboids.end())
-            throw FormatError(j.pathOf("edge") + ": both faces must belong to one cuboid of part '" +
-                              model.parts[joint.part].name + "'");
+            throw FormatError(j.pathOf("edge"), "both faces must belong to one cuboid of part '" +
+                                                    model.parts[joint.part].name + "'");
         if (static_cast<int>(joint.edgeA.side) / 2 == static_cast<int>(joint.edgeB.side) / 2)
-            throw FormatError(j.pathOf("edge") + ": the two faces are parallel, they meet at no edge");
+            throw FormatError(j.pathOf("edge"), "the two faces are parallel, they meet at no edge");
     }
     if (joint.slides()) {
         joint.axis = axisNamed(j.text("axis"), j.pathOf("axis"), "\"x\", \"y\" or \"z\"");
@@ -246,9 +247,9 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
     configuration.name = c.text("name");
     for (const function::Configuration& other : model.configurations)
         if (other.name == configuration.name)
-            throw FormatError(c.pathOf("name") + ": '" + configuration.name + "' is used twice");
+            throw FormatError(c.pathOf("name"), "'" + configuration.name + "' is used twice");
     if (!c.has("poses") || !json["poses"].is_object())
-        throw FormatError(c.pathOf("poses") + ": must map joint names to angles (degrees) or offsets (mm)");
+        throw FormatError(c.pathOf("poses"), "must map joint names to angles (degrees) or offsets (mm)");
     for (const auto& item : json["poses"].items()) {
         const std::string& name = item.key();
         const nlohmann::json& value = item.value();
@@ -256,11 +257,10 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
         const auto joint = std::find_if(model.joints.begin(), model.joints.end(),
                                         [&](const function::Joint& j) { return j.name == name; });
         if (joint == model.joints.end())
-            throw FormatError(here + ": no joint named '" + name + "'");
+            throw FormatError(here, "no joint named '" + name + "'");
         function::JointPose pose{static_cast<int>(joint - model.joints.begin())};
         if (joint->type == function::Joint::Type::Fixed)
-            throw FormatError(here + ": joint '" + name +
-                              "' is fixed: it does not move, pose its base's joint");
+            throw FormatError(here, "joint '" + name + "' is fixed: it does not move, pose its base's joint");
         if (joint->type == function::Joint::Type::SlidingHinge) {
             const Fields both(value, here);
             pose.angle = both.number("angle");
@@ -272,12 +272,12 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             pose.pole = point(turn, "pole");
             turn.noOthers();
         } else if (!value.is_number()) {
-            throw FormatError(here + ": must be a number, got " + value.dump());
+            throw FormatError(here, "must be a number, got " + value.dump());
         } else {
             (joint->turns() ? pose.angle : pose.offset) = value.get<double>();
         }
         if (std::abs(pose.angle) > 360)  // a configuration turns a joint once at most
-            throw FormatError(here + ": an angle of at most 360 degrees either way, got " + show(pose.angle));
+            throw FormatError(here, "an angle of at most 360 degrees either way, got " + show(pose.angle));
         configuration.poses.push_back(pose);
     }
     c.noOthers();
@@ -289,9 +289,9 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
             continue;
         // Its base stands still here (stage 2 places pivots against a fixed base).
         if (const int carrier = function::jointMovingIn(model, first.base, k); carrier >= 0)
-            throw FormatError(c.pathOf("poses") + ": '" + first.name + "' needs its base '" +
-                              model.parts[first.base].name + "' to stand still, but '" +
-                              model.joints[carrier].name + "' moves it");
+            throw FormatError(c.pathOf("poses"),
+                              "'" + first.name + "' needs its base '" + model.parts[first.base].name +
+                                  "' to stand still, but '" + model.joints[carrier].name + "' moves it");
         // Double pivots that move one part (parallel links) take it to one place.
         for (size_t j = 0; j < model.joints.size(); ++j) {
             const function::Joint& other = model.joints[j];
@@ -300,8 +300,8 @@ void readConfiguration(function::Model& model, const nlohmann::json& json, const
                 continue;
             const function::JointPose* b = function::poseOf(model, static_cast<int>(j), k);
             if (!b || b->angle != a.angle || b->pole != a.pole)
-                throw FormatError(c.pathOf("poses") + ": '" + first.name + "' and '" + other.name +
-                                  "' move one part and must be posed alike");
+                throw FormatError(c.pathOf("poses"), "'" + first.name + "' and '" + other.name +
+                                                         "' move one part and must be posed alike");
         }
     }
 }
@@ -320,27 +320,29 @@ std::vector<int> partList(const function::Model& model, const Fields& r, const s
 {
     const nlohmann::json& names = r.array(key);
     if (names.empty())
-        throw FormatError(r.pathOf(key) + ": name at least one part");
+        throw FormatError(r.pathOf(key), "name at least one part");
     std::vector<int> parts;
     for (size_t k = 0; k < names.size(); ++k) {
         if (!names[k].is_string())
-            throw FormatError(at(r.pathOf(key), k) + ": must be a part name, got " + names[k].dump());
+            throw FormatError(at(r.pathOf(key), k), "must be a part name, got " + names[k].dump());
         parts.push_back(partNamed(model, names[k].get<std::string>(), at(r.pathOf(key), k)));
     }
     return parts;
 }
 
-/// Where a relationship names part `part`: "relationships[2].covering[1] ('right door')".
-std::string named(const function::Model& model, const Fields& r, std::initializer_list<const char*> keys,
-                  int part)
+/// Why part `part` cannot take part in the relationship, said where it names the part: "relationships[2].
+/// covering[1] ('right door'): why", that path its field.
+FormatError unlinked(const function::Model& model, const Fields& r, std::initializer_list<const char*> keys,
+                     int part, const std::string& why)
 {
+    const std::string& name = model.parts[part].name;
     for (const char* key : keys) {
         const nlohmann::json& names = r.array(key);
         for (size_t k = 0; k < names.size(); ++k)
-            if (names[k] == model.parts[part].name)
-                return at(r.pathOf(key), k) + " ('" + model.parts[part].name + "')";
+            if (names[k] == name)
+                return FormatError(at(r.pathOf(key), k), name, why);
     }
-    return "'" + model.parts[part].name + "'";
+    return FormatError("'" + name + "': " + why);
 }
 
 /// A relationship's "pairs" [["a.side", "b.side"], …] as face pairs; `shape` is what each must look like.
@@ -351,7 +353,7 @@ std::vector<std::pair<Face, Face>> facePairs(const function::Model& model, const
     for (size_t k = 0; k < pairs.size(); ++k) {
         const std::string here = at(r.pathOf("pairs"), k);
         if (!pairs[k].is_array() || pairs[k].size() != 2)
-            throw FormatError(here + ": must be " + shape);
+            throw FormatError(here, std::string("must be ") + shape);
         out.push_back({face(model, pairs[k][0], here + "[0]"), face(model, pairs[k][1], here + "[1]")});
     }
     return out;
@@ -368,9 +370,8 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
         function::InferredSupport inferred =
             function::inferSupport(model, s.supporting, s.supported, configuration, distance);
         if (!inferred.unlinked.empty())
-            throw FormatError(
-                named(model, r, {"supporting", "supported"}, inferred.unlinked.front()) +
-                ": no bottom face of a supported part lies above a top face of a supporting one");
+            throw unlinked(model, r, {"supporting", "supported"}, inferred.unlinked.front(),
+                           "no bottom face of a supported part lies above a top face of a supporting one");
         s.pairs = std::move(inferred.pairs);
         s.notes = std::move(inferred.notes);
         return s;
@@ -379,8 +380,8 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
     for (size_t k = 0; k < pairs.size(); ++k) {
         const auto& [top, bottom] = pairs[k];
         if (top.side != Side::Top || bottom.side != Side::Bottom)
-            throw FormatError(at(r.pathOf("pairs"), k) +
-                              ": a supporting top face rests under a supported bottom face");
+            throw FormatError(at(r.pathOf("pairs"), k),
+                              "a supporting top face rests under a supported bottom face");
         s.pairs.push_back({top.cuboid, bottom.cuboid});
     }
     return s;
@@ -398,25 +399,25 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
     f.enclosing = partNamed(model, r.text("enclosing"), r.pathOf("enclosing"));
     f.configuration = configuration;
     if (std::find(f.inner.begin(), f.inner.end(), f.enclosing) != f.inner.end())
-        throw FormatError(r.pathOf("enclosing") + ": a part cannot fit inside itself");
+        throw FormatError(r.pathOf("enclosing"), "a part cannot fit inside itself");
     if (r.has("cavity")) {
         f.cavity = cuboidNamed(model, r.text("cavity"), r.pathOf("cavity"));
         const auto& own = model.parts[f.enclosing].cuboids;
         if (!model.cuboids[f.cavity].cavity() || std::find(own.begin(), own.end(), f.cavity) == own.end())
-            throw FormatError(r.pathOf("cavity") + ": '" + r.text("cavity") + "' is not a cavity of part '" +
-                              model.parts[f.enclosing].name + "'");
+            throw FormatError(r.pathOf("cavity"), "'" + r.text("cavity") + "' is not a cavity of part '" +
+                                                      model.parts[f.enclosing].name + "'");
     }
     const nlohmann::json& portion = r.array("portion", true);
     for (size_t k = 0; k < portion.size(); ++k) {
         const std::string here = at(r.pathOf("portion"), k);
         if (!portion[k].is_string())
-            throw FormatError(here + ": must name a cuboid of an inner part");
+            throw FormatError(here, "must name a cuboid of an inner part");
         const int c = cuboidNamed(model, portion[k].get<std::string>(), here);
         if (std::none_of(f.inner.begin(), f.inner.end(), [&](int p) {
                 return std::find(model.parts[p].cuboids.begin(), model.parts[p].cuboids.end(), c) !=
                        model.parts[p].cuboids.end();
             }))
-            throw FormatError(here + ": '" + model.cuboids[c].name + "' is not a cuboid of an inner part");
+            throw FormatError(here, "'" + model.cuboids[c].name + "' is not a cuboid of an inner part");
         f.portion.push_back(c);
     }
     if (!r.has("apart")) {
@@ -426,10 +427,10 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
         for (size_t k = 0; k < apart.size(); ++k) {
             const std::string here = at(r.pathOf("apart"), k);
             if (!apart[k].is_array() || apart[k].size() != 3 || !apart[k][1].is_string())
-                throw FormatError(here + ": must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
+                throw FormatError(here, "must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
             const auto axis = std::find(std::begin(kAxes), std::end(kAxes), apart[k][1].get<std::string>());
             if (axis == std::end(kAxes) || !apart[k][0].is_string() || !apart[k][2].is_string())
-                throw FormatError(here + ": must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
+                throw FormatError(here, "must be [\"cuboid\", \"x|y|z\", \"cuboid\"]");
             f.apart.push_back({cuboidNamed(model, apart[k][0].get<std::string>(), here + "[0]"),
                                cuboidNamed(model, apart[k][2].get<std::string>(), here + "[2]"),
                                static_cast<int>(axis - std::begin(kAxes))});
@@ -446,14 +447,14 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
             const Fields each(just[k], here);
             const int part = partNamed(model, each.text("part"), each.pathOf("part"));
             if (std::find(f.inner.begin(), f.inner.end(), part) == f.inner.end())
-                throw FormatError(each.pathOf("part") + ": '" + each.text("part") + "' is not an inner part");
+                throw FormatError(each.pathOf("part"), "'" + each.text("part") + "' is not an inner part");
             const auto inferred = function::inferJust(model, f, {part}, axisList(each, "axes"));
             each.noOthers();
             f.just.insert(f.just.end(), inferred.begin(), inferred.end());
         } else if (just[k].is_array() && just[k].size() == 2) {
             f.just.push_back({face(model, just[k][0], here + "[0]"), face(model, just[k][1], here + "[1]")});
         } else {
-            throw FormatError(here + ": must be \"x\", \"y\", \"z\" or a pair of faces");
+            throw FormatError(here, "must be \"x\", \"y\", \"z\" or a pair of faces");
         }
     }
     const auto inferred = function::inferJust(model, f, f.inner, axes);
@@ -474,8 +475,8 @@ function::Cover readCover(const function::Model& model, const Fields& r, const s
         function::InferredCover inferred =
             function::inferCover(model, c.covering, c.covered, configuration, distance);
         if (!inferred.unlinked.empty())
-            throw FormatError(named(model, r, {"covering", "covered"}, inferred.unlinked.front()) +
-                              ": no face of it faces a face of the other side, overlapping it by half");
+            throw unlinked(model, r, {"covering", "covered"}, inferred.unlinked.front(),
+                           "no face of it faces a face of the other side, overlapping it by half");
         c.pairs = std::move(inferred.pairs);
         c.notes = std::move(inferred.notes);
         return c;
@@ -485,9 +486,10 @@ function::Cover readCover(const function::Model& model, const Fields& r, const s
         for (const auto* faces : {&component.covering, &component.covered})
             for (const Face& f : *faces)
                 if (static_cast<int>(f.side) / 2 != static_cast<int>(component.covering.front().side) / 2)
-                    throw FormatError(r.pathOf("pairs") + ": " + function::faceName(model, f) + " and " +
-                                      function::faceName(model, component.covering.front()) +
-                                      " are linked but not parallel");
+                    throw FormatError(r.pathOf("pairs"),
+                                      function::faceName(model, f) + " and " +
+                                          function::faceName(model, component.covering.front()) +
+                                          " are linked but not parallel");
     return c;
 }
 
@@ -499,7 +501,7 @@ int configurationNamed(const function::Model& model, const Fields& r)
     for (size_t c = 0; c < model.configurations.size(); ++c)
         if (model.configurations[c].name == name)
             return static_cast<int>(c);
-    throw FormatError(r.pathOf("configuration") + ": no configuration named '" + name + "'");
+    throw FormatError(r.pathOf("configuration"), "no configuration named '" + name + "'");
 }
 
 void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path)
@@ -513,20 +515,20 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     };
     if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside) ||
         named(model.cover))
-        throw FormatError(r.pathOf("name") + ": '" + name + "' is used twice");
+        throw FormatError(r.pathOf("name"), "'" + name + "' is used twice");
     if (type == "flush") {
         const nlohmann::json& faces = r.array("faces");
         if (faces.size() != 2)
-            throw FormatError(r.pathOf("faces") + ": must name two faces");
+            throw FormatError(r.pathOf("faces"), "must name two faces");
         model.flush.push_back({name, face(model, faces[0], at(r.pathOf("faces"), 0)),
                                face(model, faces[1], at(r.pathOf("faces"), 1)), configuration});
     } else if (type == "geometric") {
         const std::string relation = r.text("relation", "equal");
         if (relation != "equal" && relation != "at_most")
-            throw FormatError(r.pathOf("relation") + ": must be \"equal\" or \"at_most\", got \"" + relation +
-                              "\"");
+            throw FormatError(r.pathOf("relation"),
+                              "must be \"equal\" or \"at_most\", got \"" + relation + "\"");
         if (!r.has("left") || !r.has("right"))
-            throw FormatError(r.pathOf(r.has("left") ? "right" : "left") + ": missing");
+            throw FormatError(r.pathOf(r.has("left") ? "right" : "left"), "missing");
         function::Geometric g{name,
                               relation == "equal" ? function::Geometric::Relation::Equal
                                                   : function::Geometric::Relation::AtMost,
@@ -542,9 +544,9 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     } else if (type == "cover") {
         model.cover.push_back(readCover(model, r, name, configuration));
     } else {
-        throw FormatError(
-            r.pathOf("type") + ": \"" + type +
-            "\" is not a relationship this FabGuide knows (cover, fit_inside, support, flush, geometric)");
+        throw FormatError(r.pathOf("type"), "\"" + type +
+                                                "\" is not a relationship this FabGuide knows (cover, "
+                                                "fit_inside, support, flush, geometric)");
     }
     r.noOthers();
 }
@@ -569,8 +571,8 @@ int solidAround(const function::Model& model, const function::Part& part, const 
         }
     }
     if (best < 0)
-        throw FormatError(path + ": cavity '" + cavity.name + "' lies outside every solid cuboid of part '" +
-                          part.name + "'");
+        throw FormatError(
+            path, "cavity '" + cavity.name + "' lies outside every solid cuboid of part '" + part.name + "'");
     return best;
 }
 
@@ -598,26 +600,26 @@ function::Model readWorkslike(const nlohmann::json& document)
         function::Part built{part.text("name"), {}};
         const nlohmann::json& cuboids = part.array("cuboids");
         if (cuboids.empty())
-            throw FormatError(part.pathOf("cuboids") + ": a part needs at least one cuboid");
+            throw FormatError(part.pathOf("cuboids"), "a part needs at least one cuboid");
         for (size_t c = 0; c < cuboids.size(); ++c) {
             const Fields cuboid(cuboids[c], at(part.pathOf("cuboids"), c));
             const std::string name =
                 cuboid.text("name", built.name + (cuboids.size() > 1 ? std::to_string(c + 1) : ""));
             for (const function::Cuboid& other : model.cuboids)
                 if (other.name == name)
-                    throw FormatError(cuboid.pathOf("name") + ": '" + name + "' is used twice");
+                    throw FormatError(cuboid.pathOf("name"), "'" + name + "' is used twice");
             const auto low = point(cuboid, "min"), high = point(cuboid, "max");
             for (int a = 0; a < 3; ++a)
                 if (!(high[a] > low[a]))
-                    throw FormatError(cuboid.pathOf("max") + ": must exceed min along every axis");
+                    throw FormatError(cuboid.pathOf("max"), "must exceed min along every axis");
             built.cuboids.push_back(static_cast<int>(model.cuboids.size()));
             model.cuboids.push_back({name, {low[0], high[0], low[1], high[1], low[2], high[2]}});
             if (cuboid.has("drawn"))
                 model.cuboids.back().drawn = drawnSizes(cuboid);
             if (cuboid.flag("cavity", false)) {
                 if (c == 0)
-                    throw FormatError(cuboid.pathOf("cavity") +
-                                      ": a part's first cuboid is solid (cavities are cut from solids)");
+                    throw FormatError(cuboid.pathOf("cavity"),
+                                      "a part's first cuboid is solid (cavities are cut from solids)");
                 model.cuboids.back().within =
                     solidAround(model, built, model.cuboids.back(), cuboid.pathOf("min"));
             }
@@ -626,8 +628,9 @@ function::Model readWorkslike(const nlohmann::json& document)
         part.noOthers();
         model.parts.push_back(built);
         if (model.cuboids.size() > kMostCuboids)
-            throw FormatError(part.pathOf("cuboids") + ": more than " + std::to_string(kMostCuboids) +
-                              " cuboids in the model; FabGuide solves up to that");
+            throw FormatError(part.pathOf("cuboids"),
+                              "more than " + std::to_string(kMostCuboids) +
+                                  " cuboids in the model; FabGuide solves up to that");
     }
     const nlohmann::json& joints = root.array("joints", true);
     for (size_t j = 0; j < joints.size(); ++j)
@@ -636,10 +639,11 @@ function::Model readWorkslike(const nlohmann::json& document)
         int base = model.joints[j].base;
         for (size_t step = 0; base >= 0; ++step) {
             if (step == model.joints.size())
-                throw FormatError(at("joints", j) + ".base: the joints' bases go round in a circle");
+                throw FormatError(at("joints", j) + ".base", "the joints' bases go round in a circle");
             if (step == kDeepestChain)
-                throw FormatError(at("joints", j) + ".base: more than " + std::to_string(kDeepestChain) +
-                                  " joints in a chain to the ground; FabGuide solves chains up to that");
+                throw FormatError(at("joints", j) + ".base",
+                                  "more than " + std::to_string(kDeepestChain) +
+                                      " joints in a chain to the ground; FabGuide solves chains up to that");
             const int carrier = function::jointMoving(model, base);
             base = carrier < 0 ? -1 : model.joints[carrier].base;
         }
@@ -649,9 +653,10 @@ function::Model readWorkslike(const nlohmann::json& document)
     for (size_t c = 0; c < configurations.size(); ++c)
         readConfiguration(model, configurations[c], at("configurations", c));
     if (model.cuboids.size() * configurations.size() > kMostPosedCuboids)
-        throw FormatError("configurations: " + std::to_string(configurations.size()) + " configurations of " +
-                          std::to_string(model.cuboids.size()) + " cuboids; FabGuide solves up to " +
-                          std::to_string(kMostPosedCuboids) + " cuboids times configurations");
+        throw FormatError("configurations",
+                          std::to_string(configurations.size()) + " configurations of " +
+                              std::to_string(model.cuboids.size()) + " cuboids; FabGuide solves up to " +
+                              std::to_string(kMostPosedCuboids) + " cuboids times configurations");
     const nlohmann::json& relationships = root.array("relationships", true);
     for (size_t r = 0; r < relationships.size(); ++r)
         readRelationship(model, relationships[r], at("relationships", r));

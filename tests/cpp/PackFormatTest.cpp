@@ -132,11 +132,18 @@ TEST(PackFormat, AMisspeltKeyIsNamedWithTheKeyMeant)
 
 TEST(PackFormat, ErrorsCarryTheirFieldPath)
 {
-    EXPECT_EQ(io::FormatError("parts[0].orientations[1]: must be 0, 90, 180 or 270").field(),
-              "parts[0].orientations[1]");
-    EXPECT_EQ(io::FormatError("settings.kerf: must be at least 0,\ngot -1").field(), "settings.kerf");
-    EXPECT_EQ(io::FormatError("no configuration named 'open'").field(), "");
+    const io::FormatError kerf("settings.kerf", "must be at least 0, got -1");
+    EXPECT_EQ(kerf.field(), "settings.kerf");
+    EXPECT_STREQ(kerf.what(), "settings.kerf: must be at least 0, got -1");
+    EXPECT_EQ(kerf.inFile("job.json").field(), "settings.kerf");
+    EXPECT_STREQ(kerf.inFile("job.json").what(), "job.json: settings.kerf: must be at least 0, got -1");
     EXPECT_EQ(io::FormatError("body 'lid': a union failed").field(), "");
+    try {
+        io::checkNumbers(json::parse(R"({"parts": [{"width": 1e9}]})"));
+        ADD_FAILURE() << "1e9 mm read";
+    } catch (const io::FormatError& e) {
+        EXPECT_EQ(e.field(), "parts[0].width");
+    }
 }
 
 TEST(PackFormat, ReadsOrDatasetsStripInstances)

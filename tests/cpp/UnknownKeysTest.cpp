@@ -1,7 +1,8 @@
 // Every object of every FabGuide format refuses a key it does not know, naming it: a
 // generator takes each example and test file, adds a misspelt key to one object at a time, and expects the
 // reader to refuse exactly that key. Objects whose keys are names the user chose (a configuration's poses)
-// are the only ones that take any key.
+// are the only ones that take any key. And every value spoilt is refused with its field given apart from the
+// words, as the message names it.
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
@@ -49,6 +50,19 @@ json& at(json& document, const std::string& path)
     for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it)
         value = (*it)[1].matched ? &(*value)[(*it)[1].str()] : &(*value)[std::stoul((*it)[2].str())];
     return *value;
+}
+
+/// The path of every value in `document` that is neither an object nor an array.
+void valuesIn(const json& value, const std::string& path, std::vector<std::string>& paths)
+{
+    if (value.is_object())
+        for (const auto& item : value.items())
+            valuesIn(item.value(), path.empty() ? item.key() : path + "." + item.key(), paths);
+    else if (value.is_array())
+        for (size_t i = 0; i < value.size(); ++i)
+            valuesIn(value[i], path + "[" + std::to_string(i) + "]", paths);
+    else
+        paths.push_back(path);
 }
 
 /// A key the object does not have, a slip of one of its own keys ("kerf" -> "kerff") when it has any.
@@ -115,7 +129,53 @@ void expectEveryObjectRefusesUnknownKeys(const std::string& suffix, const Reader
     EXPECT_GT(files, 0u) << suffix;
 }
 
+/// For each value of each file ending in `suffix` made a word or a negative number, the refusals
+/// whose field (FormatError::field) is not what their message starts with: "field: " or "field ('name'): ",
+/// or, with no field, something other than a path. `named`: the refusals that gave a field.
+std::vector<std::string> fieldsNotAsSaid(const std::string& suffix, const Reader& read, size_t& named)
+{
+    static const std::regex path(R"([A-Za-z_]\w*(\[\d+\]|\.[A-Za-z_]\w*)*: [\s\S]*)");
+    std::vector<std::string> wrong;
+    for (const fs::path& file : filesEndingIn(suffix)) {
+        const json document = io::readJsonFile(file.string());
+        std::vector<std::string> paths;
+        valuesIn(document, "", paths);
+        for (const std::string& spoilt : paths)
+            for (const json& value : {json("x"), json(-1)}) {
+                json d = document;
+                at(d, spoilt) = value;
+                try {
+                    read(d);
+                } catch (const io::FormatError& e) {
+                    const std::string message = e.what(), field = e.field();
+                    named += !field.empty();
+                    const bool said = field.empty() ? !std::regex_match(message, path)
+                                                    : message.rfind(field + ": ", 0) == 0 ||
+                                                          message.rfind(field + " ('", 0) == 0;
+                    if (!said)
+                        wrong.push_back(file.filename().string() + " " + spoilt + " = " + value.dump() +
+                                        ": field \"" + field + "\" for \"" + message + "\"");
+                }
+            }
+    }
+    return wrong;
+}
+
 }  // namespace
+
+TEST(SpoiltValues, EveryRefusalGivesTheFieldItsMessageNames)
+{
+    const std::vector<std::pair<std::string, Reader>> formats{
+        {".pack.json", [](const json& d) { io::readPackProblem(d); }},
+        {".workslike.json", [](const json& d) { io::readWorkslike(d); }},
+        {".flatpack.json", [](const json& d) { io::readFlatpack(d, io::Satisfied::NotRequired); }}};
+    for (const auto& [suffix, read] : formats) {
+        size_t named = 0;
+        for (const std::string& wrong : fieldsNotAsSaid(suffix, read, named))
+            ADD_FAILURE() << wrong;
+        EXPECT_GT(named, 100u) << suffix;
+    }
+}
 
 TEST(UnknownKeys, EveryObjectOfAPackProblemRefusesAKeyItDoesNotKnow)
 {
