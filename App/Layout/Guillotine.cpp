@@ -17,8 +17,6 @@ namespace fabguide::material {
 
 namespace {
 
-constexpr double kHair = 1e-9;  // mm: what counts as touching
-
 /// A piece of a sheet in the usable sheet's coordinates (trim removed), the clearance to the next piece
 /// included at its far edges; axis 0 is x, 1 is y.
 struct Piece {

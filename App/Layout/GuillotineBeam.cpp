@@ -9,7 +9,6 @@
 namespace fabguide::material {
 
 namespace {
-constexpr double kHair = 1e-9;             // mm: what counts as touching
 constexpr long kMostCandidates = 1 << 20;  // partial layouts grown at one depth, 32 MB
 }  // namespace
 

@@ -13,8 +13,6 @@ namespace fabguide::material {
 
 namespace {
 
-constexpr double kHair = 1e-9;  // mm: what counts as touching
-
 struct Rect {
     double x = 0, y = 0, w = 0, h = 0;
     bool contains(const Rect& o) const

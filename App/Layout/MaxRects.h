@@ -13,6 +13,10 @@
 
 namespace fabguide::material {
 
+/// mm: what the millimetre packers count as touching (two edges, or a size and its room, this close are
+/// equal).
+constexpr double kHair = 1e-9;
+
 /// A unit of a part as it may lie: its rotation and its size with the clearance added.
 struct Pose {
     int rotation = 0;
