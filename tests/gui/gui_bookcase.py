@@ -11,8 +11,9 @@ holds no traceback and no red line that is not such a sentence."""
 # FreeCAD 1.0's own line for a box of negative height:
 # expects error: Height of box too small
 # expects error: not found in 'Dims.
-# FreeCAD's undo of Suggest's cell values, at times, once the height cell has held a word (the values come back):
-# expects error: exception while restoring Bookcase#Dims.B2: std::bad_cast
+# FreeCAD 0.20's undo of Suggest's cell values, at times, once the height cell has held a word (std::bad_cast on the
+# height's cell B2 or the width's B1, whichever Suggest changed; the values come back, checked below):
+# expects error: exception while restoring Bookcase#Dims.B
 # FabGuide's sentences for the user's mistakes:
 # expects error: Design 'FlatpackDesign': parameter 'Dims.heigth 1500 2000': no spreadsheet 'Dims' with an alias
 # expects error: Design 'FlatpackDesign': parameter 'Dims.height 100 200' is 1800 now, outside its range
