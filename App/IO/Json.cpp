@@ -36,43 +36,49 @@ FormatError FormatError::inFile(const std::string& path) const
 
 namespace {
 
-/// The path of the first value of `value` that checkNumbers refuses, with why, or "".
-std::string refused(const nlohmann::json& value, double largest, int depth)
+/// The first value of a document that checkNumbers refuses: its path from the value searched (".parts[3].x",
+/// "" for that value itself) and why; `tooDeep` when it is nested too deep.
+struct Refusal {
+    std::string path, why;
+    bool tooDeep = false;
+};
+
+/// The first value of `value` (at `depth` in its document) that checkNumbers refuses; nothing when none.
+std::optional<Refusal> refused(const nlohmann::json& value, double largest, int depth)
 {
     if (depth > kDeepestNesting)
-        return ": nested more than " + std::to_string(kDeepestNesting) + " levels deep";
+        return Refusal{"", "nested more than " + std::to_string(kDeepestNesting) + " levels deep", true};
     if (value.is_number()) {
         const double x = value.get<double>();
-        return std::abs(x) <= largest
-                   ? ""
-                   : ": " + value.dump() + " is beyond ±" + std::to_string(static_cast<long long>(largest));
+        if (std::abs(x) <= largest)
+            return std::nullopt;
+        return Refusal{"", value.dump() + " is beyond ±" + std::to_string(static_cast<long long>(largest))};
     }
     // A path past a few levels only buries the message: a too-deep value is named by where its nesting
     // starts.
-    const auto within = [&](const std::string& step, const std::string& why) {
-        return depth > 3 && why[0] == ':' && why.find("nested") != std::string::npos ? why : step + why;
+    const auto within = [&](const std::string& step, Refusal r) {
+        if (!(depth > 3 && r.tooDeep && r.path.empty()))
+            r.path = step + r.path;
+        return r;
     };
     if (value.is_array())
         for (size_t k = 0; k < value.size(); ++k)
-            if (std::string why = refused(value[k], largest, depth + 1); !why.empty())
-                return within("[" + std::to_string(k) + "]", why);
+            if (std::optional<Refusal> r = refused(value[k], largest, depth + 1))
+                return within("[" + std::to_string(k) + "]", *r);
     if (value.is_object())
         for (const auto& item : value.items())
-            if (std::string why = refused(item.value(), largest, depth + 1); !why.empty())
-                return within("." + item.key(), why);
-    return "";
+            if (std::optional<Refusal> r = refused(item.value(), largest, depth + 1))
+                return within("." + item.key(), *r);
+    return std::nullopt;
 }
 
 }  // namespace
 
 void checkNumbers(const nlohmann::json& document, double largest)
 {
-    const std::string why = refused(document, largest, 0);
-    if (why.empty())
-        return;
-    const size_t colon = why.rfind(": ");  // after the path, whatever its keys hold
-    const std::string path = why.substr(0, colon);
-    throw FormatError(path[0] == '.' ? path.substr(1) : "document" + path, why.substr(colon + 2));
+    if (const std::optional<Refusal> r = refused(document, largest, 0))
+        throw FormatError(!r->path.empty() && r->path[0] == '.' ? r->path.substr(1) : "document" + r->path,
+                          r->why);
 }
 
 nlohmann::json readJsonFile(const std::string& path)
