@@ -29,17 +29,40 @@ const std::regex kNamedKeys(R"(configurations\[\d+\]\.poses|parameters)");
 
 using Reader = std::function<void(const json&)>;
 
-/// The path of every object in `document`, as the readers' messages write it ("parts[2].cuboids[0]").
-void objectsIn(const json& value, const std::string& path, std::vector<std::string>& paths)
+/// `visit(value, path)` for `value` and every value inside it, each with its path as the readers' messages
+/// write it ("parts[2].cuboids[0]").
+void eachIn(const json& value, const std::string& path,
+            const std::function<void(const json&, const std::string&)>& visit)
 {
-    if (value.is_object()) {
-        if (!std::regex_match(path, kNamedKeys))
-            paths.push_back(path);
+    visit(value, path);
+    if (value.is_object())
         for (const auto& item : value.items())
-            objectsIn(item.value(), path.empty() ? item.key() : path + "." + item.key(), paths);
-    } else if (value.is_array())
+            eachIn(item.value(), path.empty() ? item.key() : path + "." + item.key(), visit);
+    else if (value.is_array())
         for (size_t i = 0; i < value.size(); ++i)
-            objectsIn(value[i], path + "[" + std::to_string(i) + "]", paths);
+            eachIn(value[i], path + "[" + std::to_string(i) + "]", visit);
+}
+
+/// The path of every object in `document` but those whose keys the user names.
+std::vector<std::string> objectsIn(const json& document)
+{
+    std::vector<std::string> paths;
+    eachIn(document, "", [&](const json& value, const std::string& path) {
+        if (value.is_object() && !std::regex_match(path, kNamedKeys))
+            paths.push_back(path);
+    });
+    return paths;
+}
+
+/// The path of every value in `document` that is neither an object nor an array.
+std::vector<std::string> valuesIn(const json& document)
+{
+    std::vector<std::string> paths;
+    eachIn(document, "", [&](const json& value, const std::string& path) {
+        if (!value.is_object() && !value.is_array())
+            paths.push_back(path);
+    });
+    return paths;
 }
 
 /// The value at `path` in `document` (a path objectsIn gave).
@@ -50,19 +73,6 @@ json& at(json& document, const std::string& path)
     for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it)
         value = (*it)[1].matched ? &(*value)[(*it)[1].str()] : &(*value)[std::stoul((*it)[2].str())];
     return *value;
-}
-
-/// The path of every value in `document` that is neither an object nor an array.
-void valuesIn(const json& value, const std::string& path, std::vector<std::string>& paths)
-{
-    if (value.is_object())
-        for (const auto& item : value.items())
-            valuesIn(item.value(), path.empty() ? item.key() : path + "." + item.key(), paths);
-    else if (value.is_array())
-        for (size_t i = 0; i < value.size(); ++i)
-            valuesIn(value[i], path + "[" + std::to_string(i) + "]", paths);
-    else
-        paths.push_back(path);
 }
 
 /// A key the object does not have, a slip of one of its own keys ("kerf" -> "kerff") when it has any.
@@ -78,9 +88,8 @@ std::string misspelt(const json& object)
 /// without a word, or refused it naming something else.
 std::vector<std::string> takingUnknownKeys(const json& document, const Reader& read)
 {
-    std::vector<std::string> paths, taking;
-    objectsIn(document, "", paths);
-    for (const std::string& path : paths) {
+    std::vector<std::string> taking;
+    for (const std::string& path : objectsIn(document)) {
         json spoilt = document;
         json& object = at(spoilt, path);
         const std::string key = misspelt(object);
@@ -137,12 +146,10 @@ std::vector<std::string> fieldsNotAsSaid(const std::string& suffix, const Reader
 {
     static const std::regex path(R"([A-Za-z_]\w*(\[\d+\]|\.[A-Za-z_]\w*)*: [\s\S]*)");
     std::vector<std::string> wrong;
-    for (const fs::path& file :
-         filesEndingIn(suffix, {"examples"})) {  // the test files too: minutes under ASan
+    const std::vector<const char*> examples{"examples"};  // the test files too took minutes under ASan
+    for (const fs::path& file : filesEndingIn(suffix, examples)) {
         const json document = io::readJsonFile(file.string());
-        std::vector<std::string> paths;
-        valuesIn(document, "", paths);
-        for (const std::string& spoilt : paths)
+        for (const std::string& spoilt : valuesIn(document))
             for (const json& value : {json("x"), json(-1)}) {
                 json d = document;
                 at(d, spoilt) = value;
