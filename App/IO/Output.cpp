@@ -454,10 +454,10 @@ void replaceSetOf(const std::string& manifest)
         if (node.is_structured())
             for (const nlohmann::json& child : node)
                 todo.push_back(&child);
-        if (!node.is_string())
+        if (!node.is_string() || node.get_ref<const std::string&>().empty())  // "": a value, no file
             continue;
         const std::filesystem::path named(node.get<std::string>());
-        for (const std::filesystem::path& file : {folder / named, std::filesystem::absolute(named)}) {
+        for (const std::filesystem::path& file : {folder / named, std::filesystem::absolute(named, error)}) {
             const std::filesystem::path normal = file.lexically_normal();
             if (!within(normal.parent_path(), folder))
                 continue;

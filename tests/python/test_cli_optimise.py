@@ -152,3 +152,12 @@ def test_a_layout_order_that_is_not_the_parts_is_refused_by_name(fabguide_cli, s
         assert run.returncode == 1 and said in run.stderr, run.stderr
     path.write_text(json.dumps(dict(design, layout_order=ids[::-1])))  # any order of the parts: laid out
     assert optimise(fabguide_cli, str(path), tmp_path / "out", "--time-limit", "1").returncode == 0
+
+
+def test_a_second_run_into_the_same_folder_replaces_the_first(fabguide_cli, source_dir, tmp_path):
+    path = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
+    for _ in range(2):  # the first's summary.json holds values that are empty strings, not files
+        run = optimise(fabguide_cli, path, tmp_path, "--seed", "1", "--time-limit", "1")
+        assert run.returncode == 0, run.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert all((tmp_path / s["file"]).exists() for s in summary["suggestions"])
