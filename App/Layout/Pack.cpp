@@ -45,7 +45,7 @@ RasterPart rasterPart(const PartSpec& spec, const PackSettings& settings)
 namespace {
 
 /// Whether `part` is cut from `board` (of its thickness) and fits on it (trim removed) in one of its
-/// orientations, by its bounding box.
+/// orientations the board's grain allows, by its bounding box.
 bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& s, bool strip)
 {
     if (!ofThickness(part.thickness, board.thickness))
@@ -53,7 +53,7 @@ bool fitsOn(const PartSpec& part, const MasterBoard& board, const PackSettings& 
     const double w = board.width - 2 * s.trim, h = strip ? HUGE_VAL : board.height - 2 * s.trim;
     for (int rotation : part.orientations) {
         const auto [width, height] = part.turnedSize(rotation);
-        if (width <= w + 1e-9 && height <= h + 1e-9)
+        if (grainAllows(part.followsGrain, rotation, board.grain) && width <= w + 1e-9 && height <= h + 1e-9)
             return true;
     }
     return false;

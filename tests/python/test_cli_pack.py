@@ -72,6 +72,16 @@ def test_oversized_part_is_named(fabguide_cli, tmp_path):
     assert "part 'table top' is larger than every master board" in run.stderr
 
 
+def test_a_part_longer_than_the_grain_allows_is_named(fabguide_cli, tmp_path):
+    # 1500 mm along the grain, which runs across a 2440 x 1220 sheet: it fits only turned, which the grain forbids.
+    problem = tmp_path / "grain.pack.json"
+    problem.write_text(json.dumps({"boards": [{"width": 2440, "height": 1220, "grain": "height"}],
+                                   "parts": [{"id": "side", "width": 1500, "height": 300, "follow_grain": True}]}))
+    run = pack(fabguide_cli, str(problem), "-o", str(tmp_path / "out.json"))
+    assert run.returncode == 1
+    assert "part 'side' is larger than every master board (1500 x 300 mm)" in run.stderr
+
+
 def test_help_lists_the_commands(fabguide_cli):
     run = subprocess.run([fabguide_cli, "--help"], capture_output=True, text=True)
     assert run.returncode == 0
