@@ -87,7 +87,7 @@ void run(const OptimiseArguments& args)
     const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
     material::MinWastageOptions options = args.options;
     options.guided = !args.unguided;
-    options.layoutOrder = flatpack.layoutOrder;
+    options.kept = flatpack.kept;
     options.progress = [](double done, double best) {
         std::fprintf(stderr, "\r%3.0f %%  best usage %.4f", 100 * done, best);
     };

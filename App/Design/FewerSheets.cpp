@@ -1,7 +1,6 @@
 #include "Design/FewerSheets.h"
 
 #include "Layout/Deadline.h"
-#include "Layout/OrderingSearch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,32 +13,24 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-GridLayout searchedLayout(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::uint64_t seed,
-                          double seconds, const std::atomic<bool>* cancel)
-{
-    const RasterProblem units = material.raster(sizes);
-    OrderingSearchOptions search = orderingSearch(units.parts.size(), seed, seconds);
-    search.cancel = cancel;
-    return searchFromStarts(units.parts, material.stock(), search);
-}
-
 SavedSheets fewerSheets(const DesignSpace& design, const MaterialSpace& material, const DesignLayout& start,
                         std::uint64_t seed, Clock::time_point deadline, const std::atomic<bool>* cancel)
 {
     const Deadline stop(deadline, cancel);
     constexpr int halvings = 6;  // the shrink found to 1/64 of its full length
-    // Each fresh layout gets an even share of the time: the least design, then the bisections.
+    // The least design, the one most likely to save a sheet, gets half the time; the bisections share the
+    // rest.
     const auto share = [&](int layoutsLeft) { return stop.secondsLeft() / std::max(1, layoutsLeft); };
     const auto laidOut = [&](const Eigen::VectorXd& X, double seconds) {
         Eigen::VectorXd sizes = design.sizes(X);
-        GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
+        GridLayout layout = material.packed(sizes, seed, seconds, cancel);
         return designLayout(material, X, std::move(sizes), std::move(layout));
     };
     const std::optional<Eigen::VectorXd> shrunk = design.least(start.X, deadline);
     if (!shrunk)
         return {};
     const Eigen::VectorXd& least = *shrunk;
-    SavedSheets saved{laidOut(least, share(1 + halvings)), {}};
+    SavedSheets saved{laidOut(least, share(2)), {}};
     const DesignLayout& smallest = *saved.least;
     std::vector<DesignLayout>& found = saved.designs;
     if (!(smallest.score() < start.score()) || smallest.figures.sheets >= start.figures.sheets)

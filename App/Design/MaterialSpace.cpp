@@ -1,5 +1,7 @@
 #include "Design/MaterialSpace.h"
 
+#include "Layout/Raster.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,6 +62,15 @@ std::vector<int> MaterialSpace::unitsInOrder(const std::vector<int>& kinds) cons
 
 namespace {
 
+/// Every one of `units` unplaced: no layout.
+GridLayout nothingPlaced(size_t units)
+{
+    GridLayout none;
+    none.unplaced.resize(units);
+    std::iota(none.unplaced.begin(), none.unplaced.end(), 0);
+    return none;
+}
+
 /// A unit's cells on its sheet: lower corner `at`, extent `length`, per material-space axis.
 struct Rect {
     int at[2];
@@ -108,7 +119,103 @@ std::optional<int> decollision(const std::vector<Rect>& placed, const Rect& r, i
     return moved.at[axis] - r.at[axis];
 }
 
+/// `grid`'s units each where it says, with its sheets' extents; nullopt when one leaves its sheet or overlaps
+/// another.
+std::optional<GridLayout> asPlaced(GridLayout grid, const RasterProblem& units,
+                                   const std::vector<BoardStock>& stock)
+{
+    grid.usedWidth.assign(grid.stock.size(), 0);
+    grid.usedHeight.assign(grid.stock.size(), 0);
+    grid.skylineArea.assign(grid.stock.size(), 0);
+    std::vector<std::vector<Rect>> placed(grid.stock.size());
+    for (const Placed& p : grid.placed) {
+        const Footprint& shape = units.parts[p.part].shapes[p.shape];
+        const Rect r{{p.x, p.y}, {shape.width(), shape.height()}};
+        const BoardStock& board = stock[grid.stock[p.sheet]];
+        if (p.x < 0 || p.y < 0 || p.x + shape.width() > board.width || p.y + shape.height() > board.height ||
+            collides(placed[p.sheet], r))
+            return std::nullopt;
+        placed[p.sheet].push_back(r);
+        grid.usedWidth[p.sheet] = std::max(grid.usedWidth[p.sheet], p.x + shape.width());
+        grid.usedHeight[p.sheet] = std::max(grid.usedHeight[p.sheet], p.y + shape.height());
+    }
+    return grid;
+}
+
 }  // namespace
+
+GridLayout MaterialSpace::packed(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
+                                 const std::atomic<bool>* cancel) const
+{
+    // Every side in whole cells: a part as long as its footprint less the clearance, a board's usable side as
+    // its cells less the clearance (which its far edges add back), so that pack's placements fall on cells.
+    const double tau = settings_.resolution, clearance = settings_.kerf + settings_.spacing;
+    Eigen::VectorXd cells = sizes;
+    for (double& side : cells)
+        side = cellsCovering(side + clearance, tau) * tau - clearance;
+    PackProblem onCells = problem(cells);
+    onCells.settings.commonLine = false;  // parts a kerf apart, as on the grid
+    for (size_t k = 0; k < boards_.size(); ++k) {
+        MasterBoard& board = onCells.boards[k];
+        board.width = stock_[k].width * tau - clearance + 2 * settings_.trim;
+        board.height = stock_[k].height * tau - clearance + 2 * settings_.trim;
+    }
+    OrderingSearchOptions search = orderingSearch(kindOf_.size(), seed, seconds);
+    search.cancel = cancel;
+    checkSettings(problem(sizes));  // a part larger than every master board named, at its size in mm
+    try {
+        return onGrid(pack(onCells, search), onCells.boards, sizes);
+    } catch (const PackingError&) {  // the boards or the time ran out
+        return nothingPlaced(kindOf_.size());
+    }
+}
+
+GridLayout MaterialSpace::onGrid(const Layout& layout, const Eigen::VectorXd& sizes) const
+{
+    return onGrid(layout, boards_, sizes);
+}
+
+GridLayout MaterialSpace::onGrid(const Layout& layout, const std::vector<MasterBoard>& boards,
+                                 const Eigen::VectorXd& sizes) const
+{
+    const RasterProblem units = raster(sizes);
+    GridLayout grid;
+    std::vector<int> opened(boards.size(), 0);
+    for (const MasterBoard& sheet : layout.sheets) {
+        const auto kind = std::find_if(boards.begin(), boards.end(), [&](const MasterBoard& b) {
+            return b.name == sheet.name && b.material == sheet.material && b.width == sheet.width &&
+                   b.height == sheet.height && b.thickness == sheet.thickness && b.grain == sheet.grain &&
+                   b.cost == sheet.cost;
+        });
+        const auto k = static_cast<size_t>(kind - boards.begin());
+        if (kind == boards.end() || (stock_[k].count >= 0 && ++opened[k] > stock_[k].count))
+            return nothingPlaced(kindOf_.size());
+        grid.stock.push_back(static_cast<int>(k));
+    }
+    std::vector<int> kinds;
+    for (const Placement& p : layout.placements)
+        kinds.push_back(p.part);
+    const std::vector<int> order = unitsInOrder(kinds);
+    if (order.empty())
+        return nothingPlaced(kindOf_.size());
+    const double tau = settings_.resolution, trim = settings_.trim;
+    for (size_t i = 0; i < order.size(); ++i) {
+        const Placement& p = layout.placements[i];
+        const RasterPart& unit = units.parts[order[i]];
+        const auto turn = std::find_if(unit.rotations.begin(), unit.rotations.end(),
+                                       [&](int r) { return r % 180 == p.rotation % 180; });
+        const int shape = turn == unit.rotations.end() ? 0 : static_cast<int>(turn - unit.rotations.begin());
+        if (p.sheet < 0 || p.sheet >= static_cast<int>(grid.stock.size()) ||
+            !allowedOn(unit, shape, stock_[grid.stock[p.sheet]]))
+            return nothingPlaced(kindOf_.size());
+        grid.placed.push_back({order[i], p.sheet, static_cast<int>(std::lround((p.x - trim) / tau)),
+                               static_cast<int>(std::lround((p.y - trim) / tau)), shape});
+    }
+    // Where it was laid when the parts still fit there (any order: a packer's is not Docking's), else slid.
+    if (std::optional<GridLayout> same = asPlaced(grid, units, stock_))
+        return *same;
+    return slide(grid, sizes);
+}
 
 GridLayout MaterialSpace::slide(const GridLayout& previous, const Eigen::VectorXd& sizes) const
 {
@@ -120,12 +227,7 @@ GridLayout MaterialSpace::slide(const GridLayout& previous, const Eigen::VectorX
     out.usedHeight.assign(previous.stock.size(), 0);
     out.skylineArea.assign(previous.stock.size(), 0);
     std::vector<std::vector<Rect>> placed(previous.stock.size());
-    const auto fail = [&] {
-        GridLayout none;
-        none.unplaced.resize(units.parts.size());
-        std::iota(none.unplaced.begin(), none.unplaced.end(), 0);
-        return none;
-    };
+    const auto fail = [&] { return nothingPlaced(units.parts.size()); };
     if (!previous.unplaced.empty())
         return fail();
 

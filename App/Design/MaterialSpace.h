@@ -27,6 +27,17 @@ public:
     /// DOCKING (Algorithm 13) of the parts at sizes s in `order` (unit indices).
     GridLayout dock(const Eigen::VectorXd& sizes, const std::vector<int>& order) const;
 
+    /// The parts at sizes s laid out by `pack` (Docking's ordering search, MaxRects and the guillotine
+    /// search, the better kept) for at most `seconds`, each part and board taken at its size in whole grid
+    /// cells so that the layout is one on the grid. Every unit unplaced when the boards run out.
+    GridLayout packed(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
+                      const std::atomic<bool>* cancel = nullptr) const;
+
+    /// A layout in millimetres of these parts on these master boards (a design file's) as a grid layout at
+    /// sizes s: each placement on its nearest cell, then SLIDE to sizes s. Every unit unplaced when it does
+    /// not lay out each unit once on these boards, or a unit no longer fits.
+    GridLayout onGrid(const Layout& layout, const Eigen::VectorXd& sizes) const;
+
     /// SLIDE (Algorithm 9): the units of `previous` re-inserted in its docking order at their sizes s, each
     /// on its sheet and in its orientation, moved at most N = 4 times left/right or down/up to close gaps and
     /// resolve overlaps, preferring the move that keeps the layout's bounding box smallest. A layout with
@@ -70,6 +81,9 @@ public:
     std::vector<int> unitsInOrder(const std::vector<int>& kinds) const;
 
 private:
+    /// `layout`, of the parts on `boards` (these master boards, or their sizes on the grid), on the grid.
+    GridLayout onGrid(const Layout& layout, const std::vector<MasterBoard>& boards,
+                      const Eigen::VectorXd& sizes) const;
     /// Sheet s's strips left whole above its layout (the full width) and beside it (up to the layout's top),
     /// mm.
     std::array<std::array<double, 2>, 2> strips(const GridLayout& layout, size_t s) const;

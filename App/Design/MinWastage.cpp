@@ -42,9 +42,8 @@ std::uint64_t seedOf(std::uint64_t seed, int round, int task)
     return z ^ (z >> 31);
 }
 
-/// Seconds a design's own layout may search on when a short share of the time limit left a part over, and
-/// the seconds a suggestion's fresh layout is given to show that it reopens (the former covers the latter).
-constexpr double kSearchOn = 10, kReopenCheck = 2;
+/// Seconds a design's own layout may search on when a short share of the time limit left a part over.
+constexpr double kSearchOn = 10;
 
 GridLayout exploredOrder(const MaterialSpace& material, const Eigen::VectorXd& sizes, std::vector<int> order,
                          std::uint64_t seed, Clock::time_point deadline, const std::atomic<bool>* cancel)
@@ -162,7 +161,7 @@ int nextPick(const std::vector<Entry>& pool, const std::vector<bool>& taken,
 }
 
 /// The suggestions: of the designs a maker would take over the user's (never on more sheets, never the
-/// design unchanged), `count` chosen by nextPick that reopen (`reopens` may give one a layout that does).
+/// design unchanged), `count` chosen by nextPick that reopen.
 template <typename Reopens>
 std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& start, int count,
                                 Reopens&& reopens, int& notReopened)
@@ -192,28 +191,24 @@ std::vector<Suggestion> diverse(std::vector<Entry> pool, const DesignLayout& sta
 
 }  // namespace
 
-std::vector<int> kindsInOrder(const MaterialSpace& material, const GridLayout& layout)
-{
-    std::vector<int> kinds;
-    for (int unit : orderOf(layout))
-        kinds.push_back(material.kindOf()[unit]);
-    return kinds;
-}
-
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
-                    double seconds, const std::atomic<bool>* cancel, const std::vector<int>& order)
+                    double seconds, const std::atomic<bool>* cancel, const KeptLayout& kept)
 {
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
     const Deadline stop(Clock::time_point::max(), cancel);
-    GridLayout layout = searchedLayout(material, sizes, seed, seconds, cancel);
-    if (const std::vector<int> units = material.unitsInOrder(order); !units.empty()) {
-        GridLayout kept = material.dock(sizes, units);  // the layout the file was written with
-        if (designLayout(material, X, sizes, kept).score() < designLayout(material, X, sizes, layout).score())
-            layout = std::move(kept);
-    }
+    GridLayout layout = material.packed(sizes, seed, seconds, cancel);
+    const auto keepBetter = [&](GridLayout other) {
+        if (designLayout(material, X, sizes, other).score() <
+            designLayout(material, X, sizes, layout).score())
+            layout = std::move(other);
+    };
+    if (const std::vector<int> units = material.unitsInOrder(kept.order); !units.empty())
+        keepBetter(material.dock(sizes, units));
+    if (kept.layout)
+        keepBetter(material.onGrid(*kept.layout, sizes));
     if (!layout.unplaced.empty() && seconds < kSearchOn && !stop.cancelled())  // a short share: search on
-        layout = searchedLayout(material, sizes, seed, kSearchOn, cancel);
+        layout = material.packed(sizes, seed, kSearchOn, cancel);
     if (!layout.unplaced.empty() && stop.cancelled())
         throw PackingError("stopped before the design as it is was laid out: nothing to compare with");
     if (!layout.unplaced.empty())
@@ -227,13 +222,11 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                        const MinWastageOptions& options)
 {
     const auto started = Clock::now();
-    // The search has 85 % of the time limit; the rest shows that suggestions reopen.
-    const auto end = started + seconds(std::max(0.0, options.timeLimit));
-    const auto deadline = started + seconds(0.85 * std::max(0.0, options.timeLimit));
+    const auto deadline = started + seconds(std::max(0.0, options.timeLimit));
     Exploration exploration;
     // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
     exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4),
-                               options.cancel, options.layoutOrder);
+                               options.cancel, options.kept);
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
     // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.
@@ -272,23 +265,11 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
         if (exploration.stopped)
             break;
     }
-    // A suggestion is a design the user goes on with: reopened, docking in the order its file keeps must cut
-    // it from boards that cost no more, whatever time the reopening search gets. The exploration's slides
-    // reach tight layouts docking may not: a fresh search's layout, docked in its own order, then stands in
-    // for it.
-    const auto reopens = [&](DesignLayout& d) {
-        const auto noDearer = [&](const GridLayout& fresh) {
-            return fresh.unplaced.empty() && material.figures(fresh, d.sizes).cost <= d.figures.cost;
-        };
-        if (noDearer(material.dock(d.sizes, orderOf(d.layout))))
-            return true;
-        GridLayout docked = material.dock(
-            d.sizes, orderOf(searchedLayout(material, d.sizes, options.seed,
-                                            std::min(kReopenCheck, std::max(0.05, secondsUntil(end) / 2)))));
-        if (!noDearer(docked))
-            return false;
-        d = designLayout(material, d.X, d.sizes, std::move(docked));
-        return true;
+    // A suggestion is a design the user goes on with: its file keeps its layout, which reopened (in
+    // millimetres, slid to the sizes read) must cut it from boards that cost no more.
+    const auto reopens = [&](const DesignLayout& d) {
+        const GridLayout reopened = material.onGrid(material.inMillimetres(d.layout, d.sizes), d.sizes);
+        return reopened.unplaced.empty() && material.figures(reopened, d.sizes).cost <= d.figures.cost;
     };
     exploration.suggestions =
         diverse(std::move(pool), exploration.start, options.suggestions, reopens, exploration.notReopened);

@@ -7,8 +7,17 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 namespace fabguide::material {
+
+/// The layout a design file keeps with it (its last, or the one a suggestion was found with), so that the
+/// design reopens on the sheets it was laid out on: the order its units were laid in (a part kind per unit;
+/// empty: none), and where, in millimetres, when the file says.
+struct KeptLayout {
+    std::vector<int> order;
+    std::optional<Layout> layout;
+};
 
 struct MinWastageOptions {
     int rounds = 3;             ///< G
@@ -21,9 +30,8 @@ struct MinWastageOptions {
     double timeLimit = 8;    ///< seconds; the search ends with what it has found
     bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
     const std::atomic<bool>* cancel = nullptr;
-    /// The design's layout order as its file keeps it (a part kind per unit; empty: none): the user's design
-    /// laid out in it besides the search, so a suggestion reopens on the sheets it was found on.
-    std::vector<int> layoutOrder;
+    /// The layout the design's file keeps: the user's design laid out by it besides the search.
+    KeptLayout kept;
     /// Called on the caller's thread after each task: fraction done, usage of the best design so far.
     std::function<void(double, double)> progress;
 };
@@ -55,16 +63,13 @@ struct Exploration {
     NoSheetSaved noSheetSaved() const;
 };
 
-/// The user's design laid out: the layout command's ordering search (best-fit and decreasing-extent starts,
-/// |parts|² swaps each, for at most `seconds`, or 10 s when that leaves a part over), or docked in `order` (a
-/// part kind per unit, as a design file keeps its layout's order) when that is better. Throws PackingError
-/// naming a part left over when the design does not fit.
+/// The user's design laid out: the layout command's packers (MaterialSpace::packed, for at most `seconds`, or
+/// 10 s when that leaves a part over), or the layout its file keeps (where it lies while the parts fit there,
+/// else slid to their sizes), or docked in its order, whichever is best. Throws PackingError naming a part
+/// left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
                     double seconds = 10, const std::atomic<bool>* cancel = nullptr,
-                    const std::vector<int>& order = {});
-
-/// The part kind of each unit of `layout` in its docking order: what a design file keeps of its layout.
-std::vector<int> kindsInOrder(const MaterialSpace& material, const GridLayout& layout);
+                    const KeptLayout& kept = {});
 
 /// Algorithm 7, on the maker's measure (DesignLayout::score: sheets first), after FEWERSHEETS (a fifth of the
 /// time limit) whose designs the rounds improve on. Every suggestion keeps the design's constraints (it comes

@@ -397,27 +397,49 @@ void readInnerVolumes(const Fields& root, Design& design)
     }
 }
 
-/// "layout_order": a part id per unit laid out, each part as many times as its quantity (empty when absent).
-std::vector<int> readLayoutOrder(const Fields& root, const Design& design)
+/// A layout's order (a part index per unit) against the parts' quantities: none more times than its quantity,
+/// and every one as many times unless the order is empty; `list` is its path in the file.
+void checkQuantities(const Design& design, const std::vector<int>& order, const std::string& list)
 {
-    const nlohmann::json& ids = root.array("layout_order", true);
-    std::vector<int> order;
     std::vector<int> left;
     for (const material::DesignBoard& b : design.boards)
         left.push_back(b.quantity);
-    for (size_t i = 0; i < ids.size(); ++i) {
-        const std::string path = at("layout_order", i);
-        if (!ids[i].is_string())
-            throw FormatError(path, "must be a part id");
-        const int part = boardIndex(design, ids[i].get<std::string>(), path);
-        if (left[part]-- == 0)
-            throw FormatError(path,
-                              "part \"" + ids[i].get<std::string>() + "\" more times than its quantity");
-        order.push_back(part);
-    }
+    for (size_t i = 0; i < order.size(); ++i)
+        if (left[order[i]]-- == 0)
+            throw FormatError(at(list, i),
+                              "part \"" + design.boards[order[i]].id + "\" more times than its quantity");
     if (!order.empty() && std::any_of(left.begin(), left.end(), [](int n) { return n > 0; }))
-        throw FormatError("layout_order", "must name every part as many times as its quantity");
-    return order;
+        throw FormatError(list, "must name every part as many times as its quantity");
+}
+
+/// "layout" (the boards and placements of a layout JSON: where each unit was laid, in the order laid) or the
+/// older "layout_order" (a part id per unit, in the order laid): the layout the file keeps.
+material::KeptLayout readKeptLayout(const nlohmann::json& document, const Fields& root, const Design& design)
+{
+    material::KeptLayout kept;
+    if (root.has("layout")) {
+        if (root.has("layout_order"))
+            throw FormatError("layout_order",
+                              "give layout or layout_order, not both: a layout keeps its order");
+        material::PackProblem named;  // the boards by id, as the placements name them
+        for (const material::DesignBoard& b : design.boards) {
+            const auto [u, v] = b.inPlane();
+            named.parts.push_back(material::rectangularPart(b.id, b.size[u], b.size[v], b.quantity));
+        }
+        kept.layout = readLayout(document["layout"], named, PartNames::Ids, "layout");
+        for (const material::Placement& p : kept.layout->placements)
+            kept.order.push_back(p.part);
+        checkQuantities(design, kept.order, "layout.placements");
+        return kept;
+    }
+    const nlohmann::json& ids = root.array("layout_order", true);
+    for (size_t i = 0; i < ids.size(); ++i) {
+        if (!ids[i].is_string())
+            throw FormatError(at("layout_order", i), "must be a part id");
+        kept.order.push_back(boardIndex(design, ids[i].get<std::string>(), at("layout_order", i)));
+    }
+    checkQuantities(design, kept.order, "layout_order");
+    return kept;
 }
 
 /// How far from its constraints a design read may be, in mm. 0.1 µm: the search holds its constraints to 1e-6
@@ -506,7 +528,7 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     design.bounds.insert(design.bounds.end(), apart.begin(), apart.end());
     // The title names the design in FreeCAD; a suggestion's usage and path are written for people.
     root.text("title", "");
-    result.layoutOrder = readLayoutOrder(root, design);
+    result.kept = readKeptLayout(document, root, design);
     root.noOthers({"settings", "boards", "usage", "path"});
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
@@ -616,10 +638,11 @@ nlohmann::json suggestionDocument(const nlohmann::json& document, const Design& 
         path.push_back({{"usage", 1 - step.wastage}, {"parts", partsAt(design, step.X)}});
     }
     out["path"] = path;
-    nlohmann::json order = nlohmann::json::array();
-    for (int kind : material::kindsInOrder(material, suggestion.result.layout))
-        order.push_back(design.boards[kind].id);
-    out["layout_order"] = order;
+    // Where its layout laid each board, so that it reopens on those sheets (its metrics are the summary's).
+    const nlohmann::json layout =
+        layoutToJson(material.inMillimetres(suggestion.result.layout, suggestion.result.sizes),
+                     material.problem(suggestion.result.sizes), PartNames::Ids);
+    out["layout"] = {{"boards", layout["boards"]}, {"placements", layout["placements"]}};
     return out;
 }
 

@@ -27,9 +27,9 @@ struct FlatpackDesign {
     material::PackSettings settings;
     double maxGrowth =
         1.5;  ///< settings.max_growth: how many times its length now a suggestion may make a side
-    /// "layout_order": the parts in the order its layout docked them (a part index per unit; empty: none), as
-    /// a suggestion is written, so that it reopens on the sheets it was found on.
-    std::vector<int> layoutOrder;
+    /// "layout" (or the older "layout_order", its order alone): the layout the file keeps, as a suggestion is
+    /// written, so that it reopens on the sheets it was found on.
+    material::KeptLayout kept;
 };
 
 /// The design the suggestions are searched in: `f`'s, with no board side longer than maxGrowth times its

@@ -246,10 +246,10 @@ void Fields::noOthers(const std::vector<std::string>& alsoKnown) const
 void Fields::header(const std::string& format, int version) const
 {
     if (text("format", format) != format)
-        throw FormatError("format", "expected \"" + format + "\", got \"" + text("format") + "\"");
+        throw FormatError(pathOf("format"), "expected \"" + format + "\", got \"" + text("format") + "\"");
     if (const int given = integer("version", version); given != version)
-        throw FormatError("version", "this FabGuide reads version " + std::to_string(version) +
-                                         ", the file is version " + std::to_string(given));
+        throw FormatError(pathOf("version"), "this FabGuide reads version " + std::to_string(version) +
+                                                 ", the file is version " + std::to_string(given));
     text("description", "");  // free text for people, in any document
 }
 

@@ -405,20 +405,20 @@ material::PackProblem readStripInstance(const nlohmann::json& document)
 }
 
 material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
-                            PartNames names)
+                            PartNames names, const std::string& where)
 {
     checkNumbers(document, kLargestArea);  // its metrics are areas
-    const Fields root(document, "");
+    const Fields root(document, where);
     root.header("fabguide.layout", kPackFormatVersion);
     material::Layout layout;
     const nlohmann::json& boards = root.array("boards");
     for (size_t i = 0; i < boards.size(); ++i) {
-        layout.sheets.push_back(readMasterBoard(boards[i], at("boards", i)));
+        layout.sheets.push_back(readMasterBoard(boards[i], at(root.pathOf("boards"), i)));
         layout.sheetArea += layout.sheets.back().width * layout.sheets.back().height;
     }
     const nlohmann::json& placements = root.array("placements");
     for (size_t i = 0; i < placements.size(); ++i) {
-        const Fields p(placements[i], at("placements", i));
+        const Fields p(placements[i], at(root.pathOf("placements"), i));
         material::Placement placement;
         if (names == PartNames::Indices) {
             placement.part = p.integer("part");
@@ -445,10 +445,10 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
     const nlohmann::json& sawn = root.array("saw_cuts", true);
     for (size_t i = 0; i < sawn.size(); ++i) {
         if (!sawn[i].is_array())
-            throw FormatError(at("saw_cuts", i), "must be the list of one board's saw cuts");
+            throw FormatError(at(root.pathOf("saw_cuts"), i), "must be the list of one board's saw cuts");
         layout.sawCuts.emplace_back();
         for (size_t k = 0; k < sawn[i].size(); ++k) {
-            const Fields c(sawn[i][k], at(at("saw_cuts", i), k));
+            const Fields c(sawn[i][k], at(at(root.pathOf("saw_cuts"), i), k));
             layout.sawCuts.back().push_back({c.text("number"), c.integer("stage"), c.flag("trim", false),
                                              readPoint(c.value("from"), c.pathOf("from")),
                                              readPoint(c.value("to"), c.pathOf("to"))});
@@ -456,8 +456,9 @@ material::Layout readLayout(const nlohmann::json& document, const material::Pack
         }
     }
     if (!sawn.empty() && sawn.size() != layout.sheets.size())
-        throw FormatError("saw_cuts", "one list per board, " + std::to_string(layout.sheets.size()) +
-                                          ", got " + std::to_string(sawn.size()));
+        throw FormatError(root.pathOf("saw_cuts"), "one list per board, " +
+                                                       std::to_string(layout.sheets.size()) + ", got " +
+                                                       std::to_string(sawn.size()));
     layout.boundingArea = layout.partArea / root.number("usage", 1.0);
     layout.stripHeight = root.number("strip_height", 0.0);
     root.noOthers({"sheet_utilisation", "waste_area", "cut_length", "common_line"});  // written for people

@@ -56,9 +56,10 @@ nlohmann::json layoutToJson(const material::Layout& layout, const material::Pack
                             PartNames names);
 
 /// Reads a layout JSON written by layoutToJson back, against the problem it was made for, so cut
-/// sheets can be written for exactly the layout a user has seen. Throws FormatError naming the field.
+/// sheets can be written for exactly the layout a user has seen. Throws FormatError naming the field, under
+/// `where` when the layout is a value inside another document.
 material::Layout readLayout(const nlohmann::json& document, const material::PackProblem& problem,
-                            PartNames names);
+                            PartNames names, const std::string& where = "");
 
 /// Reads boards in 3-D: [{"id", "outline", "holes", "origin": [x, y, z], "u": [...], "v": [...],
 /// "thickness"}], outlines kept in their own frames. Throws FormatError naming the field.

@@ -82,7 +82,7 @@ py::object layOutDesign(const py::object& document, std::uint64_t seed, double s
     material::DesignLayout laid;
     {
         py::gil_scoped_release release;
-        laid = material::layOut(design, material, seed, seconds, nullptr, f.layoutOrder);
+        laid = material::layOut(design, material, seed, seconds, nullptr, f.kept);
     }
     return fromJson(layoutJson(material, laid));
 }
@@ -95,7 +95,7 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
     const material::ConstrainedDesign design(io::forSuggestions(f));
     const material::MaterialSpace material(f.boards, f.settings, design.parts());
     material::MinWastageOptions o = options(seed, threads, timeLimit, rounds, guided, progress, cancel);
-    o.layoutOrder = f.layoutOrder;
+    o.kept = f.kept;
     const material::Exploration e = explore(design, material, o);
     return fromJson(explorationJson(material, e, [&](const material::Suggestion& s, nlohmann::json& entry) {
         entry["design"] = io::suggestionDocument(doc, f.design, material, s);
@@ -215,11 +215,13 @@ py::object optimiseParametric(const py::list& parts,
 
 void bindExplore(py::module_& m)
 {
-    m.def("lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1, py::arg("seconds") = 10.0,
-          "A *.flatpack.json design dict laid out on its master boards by an ordering search of at most "
-          "`seconds` (on to 10 s when a part is left over), or docked in its layout_order when that is "
-          "better: {usage, layout, problem}. Raises FormatError naming a bad field or a broken constraint, "
-          "PackingError naming a part that does not fit.");
+    m.def(
+        "lay_out_design", &layOutDesign, py::arg("design"), py::arg("seed") = 1, py::arg("seconds") = 10.0,
+        "A *.flatpack.json design dict laid out on its master boards by an ordering search of at most "
+        "`seconds` (on to 10 s when a part is left over), or the layout it keeps (layout, layout_order) when "
+        "that is better: {usage, layout, problem}. Raises FormatError naming a bad field or a broken "
+        "constraint, "
+        "PackingError naming a part that does not fit.");
     m.def("optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
           py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
           py::arg("progress") = nullptr, py::arg("cancel") = nullptr,

@@ -4,10 +4,12 @@
 #include "Design/MinWastage.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
+#include "IO/PackFormat.h"
 
 #include <gtest/gtest.h>
 
 #include <thread>
+#include <tuple>
 
 using namespace fabguide;
 using namespace fabguide::material;
@@ -69,6 +71,43 @@ TEST_F(MinWastageTest, SlideResolvesTheOverlapsAGrownPartMakes)
     expectValid(material, shrunk, sizes);
     EXPECT_LE(shrunk.usedWidth[0] * shrunk.usedHeight[0],
               start.layout.usedWidth[0] * start.layout.usedHeight[0]);
+}
+
+TEST(PackedDesignTest, PacksLayoutIsOneOnTheGridAndComesBackFromItsFile)
+{
+    for (const char* name : {"kitchen-run", "sideboard-18-6mm", "wardrobe", "shoe-rack-12mm"}) {
+        SCOPED_TRACE(name);
+        const io::FlatpackDesign f = io::readFlatpack(io::readJsonFile(
+            std::string(FABGUIDE_SOURCE_DIR) + "/tests/data/flatpack/" + name + ".flatpack.json"));
+        const ConstrainedDesign design(f.design);
+        const MaterialSpace material(f.boards, f.settings, design.parts());
+        const Eigen::VectorXd sizes = design.sizes(design.start());
+        const GridLayout packed = material.packed(sizes, 1, 0.3);
+        expectValid(material, packed, sizes);
+        // As a design file keeps it (a layout JSON's boards and placements), read back: the same cells.
+        const PackProblem problem = material.problem(sizes);
+        const nlohmann::json file =
+            io::layoutToJson(material.inMillimetres(packed, sizes), problem, io::PartNames::Ids);
+        const Layout kept = io::readLayout(file, problem, io::PartNames::Ids);
+        const GridLayout back = material.onGrid(kept, sizes);
+        ASSERT_EQ(back.placed.size(), packed.placed.size());
+        for (size_t i = 0; i < back.placed.size(); ++i) {
+            const Placed &a = back.placed[i], &b = packed.placed[i];
+            EXPECT_EQ(std::tie(a.part, a.sheet, a.x, a.y, a.shape),
+                      std::tie(b.part, b.sheet, b.x, b.y, b.shape));
+        }
+        EXPECT_EQ(material.figures(back, sizes).sheets, material.figures(packed, sizes).sheets);
+        // A board grown past its neighbours is slid clear of them, or the layout is given up, never
+        // overlapped.
+        Eigen::VectorXd grown = sizes;
+        grown[0] += 30;
+        if (const GridLayout slid = material.onGrid(kept, grown); slid.unplaced.empty())
+            expectValid(material, slid, grown);
+        // Master boards not the design's (a sheet of another size): not this design's layout.
+        Layout elsewhere = kept;
+        elsewhere.sheets[0].width -= 100;
+        EXPECT_EQ(material.onGrid(elsewhere, sizes).unplaced.size(), packed.placed.size());
+    }
 }
 
 TEST_F(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)

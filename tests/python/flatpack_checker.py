@@ -476,7 +476,9 @@ def default_cli():
     return None
 
 
-def reload_problems(suggestion, cli, suggestion_path=None):
+def reload_problems(suggestion, cli, suggestion_path=None, cost=None):
+    """Problems of the suggestion read back by `fabguide optimise`: refused, or (given the `cost` of the boards its
+    layout was found on) laid out again on boards that cost more."""
     if not cli or not os.access(cli, os.X_OK):
         return ["reload not checked: no fabguide command-line tool at %r" % (cli,)]
     with tempfile.TemporaryDirectory(prefix="flatpack-reload-") as tmp:
@@ -494,6 +496,10 @@ def reload_problems(suggestion, cli, suggestion_path=None):
         if run.returncode != 0:
             err = (run.stderr.strip().splitlines() or [""])[-1]
             return ["reload refused: `fabguide optimise SUGGESTION` exits %d: %s" % (run.returncode, err[:300])]
+        with open(os.path.join(tmp, "out", "before.layout.json")) as f:
+            reopened = bought_of(json.load(f))[1]
+    if cost is not None and reopened > cost + 1e-9:
+        return ["reopened on boards that cost %g, found on %g" % (reopened, cost)]
     return []
 
 
@@ -564,7 +570,7 @@ def check_suggestion(original_design_dict, suggestion_design_dict, layout_dict, 
             and isinstance(w1, (int, float)) and isinstance(w0, (int, float)) and w1 > w0 + 1e-4:
         problems.append("wastes more: %d sheets as before, %.4f m2 waste, %.4f m2 before" % (bought, w1, w0))
     if reload:
-        problems += reload_problems(suggestion, cli or default_cli(), suggestion_path)
+        problems += reload_problems(suggestion, cli or default_cli(), suggestion_path, cost)
     return problems
 
 

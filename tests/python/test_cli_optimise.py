@@ -154,6 +154,34 @@ def test_a_layout_order_that_is_not_the_parts_is_refused_by_name(fabguide_cli, s
     assert optimise(fabguide_cli, str(path), tmp_path / "out", "--time-limit", "1").returncode == 0
 
 
+def test_a_kept_layout_that_is_not_the_parts_is_refused_by_name(fabguide_cli, source_dir, tmp_path):
+    path = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
+    assert optimise(fabguide_cli, path, tmp_path / "first", "--seed", "1", "--time-limit", "2").returncode == 0
+    suggestion = json.loads((tmp_path / "first" / "suggestion-1.flatpack.json").read_text())
+    kept = suggestion["layout"]
+    placements = kept["placements"]
+    wrong = tmp_path / "wrong.flatpack.json"
+    for layout, said in (
+            (dict(kept, placements=placements[:1] + [dict(placements[1], part="legs")] + placements[2:]),
+             "layout.placements[1].part: no such part in the problem"),
+            (dict(kept, placements=placements + placements[:1]),
+             'layout.placements[4]: part "{}" more times than its quantity'.format(placements[0]["part"])),
+            (dict(kept, placements=placements[1:]), "layout.placements: must name every part as many times"),
+            (dict(kept, placements=[dict(placements[0], board=7)] + placements[1:]),
+             "layout.placements[0].board: no such board in the layout"),
+            ([], "layout: must be a JSON object")):
+        wrong.write_text(json.dumps(dict(suggestion, layout=layout)))
+        run = optimise(fabguide_cli, str(wrong), tmp_path / "out")
+        assert run.returncode == 1 and said in run.stderr, run.stderr
+    wrong.write_text(json.dumps(dict(suggestion, layout_order=[p["part"] for p in placements])))
+    run = optimise(fabguide_cli, str(wrong), tmp_path / "out")
+    assert run.returncode == 1 and "layout_order: give layout or layout_order, not both" in run.stderr
+    # Boards of another size than the design's: not its layout, the design is laid out afresh.
+    resized = dict(kept, boards=[dict(b, width=b["width"] - 100) for b in kept["boards"]])
+    wrong.write_text(json.dumps(dict(suggestion, layout=resized)))
+    assert optimise(fabguide_cli, str(wrong), tmp_path / "out", "--time-limit", "1").returncode == 0
+
+
 def test_a_second_run_into_the_same_folder_replaces_the_first(fabguide_cli, source_dir, tmp_path):
     path = os.path.join(source_dir, "examples", "coffee-table.flatpack.json")
     for _ in range(2):  # the first's summary.json holds values that are empty strings, not files

@@ -308,6 +308,7 @@ def test_reload_refused_is_reported(fabguide_cli, tmp_path):
     part(bad, "right")["size"][2] = 410  # breaks its own "equal" constraint: the reader refuses it
     problems = C.reload_problems(bad, fabguide_cli)
     assert len(problems) == 1 and problems[0].startswith("reload refused: `fabguide optimise SUGGESTION` exits 1")
+    assert C.reload_problems(good, fabguide_cli, cost=0) == ["reopened on boards that cost 1, found on 0"]
     assert C.check_suggestion(original(), good, layout(), entry(), BEFORE, cli=fabguide_cli) == []
 
 

@@ -56,8 +56,8 @@ def test_optimise_saves_the_sheets_a_known_layout_shows_savable(fabguide_cli, tm
             entry, summary["before"], cli=fabguide_cli, suggestion_path=str(out / entry["file"]),
             before_layout=before_layout)
         assert found == [], (entry["file"], found)
-    # Reopened, a suggestion is laid out on the sheets it was found on: its file keeps an order that docks it there,
-    # whatever time the reopening search gets (0.1 s here: the order alone must do it).
+    # Reopened, a suggestion is laid out on the sheets it was found on: its file keeps that layout, whatever time the
+    # reopening search gets (0.1 s here: the kept layout alone must do it).
     best = min(summary["suggestions"], key=lambda s: s["sheets"])
     again = subprocess.run([fabguide_cli, "optimise", str(tmp_path / "out" / best["file"]), "-o",
                             str(tmp_path / "again"), "--time-limit", "0.1", "--rounds", "1"], capture_output=True,

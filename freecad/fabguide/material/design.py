@@ -287,13 +287,16 @@ def volume_dicts(obj):
     return inner, outer
 
 
-def layout_order(obj):
-    """The boxes' labels in the order the design's last layout placed them (LayoutJson), when they are its boxes:
-    the core docks that order besides its search, so a design stays on the sheets it was laid out on."""
+def kept_layout(obj):
+    """Where the design's last layout (LayoutJson) laid each box, as the format's `layout`, when they are its boxes:
+    the core slides that layout to the boxes' sizes besides its search, so a design stays on the sheets it was laid
+    out on. None without one."""
     if not obj.LayoutJson:
-        return []
-    ids = [p["part"] for p in json.loads(obj.LayoutJson)["layout"]["placements"]]
-    return ids if sorted(ids) == sorted(box.Label for box in boxes(obj)) else []
+        return None
+    layout = json.loads(obj.LayoutJson)["layout"]
+    if sorted(p["part"] for p in layout["placements"]) != sorted(box.Label for box in boxes(obj)):
+        return None
+    return {"boards": layout["boards"], "placements": layout["placements"]}
 
 
 def snapshot(obj):
@@ -319,9 +322,9 @@ def flatpack(obj, parts=None):
                "inner_volumes": inner}
         if obj.MinimumLength.Value > 0:  # else the format's own: twice each board's thickness
             doc["settings"]["min_length"] = obj.MinimumLength.Value
-        order = layout_order(obj)
-        if order:
-            doc["layout_order"] = order
+        kept = kept_layout(obj)
+        if kept:
+            doc["layout"] = kept
         if outer:
             doc["outer_volume"] = outer
         return doc
@@ -415,7 +418,7 @@ def lay_out_satisfied(obj, edited, note):
 
 def laid_out(obj, edited):
     """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py): live, in LIVE_SECONDS
-    of search besides its last layout's order (a design of 46 boards searched its 10 s on every edit)."""
+    of search besides its last layout (a design of 46 boards searched its 10 s on every edit)."""
     return background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
                           lambda cancel: fabguide_core.lay_out_design(edited, seconds=LIVE_SECONDS),
                           seconds=LIVE_SECONDS, stoppable=False)
@@ -512,7 +515,8 @@ def saying_changes(obj, start=None):
 def apply_parts(obj, parts, start=None, laid=None):
     """Sets the boxes to a suggestion's parts and makes them the valid state (used by Accept); the changes are
     said from `start` (the design before the suggestions were previewed). `laid`: the suggestion's {layout,
-    problem}, whose order the next layout docks, so the design shows the sheets it was suggested on."""
+    problem}, which the next layout keeps while the boxes fit where it laid them, so the design shows the sheets it
+    was suggested on."""
     with saying_changes(obj, start):
         write_parts(obj, parts)
     if laid is not None:
