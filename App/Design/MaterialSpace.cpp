@@ -144,6 +144,14 @@ std::optional<GridLayout> asPlaced(GridLayout grid, const RasterProblem& units,
 
 }  // namespace
 
+GridLayout MaterialSpace::searched(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
+                                   const std::atomic<bool>* cancel) const
+{
+    OrderingSearchOptions search = orderingSearch(kindOf_.size(), seed, seconds);
+    search.cancel = cancel;
+    return searchFromStarts(raster(sizes).parts, stock_, search);
+}
+
 GridLayout MaterialSpace::packed(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
                                  const std::atomic<bool>* cancel) const
 {

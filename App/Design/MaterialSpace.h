@@ -27,6 +27,12 @@ public:
     /// DOCKING (Algorithm 13) of the parts at sizes s in `order` (unit indices).
     GridLayout dock(const Eigen::VectorXd& sizes, const std::vector<int>& order) const;
 
+    /// The layout command's ordering search on the grid (Docking from best-fit and decreasing-extent starts,
+    /// |parts|² swaps each, thesis 5.4.3) for at most `seconds`, or until `cancel` is set: a layout the
+    /// exploration's slides and dockings can go on from.
+    GridLayout searched(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
+                        const std::atomic<bool>* cancel = nullptr) const;
+
     /// The parts at sizes s laid out by `pack` (Docking's ordering search, MaxRects and the guillotine
     /// search, the better kept) for at most `seconds`, each part and board taken at its size in whole grid
     /// cells so that the layout is one on the grid. Every unit unplaced when the boards run out.

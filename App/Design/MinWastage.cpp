@@ -197,7 +197,7 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
     const Eigen::VectorXd X = design.start();
     const Eigen::VectorXd sizes = design.sizes(X);
     const Deadline stop(Clock::time_point::max(), cancel);
-    GridLayout layout = material.packed(sizes, seed, seconds, cancel);
+    GridLayout layout = material.searched(sizes, seed, seconds, cancel);
     const auto keepBetter = [&](GridLayout other) {
         if (designLayout(material, X, sizes, other).score() <
             designLayout(material, X, sizes, layout).score())
@@ -208,7 +208,7 @@ DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, st
     if (kept.layout)
         keepBetter(material.onGrid(*kept.layout, sizes));
     if (!layout.unplaced.empty() && seconds < kSearchOn && !stop.cancelled())  // a short share: search on
-        layout = material.packed(sizes, seed, kSearchOn, cancel);
+        layout = material.searched(sizes, seed, kSearchOn, cancel);
     if (!layout.unplaced.empty() && stop.cancelled())
         throw PackingError("stopped before the design as it is was laid out: nothing to compare with");
     if (!layout.unplaced.empty())

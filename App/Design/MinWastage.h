@@ -63,10 +63,10 @@ struct Exploration {
     NoSheetSaved noSheetSaved() const;
 };
 
-/// The user's design laid out: the layout command's packers (MaterialSpace::packed, for at most `seconds`, or
-/// 10 s when that leaves a part over), or the layout its file keeps (where it lies while the parts fit there,
-/// else slid to their sizes), or docked in its order, whichever is best. Throws PackingError naming a part
-/// left over when the design does not fit.
+/// The user's design laid out: the layout command's ordering search (MaterialSpace::searched, for at most
+/// `seconds`, or 10 s when that leaves a part over), or the layout its file keeps (where it lies while the
+/// parts fit there, else slid to their sizes), or docked in its order, whichever is best. Throws PackingError
+/// naming a part left over when the design does not fit.
 DesignLayout layOut(const DesignSpace& design, const MaterialSpace& material, std::uint64_t seed,
                     double seconds = 10, const std::atomic<bool>* cancel = nullptr,
                     const KeptLayout& kept = {});
