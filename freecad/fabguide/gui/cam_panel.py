@@ -33,8 +33,8 @@ class CamJobPanel:
         self.form.through.setValue(cam.THROUGH)
         doc = lay.Document
         self.form.folder.setText(os.path.dirname(doc.FileName) if doc.FileName else os.path.expanduser("~"))
-        self.form.browseBit.clicked.connect(self.browse_bit)
-        self.form.browseFolder.clicked.connect(self.browse_folder)
+        editing.on_click(self.form.browseBit, self.browse_bit)
+        editing.on_click(self.form.browseFolder, self.browse_folder)
 
     def show_speeds(self):
         """A row per material: its feed and spindle speed, as last used for it."""

@@ -69,7 +69,7 @@ class ConfigurationsPanel:
             self.angles.append(angle)
             self.offsets.append(offset)
         self.slider.valueChanged.connect(self.preview)
-        self.play.clicked.connect(self.animate)
+        editing.on_click(self.play, self.animate)
         self.timer = QtCore.QTimer()
         self.timer.timeout.connect(self.step)
         self.direction = -4

@@ -81,6 +81,11 @@ def typed(widget, kind):
     return shiboken.wrapInstance(shiboken.getCppPointer(widget)[0], kind)
 
 
+def on_click(button, slot):
+    """Calls `slot` when a .ui form's `button` is clicked, whatever wrapper shiboken hands back for it (typed)."""
+    typed(button, QtGui.QAbstractButton).clicked.connect(slot)
+
+
 def widened(box):
     """Lets a quantity spin box take any number as it is typed, its range kept as its "limits" for `readable` to
     judge the whole value once typed: a box held to its range drops the keystroke that leaves it ("-400" shows

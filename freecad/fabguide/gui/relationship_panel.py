@@ -34,7 +34,7 @@ class RelationshipPanel:
             self.pairs = self.form.pairs
             for button, slot in ((self.form.add, self.add_pair), (self.form.remove, self.remove_pair),
                                  (self.form.infer, self.infer)):
-                button.clicked.connect(slot)
+                editing.on_click(button, slot)
             self.pairs.itemChanged.connect(self.colour)
             self.gate = FacesOfBoxes()
             FreeCADGui.Selection.addSelectionGate(self.gate)

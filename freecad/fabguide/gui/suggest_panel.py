@@ -13,7 +13,7 @@ from PySide import QtCore, QtGui
 from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import cuboids, messages
 from freecad.fabguide.material import design, parametric
-from freecad.fabguide.gui import resources, viewproviders
+from freecad.fabguide.gui import editing, resources, viewproviders
 from freecad.fabguide.i18n import translate
 
 THUMB = QtCore.QSize(92, 70)  # two side by side fit a default-width task view
@@ -164,8 +164,8 @@ class SuggestPanel:
         self.now.setText(translate("FabGuide", "Usage now: {:.3f}").format(self.design.Usage))
         self.threads.setMaximum(max(1, os.cpu_count() or 1))
         self.threads.setValue(min(2, self.threads.maximum()))
-        self.run_button.clicked.connect(self.start)
-        self.stop_button.clicked.connect(self.stop)
+        editing.on_click(self.run_button, self.start)
+        editing.on_click(self.stop_button, self.stop)
         self.cards = QtGui.QButtonGroup(form)
         self.cards.setExclusive(True)
         (getattr(self.cards, "idClicked", None) or self.cards.buttonClicked[int]).connect(self.choose)
@@ -177,7 +177,7 @@ class SuggestPanel:
             self.locks.addItem(item)
         form.locksLabel.setVisible(self.target.can_lock)
         self.locks.setVisible(self.target.can_lock)
-        self.again.clicked.connect(self.apply_and_again)
+        editing.on_click(self.again, self.apply_and_again)
         return form
 
     # --- the search -----------------------------------------------------------------------------------
