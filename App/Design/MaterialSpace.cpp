@@ -155,6 +155,7 @@ GridLayout MaterialSpace::searched(const Eigen::VectorXd& sizes, std::uint64_t s
 GridLayout MaterialSpace::packed(const Eigen::VectorXd& sizes, std::uint64_t seed, double seconds,
                                  const std::atomic<bool>* cancel) const
 {
+    checkSettings(problem(sizes));  // a part larger than every master board named, at its size in mm
     // Every side in whole cells: a part as long as its footprint less the clearance, a board's usable side as
     // its cells less the clearance (which its far edges add back), so that pack's placements fall on cells.
     const double tau = settings_.resolution, clearance = settings_.kerf + settings_.spacing;
@@ -170,7 +171,6 @@ GridLayout MaterialSpace::packed(const Eigen::VectorXd& sizes, std::uint64_t see
     }
     OrderingSearchOptions search = orderingSearch(kindOf_.size(), seed, seconds);
     search.cancel = cancel;
-    checkSettings(problem(sizes));  // a part larger than every master board named, at its size in mm
     try {
         return onGrid(pack(onCells, search), onCells.boards, sizes);
     } catch (const PackingError&) {  // the boards or the time ran out

@@ -220,8 +220,7 @@ void bindExplore(py::module_& m)
         "A *.flatpack.json design dict laid out on its master boards by an ordering search of at most "
         "`seconds` (on to 10 s when a part is left over), or the layout it keeps (layout, layout_order) when "
         "that is better: {usage, layout, problem}. Raises FormatError naming a bad field or a broken "
-        "constraint, "
-        "PackingError naming a part that does not fit.");
+        "constraint, PackingError naming a part that does not fit.");
     m.def("optimise", &optimise, py::arg("design"), py::arg("seed") = 1, py::arg("threads") = 2,
           py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
           py::arg("progress") = nullptr, py::arg("cancel") = nullptr,
