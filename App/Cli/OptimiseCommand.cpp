@@ -67,10 +67,11 @@ std::string whyNone(const material::Exploration& e)
 {
     switch (e.noSheetSaved()) {
         case material::Exploration::NoSheetSaved::ByArea:
-            return ": shrunk as far as its constraints allow, its parts' area alone needs as many sheets";
+            return ": with every side as short as its constraints allow, its parts' area alone needs as many "
+                   "sheets";
         case material::Exploration::NoSheetSaved::LaidOut:
             return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its "
-                   "parts' area would fit on " +
+                   "parts' area could fit on " +
                    std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
         default:
             return "";
@@ -126,10 +127,13 @@ void run(const OptimiseArguments& args)
     }
     // Why no sheet was saved, or how many more could be: one layout of the least design, and a bound.
     if (exploration.leastSheets > 0)
+        std::printf("least design  %d sheets as laid out (every part as small as the constraints allow)\n",
+                    exploration.leastSheets);
+    if (exploration.leastSheetsByArea > 0)
         std::printf(
-            "least design  %d sheets as laid out, %ld by its parts' area alone (every part as small as "
-            "the constraints allow)\n",
-            exploration.leastSheets, exploration.leastSheetsByArea);
+            "any variation %ld sheets at least, by its parts' area with every side as short as the "
+            "constraints allow\n",
+            exploration.leastSheetsByArea);
     if (exploration.notReopened > 0)
         std::printf("left out     %d design(s) that waste less but laid out afresh need more boards\n",
                     exploration.notReopened);

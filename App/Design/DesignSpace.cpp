@@ -30,6 +30,11 @@ std::optional<Eigen::VectorXd> DesignSpace::least(const Eigen::VectorXd& from,
     return X;
 }
 
+std::optional<Eigen::VectorXd> DesignSpace::shortestSides(const Eigen::VectorXd&) const
+{
+    return std::nullopt;
+}
+
 ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
 {
     for (const DesignBoard& board : design_.boards)
@@ -70,6 +75,12 @@ std::optional<Eigen::VectorXd> ConstrainedDesign::least(const Eigen::VectorXd& X
                                                         std::chrono::steady_clock::time_point) const
 {
     return leastDesign(design_, X);
+}
+
+std::optional<Eigen::VectorXd> ConstrainedDesign::shortestSides(const Eigen::VectorXd& X) const
+{
+    const auto shortest = material::shortestSides(design_, X);
+    return shortest ? std::optional(sizes(*shortest)) : std::nullopt;
 }
 
 ParametricDesign::ParametricDesign(std::vector<PartKind> parts, SizesOf sizesOf, Eigen::VectorXd start,

@@ -44,6 +44,10 @@ public:
     /// nullopt when it could not be found.
     virtual std::optional<Eigen::VectorXd> least(const Eigen::VectorXd& X,
                                                  std::chrono::steady_clock::time_point deadline) const;
+    /// Part sizes (as `sizes` orders them) that no design `least` chooses among undercuts along any side, so
+    /// that their area bounds every such design's from below; here nullopt, no bound known (a part size is
+    /// any function of the parameters).
+    virtual std::optional<Eigen::VectorXd> shortestSides(const Eigen::VectorXd& X) const;
 };
 
 /// A design of boards with design and effectiveness constraints: a size change is the change vector u of
@@ -62,6 +66,8 @@ public:
     /// leastDesign.
     std::optional<Eigen::VectorXd> least(const Eigen::VectorXd& X,
                                          std::chrono::steady_clock::time_point deadline) const override;
+    /// material::shortestSides.
+    std::optional<Eigen::VectorXd> shortestSides(const Eigen::VectorXd& X) const override;
     const Design& design() const { return design_; }
     /// The design variable behind part size s_i (a board's length along one of its in-plane axes).
     int variableOfSize(int size) const

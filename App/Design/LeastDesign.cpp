@@ -2,6 +2,7 @@
 
 #include "Function/LeastChange.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,9 +38,8 @@ function::LinearConstraint outOf(const InnerVolume& v, int b, const Eigen::Vecto
     return onChange(keep, -std::numeric_limits<double>::infinity(), 0, X);
 }
 
-}  // namespace
-
-std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::VectorXd& X)
+/// The designs leastDesign chooses among, as constraints on the change d = X' - X.
+std::vector<function::LinearConstraint> within(const Design& design, const Eigen::VectorXd& X)
 {
     const int n = static_cast<int>(X.size());
     const double inf = std::numeric_limits<double>::infinity();
@@ -58,6 +58,14 @@ std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::Ve
         if (frozen[i] || i % 6 >= 3)  // thicknesses stay; a length no shorter than its minimum, nor 0
             rows.push_back(onChange({{{i, 1.0}}, 0}, frozen[i] ? X[i] : std::max(0.0, minimum[i]),
                                     frozen[i] ? X[i] : inf, X));
+    return rows;
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::VectorXd& X)
+{
+    const int n = static_cast<int>(X.size());
     // The aim: every in-plane length shorter in proportion to the area a mm of it carries (the other length
     // times the quantity: the area's gradient), positions where they are; the least-change solve
     // (thesis 4.4's) finds the valid design nearest to it.
@@ -68,10 +76,37 @@ std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::Ve
         gradient[sizeVariable(b, v)] = design.boards[b].quantity * X[sizeVariable(b, u)];
     }
     const Eigen::VectorXd aim = -kReach * gradient / std::max(gradient.maxCoeff(), 1e-9);
-    const function::LeastChangeResult d = function::solveLeastChange(aim, rows, nullptr, 1e-8);
+    const function::LeastChangeResult d = function::solveLeastChange(aim, within(design, X), nullptr, 1e-8);
     if (!d.solved)
         return std::nullopt;
     return X + d.x;
+}
+
+std::optional<Eigen::VectorXd> shortestSides(const Design& design, const Eigen::VectorXd& X)
+{
+    std::vector<function::LinearConstraint> rows = within(design, X);
+    // A design moved whole along an axis that no row pins keeps its sizes: there the first board stays.
+    for (int axis = 0; axis < 3 && !design.boards.empty(); ++axis) {
+        const bool pinned = std::any_of(rows.begin(), rows.end(), [&](const function::LinearConstraint& row) {
+            double along = 0;
+            for (const auto& [i, a] : row.terms)
+                along += i % 6 == axis ? a : 0;
+            return std::abs(along) > 1e-12;
+        });
+        if (!pinned)
+            rows.push_back({{{centreVariable(0, axis), 1.0}}, 0, 0, ""});
+    }
+    std::vector<int> sides;
+    for (int b = 0; b < static_cast<int>(design.boards.size()); ++b)
+        for (int axis : design.boards[b].inPlane())
+            sides.push_back(sizeVariable(b, axis));
+    const auto least = function::leastOf(sides, rows, static_cast<int>(X.size()));
+    if (!least)
+        return std::nullopt;
+    Eigen::VectorXd shortest = X;
+    for (size_t k = 0; k < sides.size(); ++k)
+        shortest[sides[k]] = std::max(0.0, X[sides[k]] + (*least)[k]);
+    return shortest;
 }
 
 }  // namespace fabguide::material

@@ -14,4 +14,10 @@ namespace fabguide::material {
 /// inner volumes free). nullopt when the solve fails.
 std::optional<Eigen::VectorXd> leastDesign(const Design& design, const Eigen::VectorXd& X);
 
+/// X with each board side at a length no design leastDesign chooses among undercuts (function::leastOf over
+/// the same constraints, a design free to move whole held in place): the boards at these sides have no more
+/// area than any such design's, wherever a sum or a chain of constraints ties the sides together. nullopt
+/// when the constraints cannot hold together.
+std::optional<Eigen::VectorXd> shortestSides(const Design& design, const Eigen::VectorXd& X);
+
 }  // namespace fabguide::material

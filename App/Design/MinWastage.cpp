@@ -235,7 +235,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
                     std::min(deadline, Clock::now() + seconds(options.timeLimit / 5)), options.cancel);
     exploration.leastSheets =
         saved.least && saved.least->layout.unplaced.empty() ? saved.least->figures.sheets : 0;
-    exploration.leastSheetsByArea = saved.least ? sheetsByArea(material.problem(saved.least->sizes)) : 0;
+    const auto shortest = design.shortestSides(exploration.start.X);
+    exploration.leastSheetsByArea = shortest ? sheetsByArea(material.problem(*shortest)) : 0;
     for (DesignLayout& d : saved.designs) {
         pool.push_back({d, orderOf(d.layout), {exploration.start, d}});
         entries.push_back(pool.back());
@@ -279,7 +280,7 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
 
 Exploration::NoSheetSaved Exploration::noSheetSaved() const
 {
-    if (leastSheets == 0 || leastSheets < start.figures.sheets)
+    if (leastSheets == 0 || leastSheets < start.figures.sheets || leastSheetsByArea == 0)
         return NoSheetSaved::Unknown;
     return leastSheetsByArea >= start.figures.sheets ? NoSheetSaved::ByArea : NoSheetSaved::LaidOut;
 }

@@ -50,15 +50,17 @@ struct Exploration {
     bool stopped = false;  ///< cancelled, or the time limit ended it
     int designsImproved = 0;
     int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
-    /// What the least design's parts' area alone needs (sheetsByArea): a bound no layout of it beats, where
-    /// leastSheets is one layout found (0: no least design).
+    /// What the parts' area alone needs with every side as short as any variation has it
+    /// (DesignSpace::shortestSides, sheetsByArea): a bound no layout of any variation beats, where
+    /// leastSheets is one layout of one (0: no bound known, as for parametric designs).
     long leastSheetsByArea = 0;
     int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
     double usageBefore() const { return 1 - start.wastage; }
 
-    /// Why no variation saves a sheet, as far as it is known (never from one layout attempt alone): the least
-    /// design's area needs as many sheets (ByArea), or one layout of it took as many though its area needs
-    /// fewer (LaidOut: more time may save one). Unknown when it was not laid out or took fewer sheets.
+    /// Why no variation saves a sheet, as far as it is known (never from one layout attempt alone): the area
+    /// bound over the variations needs as many sheets (ByArea), or one layout of the least design took as
+    /// many though that bound needs fewer (LaidOut: more time may save one). Unknown when the least design
+    /// was not laid out or took fewer sheets, or no bound is known.
     enum class NoSheetSaved { Unknown, ByArea, LaidOut };
     NoSheetSaved noSheetSaved() const;
 };

@@ -1,13 +1,18 @@
 #include "Function/LeastChange.h"
 
+#include "Function/BoundPropagation.h"
+
 #include <libalglib/optimization.h>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
+#include <numeric>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -129,6 +134,27 @@ Eigen::VectorXd snapped(const Eigen::VectorXd& target, const std::vector<LinearC
     return violation(y, rows) <= tolerance ? y : x;
 }
 
+/// `rows` over n variables as ALGLIB takes linear constraints: a sparse matrix and its lower and upper
+/// bounds.
+struct Rows {
+    Rows(const std::vector<LinearConstraint>& rows, int n) : count(static_cast<int>(rows.size()))
+    {
+        alglib::sparsecreate(count, n, matrix);
+        lower.setlength(count);
+        upper.setlength(count);
+        for (int r = 0; r < count; ++r) {
+            for (const auto& [variable, coefficient] : rows[r].terms)
+                alglib::sparseadd(matrix, r, variable, coefficient);
+            lower[r] = rows[r].lower;
+            upper[r] = rows[r].upper;
+        }
+        alglib::sparseconverttocrs(matrix);
+    }
+    int count;
+    alglib::sparsematrix matrix;
+    alglib::real_1d_array lower, upper;
+};
+
 /// One QP solve: whether it solved, x, and the solver's Lagrange multipliers of the rows.
 struct QP {
     bool solved = false;
@@ -165,21 +191,9 @@ QP solveQP(const Eigen::VectorXd& target, const std::vector<LinearConstraint>& r
         alglib::minqpsetlinearterm(state, linear);
         alglib::minqpsetscale(state, scale);
         alglib::minqpsetstartingpoint(state, x0);
-        const int k = static_cast<int>(rows.size());
-        if (k > 0) {
-            alglib::sparsematrix c;
-            alglib::sparsecreate(k, n, c);
-            alglib::real_1d_array lower, upper;
-            lower.setlength(k);
-            upper.setlength(k);
-            for (int r = 0; r < k; ++r) {
-                for (const auto& [variable, coefficient] : rows[r].terms)
-                    alglib::sparseadd(c, r, variable, coefficient);
-                lower[r] = rows[r].lower;
-                upper[r] = rows[r].upper;
-            }
-            alglib::sparseconverttocrs(c);
-            alglib::minqpsetlc2(state, c, lower, upper, k);
+        if (!rows.empty()) {
+            const Rows c(rows, n);
+            alglib::minqpsetlc2(state, c.matrix, c.lower, c.upper, c.count);
         }
         // 1e-12: looser stopping tolerances can report success with errors up to 0.1 mm (DESIGN.md).
         alglib::minqpsetalgosparseipm(state, 1e-12);
@@ -274,6 +288,150 @@ LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
         }
     }
     return result;
+}
+
+namespace {
+
+/// How far below a programme's least a variable's bound is put (mm): more than the solver's tolerance, so
+/// that the bound holds however the solver rounds.
+constexpr double kLeastHair = 1e-3;
+
+/// Variables' boxes and the rows of more than one variable, as ALGLIB's linear programming takes them.
+struct Programme {
+    std::vector<double> low, high;
+    std::vector<LinearConstraint> rows;
+};
+
+/// `rows` over n variables as a Programme: the boxes bound propagation finds, a variable its box fixes as a
+/// constant of the rows it is in (so that it ties no programme together), and only the rows of more than one
+/// variable its boxes do not already imply; nullopt when propagation shows the rows cannot hold.
+std::optional<Programme> programmeOf(const std::vector<LinearConstraint>& rows, int n)
+{
+    Programme p;
+    for (const Interval& box : propagatedBounds(rows, n)) {
+        if (box.lower > box.upper)
+            return std::nullopt;
+        p.low.push_back(box.lower);
+        p.high.push_back(box.upper);
+    }
+    for (const LinearConstraint& row : rows) {
+        LinearConstraint left{{}, row.lower, row.upper, row.source};
+        double least = 0, most = 0;
+        for (const auto& [i, a] : row.terms) {
+            if (p.low[i] == p.high[i]) {
+                left.lower -= a * p.low[i], left.upper -= a * p.low[i];
+                continue;
+            }
+            left.terms.emplace_back(i, a);
+            least += a * (a > 0 ? p.low[i] : p.high[i]);
+            most += a * (a > 0 ? p.high[i] : p.low[i]);
+        }
+        if (left.terms.size() > 1 && !(left.lower <= least && most <= left.upper))
+            p.rows.push_back(std::move(left));
+    }
+    return p;
+}
+
+/// The least of each of `variables` over programme p, whose rows tie its variables together.
+std::vector<std::optional<double>> leastInGroup(const std::vector<int>& variables, const Programme& p,
+                                                double tolerance)
+{
+    const int n = static_cast<int>(p.low.size());
+    std::vector<std::optional<double>> least(variables.size());
+    try {
+        alglib::minlpstate state;
+        alglib::minlpcreate(n, state);
+        alglib::real_1d_array low, high, cost, x;
+        low.setcontent(n, p.low.data());
+        high.setcontent(n, p.high.data());
+        alglib::minlpsetbc(state, low, high);
+        if (!p.rows.empty()) {
+            const Rows c(p.rows, n);
+            alglib::minlpsetlc2(state, c.matrix, c.lower, c.upper, c.count);
+        }
+        alglib::minlpsetalgoipm(state, 0);
+        cost.setlength(n);
+        for (size_t k = 0; k < variables.size(); ++k) {
+            for (int i = 0; i < n; ++i)
+                cost[i] = i == variables[k] ? 1 : 0;
+            alglib::minlpsetcost(state, cost);
+            alglib::minlpoptimize(state);
+            alglib::minlpreport report;
+            alglib::minlpresults(state, x, report);
+            Eigen::VectorXd at(n);
+            bool inBoxes = true;
+            for (int i = 0; i < n; ++i) {
+                at[i] = x[i];
+                inBoxes &= p.low[i] - tolerance <= at[i] && at[i] <= p.high[i] + tolerance;
+            }
+            if (report.terminationtype > 0 && inBoxes && violation(at, p.rows) <= tolerance)
+                least[k] = at[variables[k]];
+        }
+    } catch (const alglib::ap_error& e) {  // no third-party exception leaves the core
+        throw std::runtime_error("a linear programme failed: " + e.msg);
+    }
+    return least;
+}
+
+/// Each variable's group: the variables rows tie to it, directly or through others (union-find).
+std::vector<int> groupsOf(const std::vector<LinearConstraint>& rows, int n)
+{
+    std::vector<int> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    const std::function<int(int)> root = [&](int i) {
+        return parent[i] == i ? i : parent[i] = root(parent[i]);
+    };
+    for (const LinearConstraint& row : rows)
+        for (const auto& term : row.terms)
+            parent[root(term.first)] = root(row.terms.front().first);
+    for (int i = 0; i < n; ++i)
+        parent[i] = root(i);
+    return parent;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> leastOf(const std::vector<int>& variables,
+                                           const std::vector<LinearConstraint>& rows, int n, double tolerance)
+{
+    const std::optional<Programme> whole = programmeOf(rows, n);
+    if (!whole)
+        return std::nullopt;
+    std::vector<double> least(variables.size());
+    // One programme per group of the variables asked for, over that group alone: a design's axes and
+    // parts apart make programmes a fraction of the whole's size. A variable its box fixes needs none.
+    const std::vector<int> group = groupsOf(whole->rows, n);
+    std::map<int, std::vector<size_t>> asked;
+    for (size_t k = 0; k < variables.size(); ++k) {
+        const int i = variables[k];
+        least[k] = whole->low[i];
+        if (whole->low[i] < whole->high[i])
+            asked[group[i]].push_back(k);
+    }
+    for (const auto& [g, ks] : asked) {
+        std::vector<int> local(n, -1);
+        Programme p;
+        for (int i = 0; i < n; ++i)
+            if (group[i] == g) {
+                local[i] = static_cast<int>(p.low.size());
+                p.low.push_back(whole->low[i]);
+                p.high.push_back(whole->high[i]);
+            }
+        for (const LinearConstraint& row : whole->rows)
+            if (group[row.terms.front().first] == g) {
+                p.rows.push_back(row);
+                for (auto& term : p.rows.back().terms)
+                    term.first = local[term.first];
+            }
+        std::vector<int> localAsked;
+        for (size_t k : ks)
+            localAsked.push_back(local[variables[k]]);
+        const std::vector<std::optional<double>> found = leastInGroup(localAsked, p, tolerance);
+        for (size_t j = 0; j < ks.size(); ++j)
+            if (found[j])
+                least[ks[j]] = std::max(least[ks[j]], *found[j] - kLeastHair);
+    }
+    return least;
 }
 
 }  // namespace fabguide::function

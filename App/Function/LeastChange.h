@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,5 +39,13 @@ LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
 
 /// Largest amount by which x breaks a constraint (0 when all hold).
 double violation(const Eigen::VectorXd& x, const std::vector<LinearConstraint>& constraints);
+
+/// A lower bound on each of `variables` (indices of n) over every x satisfying the constraints: its least,
+/// by one linear programme (ALGLIB's) per variable over the variables the constraints tie to it, less a
+/// micrometre for the solver's rounding; bound propagation's where a programme fails. nullopt when
+/// propagation shows the constraints cannot hold together.
+std::optional<std::vector<double>> leastOf(const std::vector<int>& variables,
+                                           const std::vector<LinearConstraint>& rows, int n,
+                                           double tolerance = 1e-6);
 
 }  // namespace fabguide::function

@@ -1390,7 +1390,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>FabGuide: the task panel closed: its document {}
 </source>
         <translation type="unfinished"></translation>
@@ -1783,7 +1783,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="367"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="370"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1979,12 +1979,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="308"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="311"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="373"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="376"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2325,12 +2325,12 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>closed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>changed by undo or redo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2584,11 +2584,6 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
-        <source>; with every board as small as they allow, their area alone needs {} sheet(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation type="unfinished"></translation>
@@ -2604,7 +2599,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="419"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="422"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2614,8 +2609,13 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="310"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="313"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
+        <source>; with every board side as short as they allow, their area alone needs {} sheet(s)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

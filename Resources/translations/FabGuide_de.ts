@@ -1397,7 +1397,7 @@ U/min</translation>
         <translation>Ein anderer Aufgabenbereich ist offen: beenden Sie ihn zuerst mit OK oder Abbrechen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>FabGuide: the task panel closed: its document {}
 </source>
         <translation>FabGuide: das Aufgabenfenster wurde geschlossen: sein Dokument {}
@@ -1793,7 +1793,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="367"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="370"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1990,12 +1990,12 @@ U/min</translation>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="308"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="311"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="373"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="376"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2342,12 +2342,12 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Wählen Sie den Flachpack-Entwurf.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>closed</source>
         <translation>wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/editing.py" line="150"/>
+        <location filename="../../freecad/fabguide/gui/editing.py" line="155"/>
         <source>changed by undo or redo</source>
         <translation>wurde durch Rückgängig oder Wiederholen geändert</translation>
     </message>
@@ -2605,11 +2605,6 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; gleich groß gezeichnete Quader bleiben gleich groß (löschen Sie die Bedingungen „drawn equal“, um sie freizugeben); die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
-        <source>; with every board as small as they allow, their area alone needs {} sheet(s)</source>
-        <translation>; mit jeder Platte so klein, wie sie es zulassen, braucht allein ihre Fläche {} Rohplatte(n)</translation>
-    </message>
-    <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
         <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
         <translation>; mit jeder Platte so klein, wie sie es zulassen, wurde er auf {} Rohplatte(n) verlegt, obwohl ihre Fläche auf {} passen würde: mehr Zeit spart vielleicht eine</translation>
@@ -2625,7 +2620,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Die Körper von '{}' werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="419"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="422"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation>'{}' wird angeordnet</translation>
     </message>
@@ -2635,9 +2630,14 @@ hält an: das bisher Beste bleibt</translation>
         <translation>'{}' wird angeordnet ({} Platten)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="310"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="313"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation>keine Quader zum Anordnen (die Part-Quader des Möbels in den Entwurf ziehen)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
+        <source>; with every board side as short as they allow, their area alone needs {} sheet(s)</source>
+        <translation>; mit jeder Plattenseite so kurz, wie sie es zulassen, braucht allein ihre Fläche {} Rohplatte(n)</translation>
     </message>
 </context>
 <context>

@@ -30,7 +30,8 @@ SEEDS = (1, 2)
 
 def optimise(build, path, seed, unguided=False, limit=8):
     """The user's design and the first suggestion (the maker's best), as summary.json gives them, the wall time, the
-    least design's sheets as laid out and its area bound (no variation needs fewer sheets)."""
+    least design's sheets as laid out and the area bound (every side as short as any variation has it: no variation
+    needs fewer sheets)."""
     with tempfile.TemporaryDirectory() as out:
         command = [os.path.join(build, "fabguide"), "optimise", path, "-o", out, "--seed", str(seed), "--threads",
                    "2", "--time-limit", str(limit)] + (["--unguided"] if unguided else [])
@@ -87,7 +88,7 @@ def measured(row):
 
 
 def least(m):
-    """The least design's sheets: as laid out / by its parts' area alone."""
+    """The least design's sheets as laid out / the sheets no variation beats by its parts' area alone."""
     return "{} / {}".format(m["least"], m["bound"])
 
 
@@ -105,8 +106,8 @@ def summary_lines(rows):
     proved = sum(m["sheets"][1] == m["bound"] for m in ms)
     return ["", "Designs improved: {} of {}{}; median waste reduction {:.0%} (target >= 10 %); multi-sheet designs "
             "saving a sheet: {} of {} (target >= a third; the others need as many sheets with every part as small "
-            "as their constraints allow: 'least sheets'); on the sheets the least design's area "
-            "allows: {} of {}; largest overshoot of the time limit: {:+.2f} s "
+            "as their constraints allow: 'least sheets'); on the sheets the area bound over the "
+            "variations allows: {} of {}; largest overshoot of the time limit: {:+.2f} s "
             "(target <= 1 s).".format(improved, len(ms), " (not: {}, see its least sheets and the output's 'left "
                                       "out')".format(", ".join(why)) if why else "",
                                       statistics.median(reduction(m) for m in ms) if ms else 0, saved, len(multi),
@@ -122,8 +123,9 @@ def table(rows, suite_rows=()):
              "thesis' rounds minimise the boards' cost (sheets), then the thesis' usage measure. A suggestion is kept "
              "only with fewer sheets, or as many and less waste (m² of the sheets used not in parts), and "
              "suggestions are ranked by cost, sheets, waste, largest offcut. 'sheets' after is the fewest of the "
-             "first suggestions, 'least sheets' what the least design needs (laid out / its parts' area alone, "
-             "no layout of it beats that bound); waste and usage after are the first "
+             "first suggestions, 'least sheets' what the least design needs as laid out / the sheets its parts' "
+             "area alone needs with every side as short as any variation has it (a linear programme per side: no "
+             "variation beats that bound); waste and usage after are the first "
              "suggestion's, mean over seeds {}; seconds is the "
              "slowest wall time of the command. 'Random shrink' replaces the layout's locking chains by random part "
              "sizes (`--unguided`, the thesis' baseline): its waste after. Usage = part area / layout bounding "

@@ -5,6 +5,9 @@
 #include "Design/MinWastage.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
+#include "Layout/MaxRects.h"
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -62,6 +65,69 @@ TEST(LeastDesignTest, ShrinksEveryPartToWhatItsConstraintsAllow)
     // Every design on the way is valid too (linear constraints; boards stay on their side of inner volumes).
     for (double t : {0.25, 0.5, 0.75})
         EXPECT_TRUE(design.between(X, *least, t)) << t;
+}
+
+TEST(LeastDesignTest, ShortestSidesBoundEveryDesignWhereSidesAreTied)
+{
+    // Two boards side by side whose widths add up to a third's fixed 1000 mm, each at least 100: the least
+    // design takes one split of the 1000, the bound must take 100 for each (no design has either narrower).
+    const io::FlatpackDesign f = io::readFlatpack(nlohmann::json::parse(R"({
+        "format": "fabguide.flatpack", "version": 1,
+        "boards": [{"width": 2440, "height": 1220, "thickness": 18}],
+        "settings": {"min_length": 100},
+        "parts": [{"id": "a", "position": [0, 0, 0], "size": [400, 300, 18]},
+                  {"id": "b", "position": [400, 0, 0], "size": [600, 300, 18]},
+                  {"id": "c", "position": [0, 400, 0], "size": [1000, 300, 18]}],
+        "constraints": [{"kind": "sum", "lhs": ["a.size.x", "b.size.x"], "rhs": ["c.size.x"]},
+                        {"kind": "fixed", "ref": "c.size.x"}]})"));
+    const ConstrainedDesign design(f.design);
+    const Eigen::VectorXd X = design.start();
+    const auto least = design.least(X, std::chrono::steady_clock::time_point::max());
+    const auto shortest = design.shortestSides(X);
+    ASSERT_TRUE(least && shortest);
+    const Eigen::VectorXd leastSizes = design.sizes(*least);
+    EXPECT_NEAR(leastSizes[0] + leastSizes[2], 1000, 1e-6);  // a's and b's widths (material-space x)
+    EXPECT_NEAR((*shortest)[0], 100, 2e-3);
+    EXPECT_NEAR((*shortest)[2], 100, 2e-3);
+    EXPECT_NEAR((*shortest)[4], 1000, 2e-3);  // c's, fixed
+    for (int side : {1, 3, 5})                // the depths, untied, shrink to the minimum alike
+        EXPECT_NEAR((*shortest)[side], 100, 2e-3);
+}
+
+TEST(LeastDesignTest, ShortestSidesAreNoLongerThanAnyDesignOnTheWayToTheLeast)
+{
+    // An independent check of the bound on suite designs: every side of every design between the user's
+    // and the least one (all valid), and of some of CHANGEPARTSIZES' steps from it, is at least the bound's.
+    for (const char* name :
+         {"cube-unit-3x3", "kitchen-run", "wardrobe", "bookcase-1800", "sideboard-18-6mm"}) {
+        const io::FlatpackDesign f = suiteDesign(name);
+        const ConstrainedDesign design(f.design);
+        const Eigen::VectorXd X = design.start();
+        const auto least = design.least(X, std::chrono::steady_clock::time_point::max());
+        const auto shortest = design.shortestSides(X);
+        ASSERT_TRUE(least && shortest) << name;
+        std::vector<Eigen::VectorXd> designs = {X, *least};
+        for (double t : {0.25, 0.5, 0.75})
+            if (const auto d = design.between(X, *least, t))
+                designs.push_back(*d);
+        for (int size = 0; size < shortest->size(); size += 29) {
+            Eigen::VectorXd change = Eigen::VectorXd::Zero(shortest->size());
+            change[size] = -0.5 * design.sizes(X)[size];
+            if (const auto d = design.changePartSizes(X, change))
+                designs.push_back(*d);
+        }
+        for (const Eigen::VectorXd& d : designs) {
+            const Eigen::VectorXd sizes = design.sizes(d);
+            for (int side = 0; side < sizes.size(); ++side)
+                EXPECT_GE(sizes[side], (*shortest)[side]) << name << " side " << side;
+        }
+        // Where nothing ties the sides apart from their boxes the bound is the least design itself: these
+        // suite designs need as many sheets by the bound as by the least design's area.
+        const MaterialSpace material(f.boards, f.settings, design.parts());
+        EXPECT_EQ(sheetsByArea(material.problem(*shortest)),
+                  sheetsByArea(material.problem(design.sizes(*least))))
+            << name;
+    }
 }
 
 namespace {

@@ -79,3 +79,26 @@ TEST(LeastChange, AConflictWithAMinimumSizeBlamesTheRelationship)
     EXPECT_FALSE(r.solved);
     EXPECT_EQ(r.conflict, (std::vector<std::string>{"too small"}));
 }
+
+TEST(LeastOf, FindsEachVariablesLeastWherePropagationCannot)
+{
+    // x0 + x1 >= 10 and x0 >= x1: x0 is at least 5, though neither row bounds it alone; x1 is unbounded
+    // below. x2 = 3 is fixed by its box; x3 and x4 are tied apart from the others (x3 - x4 = 1, x4 >= 2).
+    const std::vector<LinearConstraint> rows = {{{{0, 1.0}, {1, 1.0}}, 10, kInf, "a"},
+                                                {{{0, 1.0}, {1, -1.0}}, 0, kInf, "b"},
+                                                equal({{2, 1.0}}, 3, "c"),
+                                                equal({{3, 1.0}, {4, -1.0}}, 1, "d"),
+                                                {{{4, 1.0}}, 2, kInf, "e"}};
+    const auto least = leastOf({0, 1, 2, 3}, rows, 5);
+    ASSERT_TRUE(least);
+    EXPECT_NEAR((*least)[0], 5, 2e-3);
+    EXPECT_LE((*least)[0], 5);  // a bound: never above the least
+    EXPECT_TRUE(std::isinf((*least)[1]) && (*least)[1] < 0);
+    EXPECT_DOUBLE_EQ((*least)[2], 3);
+    EXPECT_NEAR((*least)[3], 3, 2e-3);
+}
+
+TEST(LeastOf, RowsThatCannotHoldGiveNoBound)
+{
+    EXPECT_FALSE(leastOf({0}, {{{{0, 1.0}}, 5, kInf, "a"}, atMost({{0, 1.0}}, 4, "b")}, 1));
+}
