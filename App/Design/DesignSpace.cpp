@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace fabguide::material {
@@ -28,11 +29,6 @@ std::optional<Eigen::VectorXd> DesignSpace::least(const Eigen::VectorXd& from,
             break;
     }
     return X;
-}
-
-std::optional<Eigen::VectorXd> DesignSpace::shortestSides(const Eigen::VectorXd&) const
-{
-    return std::nullopt;
 }
 
 ConstrainedDesign::ConstrainedDesign(Design design) : design_(std::move(design))
@@ -106,11 +102,9 @@ Eigen::VectorXd ParametricDesign::sizes(const Eigen::VectorXd& X) const
     return sizesOf_(X);
 }
 
-std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::VectorXd& X,
-                                                                 const Eigen::VectorXd& change,
-                                                                 const Deadline&) const
+Eigen::MatrixXd ParametricDesign::jacobian(const Eigen::VectorXd& X) const
 {
-    // Gradients ds/dx_j by forward differences, stepping away from a bound when at the upper one.
+    // Forward differences, stepping away from a bound when at the upper one.
     const Eigen::VectorXd s = sizes(X);
     Eigen::MatrixXd J(s.size(), X.size());
     for (int j = 0; j < X.size(); ++j) {
@@ -119,6 +113,38 @@ std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::Ve
         stepped[j] += h;
         J.col(j) = (sizes(stepped) - s) / h;
     }
+    return J;
+}
+
+std::optional<Eigen::VectorXd> ParametricDesign::shortestSides(const Eigen::VectorXd& X) const
+{
+    const Eigen::VectorXd s = sizes(X);
+    const Eigen::MatrixXd J = jacobian(X);
+    Eigen::VectorXd shortest(s.size());
+    std::map<std::vector<double>, Eigen::VectorXd> at;  // D at each corner, computed once (a recompute each)
+    for (int i = 0; i < s.size(); ++i) {
+        // Where side i is an affine function of the parameters, its least is at the corner of their box that
+        // each parameter's slope points away from; the side computed there confirms it.
+        std::vector<double> corner(X.data(), X.data() + X.size());
+        for (int j = 0; j < X.size(); ++j)
+            if (J(i, j) != 0)
+                corner[j] = J(i, j) > 0 ? lower_[j] : upper_[j];
+        const Eigen::Map<const Eigen::VectorXd> P(corner.data(), X.size());
+        shortest[i] = s[i] + J.row(i).dot(P - X);
+        if (!at.count(corner))
+            at[corner] = sizes(P);
+        if (std::abs(at[corner][i] - shortest[i]) > 1e-3 * std::max(1.0, std::abs(shortest[i])))
+            return std::nullopt;
+        shortest[i] = std::max(0.0, shortest[i] - 1e-3);
+    }
+    return shortest;
+}
+
+std::optional<Eigen::VectorXd> ParametricDesign::changePartSizes(const Eigen::VectorXd& X,
+                                                                 const Eigen::VectorXd& change,
+                                                                 const Deadline&) const
+{
+    const Eigen::MatrixXd J = jacobian(X);
     const Eigen::VectorXd delta = J.completeOrthogonalDecomposition().solve(change);
     // Keep within the parameter bounds: as much of the change as they allow.
     double alpha = 1;

@@ -45,9 +45,8 @@ public:
     virtual std::optional<Eigen::VectorXd> least(const Eigen::VectorXd& X,
                                                  std::chrono::steady_clock::time_point deadline) const;
     /// Part sizes (as `sizes` orders them) that no design `least` chooses among undercuts along any side, so
-    /// that their area bounds every such design's from below; here nullopt, no bound known (a part size is
-    /// any function of the parameters).
-    virtual std::optional<Eigen::VectorXd> shortestSides(const Eigen::VectorXd& X) const;
+    /// that their area bounds every such design's from below; nullopt when no bound is known.
+    virtual std::optional<Eigen::VectorXd> shortestSides(const Eigen::VectorXd& X) const = 0;
 };
 
 /// A design of boards with design and effectiveness constraints: a size change is the change vector u of
@@ -93,6 +92,9 @@ public:
     Eigen::VectorXd sizes(const Eigen::VectorXd& X) const override;
     std::optional<Eigen::VectorXd> changePartSizes(const Eigen::VectorXd& X, const Eigen::VectorXd& change,
                                                    const Deadline& deadline = {}) const override;
+    /// Where every part side is an affine function of the parameters (as found at X, and confirmed at the
+    /// corner of the parameter box where each side is least), each side's least over the box; else nullopt.
+    std::optional<Eigen::VectorXd> shortestSides(const Eigen::VectorXd& X) const override;
     /// Parameter bounds are a box: every point on the way is within them.
     std::optional<Eigen::VectorXd> between(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
                                            double t) const override
@@ -101,6 +103,9 @@ public:
     }
 
 private:
+    /// ds/dX by forward differences, stepping away from a bound when at the upper one.
+    Eigen::MatrixXd jacobian(const Eigen::VectorXd& X) const;
+
     std::vector<PartKind> parts_;
     SizesOf sizesOf_;
     Eigen::VectorXd start_, lower_, upper_;

@@ -204,3 +204,25 @@ TEST(FewerSheetsTest, ParametricDesignsShrinkThroughChangePartSizes)
     EXPECT_LE(found.front().X[0], 300);
     EXPECT_GE(found.front().X[0], 250);
 }
+
+TEST(ParametricDesignTest, ShortestSidesAreEachSidesLeastOverTheParameterBoxWhereSidesAreAffine)
+{
+    // A shelf of width w = a + b and depth 400 - a (a in [100, 300], b in [200, 500]): its least width is 300,
+    // its least depth 100, at different corners. A side that is not affine (a²) gives no bound.
+    const auto shelf = [](bool affine) {
+        return ParametricDesign(
+            {{"shelf", 1}},
+            [affine](const Eigen::VectorXd& x) {
+                Eigen::VectorXd s(2);
+                s << x[0] + x[1], affine ? 400 - x[0] : x[0] * x[0] / 100;
+                return s;
+            },
+            Eigen::Vector2d(200, 300), Eigen::Vector2d(100, 200), Eigen::Vector2d(300, 500));
+    };
+    const auto shortest = shelf(true).shortestSides(Eigen::Vector2d(200, 300));
+    ASSERT_TRUE(shortest);
+    EXPECT_NEAR((*shortest)[0], 300, 2e-3);
+    EXPECT_NEAR((*shortest)[1], 100, 2e-3);
+    EXPECT_LE((*shortest)[0], 300);
+    EXPECT_FALSE(shelf(false).shortestSides(Eigen::Vector2d(200, 300)));
+}
