@@ -25,7 +25,8 @@ import flatpack_checker  # noqa: E402
 import savable_designs  # noqa: E402
 
 SUITE = os.path.join(ROOT, "tests", "data", "flatpack")
-SHEETS = {"boards": [{"width": 2440, "height": 1220, "thickness": t, "count": -1} for t in (18, 12, 6)],
+SHEETS = {"boards": [{"name": "birch %d" % t, "width": 2440, "height": 1220, "thickness": t, "count": -1}
+                     for t in (18, 12, 6)],
           "settings": {"resolution": 1, "kerf": 4, "spacing": 0, "trim": 5}}
 
 
