@@ -1,5 +1,7 @@
 #include "Design/Design.h"
 
+#include "Geometry/Interval.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,6 +62,17 @@ Linear upperFace(int board, int axis)
 {
     return centreOf(board, axis) + sizeOf(board, axis) * 0.5;
 }
+
+namespace {
+
+/// Board b's extent along an axis in design X.
+Interval extent(int board, int axis, const Eigen::VectorXd& X)
+{
+    return {lowerFace(board, axis).value(X), upperFace(board, axis).value(X)};
+}
+
+}  // namespace
+
 Linear constant(double value)
 {
     return {{}, value};
@@ -118,9 +131,8 @@ bool intrudes(const InnerVolume& volume, int board, const Eigen::VectorXd& X, do
     if (board == volume.on)
         return false;
     for (int axis = 0; axis < 3; ++axis) {
-        const double overlap = std::min(upperFace(board, axis).value(X), volume.upper(axis).value(X)) -
-                               std::max(lowerFace(board, axis).value(X), volume.lower(axis).value(X));
-        if (overlap <= tolerance)
+        if (overlapOf(extent(board, axis, X), {volume.lower(axis).value(X), volume.upper(axis).value(X)}) <=
+            tolerance)
             return false;
     }
     return true;
@@ -189,10 +201,7 @@ Snapping snapping(const Design& design, int a, int b, double tolerance)
     const Eigen::VectorXd X = design.variables();
     const std::string pair = design.boards[a].id + "/" + design.boards[b].id;
     const char* names = "xyz";
-    const auto overlap = [&](int axis) {
-        return std::min(upperFace(a, axis).value(X), upperFace(b, axis).value(X)) -
-               std::max(lowerFace(a, axis).value(X), lowerFace(b, axis).value(X));
-    };
+    const auto overlap = [&](int axis) { return overlapOf(extent(a, axis, X), extent(b, axis, X)); };
     const double thinner = std::min(design.boards[a].size[design.boards[a].normal],
                                     design.boards[b].size[design.boards[b].normal]);
     Snapping kept;

@@ -1,6 +1,7 @@
 #include "Function/DoublePivot.h"
 
 #include "Function/Pose.h"
+#include "Geometry/Interval.h"
 
 #include <libalglib/optimization.h>
 
@@ -142,7 +143,7 @@ bool overlap(const std::array<Point, 4>& turned, const std::array<double, 6>& bo
         };
         const auto [a0, a1] = extent(turned);
         const auto [b0, b1] = extent(corners);
-        if (std::min(a1, b1) - std::max(a0, b0) <= slack)
+        if (overlapOf({a0, a1}, {b0, b1}) <= slack)
             return false;  // a separating axis
     }
     return true;
@@ -175,7 +176,7 @@ bool hits(const std::vector<std::array<double, 6>>& moving, const std::vector<st
         for (Point& q : corners)
             q = place(q);
         for (const auto& box : fixed)
-            if (std::min(r[5], box[5]) - std::max(r[4], box[4]) > 1e-6 && overlap(corners, box, 1e-6))
+            if (overlapOf(along(r, 2), along(box, 2)) > 1e-6 && overlap(corners, box, 1e-6))
                 return true;
     }
     return false;

@@ -1,6 +1,7 @@
 #include "Function/Separation.h"
 
 #include "Function/Pose.h"
+#include "Geometry/Interval.h"
 
 #include <algorithm>
 #include <array>
@@ -46,8 +47,7 @@ double common(const Box& a, const Box& b)
 {
     double inside = 1;
     for (int axis = 0; axis < 3; ++axis)
-        inside *=
-            std::max(0.0, std::min(a[2 * axis + 1], b[2 * axis + 1]) - std::max(a[2 * axis], b[2 * axis]));
+        inside *= std::max(0.0, overlapOf(along(a, axis), along(b, axis)));
     return inside;
 }
 
@@ -83,7 +83,7 @@ bool exempt(const Model& model, const Rooms& room, const std::vector<int>& owner
 bool overlaps(const Box& a, const Box& b)
 {
     for (int axis = 0; axis < 3; ++axis)
-        if (std::min(a[2 * axis + 1], b[2 * axis + 1]) <= std::max(a[2 * axis], b[2 * axis]))
+        if (overlapOf(along(a, axis), along(b, axis)) <= 0)
             return false;
     return true;
 }
@@ -96,7 +96,7 @@ bool continues(const Box& c, const Box& d, int k)
     const bool beyond =
         k % 2 ? d[k] > c[k] + 1e-9 && d[k - 1] <= c[k] + 1e-9 : d[k] < c[k] - 1e-9 && d[k + 1] >= c[k] - 1e-9;
     for (int o = 0; o < 3 && beyond; ++o)
-        if (o != axis && std::min(c[2 * o + 1], d[2 * o + 1]) - std::max(c[2 * o], d[2 * o]) <= 1e-9)
+        if (o != axis && overlapOf(along(c, o), along(d, o)) <= 1e-9)
             return false;
     return beyond;
 }
@@ -192,9 +192,7 @@ std::vector<std::pair<int, int>> nearPairs(const Model& model, int configuration
             const int a = solids[i], b = solids[k];
             bool near = !exempt(model, room, owner, a, b, configuration);
             for (int axis = 1; axis < 3 && near; ++axis)
-                near = std::min(boxes[a][2 * axis + 1], boxes[b][2 * axis + 1]) -
-                           std::max(boxes[a][2 * axis], boxes[b][2 * axis]) >
-                       -margin;
+                near = overlapOf(along(boxes[a], axis), along(boxes[b], axis)) > -margin;
             if (near)
                 pairs.push_back(std::minmax(a, b));
         }

@@ -5,6 +5,7 @@
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
 #include "Function/Separation.h"
+#include "Geometry/Interval.h"
 
 #include <algorithm>
 #include <array>
@@ -72,8 +73,7 @@ std::array<double, 3> meeting(const Cuboid& a, const Cuboid& b)
 {
     std::array<double, 3> meet{};
     for (int axis = 0; axis < 3; ++axis)
-        meet[axis] = std::min(a.coordinates[2 * axis + 1], b.coordinates[2 * axis + 1]) -
-                     std::max(a.coordinates[2 * axis], b.coordinates[2 * axis]);
+        meet[axis] = overlapOf(along(a.coordinates, axis), along(b.coordinates, axis));
     return meet;
 }
 

@@ -4,6 +4,7 @@
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
 #include "Function/Support.h"
+#include "Geometry/Interval.h"
 #include "IO/Json.h"
 
 #include <algorithm>
@@ -563,8 +564,7 @@ int solidAround(const function::Model& model, const function::Part& part, const 
             continue;
         double volume = 1;
         for (int a = 0; a < 3; ++a)
-            volume *= std::max(0.0, std::min(solid.coordinates[2 * a + 1], cavity.coordinates[2 * a + 1]) -
-                                        std::max(solid.coordinates[2 * a], cavity.coordinates[2 * a]));
+            volume *= std::max(0.0, overlapOf(along(solid.coordinates, a), along(cavity.coordinates, a)));
         if (volume > most) {
             most = volume;
             best = s;

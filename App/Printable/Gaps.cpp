@@ -1,6 +1,7 @@
 #include "Printable/Gaps.h"
 
 #include "Function/Pose.h"
+#include "Geometry/Interval.h"
 #include "Printable/Motion.h"
 
 #include <Bnd_Box.hxx>
@@ -204,9 +205,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
                     bool overlaps = true;  // across the other two axes
                     for (int o = 0; o < 3; ++o)
                         if (o != axis)
-                            overlaps = overlaps && std::min(ca[2 * o + 1], cb[2 * o + 1]) -
-                                                           std::max(ca[2 * o], cb[2 * o]) >
-                                                       hair;
+                            overlaps = overlaps && overlapOf(along(ca, o), along(cb, o)) > hair;
                     if (!overlaps)
                         continue;
                     for (int high : {0, 1}) {
@@ -243,7 +242,7 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
             m.cuboids[b].cavity() || std::abs(x[side] - y[side ^ 1]) >= hair)
             return false;
         for (int o = 0; o < 3; ++o)
-            if (o != side / 2 && std::min(x[2 * o + 1], y[2 * o + 1]) - std::max(x[2 * o], y[2 * o]) <= hair)
+            if (o != side / 2 && overlapOf(along(x, o), along(y, o)) <= hair)
                 return false;
         return true;
     };

@@ -2,6 +2,7 @@
 
 #include "Function/DoublePivot.h"
 #include "Function/Pose.h"
+#include "Geometry/Interval.h"
 #include "Printable/Motion.h"
 #include "Printable/Sweeps.h"
 
@@ -111,8 +112,7 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
                 const double low = m.cuboids[c].at(static_cast<Side>(2 * a)),
                              high = m.cuboids[c].at(static_cast<Side>(2 * a + 1));
                 if (std::abs(coord(axis.Direction(), a)) > 0.5) {
-                    shared = std::min(high, own.at(static_cast<Side>(2 * a + 1))) -
-                             std::max(low, own.at(static_cast<Side>(2 * a)));
+                    shared = overlapOf({low, high}, along(own.coordinates, a));
                     continue;
                 }
                 const double x = coord(axis.Location(), a);
@@ -252,8 +252,7 @@ std::pair<double, int> nearestHinge(const Model& m, int j, const gp_Ax1& axis, i
         const gp_Ax1 beside = hingeAxis(m, other);
         const Cuboid& its = m.cuboids[other.edgeA.cuboid];
         const double overlap =
-            std::min(own.at(static_cast<Side>(2 * along + 1)), its.at(static_cast<Side>(2 * along + 1))) -
-            std::max(own.at(static_cast<Side>(2 * along)), its.at(static_cast<Side>(2 * along)));
+            overlapOf(fabguide::along(own.coordinates, along), fabguide::along(its.coordinates, along));
         if (!beside.IsParallel(axis, 1e-9) || overlap <= 0)
             continue;
         gp_Vec apart(axis.Location(), beside.Location());
@@ -504,7 +503,7 @@ std::vector<RailPlace> railPlaces(const Model& m, int j)
                 for (const Cuboid& hollow : m.cuboids) {
                     const auto& h = hollow.coordinates;
                     if (hollow.within != static_cast<int>(q) || std::abs(h[face] - y[face]) > 1e-6 ||
-                        std::min(to, h[2 * a + 1]) - std::max(from, h[2 * a]) <= 1e-9)
+                        overlapOf({from, to}, along(h, a)) <= 1e-9)
                         continue;
                     std::vector<std::pair<double, double>> left;
                     for (const auto& [low, high] : strips)

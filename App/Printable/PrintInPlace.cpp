@@ -1,6 +1,7 @@
 #include "Printable/PrintInPlace.h"
 
 #include "Function/Solve.h"
+#include "Geometry/Interval.h"
 #include "Printable/Gaps.h"
 #include "Printable/Joints.h"
 #include "Printable/Motion.h"
@@ -139,10 +140,8 @@ bool inCavity(const Model& m, int part)
             if (hollow.cavity() && function::partOf(m, hollow.within) != part && !m.cuboids[c].cavity()) {
                 bool overlap = true;
                 for (int a = 0; a < 3; ++a)
-                    overlap = overlap &&
-                              std::min(hollow.coordinates[2 * a + 1], m.cuboids[c].coordinates[2 * a + 1]) -
-                                      std::max(hollow.coordinates[2 * a], m.cuboids[c].coordinates[2 * a]) >
-                                  1e-9;
+                    overlap = overlap && overlapOf(along(hollow.coordinates, a),
+                                                   along(m.cuboids[c].coordinates, a)) > 1e-9;
                 if (overlap)
                     return true;
             }

@@ -207,8 +207,8 @@ TEST(FewerSheetsTest, ParametricDesignsShrinkThroughChangePartSizes)
 
 TEST(ParametricDesignTest, ShortestSidesAreEachSidesLeastOverTheParameterBoxWhereSidesAreAffine)
 {
-    // A shelf of width w = a + b and depth 400 - a (a in [100, 300], b in [200, 500]): its least width is 300,
-    // its least depth 100, at different corners. A side that is not affine (a²) gives no bound.
+    // A shelf of width w = a + b and depth 400 - a (a in [100, 300], b in [200, 500]): its least width is
+    // 300, its least depth 100, at different corners. A side that is not affine (a²) gives no bound.
     const auto shelf = [](bool affine) {
         return ParametricDesign(
             {{"shelf", 1}},
