@@ -349,72 +349,67 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
-        <source>The last layout and its problem (JSON)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
         <source>What must hold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
         <source>Fixed value or sum offset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="117"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="118"/>
         <source>Satisfied, or what breaks it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along x</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Size along y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
         <source>Size along z</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="144"/>
         <source>Satisfied, or the boards that break it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="210"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="211"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation type="unfinished"></translation>
     </message>
@@ -714,17 +709,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="100"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Right side of a sum</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -746,6 +741,11 @@
     <message>
         <location filename="../../freecad/fabguide/material/design.py" line="45"/>
         <source>Shortest side a board may shrink to; 0: twice each board&apos;s own thickness, as a file without min_length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
+        <source>The last layout, its problem and the design it was made from (JSON)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1783,7 +1783,7 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="370"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1959,32 +1959,32 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="124"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="125"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="156"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="157"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="260"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="282"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="283"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="311"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="312"/>
         <source>add a master board (MasterBoards)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="376"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="377"/>
         <source>{}: edit undone: {}
 </source>
         <translation type="unfinished"></translation>
@@ -2479,7 +2479,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="94"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="95"/>
         <source>Constraint</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2599,7 +2599,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="422"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="429"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2609,7 +2609,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="313"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="314"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation type="unfinished"></translation>
     </message>

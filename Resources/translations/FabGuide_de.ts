@@ -349,72 +349,67 @@
         <translation>Platten nach der letzten gültigen Neuberechnung (JSON)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
-        <source>The last layout and its problem (JSON)</source>
-        <translation>Das letzte Layout und seine Aufgabe (JSON)</translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="98"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="99"/>
         <source>What must hold</source>
         <translation>Was gelten muss</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="106"/>
         <source>Boxes for ground, coplanar and snap</source>
         <translation>Quader für Boden, koplanar und Fang</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="107"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="108"/>
         <source>Fixed value or sum offset</source>
         <translation>Fester Wert oder Versatz der Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="109"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="110"/>
         <source>Range: smallest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: kleinster Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="112"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="113"/>
         <source>Range: largest value (beyond ±10⁸ m: none)</source>
         <translation>Bereich: größter Wert (jenseits ±10⁸ m: keiner)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="117"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="118"/>
         <source>Satisfied, or what breaks it</source>
         <translation>Erfüllt, oder was sie verletzt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="135"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="136"/>
         <source>Inner: kept free; Outer: the design stays inside</source>
         <translation>Innen: bleibt frei; Außen: der Entwurf bleibt darin</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="138"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="139"/>
         <source>Inner volume: the board it rests on and moves with</source>
         <translation>Innenraum: die Platte, auf der er steht und mit der er sich bewegt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="140"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
         <source>Size along x</source>
         <translation>Größe entlang x</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="141"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
         <source>Size along y</source>
         <translation>Größe entlang y</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="142"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
         <source>Size along z</source>
         <translation>Größe entlang z</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="143"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="144"/>
         <source>Satisfied, or the boards that break it</source>
         <translation>Erfüllt, oder die Platten, die sie verletzen</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="210"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="211"/>
         <source>The model axis the wood&apos;s grain runs along, one in the board&apos;s face: the board is laid with it along the grain of master boards that have one. Free: no grain</source>
         <translation>Die Modellachse, entlang der die Holzmaserung verläuft, eine in der Fläche der Platte: die Platte wird damit entlang der Maserung von Rohplatten gelegt, die eine haben. Frei: keine Maserung</translation>
     </message>
@@ -714,17 +709,17 @@
         <translation>Das Layout, aus dem dies erstellt wurde</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="100"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="101"/>
         <source>Boxes and what of them (size.x, centre.z, min.y, max.x): equal, symmetric (two), sum (left side), fixed and range (one)</source>
         <translation>Quader und was von ihnen (size.x, centre.z, min.y, max.x): gleich, symmetrisch (zwei), Summe (linke Seite), fest und Bereich (einer)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="104"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="105"/>
         <source>Right side of a sum</source>
         <translation>Rechte Seite einer Summe</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="115"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="116"/>
         <source>Symmetric about this reference (empty: midway now)</source>
         <translation>Symmetrisch zu dieser Referenz (leer: jetzige Mitte)</translation>
     </message>
@@ -747,6 +742,11 @@
         <location filename="../../freecad/fabguide/material/design.py" line="45"/>
         <source>Shortest side a board may shrink to; 0: twice each board&apos;s own thickness, as a file without min_length</source>
         <translation>Kürzeste Seite, auf die eine Platte schrumpfen darf; 0: die doppelte Dicke jeder Platte, wie in einer Datei ohne min_length</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/material/design.py" line="72"/>
+        <source>The last layout, its problem and the design it was made from (JSON)</source>
+        <translation>Das letzte Layout, seine Aufgabe und der Entwurf, aus dem es entstand (JSON)</translation>
     </message>
 </context>
 <context>
@@ -1793,7 +1793,7 @@ U/min</translation>
         <translation>Vorschlagen kann {} nicht ändern: ihre Größen oder Lagen werden von Ausdrücken bestimmt. Geben Sie dem Entwurf '{}' die Tabellen-Aliase, die sie steuern, als Parameters ('Sheet.alias min max'), dann ändert Vorschlagen diese.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="370"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="371"/>
         <source>Design &apos;{}&apos;: {}</source>
         <translation>Entwurf '{}': {}</translation>
     </message>
@@ -1970,32 +1970,32 @@ U/min</translation>
         <translation>Job '{}': der Postprozessor '{}' hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="124"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="125"/>
         <source>Constraint &apos;{}&apos;: its Min ({}) is more than its Max ({})</source>
         <translation>Vorgabe '{}': ihr Min ({}) ist größer als ihr Max ({})</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="156"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="157"/>
         <source>Box &apos;{}&apos; is in {} &apos;{}&apos; already, and a box belongs to one group: take it out of &apos;{}&apos; first, or pick other boxes</source>
         <translation>Quader '{}' ist schon in {} '{}', und ein Quader gehört zu einer Gruppe: nehmen Sie ihn zuerst aus '{}' heraus oder wählen Sie andere Quader</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="259"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="260"/>
         <source>constraint &apos;{}&apos;: a {} constraint takes one reference</source>
         <translation>Vorgabe '{}': eine {}-Vorgabe nimmt eine Referenz</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="282"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="283"/>
         <source>inner volume &apos;{}&apos;: choose the board it rests on (On)</source>
         <translation>Innenraum '{}': wählen Sie die Platte, auf der er steht (On)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="311"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="312"/>
         <source>add a master board (MasterBoards)</source>
         <translation>fügen Sie eine Rohplatte hinzu (MasterBoards)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="376"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="377"/>
         <source>{}: edit undone: {}
 </source>
         <translation>{}: Änderung rückgängig gemacht: {}
@@ -2500,7 +2500,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Rohplatten</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="94"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="95"/>
         <source>Constraint</source>
         <translation>Vorgabe</translation>
     </message>
@@ -2620,7 +2620,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Die Körper von '{}' werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="422"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="429"/>
         <source>Laying out &apos;{}&apos;</source>
         <translation>'{}' wird angeordnet</translation>
     </message>
@@ -2630,7 +2630,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>'{}' wird angeordnet ({} Platten)</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/material/design.py" line="313"/>
+        <location filename="../../freecad/fabguide/material/design.py" line="314"/>
         <source>no boxes to lay out (drag the furniture&apos;s Part boxes into the design)</source>
         <translation>keine Quader zum Anordnen (die Part-Quader des Möbels in den Entwurf ziehen)</translation>
     </message>

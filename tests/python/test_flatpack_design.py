@@ -69,6 +69,24 @@ def test_an_edit_is_kept_and_the_rest_adapts(doc, table):
     assert size(doc, "shelf", 0) == pytest.approx(696)
 
 
+def test_an_edit_is_laid_out_once_and_a_recompute_that_changes_nothing_keeps_the_layout(doc, table, monkeypatch):
+    """FreeCAD recomputes a design again after its boxes moved: that pass lays nothing out (a layout is a search of
+    LIVE_SECONDS). A change of the boxes or of a setting is laid out afresh."""
+    calls = []
+    lay_out = fabguide_core.lay_out_design
+    monkeypatch.setattr(fabguide_core, "lay_out_design", lambda *a, **k: calls.append(1) or lay_out(*a, **k))
+    box(doc, "top").Length = 760
+    doc.recompute()
+    assert len(calls) == 1 and "Touched" not in table.State
+    laid = table.LayoutJson
+    table.touch()
+    doc.recompute()
+    assert len(calls) == 1 and table.LayoutJson == laid
+    table.Kerf = 3
+    doc.recompute()
+    assert len(calls) == 2 and json.loads(table.LayoutJson)["design"]["settings"]["kerf"] == 3
+
+
 def test_an_edit_past_a_range_is_kept_as_far_as_the_range_allows(doc, table):
     box(doc, "top").Length = 2000  # the range allows 720 x 1.25 = 900
     doc.recompute()

@@ -70,7 +70,8 @@ class FlatpackDesign(properties.Proxy):
         add(obj, "App::PropertyString", "Valid", "Data",
             QT_TRANSLATE_NOOP("App::Property", "Boards after the last valid recompute (JSON)"), mode=2)
         add(obj, "App::PropertyString", "LayoutJson", "Data",
-            QT_TRANSLATE_NOOP("App::Property", "The last layout and its problem (JSON)"), mode=2)
+            QT_TRANSLATE_NOOP("App::Property", "The last layout, its problem and the design it was made from (JSON)"),
+            mode=2)
 
     def recompute(self, obj):
         master_board.note_users(obj.Document)
@@ -377,7 +378,7 @@ def recompute(obj):
             return
     mark_constraints(obj, "")
     obj.Usage = laid["usage"]
-    obj.LayoutJson = json.dumps({"layout": laid["layout"], "problem": laid["problem"]})
+    obj.LayoutJson = json.dumps({key: laid[key] for key in ("usage", "layout", "problem", "design")})
     status = "Usage {:.3f} on {} board(s){}".format(laid["usage"], len(laid["layout"]["boards"]), note)
     if not note and valid == edited["parts"] and obj.Status.startswith(status + ";"):
         status = obj.Status  # FreeCAD recomputes again after boxes moved: keep what the first pass said
@@ -418,10 +419,17 @@ def lay_out_satisfied(obj, edited, note):
 
 def laid_out(obj, edited):
     """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py): live, in LIVE_SECONDS
-    of search besides its last layout (a design of 46 boards searched its 10 s on every edit)."""
-    return background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
+    of search besides its last layout (a design of 46 boards searched its 10 s on every edit); {usage, layout,
+    problem, design}. The last layout (LayoutJson) when it was made from this very design: FreeCAD recomputes a
+    design again after its boxes moved, and that pass has nothing new to lay out."""
+    design = {key: value for key, value in edited.items() if key != "layout"}
+    last = json.loads(obj.LayoutJson) if obj.LayoutJson else {}
+    if last.get("design") == design:
+        return last
+    laid = background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
                           lambda cancel: fabguide_core.lay_out_design(edited, seconds=LIVE_SECONDS),
                           seconds=LIVE_SECONDS, stoppable=False)
+    return dict(laid, design=design)
 
 
 def absorb(obj, edited, start):
