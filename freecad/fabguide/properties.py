@@ -152,7 +152,7 @@ class Proxy(Stateless):
                 raise ValueError(problem)
             self.recompute(obj)
         except mistakes() as error:
-            fail(obj, str(error))
+            fail(obj, str(error), getattr(error, "source", None))
         else:
             fail(obj, "")
 
@@ -187,11 +187,12 @@ def failed_inputs(obj):
     return ["'{}'".format(label) for label in sorted(o.Label for o in obj.OutListRecursive if failed(o))]
 
 
-def fail(obj, message):
+def fail(obj, message, source=None):
     """Marks `obj` failed with `message` (said in the report view once), or not failed when it is empty. A failure
-    that repeats an input's own (a mechanism failing for its joint's missing edge) is not said a second time."""
+    that is another object's (`source`: a mechanism failing for its joint's missing edge) is not said again when
+    that object has said it (its own Error)."""
     if obj.Error != message:
-        if message and not any(getattr(o, "Error", "") and o.Error in message for o in obj.OutListRecursive):
+        if message and not (source not in (None, obj) and getattr(source, "Error", "")):
             FreeCAD.Console.PrintError(message + "\n")
         obj.Error = message
 

@@ -131,7 +131,7 @@ def model(obj, locks=(), drawn_sizes=None):
     drawn_sizes = drawn(obj) if drawn_sizes is None else drawn_sizes
     names = {box.Label: box.Name for box in boxes(obj)}
     try:
-        made = [parts.as_dict(p) for p in members(obj, parts.is_part)]
+        made = [read(p, parts.as_dict) for p in members(obj, parts.is_part)]
         for cuboid in (c for p in made for c in p["cuboids"]):
             was = drawn_sizes.get(names.get(cuboid["name"]))
             now = [high - low for low, high in zip(cuboid["min"], cuboid["max"])]
@@ -141,13 +141,27 @@ def model(obj, locks=(), drawn_sizes=None):
             "format": "fabguide.workslike", "version": 1, "minimum_size": obj.MinimumSize.Value,
             "minimum_wall": obj.MinimumWall.Value,
             "parts": made,
-            "joints": [joints.as_dict(j) for j in members(obj, joints.is_joint)],
-            "configurations": [configuration.as_dict(c) for c in members(obj, configuration.is_configuration)],
-            "relationships": [relationships.as_dict(r) for r in members(obj, relationships.is_relationship)],
+            "joints": [read(j, joints.as_dict) for j in members(obj, joints.is_joint)],
+            "configurations": [read(c, configuration.as_dict) for c in members(obj, configuration.is_configuration)],
+            "relationships": [read(r, relationships.as_dict) for r in members(obj, relationships.is_relationship)],
             "locks": list(dict.fromkeys(references.names(obj.Locks) + list(locks))),
         }
     except ValueError as error:
-        raise MechanismError(translate("FabGuide", "Mechanism '{}': {}").format(obj.Label, error))
+        failed = MechanismError(translate("FabGuide", "Mechanism '{}': {}").format(obj.Label, error))
+        member = getattr(error, "source", None)
+        failed.source = member if getattr(member, "Error", "") else obj  # whose failure it is, as said
+        raise failed
+
+
+def read(member, as_dict):
+    """A member of the mechanism as its dict; a failure to read it is the member's own (`source`): what says it in
+    its own recompute (a joint, a part) is not echoed by the mechanism, nor the mechanism's by a printable made from
+    it (properties.fail)."""
+    try:
+        return as_dict(member)
+    except ValueError as error:
+        error.source = member
+        raise
 
 
 def solve(obj):
