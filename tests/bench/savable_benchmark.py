@@ -24,8 +24,9 @@ import savable_designs  # noqa: E402
 SLACKS = (0.90, 0.93, 0.96)
 
 
-def run(cli, document, seconds):
-    """(summary, problems of its suggestions, wall seconds) of optimise on `document`."""
+def run(cli, document, seconds, reload=False):
+    """(summary, problems the checker finds in its suggestions, wall seconds) of optimise on `document`; with
+    `reload`, each suggestion is also reopened from its file."""
     with tempfile.TemporaryDirectory() as folder:
         path, out = os.path.join(folder, "design.flatpack.json"), os.path.join(folder, "out")
         with open(path, "w") as f:
@@ -38,14 +39,8 @@ def run(cli, document, seconds):
             return None, [done.stderr.strip()], wall
         with open(os.path.join(out, "summary.json")) as f:
             summary = json.load(f)
-        problems = []
-        before_layout = json.load(open(os.path.join(out, summary["before"]["layout"])))
-        for entry in summary["suggestions"]:
-            suggestion = json.load(open(os.path.join(out, entry["file"])))
-            layout = json.load(open(os.path.join(out, entry["layout"])))
-            problems += flatpack_checker.check_suggestion(document, suggestion, layout, entry, summary["before"],
-                                                          cli=cli, reload=False, before_layout=before_layout)
-    return summary, problems, wall
+        checked = flatpack_checker.check_output(out, document, cli=cli, reload=reload)
+    return summary, ["{}: {}".format(where, p) for where, found in checked.items() for p in found], wall
 
 
 def main(argv):

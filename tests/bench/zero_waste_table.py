@@ -12,9 +12,7 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
-import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -22,31 +20,13 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "gen"))
 sys.path.insert(0, os.path.join(ROOT, "tests", "python"))
 import flatpack_checker  # noqa: E402
+import savable_benchmark  # noqa: E402
 import savable_designs  # noqa: E402
 
 SUITE = os.path.join(ROOT, "tests", "data", "flatpack")
 SHEETS = {"boards": [{"name": "birch %d" % t, "width": 2440, "height": 1220, "thickness": t, "count": -1}
                      for t in (18, 12, 6)],
           "settings": {"resolution": 1, "kerf": 4, "spacing": 0, "trim": 5}}
-
-
-def optimised(cli, document, seconds):
-    """(summary, checker problems, wall seconds) of `fabguide optimise` on a design dict."""
-    with tempfile.TemporaryDirectory() as folder:
-        path, out = os.path.join(folder, "design.flatpack.json"), os.path.join(folder, "out")
-        with open(path, "w") as f:
-            json.dump(document, f)
-        start = time.monotonic()
-        done = subprocess.run([cli, "optimise", path, "-o", out, "--seed", "1", "--threads", "2", "--time-limit",
-                               str(seconds)], capture_output=True, text=True)
-        wall = time.monotonic() - start
-        if done.returncode:
-            return None, [done.stderr.strip()], wall
-        checked = flatpack_checker.check_output(out, document, cli=cli, reload=True)
-        problems = ["{}: {}".format(where, p) for where, found in checked.items() for p in found]
-        with open(os.path.join(out, "summary.json")) as f:
-            summary = json.load(f)
-    return summary, problems, wall
 
 
 # Parametric designs: (parts [{id, quantity, grain}], sides(parameters) -> [x, y, z per part], start, lower, upper).
@@ -157,7 +137,7 @@ def main(argv):
         document, known = savable_designs.design(seed, 0.93)
         designs.append(("generated-%d" % seed, document, known["saved"]))
     for name, document, known in designs:
-        summary, problems, wall = optimised(cli, document, args.seconds)
+        summary, problems, wall = savable_benchmark.run(cli, document, args.seconds, reload=True)
         if summary is None:
             print("| {} | {} | | | | | | {:.1f} | error: {} |".format(name, boards_of(document), wall,
                                                                    problems[0][:80]))
