@@ -71,7 +71,7 @@ std::string whyNone(const material::Exploration& e)
                    "sheets";
         case material::Exploration::NoSheetSaved::LaidOut:
             return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its "
-                   "parts' area could fit on " +
+                   "parts' area would fit on " +
                    std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
         default:
             return "";
