@@ -399,13 +399,14 @@ std::optional<std::vector<double>> leastOf(const std::vector<int>& variables,
         return std::nullopt;
     std::vector<double> least(variables.size());
     // One programme per group of the variables asked for, over that group alone: a design's axes and
-    // parts apart make programmes a fraction of the whole's size. A variable its box fixes needs none.
+    // parts apart make programmes a fraction of the whole's size. A variable its box fixes needs none, nor
+    // one whose box has no lower end: its programme may be unbounded, which solvers do not all report.
     const std::vector<int> group = groupsOf(whole->rows, n);
     std::map<int, std::vector<size_t>> asked;
     for (size_t k = 0; k < variables.size(); ++k) {
         const int i = variables[k];
         least[k] = whole->low[i];
-        if (whole->low[i] < whole->high[i])
+        if (whole->low[i] < whole->high[i] && std::isfinite(whole->low[i]))
             asked[group[i]].push_back(k);
     }
     for (const auto& [g, ks] : asked) {

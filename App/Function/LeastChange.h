@@ -40,9 +40,9 @@ LeastChangeResult solveLeastChange(const Eigen::VectorXd& target,
 /// Largest amount by which x breaks a constraint (0 when all hold).
 double violation(const Eigen::VectorXd& x, const std::vector<LinearConstraint>& constraints);
 
-/// A lower bound on each of `variables` (indices of n) over every x satisfying the constraints: its least,
-/// by one linear programme (ALGLIB's) per variable over the variables the constraints tie to it, less a
-/// micrometre for the solver's rounding; bound propagation's where a programme fails. nullopt when
+/// A lower bound on each of `variables` (indices of n) over every x satisfying the constraints: bound
+/// propagation's, and where that is finite, its least by one linear programme (ALGLIB's) per variable over
+/// the variables the constraints tie to it, less a micrometre for the solver's rounding. nullopt when
 /// propagation shows the constraints cannot hold together.
 std::optional<std::vector<double>> leastOf(const std::vector<int>& variables,
                                            const std::vector<LinearConstraint>& rows, int n,

@@ -82,13 +82,13 @@ TEST(LeastChange, AConflictWithAMinimumSizeBlamesTheRelationship)
 
 TEST(LeastOf, FindsEachVariablesLeastWherePropagationCannot)
 {
-    // x0 + x1 >= 10 and x0 >= x1: x0 is at least 5, though neither row bounds it alone; x1 is unbounded
-    // below. x2 = 3 is fixed by its box; x3 and x4 are tied apart from the others (x3 - x4 = 1, x4 >= 2).
-    const std::vector<LinearConstraint> rows = {{{{0, 1.0}, {1, 1.0}}, 10, kInf, "a"},
-                                                {{{0, 1.0}, {1, -1.0}}, 0, kInf, "b"},
-                                                equal({{2, 1.0}}, 3, "c"),
-                                                equal({{3, 1.0}, {4, -1.0}}, 1, "d"),
-                                                {{{4, 1.0}}, 2, kInf, "e"}};
+    // x0 >= -100, x0 + x1 >= 10 and x0 >= x1: x0 is at least 5, though no row bounds it so alone; x1 is
+    // unbounded below (no programme asked). x2 = 3 is fixed by its box; x3 and x4 are tied apart from the
+    // others (x3 - x4 = 1, x4 >= 2).
+    const std::vector<LinearConstraint> rows = {
+        {{{0, 1.0}}, -100, kInf, "box"},       {{{0, 1.0}, {1, 1.0}}, 10, kInf, "a"},
+        {{{0, 1.0}, {1, -1.0}}, 0, kInf, "b"}, equal({{2, 1.0}}, 3, "c"),
+        equal({{3, 1.0}, {4, -1.0}}, 1, "d"),  {{{4, 1.0}}, 2, kInf, "e"}};
     const auto least = leastOf({0, 1, 2, 3}, rows, 5);
     ASSERT_TRUE(least);
     EXPECT_NEAR((*least)[0], 5, 2e-3);
