@@ -80,6 +80,16 @@ bool propagate(const LinearConstraint& row, std::vector<Interval>& x)
 
 }  // namespace
 
+Interval rangeOf(const LinearConstraint& row, const std::vector<Interval>& x)
+{
+    Interval range{0, 0};
+    for (const auto& [i, a] : row.terms) {
+        range.lower += termAt(a, x[i], 0);
+        range.upper += termAt(a, x[i], 1);
+    }
+    return range;
+}
+
 std::vector<Interval> propagatedBounds(const std::vector<LinearConstraint>& rows, int n, int sweeps)
 {
     std::vector<Interval> x(n);

@@ -14,4 +14,7 @@ namespace fabguide::function {
 /// valid after any sweep; an empty one (lower > upper) means the rows cannot hold together.
 std::vector<Interval> propagatedBounds(const std::vector<LinearConstraint>& rows, int n, int sweeps = 100);
 
+/// The values Σ a·x of a row's terms takes over the box `x` (one interval per variable).
+Interval rangeOf(const LinearConstraint& row, const std::vector<Interval>& x);
+
 }  // namespace fabguide::function

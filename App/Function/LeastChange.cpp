@@ -298,7 +298,7 @@ constexpr double kLeastHair = 1e-3;
 
 /// Variables' boxes and the rows of more than one variable, as ALGLIB's linear programming takes them.
 struct Programme {
-    std::vector<double> low, high;
+    std::vector<Interval> boxes;
     std::vector<LinearConstraint> rows;
 };
 
@@ -307,26 +307,23 @@ struct Programme {
 /// variable its boxes do not already imply; nullopt when propagation shows the rows cannot hold.
 std::optional<Programme> programmeOf(const std::vector<LinearConstraint>& rows, int n)
 {
-    Programme p;
-    for (const Interval& box : propagatedBounds(rows, n)) {
-        if (box.lower > box.upper)
-            return std::nullopt;
-        p.low.push_back(box.lower);
-        p.high.push_back(box.upper);
-    }
+    Programme p{propagatedBounds(rows, n), {}};
+    if (std::any_of(p.boxes.begin(), p.boxes.end(),
+                    [](const Interval& box) { return box.lower > box.upper; }))
+        return std::nullopt;
     for (const LinearConstraint& row : rows) {
+        const Interval range = rangeOf(row, p.boxes);
+        if (row.lower <= range.lower && range.upper <= row.upper)
+            continue;  // implied
         LinearConstraint left{{}, row.lower, row.upper, row.source};
-        double least = 0, most = 0;
         for (const auto& [i, a] : row.terms) {
-            if (p.low[i] == p.high[i]) {
-                left.lower -= a * p.low[i], left.upper -= a * p.low[i];
-                continue;
-            }
-            left.terms.emplace_back(i, a);
-            least += a * (a > 0 ? p.low[i] : p.high[i]);
-            most += a * (a > 0 ? p.high[i] : p.low[i]);
+            const Interval& box = p.boxes[i];
+            if (box.lower == box.upper)
+                left.lower -= a * box.lower, left.upper -= a * box.lower;
+            else
+                left.terms.emplace_back(i, a);
         }
-        if (left.terms.size() > 1 && !(left.lower <= least && most <= left.upper))
+        if (left.terms.size() > 1)
             p.rows.push_back(std::move(left));
     }
     return p;
@@ -336,14 +333,16 @@ std::optional<Programme> programmeOf(const std::vector<LinearConstraint>& rows, 
 std::vector<std::optional<double>> leastInGroup(const std::vector<int>& variables, const Programme& p,
                                                 double tolerance)
 {
-    const int n = static_cast<int>(p.low.size());
+    const int n = static_cast<int>(p.boxes.size());
     std::vector<std::optional<double>> least(variables.size());
     try {
         alglib::minlpstate state;
         alglib::minlpcreate(n, state);
         alglib::real_1d_array low, high, cost, x;
-        low.setcontent(n, p.low.data());
-        high.setcontent(n, p.high.data());
+        low.setlength(n);
+        high.setlength(n);
+        for (int i = 0; i < n; ++i)
+            low[i] = p.boxes[i].lower, high[i] = p.boxes[i].upper;
         alglib::minlpsetbc(state, low, high);
         if (!p.rows.empty()) {
             const Rows c(p.rows, n);
@@ -362,7 +361,7 @@ std::vector<std::optional<double>> leastInGroup(const std::vector<int>& variable
             bool inBoxes = true;
             for (int i = 0; i < n; ++i) {
                 at[i] = x[i];
-                inBoxes &= p.low[i] - tolerance <= at[i] && at[i] <= p.high[i] + tolerance;
+                inBoxes &= p.boxes[i].lower - tolerance <= at[i] && at[i] <= p.boxes[i].upper + tolerance;
             }
             if (report.terminationtype > 0 && inBoxes && violation(at, p.rows) <= tolerance)
                 least[k] = at[variables[k]];
@@ -404,19 +403,18 @@ std::optional<std::vector<double>> leastOf(const std::vector<int>& variables,
     const std::vector<int> group = groupsOf(whole->rows, n);
     std::map<int, std::vector<size_t>> asked;
     for (size_t k = 0; k < variables.size(); ++k) {
-        const int i = variables[k];
-        least[k] = whole->low[i];
-        if (whole->low[i] < whole->high[i] && std::isfinite(whole->low[i]))
-            asked[group[i]].push_back(k);
+        const Interval& box = whole->boxes[variables[k]];
+        least[k] = box.lower;
+        if (box.lower < box.upper && std::isfinite(box.lower))
+            asked[group[variables[k]]].push_back(k);
     }
     for (const auto& [g, ks] : asked) {
         std::vector<int> local(n, -1);
         Programme p;
         for (int i = 0; i < n; ++i)
             if (group[i] == g) {
-                local[i] = static_cast<int>(p.low.size());
-                p.low.push_back(whole->low[i]);
-                p.high.push_back(whole->high[i]);
+                local[i] = static_cast<int>(p.boxes.size());
+                p.boxes.push_back(whole->boxes[i]);
             }
         for (const LinearConstraint& row : whole->rows)
             if (group[row.terms.front().first] == g) {
