@@ -66,13 +66,15 @@ nlohmann::json withDrawnEqual(nlohmann::json document, bool keep)
 std::string whyNone(const material::Exploration& e)
 {
     switch (e.noSheetSaved()) {
-        case material::Exploration::NoSheetSaved::ByArea:
-            return ": with every side as short as its constraints allow, its parts' area alone needs as many "
-                   "sheets";
+        case material::Exploration::NoSheetSaved::Bound:
+            return ": with every side as short as its constraints allow, its parts need as many sheets in "
+                   "any "
+                   "layout";
         case material::Exploration::NoSheetSaved::LaidOut:
             return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its "
-                   "parts' area would fit on " +
-                   std::to_string(e.leastSheetsByArea) + ": more time (--time-limit) may save one";
+                   "parts would fit on " +
+                   std::to_string(e.leastSheetsBound) +
+                   " by their sizes: more time (--time-limit) may save one";
         default:
             return "";
     }
@@ -129,11 +131,11 @@ void run(const OptimiseArguments& args)
     if (exploration.leastSheets > 0)
         std::printf("least design  %d sheets as laid out (every part as small as the constraints allow)\n",
                     exploration.leastSheets);
-    if (exploration.leastSheetsByArea > 0)
+    if (exploration.leastSheetsBound > 0)
         std::printf(
-            "any variation %ld sheets at least, by its parts' area with every side as short as the "
-            "constraints allow\n",
-            exploration.leastSheetsByArea);
+            "any variation %ld sheets at least, by its parts' sizes with every side as short as the "
+            "constraints allow (by their area alone: %ld)\n",
+            exploration.leastSheetsBound, exploration.leastSheetsByArea);
     if (exploration.notReopened > 0)
         std::printf("left out     %d design(s) that waste less but laid out afresh need more boards\n",
                     exploration.notReopened);

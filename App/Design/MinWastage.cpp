@@ -3,7 +3,7 @@
 #include "Core/Parallel.h"
 #include "Design/FewerSheets.h"
 #include "Layout/Deadline.h"
-#include "Layout/MaxRects.h"
+#include "Layout/LowerBound.h"
 
 #include <algorithm>
 #include <cmath>
@@ -236,7 +236,11 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     exploration.leastSheets =
         saved.least && saved.least->layout.unplaced.empty() ? saved.least->figures.sheets : 0;
     const auto shortest = design.shortestSides(exploration.start.X);
-    exploration.leastSheetsByArea = shortest ? sheetsByArea(material.problem(*shortest)) : 0;
+    if (shortest) {
+        const PackProblem least = material.problem(*shortest);
+        exploration.leastSheetsByArea = sheetsByArea(least);
+        exploration.leastSheetsBound = sheetsBound(least);
+    }
     for (DesignLayout& d : saved.designs) {
         pool.push_back({d, orderOf(d.layout), {exploration.start, d}});
         entries.push_back(pool.back());
@@ -280,9 +284,9 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
 
 Exploration::NoSheetSaved Exploration::noSheetSaved() const
 {
-    if (leastSheets == 0 || leastSheets < start.figures.sheets || leastSheetsByArea == 0)
+    if (leastSheets == 0 || leastSheets < start.figures.sheets || leastSheetsBound == 0)
         return NoSheetSaved::Unknown;
-    return leastSheetsByArea >= start.figures.sheets ? NoSheetSaved::ByArea : NoSheetSaved::LaidOut;
+    return leastSheetsBound >= start.figures.sheets ? NoSheetSaved::Bound : NoSheetSaved::LaidOut;
 }
 
 }  // namespace fabguide::material

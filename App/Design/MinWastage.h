@@ -50,18 +50,19 @@ struct Exploration {
     bool stopped = false;  ///< cancelled, or the time limit ended it
     int designsImproved = 0;
     int leastSheets = 0;  ///< sheets the design needs shrunk as far as it allows (0: not laid out in time)
-    /// What the parts' area alone needs with every side as short as any variation has it
-    /// (DesignSpace::shortestSides, sheetsByArea): a bound no layout of any variation beats, where
-    /// leastSheets is one layout of one (0: no bound known, as for parametric designs).
+    /// What the parts need with every side as short as any variation has it (DesignSpace::shortestSides): by
+    /// their area alone (sheetsByArea), and by area and lines across the sheets (sheetsBound), bounds no
+    /// layout of any variation beats, where leastSheets is one layout of one (0: no bound known).
     long leastSheetsByArea = 0;
+    long leastSheetsBound = 0;
     int notReopened = 0;  ///< designs that waste less but a fresh layout put on boards that cost more
     double usageBefore() const { return 1 - start.wastage; }
 
-    /// Why no variation saves a sheet, as far as it is known (never from one layout attempt alone): the area
-    /// bound over the variations needs as many sheets (ByArea), or one layout of the least design took as
-    /// many though that bound needs fewer (LaidOut: more time may save one). Unknown when the least design
-    /// was not laid out or took fewer sheets, or no bound is known.
-    enum class NoSheetSaved { Unknown, ByArea, LaidOut };
+    /// Why no variation saves a sheet, as far as it is known (never from one layout attempt alone): the bound
+    /// over the variations needs as many sheets (Bound), or one layout of the least design took as many
+    /// though that bound needs fewer (LaidOut: more time may save one). Unknown when the least design was
+    /// not laid out or took fewer sheets, or no bound is known.
+    enum class NoSheetSaved { Unknown, Bound, LaidOut };
     NoSheetSaved noSheetSaved() const;
 };
 

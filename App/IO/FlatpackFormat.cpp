@@ -468,12 +468,12 @@ void checkSatisfied(const Design& design)
         std::move(names));
 }
 
-/// "" (Unknown), "area" or "laid_out": summary.json's `no_sheet_saved`.
+/// "" (Unknown), "bound" or "laid_out": summary.json's `no_sheet_saved`.
 const char* nameOf(material::Exploration::NoSheetSaved why)
 {
     switch (why) {
-        case material::Exploration::NoSheetSaved::ByArea:
-            return "area";
+        case material::Exploration::NoSheetSaved::Bound:
+            return "bound";
         case material::Exploration::NoSheetSaved::LaidOut:
             return "laid_out";
         default:
@@ -612,6 +612,7 @@ nlohmann::json explorationFigures(const material::Exploration& e)
             {"stopped", e.stopped},
             {"least_sheets", e.leastSheets},
             {"least_sheets_by_area", e.leastSheetsByArea},
+            {"least_sheets_bound", e.leastSheetsBound},
             {"no_sheet_saved", nameOf(e.noSheetSaved())},
             {"not_reopened", e.notReopened}};
 }

@@ -76,8 +76,8 @@ nlohmann::json withParts(nlohmann::json document, const material::Design& design
 nlohmann::json measures(const material::DesignLayout& d);
 
 /// An exploration's figures, as `fabguide optimise`'s summary.json and the binding's result both give them:
-/// {"usage_before", "seconds", "stopped", "least_sheets", "least_sheets_by_area", "no_sheet_saved",
-/// "not_reopened"} (docs/formats.md).
+/// {"usage_before", "seconds", "stopped", "least_sheets", "least_sheets_by_area", "least_sheets_bound",
+/// "no_sheet_saved", "not_reopened"} (docs/formats.md).
 nlohmann::json explorationFigures(const material::Exploration& e);
 
 /// A suggestion as a `*.flatpack.json` document: `document` with the suggested parts, plus "usage", "path":

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -382,32 +381,6 @@ Layout maxRects(const PackProblem& problem, Deadline deadline)
     if (!best)
         throw *ranOutFirst;
     return *best;
-}
-
-long sheetsByArea(const PackProblem& problem)
-{
-    const double clearance = problem.settings.kerf + problem.settings.spacing;
-    std::map<double, std::pair<double, double>> byThickness;  // thickness: (parts' area, largest board's)
-    double anyArea = 0, largest = 0;
-    for (const MasterBoard& board : problem.boards) {
-        const auto [w, h] = usableSize(board, problem.settings);
-        byThickness[board.thickness].second = std::max(byThickness[board.thickness].second, w * h);
-        largest = std::max(largest, w * h);
-    }
-    for (const PartSpec& part : problem.parts) {
-        const double area = (part.width() + clearance) * (part.height() + clearance) * part.quantity;
-        if (part.thickness > 0 && byThickness.count(part.thickness))
-            byThickness[part.thickness].first += area;
-        else
-            anyArea += area;
-    }
-    long sheets = 0;
-    double all = anyArea;
-    for (const auto& [thickness, areas] : byThickness) {
-        sheets += static_cast<long>(std::ceil(areas.first / areas.second - 1e-9));
-        all += areas.first;
-    }
-    return std::max(sheets, static_cast<long>(std::ceil(all / largest - 1e-9)));
 }
 
 std::optional<Layout> maxRectsStrip(const PackProblem& problem, Deadline deadline)

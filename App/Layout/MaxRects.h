@@ -65,11 +65,6 @@ bool allRectangles(const PackProblem& problem);
 /// naming a part the boards run out before in every run.
 Layout maxRects(const PackProblem& problem, Deadline deadline);
 
-/// The sheets no layout of `problem` can do with: per thickness, the parts' area with their clearance over
-/// the largest usable board of that thickness, rounded up (parts of any thickness counted on the largest
-/// board).
-long sheetsByArea(const PackProblem& problem);
-
 /// Strip packing by MaxRects: the strip's height bisected between the parts' area over its width and every
 /// part stacked, each height tried by the runs above until one lays every part out; the lowest layout found
 /// by `deadline`, or nothing.

@@ -965,12 +965,12 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="164"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="178"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="187"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation type="unfinished"></translation>
@@ -2148,22 +2148,22 @@ rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="217"/>
         <source>Mend the model as the note below says.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="218"/>
         <source>Change or delete one of the relationships.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="220"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="208"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="222"/>
         <source>Or move the parts that meet apart.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2584,12 +2584,7 @@ stopping: keeping the best found so far</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
-        <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="175"/>
         <source>Solving &apos;{}&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2615,7 +2610,12 @@ stopping: keeping the best found so far</source>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
-        <source>; with every board side as short as they allow, their area alone needs {} sheet(s)</source>
+        <source>; with every board side as short as they allow, any layout of the boards needs {} sheet(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
+        <source>; with every board as small as they allow it was laid out on {} sheet(s), though by their sizes they would fit on {}: more time may save one</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -967,12 +967,12 @@ U/min</translation>
         <translation>Doppelgelenk '{}': wählen Sie eine Fläche eines Quaders von '{}' für {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="164"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="178"/>
         <source>Mechanism &apos;{}&apos;: {}</source>
         <translation>Mechanismus '{}': {}</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="187"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="201"/>
         <source>{}: these cannot hold together: {}. {}
 </source>
         <translation>{}: diese können nicht zugleich gelten: {}. {}
@@ -2163,22 +2163,22 @@ U/min</translation>
         <translation>eine Konfiguration</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="203"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="217"/>
         <source>Mend the model as the note below says.</source>
         <translation>Beheben Sie das Modell, wie der Hinweis unten sagt.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="204"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="218"/>
         <source>Change or delete one of the relationships.</source>
         <translation>Ändern oder löschen Sie eine der Beziehungen.</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="206"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="220"/>
         <source>Or unlock a box (the mechanism&apos;s Locks).</source>
         <translation>Oder geben Sie einen Quader frei (Locks des Mechanismus).</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="208"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="222"/>
         <source>Or move the parts that meet apart.</source>
         <translation>Oder rücken Sie die Teile, die aufeinandertreffen, auseinander.</translation>
     </message>
@@ -2605,12 +2605,7 @@ hält an: das bisher Beste bleibt</translation>
         <translation>Einen Flachpaket-Entwurf aus den gewählten Part-Quadern erstellen (Platten, ihre dünnste Seite ist die Dicke), zugeschnitten aus den mitgewählten Rohplatten oder einer neuen ihrer Dicke; gleich groß gezeichnete Quader bleiben gleich groß (löschen Sie die Bedingungen „drawn equal“, um sie freizugeben); die Ausnutzung wird beim Bearbeiten aktualisiert</translation>
     </message>
     <message>
-        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
-        <source>; with every board as small as they allow it was laid out on {} sheet(s), though their area would fit on {}: more time may save one</source>
-        <translation>; mit jeder Platte so klein, wie sie es zulassen, wurde er auf {} Rohplatte(n) verlegt, obwohl ihre Fläche auf {} passen würde: mehr Zeit spart vielleicht eine</translation>
-    </message>
-    <message>
-        <location filename="../../freecad/fabguide/function/mechanism.py" line="161"/>
+        <location filename="../../freecad/fabguide/function/mechanism.py" line="175"/>
         <source>Solving &apos;{}&apos;</source>
         <translation>'{}' wird gelöst</translation>
     </message>
@@ -2636,8 +2631,13 @@ hält an: das bisher Beste bleibt</translation>
     </message>
     <message>
         <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="64"/>
-        <source>; with every board side as short as they allow, their area alone needs {} sheet(s)</source>
-        <translation>; mit jeder Plattenseite so kurz, wie sie es zulassen, braucht allein ihre Fläche {} Rohplatte(n)</translation>
+        <source>; with every board side as short as they allow, any layout of the boards needs {} sheet(s)</source>
+        <translation>; mit jeder Plattenseite so kurz, wie sie es zulassen, braucht jede Anordnung der Platten {} Rohplatte(n)</translation>
+    </message>
+    <message>
+        <location filename="../../freecad/fabguide/gui/suggest_panel.py" line="67"/>
+        <source>; with every board as small as they allow it was laid out on {} sheet(s), though by their sizes they would fit on {}: more time may save one</source>
+        <translation>; mit jeder Platte so klein, wie sie es zulassen, wurde er auf {} Rohplatte(n) verlegt, obwohl sie nach ihren Maßen auf {} passen würden: mehr Zeit spart vielleicht eine</translation>
     </message>
 </context>
 <context>

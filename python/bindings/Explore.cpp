@@ -225,10 +225,9 @@ void bindExplore(py::module_& m)
           py::arg("time_limit") = 8.0, py::arg("rounds") = 3, py::arg("guided") = true,
           py::arg("progress") = nullptr, py::arg("cancel") = nullptr,
           "MINWASTAGE on a *.flatpack.json design dict: the figures of summary.json (usage_before, seconds, "
-          "stopped, least_sheets, least_sheets_by_area, no_sheet_saved, not_reopened), before, and "
-          "suggestions: "
-          "[{usage, layout, problem, design (with path)}]. progress(fraction, best_usage) is called on this "
-          "thread; cancel is a CancelToken.");
+          "stopped, least_sheets, least_sheets_by_area, least_sheets_bound, no_sheet_saved, not_reopened), "
+          "before, and suggestions: [{usage, layout, problem, design (with path)}]. progress(fraction, "
+          "best_usage) is called on this thread; cancel is a CancelToken.");
     m.def("correct_design", &correctDesign, py::arg("valid"), py::arg("edited"),
           "Keeps an edited design valid (thesis 5.3.5): valid is a design dict satisfying its constraints, "
           "edited "

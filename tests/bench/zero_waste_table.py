@@ -1,8 +1,9 @@
 """Zero-waste on designs nobody tuned for: the furniture suite (tests/data/flatpack), generated designs whose
 sheets are known (tests/gen/savable_designs.py, slack 0.93) and parametric designs driven by a few parameters
 (stackable crates, a bookshelf), each through `fabguide optimise` (or the core's parametric search) with one time
-limit. Per design: boards, thicknesses, the lower bound on sheets over every variation (FabGuide's, and for the
-parametric ones this script's own from the parameters' least corner), the known sheets where there are, sheets and
+limit. Per design: boards, thicknesses, the lower bound on sheets over every variation (FabGuide's, by area and
+lines across the sheets, with the area's alone beside it where less; for the parametric ones the area's is checked
+against this script's own from the parameters' least corner), the known sheets where there are, sheets and
 waste before -> after, seconds, and what the independent checker says of every suggestion (constraints, volumes
 on their boards, growth, layouts, reopening).
 
@@ -111,11 +112,17 @@ def boards_of(document):
     return sum(p.get("quantity", 1) for p in document["parts"])
 
 
+def bound_of(summary):
+    """The lower bound, and the area's alone where it is less."""
+    bound, area = summary["least_sheets_bound"], summary["least_sheets_by_area"]
+    return "none" if not bound else str(bound) if bound == area else "{} (area {})".format(bound, area)
+
+
 def line(name, boards, thicknesses, summary, known, wall, problems):
     before = summary["before"]
     best = min(summary["suggestions"], key=lambda s: (s["sheets"], s["waste_m2"]), default=before)
     return "| {} | {} | {} | {} | {} | {} -> {} | {:.3f} -> {:.3f} | {:.1f} | {} |".format(
-        name, boards, " + ".join("%g" % t for t in thicknesses), summary["least_sheets_by_area"] or "none",
+        name, boards, " + ".join("%g" % t for t in thicknesses), bound_of(summary),
         known if known is not None else "", before["sheets"], best["sheets"], before["waste_m2"], best["waste_m2"],
         wall, "; ".join(problems[:2]) or "pass ({} suggestions)".format(len(summary["suggestions"])))
 
@@ -150,7 +157,7 @@ def main(argv):
         print(line(name, boards, thicknesses, summary, None, wall, problems), flush=True)
     after = [min([s["sheets"] for s in summary["suggestions"]] + [summary["before"]["sheets"]])
              for summary, _, _ in rows]
-    bounds = [summary["least_sheets_by_area"] for summary, _, _ in rows]
+    bounds = [summary["least_sheets_bound"] for summary, _, _ in rows]
     known = [(a, k) for a, (_, k, _) in zip(after, rows) if k is not None]
     print("\n{} designs; the checker passes {}; on the sheets the bound allows: {}; known sheets reached: {} of {}; "
           "a sheet saved on {} of the {} drawn on more sheets than the bound".format(

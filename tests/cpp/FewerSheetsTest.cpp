@@ -5,7 +5,7 @@
 #include "Design/MinWastage.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
-#include "Layout/MaxRects.h"
+#include "Layout/LowerBound.h"
 
 #include <nlohmann/json.hpp>
 

@@ -10,43 +10,10 @@
 #include <random>
 
 using namespace fabguide::material;
+using fabguide::material::testing::cutFromSheets;
 using fabguide::material::testing::expectValid;
 
 namespace {
-
-/// `sheets` whole 2440 x 1220 boards cut in three stages at random (slabs across, columns in a slab, pieces
-/// in a column, none under 150 mm), each piece less the kerf and then times `slack` (to 0.1 mm): parts that
-/// fit on `sheets` boards by construction, in a shuffled order.
-PackProblem cutFromSheets(unsigned seed, int sheets, double slack)
-{
-    PackProblem problem;
-    problem.boards.push_back({"board", "ply", 2440, 1220, 18, -1});
-    problem.settings.kerf = 3.2;
-    problem.settings.trim = 10;
-    const double kerf = problem.settings.kerf, width = 2440 - 20 + kerf, height = 1220 - 20 + kerf;
-    std::mt19937 random(seed);
-    const auto tenths = [](double mm) { return std::floor(mm * 10 + 1e-6) / 10; };  // rounded down
-    // Cuts `length` into pieces of `from`-`to`, the last one taking what is left under `from`.
-    const auto pieces = [&](double length, double from, double to) {
-        std::vector<double> cut;
-        for (double at = 0; at < length;) {
-            double piece = std::round(std::uniform_real_distribution<double>(from, to)(random));
-            if (length - at - piece < from)
-                piece = length - at;
-            cut.push_back(piece), at += piece;
-        }
-        return cut;
-    };
-    for (int sheet = 0; sheet < sheets; ++sheet)
-        for (double slab : pieces(height, 150, 600))
-            for (double column : pieces(width, 150, 900))
-                for (double piece : pieces(slab, 150, slab))
-                    problem.parts.push_back(rectangularPart("p" + std::to_string(problem.parts.size()),
-                                                            tenths((column - kerf) * slack),
-                                                            tenths((piece - kerf) * slack)));
-    std::shuffle(problem.parts.begin(), problem.parts.end(), random);
-    return problem;
-}
 
 /// The beam search's problem for all the parts of `problem` on its one board kind.
 BeamProblem beamProblem(const PackProblem& problem, int stages)

@@ -94,21 +94,3 @@ TEST(MaxRects, AStripOfAPerfectPackingIsAsLowAsItsArea)
     board.boards[0].height = layout->stripHeight;
     expectValid(board, *layout);
 }
-
-TEST(MaxRects, SheetsByAreaBoundsEachThicknessOnItsOwnBoards)
-{
-    PackProblem problem;
-    problem.boards = {
-        {"18", "ply", 100, 60, 18, -1}, {"6", "ply", 100, 60, 6, -1}, {"6 large", "ply", 200, 60, 6, -1}};
-    problem.parts = {rectangularPart("a", 60, 40, 3), rectangularPart("b", 50, 60, 2)};
-    problem.parts[0].thickness = 18;  // 7200 mm² on 6000 mm² boards: 2
-    problem.parts[1].thickness = 6;   // 6000 mm² on a 12000 mm² board: 1
-    EXPECT_EQ(sheetsByArea(problem), 3);
-    problem.parts.push_back(rectangularPart("any", 100, 60, 3));  // any thickness: 18000 mm² more in all
-    EXPECT_EQ(sheetsByArea(problem), 3);  // (7200 + 6000 + 18000) / 12000, rounded up, is 3 too
-    problem.parts.back().quantity = 5;
-    EXPECT_EQ(sheetsByArea(problem), 4);
-    problem.settings.kerf = 10;  // the kerf counts on every part: 70 x 50 each of a on 110 x 70 boards
-    problem.parts.pop_back();
-    EXPECT_EQ(sheetsByArea(problem), 3);
-}

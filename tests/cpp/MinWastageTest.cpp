@@ -261,13 +261,13 @@ TEST(ExplorationTest, NoSheetSavedIsSaidOnlyFromABoundOrALayoutOfTheLeastDesign)
     using Why = Exploration::NoSheetSaved;
     EXPECT_EQ(e.noSheetSaved(), Why::Unknown);  // the least design was not laid out
     e.leastSheets = 2;
-    e.leastSheetsByArea = 2;
+    e.leastSheetsBound = 2;
     EXPECT_EQ(e.noSheetSaved(), Why::Unknown);  // it saves a sheet
     EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "");
     e.leastSheets = 3;
-    EXPECT_EQ(e.noSheetSaved(), Why::LaidOut);  // one layout took 3, its area needs 2: not proved
+    EXPECT_EQ(e.noSheetSaved(), Why::LaidOut);  // one layout took 3, the bound is 2: not proved
     EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "laid_out");
-    e.leastSheetsByArea = 3;
-    EXPECT_EQ(e.noSheetSaved(), Why::ByArea);
-    EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "area");
+    e.leastSheetsBound = 3;
+    EXPECT_EQ(e.noSheetSaved(), Why::Bound);
+    EXPECT_EQ(io::explorationFigures(e)["no_sheet_saved"], "bound");
 }

@@ -46,7 +46,8 @@ def test_optimise_saves_the_sheets_a_known_layout_shows_savable(fabguide_cli, tm
     assert run.returncode == 0, run.stderr
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert summary["before"]["sheets"] >= known["drawn_at_least"]
-    assert 0 < summary["least_sheets_by_area"] <= known["saved"]  # a bound: never above a layout that exists
+    # Bounds: never above a layout that exists
+    assert 0 < summary["least_sheets_by_area"] <= summary["least_sheets_bound"] <= known["saved"]
     assert min(s["sheets"] for s in summary["suggestions"]) <= known["saved"], run.stdout
     before_layout = json.loads((tmp_path / "out" / summary["before"]["layout"]).read_text())
     for entry in summary["suggestions"]:
@@ -68,7 +69,7 @@ def test_optimise_saves_the_sheets_a_known_layout_shows_savable(fabguide_cli, tm
 
 def test_a_sheet_not_saved_is_said_with_its_bound_never_as_proved(fabguide_cli, tmp_path):
     """With 8 % slack and 2 s the packers may fall short of the known layout: the tool may not then say that the
-    design needs as many sheets, only what one layout took and what the area allows."""
+    design needs as many sheets, only what one layout took and what the bound allows."""
     document, known = savable_designs.design(1, slack=0.96)
     path = tmp_path / "design.flatpack.json"
     path.write_text(json.dumps(document))
@@ -78,7 +79,8 @@ def test_a_sheet_not_saved_is_said_with_its_bound_never_as_proved(fabguide_cli, 
     assert run.returncode == 0, run.stderr
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert summary["least_sheets_by_area"] == known["saved"]  # 92 % of the known sheets' area: the bound is tight
-    assert "area alone needs as many" not in run.stdout and summary["no_sheet_saved"] != "area", run.stdout
+    assert summary["least_sheets_bound"] == known["saved"]
+    assert "need as many sheets in any layout" not in run.stdout and summary["no_sheet_saved"] != "bound", run.stdout
     if not summary["suggestions"]:
-        assert "would fit on {}: more time (--time-limit) may save one".format(known["saved"]) in run.stdout
+        assert "would fit on {} by their sizes: more time (--time-limit) may save one".format(known["saved"]) in run.stdout
         assert summary["no_sheet_saved"] == ("laid_out" if summary["least_sheets"] else "")

@@ -60,13 +60,13 @@ def driven_by_expressions(box):
 def why_none(result):
     """Why no variation saved a sheet, as the core knows it (a layout attempt is not said as a proof)."""
     why = result.get("no_sheet_saved", "")
-    if why == "area":
-        return translate("FabGuide", "; with every board side as short as they allow, their area alone needs {} "
-                                     "sheet(s)").format(result["least_sheets_by_area"])
+    if why == "bound":
+        return translate("FabGuide", "; with every board side as short as they allow, any layout of the boards needs "
+                                     "{} sheet(s)").format(result["least_sheets_bound"])
     if why == "laid_out":
         return translate("FabGuide", "; with every board as small as they allow it was laid out on {} sheet(s), though "
-                                     "their area would fit on {}: more time may save one").format(
-            result["least_sheets"], result["least_sheets_by_area"])
+                                     "by their sizes they would fit on {}: more time may save one").format(
+            result["least_sheets"], result["least_sheets_bound"])
     return ""
 
 
