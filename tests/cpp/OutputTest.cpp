@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include <csignal>
 
@@ -19,13 +21,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The folders the tests made, removed when the test program ends.
+struct Made {
+    std::vector<fs::path> folders;
+    ~Made()
+    {
+        for (const fs::path& path : folders) {
+            std::error_code ignored;
+            fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ignored);
+            fs::remove_all(path, ignored);
+        }
+    }
+};
+
 /// A fresh folder of its own for each test.
 fs::path folder(const std::string& name)
 {
+    static Made made;
     const fs::path path =
         fs::temp_directory_path() / ("fabguide-output-" + name + "-" + std::to_string(getpid()));
     fs::remove_all(path);
     fs::create_directories(path);
+    made.folders.push_back(path);
     return path;
 }
 
