@@ -166,8 +166,10 @@ void addPackCommand(CLI::App& app)
                     "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)")
         ->check(CLI::Range(-1LL, 1000000000000000000LL));
     args->search.threads = cores();
-    cmd->add_option("--threads", args->search.threads,
-                    "threads of the search: its starts, a strip's skyline searches, run at once")
+    cmd->add_option(
+           "--threads", args->search.threads,
+           "threads of the search: its starts, a strip's skyline searches, a saw's beam search beside its "
+           "rules, run at once")
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
     cmd->add_option("--history", args->search.memory, "late-acceptance history of the ordering search")

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <future>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -357,9 +358,9 @@ void replay(const PackProblem& problem, int kind, int stages, const std::vector<
 /// them) on sheets of their own, in 3 stages (2 when the limit is 2), each sheet's first cuts along one of
 /// `axes`; searches up to `widest` wide, each kind's with an equal share of the time. Nothing when a search
 /// finds none or the limit is one stage.
-std::optional<Layout> beamed(const PackProblem& problem, const std::vector<int>& axes,
-                             const std::vector<std::vector<std::vector<Pose>>>& poses, long widest,
-                             Deadline deadline)
+std::optional<Layout> beamLayout(const PackProblem& problem, const std::vector<int>& axes,
+                                 const std::vector<std::vector<std::vector<Pose>>>& poses, long widest,
+                                 Deadline deadline)
 {
     const PackSettings& s = problem.settings;
     if (s.stages == 1)
@@ -396,7 +397,7 @@ std::optional<Layout> beamed(const PackProblem& problem, const std::vector<int>&
 
 }  // namespace
 
-Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline)
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline, int threads)
 {
     const PackSettings& s = problem.settings;
     std::vector<std::vector<std::vector<Pose>>> poses;  // per board kind, per part
@@ -434,9 +435,14 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Dea
             tried.push_back(alone);
         }
     }
-    // The rules' runs in three quarters of the time at most, then the beam search in what is left: on sheets
-    // that must be filled nearly whole it finds layouts no order of the rules does (docs/benchmarks.md).
-    const Deadline rulesEnd = deadline.fraction(0.75);
+    // The beam search: on sheets that must be filled nearly whole it finds layouts no order of the rules does
+    // (docs/benchmarks.md). On a second thread it runs beside the rules' runs for the whole time; on one, in
+    // the quarter of it they leave.
+    const auto beamed = [&] { return beamLayout(problem, axes, poses, runs, deadline); };
+    std::future<std::optional<Layout>> beside;
+    if (threads > 1)
+        beside = std::async(std::launch::async, beamed);
+    const Deadline rulesEnd = threads > 1 ? deadline : deadline.fraction(0.75);
     std::optional<Layout> best;
     std::optional<PackingError> ranOutFirst;
     Rules bestRules = tried.front();
@@ -462,7 +468,7 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Dea
         if (!best || fuller(*layout, *best))
             best = std::move(layout), bestRules = rules;
     }
-    const std::optional<Layout> beam = beamed(problem, axes, poses, runs, deadline);
+    const std::optional<Layout> beam = beside.valid() ? beside.get() : beamed();
     if (beam && (!best || fuller(*beam, *best)))
         return *beam;
     if (!best)

@@ -27,9 +27,11 @@ constexpr long kGuillotineRuns = 2000;
 /// (`better`) of the runs made by three quarters of the time to `deadline`, at most `runs`, the first
 /// completing whatever the deadline. Then, in the time left, a beam search (GuillotineBeam.h, at most `runs`
 /// wide) lays each board kind's parts in 3 stages (2 when the limit is 2), each first direction allowed; its
-/// layout is kept when it needs fewer sheets or leaves the last emptier. Fills Layout::sawCuts. Throws
-/// PackingError naming a part the boards run out before in every run, or one that would leave a strip too
-/// narrow to saw off at a board's edge.
-Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline);
+/// layout is kept when it needs fewer sheets or leaves the last emptier. With 2 `threads` or more, the beam
+/// search runs on a thread of its own beside the rules' runs, both to `deadline`. Fills Layout::sawCuts.
+/// Throws PackingError naming a part the boards run out before in every run, or one that would leave a strip
+/// too narrow to saw off at a board's edge.
+Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Deadline deadline,
+                  int threads = 1);
 
 }  // namespace fabguide::material

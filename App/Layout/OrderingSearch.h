@@ -38,7 +38,8 @@ struct OrderingSearchOptions {
     double timeLimit = 1.0;  ///< seconds; the search stops early when it runs out
     std::uint64_t seed = 1;  ///< same seed, same result
     int memory = 1;          ///< late-acceptance history length; 1 = the thesis' acceptance rule
-    int threads = 1;         ///< pack: starts searched at once, and a strip's skyline searches
+    int threads =
+        1;  ///< pack: starts searched at once, a strip's skyline searches, a saw's beam beside its rules
     const std::atomic<bool>* cancel = nullptr;  ///< set by another thread: stop now with the best so far
 };
 

@@ -420,14 +420,15 @@ bool gridOutOfReach(const PackProblem& problem, long units, const Deadline& dead
 /// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking. Three stages:
 /// in its share of the time, unlimited stages (four stage counts a sheet) made a quarter of the runs and
 /// needed 2 sheets more on the 2BP classes (docs/benchmarks.md). Its saw cuts are dropped: the cuts are free.
-Layout sawnIfBetter(const PackProblem& problem, Layout layout, std::uint64_t seed, Deadline deadline)
+Layout sawnIfBetter(const PackProblem& problem, Layout layout, const OrderingSearchOptions& search,
+                    Deadline deadline)
 {
     PackProblem saw = problem;
     saw.settings.cuts = Cuts::Guillotine;
     saw.settings.stages = 3;
     saw.settings.firstCut = FirstCut::Any;
     try {
-        Layout sawn = guillotine(saw, kGuillotineRuns, seed, deadline);
+        Layout sawn = guillotine(saw, kGuillotineRuns, search.seed, deadline, search.threads);
         sawn.sawCuts.clear();
         return better(sawn, layout) ? sawn : layout;
     } catch (const PackingError&) {  // a strip at a board's edge too narrow to saw: the free layout stands
@@ -471,9 +472,15 @@ Layout layOut(const PackProblem& problem, const OrderingSearchOptions& search)
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const double share =
             wall < 0.005 ? 1.0 : std::clamp((std::clock() - cpu) / double(CLOCKS_PER_SEC) / wall, 0.05, 1.0);
+        // The saw's search takes its share of the time, or all of it when Docking's grid would be out of
+        // reach in the time it leaves.
+        const Deadline afterSaw(std::chrono::steady_clock::now() +
+                                seconds((1 - kSawShare) * search.timeLimit));
         if (exact && units <= kSawnUnits)
-            exact = sawnIfBetter(problem, std::move(*exact), search.seed,
-                                 deadline.sooner(started + seconds(kSawShare * search.timeLimit)));
+            exact = sawnIfBetter(problem, std::move(*exact), search,
+                                 gridOutOfReach(problem, units, afterSaw, share)
+                                     ? deadline
+                                     : deadline.sooner(started + seconds(kSawShare * search.timeLimit)));
         if (exact && gridOutOfReach(problem, units, deadline, share))
             return *exact;
     }
@@ -570,7 +577,7 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
     checkSettings(problem);
     if (problem.settings.cuts == Cuts::Guillotine)
         return guillotine(problem, search.iterations < 0 ? kGuillotineRuns : search.iterations, search.seed,
-                          deadline);
+                          deadline, search.threads);
     std::vector<int> left;
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);

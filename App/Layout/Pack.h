@@ -155,9 +155,10 @@ constexpr long kDockedUnits = 400;
 constexpr long kBoxedUnits = 200;
 
 /// Jobs of rectangles with at most this many units are also laid out by the guillotine search (a saw's layout
-/// is a free one too), in this share of the time limit; the better layout is kept.
+/// is a free one too), in this share of the time limit (all of it when Docking's grid is out of reach in the
+/// rest); the better layout is kept.
 constexpr long kSawnUnits = 400;
-constexpr double kSawShare = 0.4;
+constexpr double kSawShare = 0.7;
 
 /// A strip of irregular parts is filled (Criterion::Fill) when its first share of the time allows this many
 /// passes, at this many column steps a second (measured on ESICUP instances: 1.2-1.6·10^8 on this kind of
