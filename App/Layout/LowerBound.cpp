@@ -118,7 +118,9 @@ long sheetsBound(const PackProblem& problem)
     if (boards.count(0))  // a board of any thickness: a part may lie on it or on its own thickness's
         return byArea;
     long sheets = 0;
-    for (const auto& [thickness, kinds] : boards) {
+    for (const auto& stocked : boards) {
+        const double thickness = stocked.first;
+        const std::vector<MasterBoard>& kinds = stocked.second;
         PackProblem ofIt{kinds, {}, problem.settings, false};
         for (const PartSpec& part : problem.parts)  // of any thickness: on these when no others are stocked
             if (ofThickness(part.thickness, thickness) && (part.thickness > 0 || boards.size() == 1))
