@@ -67,9 +67,8 @@ std::string whyNone(const material::Exploration& e)
 {
     switch (e.noSheetSaved()) {
         case material::Exploration::NoSheetSaved::Bound:
-            return ": with every side as short as its constraints allow, its parts need as many sheets in "
-                   "any "
-                   "layout";
+            return ": with every side as short as its constraints allow, its parts need as many sheets "
+                   "in any layout";
         case material::Exploration::NoSheetSaved::LaidOut:
             return ": shrunk as far as its constraints allow it was laid out on as many sheets, though its "
                    "parts would fit on " +

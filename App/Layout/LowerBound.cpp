@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -18,67 +19,69 @@ long roundedUp(double sheets)
     return static_cast<long>(std::ceil(sheets - 1e-9));
 }
 
-/// A part's poses that fit the usable `size` of its one board kind, as (length along the lines' axis, depth
-/// across), and how many of it.
-struct Lines {
+/// A part's poses that fit the usable sheet of its one board kind, and how many of it.
+struct Fitting {
     int quantity = 0;
-    std::vector<std::pair<double, double>> poses;
+    std::vector<Pose> poses;
 };
 
-/// The sheets a set of parts needs by lines across one kind of sheet `length` long and `depth` deep (both
-/// usable, with the clearance): a part longer than half the length takes its depth of the lines alone, and
-/// for each threshold p (no more than half the length), a part longer than the length less p takes its depth,
-/// one of at least p its area over the length, since it shares no line with the first kind. Each part counts
-/// in the pose that counts least, so the bound holds whichever way the layout turns it.
-long sheetsByLines(const std::vector<Lines>& parts, double length, double depth)
+/// The sheets a set of parts needs by lines across one kind of sheet, the lines crossing `axis` (0: x), the
+/// sheet `size` along x and y (usable, with the clearance): a part longer than half the sheet along the axis
+/// takes its depth of the lines alone, and for each threshold p (no more than half that length), a part
+/// longer than the length less p takes its depth, one of at least p its area over the length, since it shares
+/// no line with the first kind. Each part counts in the pose that counts least, so the bound holds whichever
+/// way the layout turns it.
+long sheetsByLines(const std::vector<Fitting>& parts, int axis, const double size[2])
 {
+    const double length = size[axis], depth = size[1 - axis];
+    const auto along = [&](const Pose& pose) { return axis == 0 ? pose.w : pose.h; };
+    const auto across = [&](const Pose& pose) { return axis == 0 ? pose.h : pose.w; };
     const auto least = [&](const auto& taken) {
         double sum = 0;
-        for (const Lines& part : parts) {
+        for (const Fitting& part : parts) {
             double fewest = taken(part.poses.front());
-            for (const auto& pose : part.poses)
+            for (const Pose& pose : part.poses)
                 fewest = std::min(fewest, taken(pose));
             sum += fewest * part.quantity;
         }
         return roundedUp(sum / depth);
     };
-    long sheets = least([&](const auto& pose) { return pose.first > length / 2 + kHair ? pose.second : 0; });
-    for (const Lines& part : parts)
-        for (const auto& [p, unused] : part.poses) {
+    long sheets =
+        least([&](const Pose& pose) { return along(pose) > length / 2 + kHair ? across(pose) : 0; });
+    for (const Fitting& part : parts)
+        for (const Pose& threshold : part.poses) {
+            const double p = along(threshold);
             if (p > length / 2)
                 continue;
-            sheets = std::max(sheets, least([&, p = p](const auto& pose) {
-                                  if (pose.first + p > length + kHair)
-                                      return pose.second;
-                                  return pose.first >= p ? pose.first * pose.second / length : 0;
+            sheets = std::max(sheets, least([&](const Pose& pose) {
+                                  if (along(pose) + p > length + kHair)
+                                      return across(pose);
+                                  return along(pose) >= p ? along(pose) * across(pose) / length : 0;
                               }));
         }
     return sheets;
 }
 
-/// sheetsByLines along either side of `board`, for the plain rectangles of `parts` (the others count by
+/// sheetsByLines across either side of `board`, for the plain rectangles of `parts` (the others count by
 /// area).
 long sheetsByLines(const std::vector<PartSpec>& parts, const MasterBoard& board, const PackSettings& s)
 {
-    const auto [width, height] = usableSize(board, s);
-    std::vector<Lines> alongX, alongY;
+    double size[2];
+    std::tie(size[0], size[1]) = usableSize(board, s);
+    std::vector<Fitting> fitting;
     for (const PartSpec& part : parts) {
         if (!rectangular(part))
             continue;
-        Lines x{part.quantity, {}}, y{part.quantity, {}};
+        Fitting f{part.quantity, {}};
         for (const Pose& pose : posesOn(part, board, s.kerf + s.spacing))
-            if (pose.w <= width + kHair && pose.h <= height + kHair) {
-                x.poses.emplace_back(pose.w, pose.h);
-                y.poses.emplace_back(pose.h, pose.w);
-            }
-        if (!x.poses.empty()) {
-            alongX.push_back(std::move(x));
-            alongY.push_back(std::move(y));
-        }
+            if (pose.w <= size[0] + kHair && pose.h <= size[1] + kHair)
+                f.poses.push_back(pose);
+        if (!f.poses.empty())
+            fitting.push_back(std::move(f));
     }
-    if (alongX.empty())
+    if (fitting.empty())
         return 0;
-    return std::max(sheetsByLines(alongX, width, height), sheetsByLines(alongY, height, width));
+    return std::max(sheetsByLines(fitting, 0, size), sheetsByLines(fitting, 1, size));
 }
 
 }  // namespace
