@@ -605,6 +605,15 @@ nlohmann::json withParts(nlohmann::json document, const Design& design, const Ei
     return document;
 }
 
+nlohmann::json designLayoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
+{
+    const material::PackProblem problem = material.problem(d.sizes);
+    nlohmann::json out = measures(d);
+    out["layout"] = layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, PartNames::Ids);
+    out["problem"] = problemToJson(problem);
+    return out;
+}
+
 nlohmann::json explorationFigures(const material::Exploration& e)
 {
     return {{"usage_before", e.usageBefore()},

@@ -75,6 +75,10 @@ nlohmann::json withParts(nlohmann::json document, const material::Design& design
 /// "largest_offcut": [w, h] mm}.
 nlohmann::json measures(const material::DesignLayout& d);
 
+/// A design's layout as the bindings give it: its measures, "layout" (layoutToJson, parts by id) and
+/// "problem" (problemToJson), the pack problem the layout refers to.
+nlohmann::json designLayoutJson(const material::MaterialSpace& material, const material::DesignLayout& d);
+
 /// An exploration's figures, as `fabguide optimise`'s summary.json and the binding's result both give them:
 /// {"usage_before", "seconds", "stopped", "least_sheets", "least_sheets_by_area", "least_sheets_bound",
 /// "no_sheet_saved", "not_reopened"} (docs/formats.md).

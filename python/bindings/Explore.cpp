@@ -1,8 +1,8 @@
 // Bindings of zero-waste design exploration (thesis 5.3-5.4): designs are the `*.flatpack.json` dicts of
 // docs/formats.md; the search runs without the GIL and reports progress on the calling thread.
+#include "Api/DesignEdit.h"
 #include "Bindings.h"
-#include "Design/Correction.h"
-#include "Design/DynamicPacker.h"
+#include "IO/ApiJson.h"
 #include "IO/FlatpackFormat.h"
 #include "IO/Json.h"
 #include "IO/PackFormat.h"
@@ -19,17 +19,6 @@ namespace fabguide::bindings {
 
 namespace {
 
-/// A design's layout: its measures (usage, sheets, waste_m2, largest_offcut), the layout dict and the pack
-/// problem dict it refers to.
-nlohmann::json layoutJson(const material::MaterialSpace& material, const material::DesignLayout& d)
-{
-    const material::PackProblem problem = material.problem(d.sizes);
-    nlohmann::json out = io::measures(d);
-    out["layout"] = io::layoutToJson(material.inMillimetres(d.layout, d.sizes), problem, io::PartNames::Ids);
-    out["problem"] = io::problemToJson(problem);
-    return out;
-}
-
 /// An exploration as a dict: its figures as summary.json gives them (io::explorationFigures), "before" and
 /// "suggestions": [{usage, layout, problem, ...}], `describe` adding what a suggestion is in its design's own
 /// terms.
@@ -38,10 +27,10 @@ nlohmann::json explorationJson(const material::MaterialSpace& material, const ma
                                Describe&& describe)
 {
     nlohmann::json out = io::explorationFigures(e);
-    out["before"] = layoutJson(material, e.start);
+    out["before"] = io::designLayoutJson(material, e.start);
     out["suggestions"] = nlohmann::json::array();
     for (const material::Suggestion& s : e.suggestions) {
-        nlohmann::json entry = layoutJson(material, s.result);
+        nlohmann::json entry = io::designLayoutJson(material, s.result);
         describe(s, entry);
         out["suggestions"].push_back(entry);
     }
@@ -84,7 +73,7 @@ py::object layOutDesign(const py::object& document, std::uint64_t seed, double s
         py::gil_scoped_release release;
         laid = material::layOut(design, material, seed, seconds, nullptr, f.kept);
     }
-    return fromJson(layoutJson(material, laid));
+    return fromJson(io::designLayoutJson(material, laid));
 }
 
 py::object optimise(const py::object& document, std::uint64_t seed, int threads, double timeLimit, int rounds,
@@ -102,67 +91,19 @@ py::object optimise(const py::object& document, std::uint64_t seed, int threads,
     }));
 }
 
-/// X of `design` with the parts of the `edited` design dict (same parts, moved or resized).
-Eigen::VectorXd editedVariables(const material::Design& design, const py::object& edited)
+/// A flat-pack design's recompute (App/Api/DesignEdit.h), run without the GIL.
+py::object editDesign(const py::object& design, const py::object& valid, bool keepEdits, double seconds,
+                      std::uint64_t seed)
 {
-    const nlohmann::json parts = toJson(edited)["parts"];
-    if (!parts.is_array() || parts.size() != design.boards.size())
-        throw io::FormatError("parts: the edited design must have the same parts as the valid one");
-    material::Design changed = design;
-    for (size_t b = 0; b < parts.size(); ++b) {
-        const io::Fields part(parts[b], "parts[" + std::to_string(b) + "]");
-        changed.boards[b].size = part.vector3("size");
-        changed.boards[b].centre = part.vector3("position") + changed.boards[b].size / 2;
-    }
-    return changed.variables();
-}
-
-/// Thesis 5.3.5: the edited design kept valid, the edits kept (Algorithms 5 and 6).
-py::object correctDesign(const py::object& valid, const py::object& edited)
-{
-    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
-    const Eigen::VectorXd X = before.design.variables(), edit = editedVariables(before.design, edited);
-    material::CorrectedChange c;
+    api::DesignEdit edit{toJson(design), std::nullopt, keepEdits, seconds, seed};
+    if (!valid.is_none())
+        edit.valid = toJson(valid);
+    api::DesignEditReport report;
     {
         py::gil_scoped_release release;
-        c = material::correctChange(before.design, X, edit - X);
+        report = api::editDesign(edit);
     }
-    return fromJson({{"parts", io::partsAt(before.design, c.X)}, {"alpha", c.alpha}, {"limits", c.limits}});
-}
-
-/// A design that breaks some of its constraints (one just added) moved the least, sparsely (Algorithm 6, with
-/// no change to keep), so that they all hold.
-py::object satisfyDesign(const py::object& document)
-{
-    const io::FlatpackDesign f = io::readFlatpack(toJson(document), io::Satisfied::NotRequired);
-    const Eigen::VectorXd X = f.design.variables();
-    std::vector<std::string> broken;
-    std::optional<Eigen::VectorXd> d;
-    {
-        py::gil_scoped_release release;
-        d = material::correctForDesignConstraints(f.design, {}, X, Eigen::VectorXd::Zero(X.size()), &broken);
-    }
-    const Eigen::VectorXd Y = d ? Eigen::VectorXd(X + *d) : X;
-    if (d)
-        broken = material::said(material::ineffective(f.design, Y));
-    return fromJson({{"solved", broken.empty()}, {"parts", io::partsAt(f.design, Y)}, {"broken", broken}});
-}
-
-/// Thesis 5.3.2: an edit after which the parts overflow the master boards, absorbed by the dynamic packer.
-py::object absorbEdit(const py::object& valid, const py::object& edited)
-{
-    const io::FlatpackDesign before = io::readFlatpack(toJson(valid));
-    const material::ConstrainedDesign design(before.design);
-    const material::MaterialSpace material(before.boards, before.settings, design.parts());
-    const Eigen::VectorXd X = before.design.variables(), edit = editedVariables(before.design, edited);
-    material::Absorbed a;
-    {
-        py::gil_scoped_release release;
-        const material::DesignLayout laid = material::layOut(design, material, 1);
-        a = material::dynamicPacker(design, material, X, laid.layout, edit - X);
-    }
-    return fromJson(
-        {{"fitted", a.fitted}, {"parts", io::partsAt(before.design, a.X)}, {"snapped", a.snapped}});
+    return fromJson(io::toJson(report));
 }
 
 py::object optimiseParametric(const py::list& parts,
@@ -228,16 +169,18 @@ void bindExplore(py::module_& m)
           "stopped, least_sheets, least_sheets_by_area, least_sheets_bound, no_sheet_saved, not_reopened), "
           "before, and suggestions: [{usage, layout, problem, design (with path)}]. progress(fraction, "
           "best_usage) is called on this thread; cancel is a CancelToken.");
-    m.def("correct_design", &correctDesign, py::arg("valid"), py::arg("edited"),
-          "Keeps an edited design valid (thesis 5.3.5): valid is a design dict satisfying its constraints, "
-          "edited "
-          "has the same parts with some moved or resized. Returns {parts, alpha (share of the edit kept), "
-          "limits "
-          "(constraints that stopped it)}.");
     m.def(
-        "satisfy_design", &satisfyDesign, py::arg("design"),
-        "A design dict whose boards break some of its constraints (one just added), with the boards moved or "
-        "resized the least, sparsely, so that they hold: {solved, parts, broken (names still broken)}.");
+        "edit_design", &editDesign, py::arg("design"), py::arg("valid") = py::none(),
+        py::arg("keep_edits") = true, py::arg("seconds") = 2.0, py::arg("seed") = 1,
+        "A flat-pack design dict's recompute (thesis 5.3.5, 5.3.2): the edit of the boards from `valid` (the "
+        "last valid parts) kept as far as the constraints allow (keep_edits), boards moved until a "
+        "constraint "
+        "just added holds, the design laid out in a search of `seconds`, an edit that overflows the master "
+        "boards absorbed or undone. Returns {design (as it ends), kept (share of the edit), limits, "
+        "satisfied, "
+        "absorbed, snapped, undone (why, or \"\"), warning, laid_out ({usage, layout, problem}, or None)}. "
+        "Raises FormatError naming a bad field, ConstraintError naming constraints no move satisfies, "
+        "PackingError when the design does not fit and there is no edit to undo.");
     m.def(
         "check_design", [](const py::object& design) { io::readFlatpack(toJson(design)); }, py::arg("design"),
         "Reads a *.flatpack.json design dict as every command does, laying nothing out: raises FormatError "
@@ -248,11 +191,6 @@ void bindExplore(py::module_& m)
         py::arg("design"),
         "The equal constraints a design dict lacks that keep its boards drawn the same size so: "
         "[{kind, name, refs}], sizes along each in-plane axis.");
-    m.def(
-        "absorb_edit", &absorbEdit, py::arg("valid"), py::arg("edited"),
-        "The dynamic packer (thesis 5.3.2): when the edited design's parts no longer fit the master boards, "
-        "shortens the parts that share a line across the board with the edited ones so they do, keeping the "
-        "edit and every constraint. Returns {fitted, parts, snapped (the lines saturated)}.");
     m.def(
         "optimise_parametric", &optimiseParametric, py::arg("parts"), py::arg("sides"), py::arg("start"),
         py::arg("lower"), py::arg("upper"), py::arg("sheets"), py::arg("seed") = 1,

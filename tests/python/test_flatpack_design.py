@@ -70,11 +70,13 @@ def test_an_edit_is_kept_and_the_rest_adapts(doc, table):
 
 
 def test_an_edit_is_laid_out_once_and_a_recompute_that_changes_nothing_keeps_the_layout(doc, table, monkeypatch):
-    """FreeCAD recomputes a design again after its boxes moved: that pass lays nothing out (a layout is a search of
-    LIVE_SECONDS). A change of the boxes or of a setting is laid out afresh."""
+    """An edit is one core call, which lays out once. FreeCAD recomputes a design again after its boxes moved: that
+    pass calls nothing (a layout is a search of LIVE_SECONDS). A change of the boxes or of a setting is laid out
+    afresh."""
     calls = []
-    lay_out = fabguide_core.lay_out_design
-    monkeypatch.setattr(fabguide_core, "lay_out_design", lambda *a, **k: calls.append(1) or lay_out(*a, **k))
+    edit = fabguide_core.edit_design
+    monkeypatch.setattr(fabguide_core, "edit_design", lambda *a, **k: calls.append(1) or edit(*a, **k))
+    monkeypatch.setattr(fabguide_core, "lay_out_design", None)  # the recompute lays out through edit_design only
     box(doc, "top").Length = 760
     doc.recompute()
     assert len(calls) == 1 and "Touched" not in table.State

@@ -334,8 +334,9 @@ def flatpack(obj, parts=None):
 
 
 def recompute(obj):
-    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit. A
-    Parameters entry Suggest could not use is said now, when it is typed, not when Suggest is asked."""
+    """Keep the constraints through the user's edit, then lay out; refuse (undo) an edit that does not fit: one
+    core call (`edit_design`, App/Api/DesignEdit.h), none when the design is the one last laid out. A Parameters
+    entry Suggest could not use is said now, when it is typed, not when Suggest is asked."""
     from freecad.fabguide.material import parametric  # it builds on this module
 
     try:
@@ -345,36 +346,10 @@ def recompute(obj):
         obj.Status = str(error)
         raise DesignError(str(error))
     valid = json.loads(obj.Valid) if obj.Valid else None
-    start = dict(edited, parts=valid)  # the last valid state, the inner volumes resting on its boards
-    note = ""
-    same_boards = valid and [p["id"] for p in valid] == [p["id"] for p in edited["parts"]]
-    if same_boards and obj.KeepEdits and not obj.Parameters and valid != edited["parts"]:
-        try:
-            corrected = fabguide_core.correct_design(start, edited)
-        except fabguide_core.FormatError as error:  # the valid state no longer reads: start from the boxes
-            FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, error))
-        else:
-            adopt(obj, edited, corrected["parts"], start)
-            note = held(obj, corrected)
-    try:
-        laid, note = lay_out_satisfied(obj, edited, note)
-    except fabguide_core.FormatError as error:
-        said = messages.in_words(str(error), edited, messages.FLATPACK)
-        mark_constraints(obj, said, concerned(error, edited))
-        obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
-                      else "Design '" + obj.Label + "': {}").format(said)
-        raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
-    except fabguide_core.PackingError as error:
-        if not same_boards or valid == edited["parts"]:  # no edit of the boxes to absorb or undo
-            said = "{}{}".format(error, master_board.shared(obj.MasterBoards, obj))
-            obj.Status = said
-            raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
-        laid, absorbed = absorb(obj, edited, start)
-        note += absorbed
+    laid, note = last_layout(obj, edited) if valid == edited["parts"] else (None, "")
+    if laid is None:
+        laid, note = edited_and_laid_out(obj, edited, valid)
         if laid is None:
-            write_parts(obj, valid, start)
-            obj.Status = "Edit undone: {}".format(error)
-            FreeCAD.Console.PrintError(translate("FabGuide", "{}: edit undone: {}\n").format(obj.Label, error))
             return
     mark_constraints(obj, "")
     obj.Usage = laid["usage"]
@@ -386,67 +361,66 @@ def recompute(obj):
     obj.Valid = json.dumps(edited["parts"])
 
 
-def held(obj, corrected):
+def without_layout(design):
+    """A design dict without the layout it keeps: what a layout is made from (LayoutJson's `design` key)."""
+    return {key: value for key, value in design.items() if key != "layout"}
+
+
+def last_layout(obj, edited):
+    """The last layout (LayoutJson) when it was made from this very design: FreeCAD recomputes a design again after
+    its boxes moved, and that pass has nothing new to lay out. (None, "") otherwise."""
+    last = json.loads(obj.LayoutJson) if obj.LayoutJson else {}
+    return (last, "") if last.get("design") == without_layout(edited) else (None, "")
+
+
+def edited_and_laid_out(obj, edited, valid):
+    """The core's recompute of the design dict `edited` from the last valid parts, off FreeCAD's thread in its GUI
+    (background.py): live, in LIVE_SECONDS of search besides its last layout (a design of 46 boards searched its
+    10 s on every edit). The boxes are moved where it leaves them and `edited` taken from them; (layout dict with
+    its design, status note), or (None, "") when the edit was undone."""
+    keep = obj.KeepEdits and not obj.Parameters
+    try:
+        result = background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
+                                lambda cancel: fabguide_core.edit_design(edited, valid, keep_edits=keep,
+                                                                         seconds=LIVE_SECONDS),
+                                seconds=LIVE_SECONDS, stoppable=False)
+    except fabguide_core.FormatError as error:
+        said = messages.in_words(str(error), edited, messages.FLATPACK)
+        mark_constraints(obj, said, concerned(error, edited))
+        obj.Status = ("Constraints broken: {}" if isinstance(error, fabguide_core.ConstraintError)
+                      else "Design '" + obj.Label + "': {}").format(said)
+        raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
+    except fabguide_core.PackingError as error:  # no edit of the boxes to absorb or undo
+        said = "{}{}".format(error, master_board.shared(obj.MasterBoards, obj))
+        obj.Status = said
+        raise DesignError(translate("FabGuide", "Design '{}': {}").format(obj.Label, said))
+    if result["warning"]:
+        FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, result["warning"]))
+    ended = result["design"]
+    if ended["parts"] != edited["parts"]:
+        write_parts(obj, ended["parts"], ended)  # the volumes where the core moved them
+        edited.update(snapshot(obj))
+    if result["undone"]:
+        obj.Status = "Edit undone: {}".format(result["undone"])
+        FreeCAD.Console.PrintError(translate("FabGuide", "{}: edit undone: {}\n").format(obj.Label, result["undone"]))
+        return None, ""
+    note = held(obj, result)
+    if result["satisfied"]:
+        note += "; boards moved so that every constraint holds"
+    if result["absorbed"]:
+        note += "; edit absorbed: " + ", ".join(result["snapped"])
+    return dict(result["laid_out"], design=without_layout(edited)), note
+
+
+def held(obj, result):
     """What the status says of an edit the constraints held: refused or how much was kept, and by what (each
     once, the design's own constraints and volumes first); nothing for an edit kept whole."""
-    if corrected["alpha"] >= 1:
+    if result["kept"] >= 1:
         return ""
     own = tuple(o.Label for o in obj.Group if is_constraint(o) or is_volume(o))
-    limits = sorted(dict.fromkeys(corrected["limits"]), key=lambda name: not name.startswith(own))
-    kept = "kept {:.0%}".format(corrected["alpha"]) if corrected["alpha"] > 0 else "refused"
+    limits = sorted(dict.fromkeys(result["limits"]), key=lambda name: not name.startswith(own))
+    kept = "kept {:.0%}".format(result["kept"]) if result["kept"] > 0 else "refused"
     return "; edit {}, held by {}".format(kept, ", ".join(limits))
-
-
-def adopt(obj, edited, parts, start):
-    """The boxes moved to `parts`, the core's answer from design `start`, and the design being laid out taken
-    from the boxes and inner volumes as they now are."""
-    write_parts(obj, parts, start)
-    edited.update(snapshot(obj))
-
-
-def lay_out_satisfied(obj, edited, note):
-    """The layout; when the boards break a constraint (one just added), they first move the least so that every
-    constraint holds (thesis 5.3.5.2 with nothing to keep). Raises ConstraintError when they cannot."""
-    try:
-        return laid_out(obj, edited), note
-    except fabguide_core.ConstraintError:
-        satisfied = fabguide_core.satisfy_design(edited)
-        if not satisfied["solved"]:
-            raise
-        adopt(obj, edited, satisfied["parts"], dict(edited))
-        return laid_out(obj, edited), note + "; boards moved so that every constraint holds"
-
-
-def laid_out(obj, edited):
-    """The design dict `edited` laid out, off FreeCAD's thread in its GUI (background.py): live, in LIVE_SECONDS
-    of search besides its last layout (a design of 46 boards searched its 10 s on every edit); {usage, layout,
-    problem, design}. The last layout (LayoutJson) when it was made from this very design: FreeCAD recomputes a
-    design again after its boxes moved, and that pass has nothing new to lay out."""
-    design = {key: value for key, value in edited.items() if key != "layout"}
-    last = json.loads(obj.LayoutJson) if obj.LayoutJson else {}
-    if last.get("design") == design:
-        return last
-    laid = background.run(translate("FabGuide", "Laying out '{}'").format(obj.Label),
-                          lambda cancel: fabguide_core.lay_out_design(edited, seconds=LIVE_SECONDS),
-                          seconds=LIVE_SECONDS, stoppable=False)
-    return dict(laid, design=design)
-
-
-def absorb(obj, edited, start):
-    """The dynamic packer (thesis 5.3.2) on an edit that overflows the master boards, from the valid design
-    `start`: (layout, note) with the boxes written back when it fits, (None, "") otherwise."""
-    try:
-        absorbed = fabguide_core.absorb_edit(start, edited)
-    except fabguide_core.PackingError:  # not even the valid design fits any more
-        return None, ""
-    if not absorbed["fitted"]:
-        return None, ""
-    adopt(obj, edited, absorbed["parts"], start)
-    try:
-        laid = laid_out(obj, edited)
-    except fabguide_core.PackingError:
-        return None, ""
-    return laid, "; edit absorbed: " + ", ".join(absorbed["snapped"])
 
 
 def mark_constraints(obj, said, names=()):
