@@ -14,7 +14,8 @@
 #   make demo-debian13   `make demo` there
 #   make test-debian14   `make test` in Debian 14 "forky" (testing: FreeCAD 1.1, Qt6), not in CI (docs/decisions.md)
 #   make test-clang      the C++ tests built with clang, warnings as errors, into build-clang/
-#   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang), build-sanitize/
+#   make test-sanitize   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang, warnings as errors,
+#                        the programs too), build-sanitize/
 #   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
 #   make fuzz-products   PRODUCTS generated products (tests/gen) solved and checked, PRINTS of them printed too
 #   make translations    the .ts files of Resources/translations updated from the code and .ui files, and compiled
@@ -84,7 +85,7 @@ test-clang: clang-deps
 
 test-sanitize: clang-deps
 	$(SANITIZE_CONFIGURE)
-	$(call CPP_CHECK,build-sanitize,fuzz_pack fuzz_workslike fuzz_flatpack fuzz_printable)
+	$(call CPP_CHECK,build-sanitize,fabguide fabguide-print fuzz_pack fuzz_workslike fuzz_flatpack fuzz_printable)
 
 fuzz: clang-deps
 	$(SANITIZE_CONFIGURE)
