@@ -1,4 +1,5 @@
 // `fabguide pack`: lay parts out on master boards (thesis 5.3.1, 5.4.3), or pack a strip.
+#include "Api/Pack.h"
 #include "Cli/Commands.h"
 #include "Cli/Main.h"
 #include "Core/Parallel.h"
@@ -24,14 +25,8 @@ struct PackArguments {
     std::string input;
     std::string output;
     io::LayoutFiles files;
-    bool strip = false;
     bool bottomLeft = false;
-    int rotationStep = -1;               // -1: as the file's settings say
-    std::optional<material::Cuts> cuts;  // unset: as the file's settings say
-    std::optional<int> stages;
-    std::optional<material::FirstCut> firstCut;
-    bool commonLine = false;
-    material::OrderingSearchOptions search;
+    api::PackJob job;  // its document read from `input`
 };
 
 void run(const PackArguments& args)
@@ -45,21 +40,14 @@ void run(const PackArguments& args)
         if (!file->empty())
             io::checkWritableFile(*file);
     io::OutputBatch files;
-    const nlohmann::json document = io::readJsonFile(args.input);
-    material::PackProblem problem =
-        args.strip ? io::readStripInstance(document) : io::readPackProblem(document);
-    if (args.rotationStep >= 0)
-        problem.settings.rotationStep = args.rotationStep;
-    problem.settings.cuts = args.cuts.value_or(problem.settings.cuts);
-    problem.settings.stages = args.stages.value_or(problem.settings.stages);
-    problem.settings.firstCut = args.firstCut.value_or(problem.settings.firstCut);
-    problem.settings.commonLine = problem.settings.commonLine || args.commonLine;
-    material::OrderingSearchOptions search = args.search;
-    search.timeLimit = std::max(0.0, search.timeLimit - secondsSinceStart());  // start-up and reading count
-    search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
-    const material::Layout layout = material::pack(problem, search);
+    api::PackJob job = args.job;
+    job.document = io::readJsonFile(args.input);
+    job.search.timeLimit =
+        std::max(0.0, job.search.timeLimit - secondsSinceStart());  // start-up and reading count
+    job.search.criterion = args.bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
+    const auto [problem, layout] = api::pack(job);
     const nlohmann::json written =
-        io::layoutToJson(layout, problem, args.strip ? io::PartNames::Indices : io::PartNames::Ids);
+        io::layoutToJson(layout, problem, job.strip ? io::PartNames::Indices : io::PartNames::Ids);
     io::writeJsonFile(args.output, written);
 
     std::printf("%zu parts on %zu board(s)\n", layout.placements.size(), layout.sheets.size());
@@ -125,54 +113,54 @@ void addPackCommand(CLI::App& app)
                   "closed, no dogbones, the holding tabs on a layer of their own (default: tool paths as the "
                   "machine cuts them, offset by half the kerf)");
     cmd->add_flag(
-           "--common-line", args->commonLine,
+           "--common-line", args->job.commonLine,
            "common-line cutting: a line two parts a kerf apart share is cut once, by the part cut first "
            "(default: the file's settings.common_line)")
         ->excludes("--as-designed");
-    cmd->add_flag("--strip", args->strip,
+    cmd->add_flag("--strip", args->job.strip,
                   "input is an OR-Datasets strip-packing instance: fixed width, minimise height");
     cmd->add_flag("--bottom-left", args->bottomLeft, "place by Bottom-Left instead of the docking criterion");
     cmd->add_option(
-           "--rotation-step", args->rotationStep,
+           "--rotation-step", args->job.rotationStep,
            "free rotation: parts without grain that may take every quarter turn may take every multiple "
            "of this many degrees (a divisor of 90, e.g. 15); 0: quarter turns (default: the file's "
            "settings.rotation_step)")
         ->check(CLI::Range(0, 90));
     cmd->add_option(
-           "--cuts", args->cuts,
+           "--cuts", args->job.cuts,
            "free: any outline (CNC, laser); guillotine: straight cuts from edge to edge (panel saw), "
            "with the cut sequence in the layout (default: the file's settings.cuts)")
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, material::Cuts>(io::cutsNames().begin(), io::cutsNames().end())));
-    cmd->add_option("--stages", args->stages,
+    cmd->add_option("--stages", args->job.stages,
                     "guillotine cuts: at most this many changes of direction (2, 3, ...; 0: unlimited; "
                     "default: the file's settings.stages)")
         ->check(CLI::Range(0, 100));
-    cmd->add_option("--first-cut", args->firstCut,
+    cmd->add_option("--first-cut", args->job.firstCut,
                     "guillotine cuts: the first cuts along the sheet's length, across it, or any "
                     "(default: the file's settings.first_cut)")
         ->transform(CLI::CheckedTransformer(std::map<std::string, material::FirstCut>(
             io::firstCutNames().begin(), io::firstCutNames().end())));
-    cmd->add_option("--seed", args->search.seed, "seed of the ordering search")
+    cmd->add_option("--seed", args->job.search.seed, "seed of the ordering search")
         ->check(kSeeds)
         ->capture_default_str();
     cmd->add_option(
-           "--time-limit", args->search.timeLimit,
+           "--time-limit", args->job.search.timeLimit,
            "seconds for the run, from start-up to the files written (most of it the ordering search)")
         ->check(between(0.0, 86400.0))
         ->capture_default_str();
-    args->search.iterations = std::numeric_limits<long>::max();
-    cmd->add_option("--iterations", args->search.iterations,
+    args->job.search.iterations = std::numeric_limits<long>::max();
+    cmd->add_option("--iterations", args->job.search.iterations,
                     "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)")
         ->check(CLI::Range(-1LL, 1000000000000000000LL));
-    args->search.threads = cores();
+    args->job.search.threads = cores();
     cmd->add_option(
-           "--threads", args->search.threads,
+           "--threads", args->job.search.threads,
            "threads of the search: its starts, a strip's skyline searches, a saw's beam search beside its "
            "rules, run at once")
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
-    cmd->add_option("--history", args->search.memory, "late-acceptance history of the ordering search")
+    cmd->add_option("--history", args->job.search.memory, "late-acceptance history of the ordering search")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->callback([args] { run(*args); });

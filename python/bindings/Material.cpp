@@ -1,4 +1,5 @@
 // Bindings of the flat-pack layout (thesis ch. 5): problems and layouts are the dicts of docs/formats.md.
+#include "Api/Pack.h"
 #include "Bindings.h"
 #include "Core/Parallel.h"
 #include "IO/CutSheetFiles.h"
@@ -20,20 +21,20 @@ namespace {
 py::object pack(const py::object& problemDict, long iterations, double timeLimit, std::uint64_t seed,
                 bool bottomLeft, const CancelToken* cancel)
 {
-    const material::PackProblem problem = io::readPackProblem(toJson(problemDict));
-    material::OrderingSearchOptions options;
-    options.iterations = iterations;
-    options.timeLimit = timeLimit;
-    options.seed = seed;
-    options.threads = cores();
-    options.criterion = bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
-    options.cancel = cancel ? &cancel->flag : nullptr;
-    material::Layout layout;
+    api::PackJob job;
+    job.document = toJson(problemDict);
+    job.search.iterations = iterations;
+    job.search.timeLimit = timeLimit;
+    job.search.seed = seed;
+    job.search.threads = cores();
+    job.search.criterion = bottomLeft ? material::Criterion::BottomLeft : material::Criterion::Docking;
+    job.search.cancel = cancel ? &cancel->flag : nullptr;
+    api::PackReport report;
     {
         py::gil_scoped_release release;
-        layout = material::pack(problem, options);
+        report = api::pack(job);
     }
-    return fromJson(io::layoutToJson(layout, problem, io::PartNames::Ids));
+    return fromJson(io::layoutToJson(report.layout, report.problem, io::PartNames::Ids));
 }
 
 /// A problem dict and a layout dict of it, read.
