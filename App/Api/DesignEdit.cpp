@@ -3,7 +3,6 @@
 #include "Design/Correction.h"
 #include "Design/DesignSpace.h"
 #include "Design/DynamicPacker.h"
-#include "IO/FlatpackFormat.h"
 
 namespace fabguide::api {
 
@@ -80,15 +79,6 @@ io::FlatpackDesign satisfied(DesignEditReport& report)
     }
 }
 
-/// `f` laid out by the layout's search, or by `kept` when that is better (material::layOut).
-nlohmann::json laidOut(const io::FlatpackDesign& f, const DesignEdit& edit, const material::KeptLayout& kept)
-{
-    const material::ConstrainedDesign design(f.design);
-    const material::MaterialSpace material(f.boards, f.settings, design.parts());
-    return io::designLayoutJson(material,
-                                material::layOut(design, material, edit.seed, edit.seconds, nullptr, kept));
-}
-
 /// Thesis 5.3.2: the drawn boards, which overflow the master boards, fitted from the valid design `start` by
 /// the dynamic packer, slid from the layout `start` keeps (or a fresh one when it keeps none that fits), and
 /// laid out. False when they cannot be fitted.
@@ -110,7 +100,7 @@ bool absorbed(const nlohmann::json& start, const DesignEdit& edit, DesignEditRep
             return false;
         nlohmann::json fitted = io::withParts(report.design, before.design, a.X);
         const material::KeptLayout slid{{}, material.inMillimetres(a.layout, design.sizes(a.X))};
-        report.laidOut = laidOut(io::readFlatpack(fitted), edit, slid);
+        report.laidOut = layOutDesign(io::readFlatpack(fitted), edit.seed, edit.seconds, slid);
         report.design = std::move(fitted);
         report.absorbed = true;
         report.snapped = a.snapped;
@@ -121,6 +111,14 @@ bool absorbed(const nlohmann::json& start, const DesignEdit& edit, DesignEditRep
 }
 
 }  // namespace
+
+nlohmann::json layOutDesign(const io::FlatpackDesign& f, std::uint64_t seed, double seconds,
+                            const material::KeptLayout& kept)
+{
+    const material::ConstrainedDesign design(f.design);
+    const material::MaterialSpace material(f.boards, f.settings, design.parts());
+    return io::designLayoutJson(material, material::layOut(design, material, seed, seconds, nullptr, kept));
+}
 
 DesignEditReport editDesign(const DesignEdit& edit)
 {
@@ -142,7 +140,7 @@ DesignEditReport editDesign(const DesignEdit& edit)
     }
     try {
         const io::FlatpackDesign f = satisfied(report);
-        report.laidOut = laidOut(f, edit, f.kept);
+        report.laidOut = layOutDesign(f, edit.seed, edit.seconds, f.kept);
     } catch (const material::PackingError& error) {
         if (!start)
             throw;

@@ -3,6 +3,8 @@
 // edit that overflows the master boards absorbed by the dynamic packer or undone. One call, one layout.
 #pragma once
 
+#include "IO/FlatpackFormat.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -35,6 +37,12 @@ struct DesignEditReport {
     std::string warning;     ///< why the valid state could not be read (the design is then taken as drawn)
     nlohmann::json laidOut;  ///< {measures, layout, problem} (io::designLayoutJson); null when undone
 };
+
+/// The design `f` laid out as it is: the layout's search of `seconds`, or the layout `kept` when that is
+/// better (material::layOut); {measures, layout, problem} (io::designLayoutJson). Throws
+/// material::PackingError naming a part left over.
+nlohmann::json layOutDesign(const io::FlatpackDesign& f, std::uint64_t seed, double seconds,
+                            const material::KeptLayout& kept);
 
 /// Runs the edit. Throws io::FormatError naming a bad field, io::ConstraintError when no move of the boards
 /// makes every constraint hold, material::PackingError when the design does not fit and there is no edit to

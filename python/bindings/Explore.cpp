@@ -66,14 +66,12 @@ material::Exploration explore(const material::DesignSpace& design, const materia
 py::object layOutDesign(const py::object& document, std::uint64_t seed, double seconds)
 {
     const io::FlatpackDesign f = io::readFlatpack(toJson(document));
-    const material::ConstrainedDesign design(f.design);
-    const material::MaterialSpace material(f.boards, f.settings, design.parts());
-    material::DesignLayout laid;
+    nlohmann::json laid;
     {
         py::gil_scoped_release release;
-        laid = material::layOut(design, material, seed, seconds, nullptr, f.kept);
+        laid = api::layOutDesign(f, seed, seconds, f.kept);
     }
-    return fromJson(io::designLayoutJson(material, laid));
+    return fromJson(laid);
 }
 
 py::object optimise(const py::object& document, std::uint64_t seed, int threads, double timeLimit, int rounds,

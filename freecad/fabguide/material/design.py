@@ -346,7 +346,7 @@ def recompute(obj):
         obj.Status = str(error)
         raise DesignError(str(error))
     valid = json.loads(obj.Valid) if obj.Valid else None
-    laid, note = last_layout(obj, edited) if valid == edited["parts"] else (None, "")
+    laid, note = (last_layout(obj, edited) if valid == edited["parts"] else None), ""
     if laid is None:
         laid, note = edited_and_laid_out(obj, edited, valid)
         if laid is None:
@@ -368,9 +368,9 @@ def without_layout(design):
 
 def last_layout(obj, edited):
     """The last layout (LayoutJson) when it was made from this very design: FreeCAD recomputes a design again after
-    its boxes moved, and that pass has nothing new to lay out. (None, "") otherwise."""
+    its boxes moved, and that pass has nothing new to lay out. None otherwise."""
     last = json.loads(obj.LayoutJson) if obj.LayoutJson else {}
-    return (last, "") if last.get("design") == without_layout(edited) else (None, "")
+    return last if last.get("design") == without_layout(edited) else None
 
 
 def edited_and_laid_out(obj, edited, valid):
