@@ -241,6 +241,22 @@ void removeLeftoversOnce(const std::filesystem::path& folder)
     }
 }
 
+/// removeLeftoversOnce in the folders directly in a set's `folder` (suggestion-N/), which a run killed while
+/// writing a larger set may have made and the next set does not name; one its tidying leaves empty goes too.
+void removeLeftoversBelow(const std::filesystem::path& folder)
+{
+    std::error_code error;
+    struct stat status = {};
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+        if (lstat(entry.path().c_str(), &status) == 0 && S_ISDIR(status.st_mode) &&
+            status.st_uid == geteuid()) {
+            const bool wasEmpty = std::filesystem::is_empty(entry.path(), error);
+            removeLeftoversOnce(entry.path());
+            if (!wasEmpty)
+                rmdir(entry.path().c_str());  // fails unless the tidying left it empty
+        }
+}
+
 /// A new empty file beside `path` under a name no one can guess, made by this call alone (mkstemp: O_CREAT |
 /// O_EXCL, so a link planted in a shared folder is never written through). It carries this process's id, so a
 /// later run can tell a temporary whose run has ended (removeLeftovers).
@@ -438,6 +454,7 @@ void replaceSetOf(const std::string& manifest)
     std::error_code error;
     const std::filesystem::path folder =
         std::filesystem::weakly_canonical(std::filesystem::absolute(manifest).parent_path(), error);
+    removeLeftoversBelow(folder);  // a killed run's, named by no manifest
     nlohmann::json listed;
     try {
         listed = readJsonFile(manifest);

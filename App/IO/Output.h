@@ -34,7 +34,8 @@ void removeWhenCommitted(const std::string& path);
 /// Every file that `manifest` (a JSON file an earlier run wrote beside its outputs: summary.json,
 /// report.json) names in its folder, removed when the batch commits unless written again: the previous set's
 /// leftovers (a body since renamed, a suggestion not found again). A manifest that is missing or does not
-/// read names none.
+/// read names none. What ended runs left in the folders directly in its folder is tidied first
+/// (completeInterruptedRuns): a run killed while writing a larger set made folders no manifest names.
 void replaceSetOf(const std::string& manifest);
 
 /// Tidies what runs since ended left in `folder`: a commit a kill cut short is completed (its journal's

@@ -302,6 +302,31 @@ TEST(Output, TemporariesARunThatEndedLeftAreRemovedByTheNextAndALiveRunsAreKept)
     EXPECT_EQ(readText(out / "new.svg"), "new");
 }
 
+TEST(Output, TemporariesARunKilledWhileWritingALargerSetLeftInAFolderNoManifestNamesAreRemoved)
+{
+    // optimise killed while writing suggestion-3/, then run again finding two: no summary names that folder.
+    const fs::path out = folder("larger"), kept = out / "drawings";
+    const pid_t ended = fork();
+    if (ended == 0)
+        _exit(0);
+    waitpid(ended, nullptr, 0);
+    const std::string pid = std::to_string(ended);
+    fs::create_directories(out / "suggestion-3");
+    fs::create_directories(kept);
+    writeText((out / "suggestion-3" / (".sheet-1.svg.partial-" + pid + "-Ab12Cd")).string(), "cut short");
+    writeText((out / "suggestion-3" / ("..fabguide-commit-.partial-" + pid + "-Ef34Gh")).string(), "{");
+    writeText((kept / (".sheet-1.svg.partial-" + std::to_string(getppid()) + "-Ab12Cd")).string(), "alive");
+    writeText((kept / "notes.txt").string(), "the user's");
+    {
+        OutputBatch batch;
+        replaceSetOf((out / "summary.json").string());  // none yet
+        writeAtomically((out / "summary.json").string(), [](const std::string& t) { writeText(t, "{}"); });
+        batch.commit();
+    }
+    EXPECT_FALSE(fs::exists(out / "suggestion-3"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(kept), fs::directory_iterator()), 2);
+}
+
 TEST(Output, ABareFileNameIsWrittenInTheWorkingFolder)
 {
     // `fabguide solve in.json -o out.json`, the commonest call, failed: its folder is "".
