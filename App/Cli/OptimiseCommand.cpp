@@ -1,4 +1,5 @@
 // `fabguide optimise`: design variations that waste less material (thesis 5.4, MINWASTAGE).
+#include "Api/Explore.h"
 #include "Cli/Commands.h"
 #include "IO/CutSheetFiles.h"
 #include "IO/FlatpackFormat.h"
@@ -49,19 +50,6 @@ nlohmann::json writeLayout(const material::MaterialSpace& material, const materi
     return entry;
 }
 
-/// `document` with the equal constraints of its boards drawn equal, each said, when asked for; the
-/// suggestions carry them.
-nlohmann::json withDrawnEqual(nlohmann::json document, bool keep)
-{
-    if (!keep)
-        return document;
-    for (const nlohmann::json& equal : io::drawnEqualConstraints(document)) {
-        std::printf("kept equal    %s\n", equal["name"].get<std::string>().c_str());
-        document["constraints"].push_back(equal);
-    }
-    return document;
-}
-
 /// Why no variation saved a sheet, in the core's one reading of it (Exploration::noSheetSaved).
 std::string whyNone(const material::Exploration& e)
 {
@@ -83,18 +71,17 @@ void run(const OptimiseArguments& args)
 {
     io::checkWritableFolder(args.output);  // before the search, not after
     io::OutputBatch files;
-    const nlohmann::json document = withDrawnEqual(io::readJsonFile(args.input), args.keepDrawnEqual);
-    const io::FlatpackDesign flatpack = io::readFlatpack(document);
-    const material::ConstrainedDesign design(io::forSuggestions(flatpack));
-    const material::MaterialSpace material(flatpack.boards, flatpack.settings, design.parts());
-    material::MinWastageOptions options = args.options;
-    options.guided = !args.unguided;
-    options.kept = flatpack.kept;
-    options.progress = [](double done, double best) {
+    api::Exploring job{io::readJsonFile(args.input), args.options, args.keepDrawnEqual};
+    job.options.guided = !args.unguided;
+    job.options.progress = [](double done, double best) {
         std::fprintf(stderr, "\r%3.0f %%  best usage %.4f", 100 * done, best);
     };
-    const material::Exploration exploration = material::minWastage(design, material, options);
+    const api::ExplorationReport report = api::explore(job);
     std::fprintf(stderr, "\n");
+    for (const nlohmann::json& equal : report.keptEqual)
+        std::printf("kept equal    %s\n", equal["name"].get<std::string>().c_str());
+    const material::MaterialSpace& material = report.material;
+    const material::Exploration& exploration = report.exploration;
 
     const std::filesystem::path out(args.output);
     std::filesystem::create_directories(out);
@@ -104,15 +91,14 @@ void run(const OptimiseArguments& args)
     summary["suggestions"] = nlohmann::json::array();
     const material::MaterialSpace::Figures& before = exploration.start.figures;
     std::printf("usage before  %.4f  (%zu parts)  %d sheets, waste %.3f m2\n", exploration.usageBefore(),
-                flatpack.design.boards.size(), before.sheets, before.waste);
+                report.flatpack.design.boards.size(), before.sheets, before.waste);
     // Boards with a cost of their own (or offcuts, at 0): the suggestions' cost is shown beside the sheets.
-    const bool priced = std::any_of(flatpack.boards.begin(), flatpack.boards.end(),
+    const bool priced = std::any_of(report.flatpack.boards.begin(), report.flatpack.boards.end(),
                                     [](const material::MasterBoard& b) { return b.cost != 1; });
     for (size_t k = 0; k < exploration.suggestions.size(); ++k) {
         const material::Suggestion& s = exploration.suggestions[k];
         const std::string name = "suggestion-" + std::to_string(k + 1);
-        io::writeJsonFile((out / (name + ".flatpack.json")).string(),
-                          io::suggestionDocument(document, flatpack.design, material, s));
+        io::writeJsonFile((out / (name + ".flatpack.json")).string(), report.suggestionDocument(s));
         nlohmann::json entry = writeLayout(material, s.result, out, name);
         entry["usage_after"] = s.usage();
         entry["file"] = name + ".flatpack.json";

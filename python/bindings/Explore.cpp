@@ -1,5 +1,6 @@
 // Bindings of zero-waste design exploration (thesis 5.3-5.4): designs are the `*.flatpack.json` dicts of
 // docs/formats.md; the search runs without the GIL and reports progress on the calling thread.
+#include "Api/Explore.h"
 #include "Api/DesignEdit.h"
 #include "Bindings.h"
 #include "IO/ApiJson.h"
@@ -56,13 +57,6 @@ material::MinWastageOptions options(std::uint64_t seed, int threads, double time
     return o;
 }
 
-material::Exploration explore(const material::DesignSpace& design, const material::MaterialSpace& material,
-                              const material::MinWastageOptions& o)
-{
-    py::gil_scoped_release release;
-    return material::minWastage(design, material, o);
-}
-
 py::object layOutDesign(const py::object& document, std::uint64_t seed, double seconds)
 {
     const io::FlatpackDesign f = io::readFlatpack(toJson(document));
@@ -74,19 +68,21 @@ py::object layOutDesign(const py::object& document, std::uint64_t seed, double s
     return fromJson(laid);
 }
 
+/// The exploration of a design dict (App/Api/Explore.h), run without the GIL.
 py::object optimise(const py::object& document, std::uint64_t seed, int threads, double timeLimit, int rounds,
                     bool guided, const std::function<void(double, double)>& progress, CancelToken* cancel)
 {
-    const nlohmann::json doc = toJson(document);
-    const io::FlatpackDesign f = io::readFlatpack(doc);
-    const material::ConstrainedDesign design(io::forSuggestions(f));
-    const material::MaterialSpace material(f.boards, f.settings, design.parts());
-    material::MinWastageOptions o = options(seed, threads, timeLimit, rounds, guided, progress, cancel);
-    o.kept = f.kept;
-    const material::Exploration e = explore(design, material, o);
-    return fromJson(explorationJson(material, e, [&](const material::Suggestion& s, nlohmann::json& entry) {
-        entry["design"] = io::suggestionDocument(doc, f.design, material, s);
-    }));
+    const api::Exploring job{toJson(document),
+                             options(seed, threads, timeLimit, rounds, guided, progress, cancel)};
+    std::optional<api::ExplorationReport> report;
+    {
+        py::gil_scoped_release release;
+        report.emplace(api::explore(job));
+    }
+    return fromJson(explorationJson(report->material, report->exploration,
+                                    [&](const material::Suggestion& s, nlohmann::json& entry) {
+                                        entry["design"] = report->suggestionDocument(s);
+                                    }));
 }
 
 /// A flat-pack design's recompute (App/Api/DesignEdit.h), run without the GIL.
