@@ -23,6 +23,30 @@ namespace fabguide::function {
 
 namespace {
 
+/// The names the solve gives what it keeps besides the relationships, each written here once: a conflict
+/// names them, and `typed` tells them apart by these, never by their wording.
+std::string lockName(const Model& model, const Lock& lock)
+{
+    return "lock: " + faceName(model, lock.face);
+}
+
+std::string onePieceName(const Part& part)
+{
+    return "one piece: " + part.name;
+}
+
+std::string wallName(const Cuboid& cavity)
+{
+    return "wall: " + cavity.name;
+}
+
+std::string drawnInsideName(const Model& model, int inner, int outer)
+{
+    return "drawn inside: " + model.cuboids[inner].name + " in " + model.cuboids[outer].name;
+}
+
+const std::string kStillMeeting = "no overlap";  ///< parts still meeting after every round of separations
+
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// left − right measured in a configuration, as constraint terms and the constant that moves to the bound.
@@ -64,7 +88,7 @@ void walls(std::vector<LinearConstraint>& rows, const Model& model, int cavity, 
         const bool opening = isOpening(model, cavity, k);
         rows.push_back({terms, opening ? 0 : -kInfinity, 0, ""});
         if (!opening && model.minimumWall > 0)
-            rows.push_back({terms, -kInfinity, -model.minimumWall, "wall: " + model.cuboids[cavity].name});
+            rows.push_back({terms, -kInfinity, -model.minimumWall, wallName(model.cuboids[cavity])});
     }
 }
 
@@ -105,7 +129,7 @@ void glue(std::vector<LinearConstraint>& rows, const Model& model, int a, int b,
 void onePiece(std::vector<LinearConstraint>& rows, const Model& model, const Part& part)
 {
     for (const Pieces::Glued& g : piecesOf(model, part).glued)
-        glue(rows, model, g.a, g.b, "one piece: " + part.name);
+        glue(rows, model, g.a, g.b, onePieceName(part));
 }
 
 /// A part a fixed joint holds prints as one body with its base: its nearest cuboid and the base's stay glued
@@ -396,7 +420,7 @@ std::vector<LinearConstraint> constraints(const Model& model)
             heldFixed(rows, model, j);
     for (const Lock& lock : model.locks) {
         const double value = model.cuboids[lock.face.cuboid].at(lock.face.side);
-        rows.push_back({{{variable(lock.face), 1.0}}, value, value, "lock: " + faceName(model, lock.face)});
+        rows.push_back({{{variable(lock.face), 1.0}}, value, value, lockName(model, lock)});
     }
     return rows;
 }
@@ -532,7 +556,7 @@ std::vector<std::string> blamedParts(const Model& model, const std::vector<Separ
                 blame(s.b);
             }
         for (int c = 0; c < static_cast<int>(model.cuboids.size()); ++c)
-            if (model.cuboids[c].cavity() && source == "wall: " + model.cuboids[c].name)
+            if (model.cuboids[c].cavity() && source == wallName(model.cuboids[c]))
                 blame(c);
     }
     return names;
@@ -764,11 +788,11 @@ void keepPivotsOnFaces(const Model& before, Model& after)
 /// none.
 SolveResult refusedDrawnInside(const Model& model)
 {
-    SolveResult refused{false, model, {}, 0, {}, {}};
+    SolveResult refused{false, model, {}, 0, {}, {}, {}};
     const std::vector<int> owner = owners(model);
     for (const auto& [inner, outer] : drawnInside(model)) {
         const std::string &a = model.cuboids[inner].name, &b = model.cuboids[outer].name;
-        refused.conflict.push_back("drawn inside: " + a + " in " + b);
+        refused.conflict.push_back(drawnInsideName(model, inner, outer));
         refused.notes.push_back(refused.conflict.back() + ": nothing lets them overlap; make a cavity in '" +
                                 b + "' where '" + a + "' goes (or move it out); nothing was changed");
         for (int c : {inner, outer})
@@ -779,6 +803,48 @@ SolveResult refusedDrawnInside(const Model& model)
     return refused;
 }
 
+/// `result` with its conflict typed (SolveResult::conflicts): each name matched against the names the solve
+/// gives what it keeps in `model`, with the `separations` it kept parts apart by.
+SolveResult typed(const Model& model, const std::vector<Separation>& separations, SolveResult result)
+{
+    std::vector<Conflict> known;
+    const auto relationships = [&](ConflictKind kind, const auto& list) {
+        for (const auto& r : list)
+            known.push_back({kind, r.name, r.name});
+    };
+    relationships(ConflictKind::Cover, model.cover);
+    relationships(ConflictKind::FitInside, model.fitInside);
+    relationships(ConflictKind::Support, model.support);
+    relationships(ConflictKind::Flush, model.flush);
+    relationships(ConflictKind::Geometric, model.geometric);
+    for (const Joint& j : model.joints)
+        if (j.type == Joint::Type::DoublePivot)
+            known.push_back({ConflictKind::DoublePivot, j.name, j.name});
+    for (const Lock& lock : model.locks)
+        known.push_back({ConflictKind::Lock, lockName(model, lock), faceName(model, lock.face)});
+    for (const Part& part : model.parts)
+        known.push_back({ConflictKind::OnePiece, onePieceName(part), part.name});
+    for (const Cuboid& c : model.cuboids)
+        if (c.cavity())
+            known.push_back({ConflictKind::Wall, wallName(c), c.name});
+    for (const Separation& s : separations) {
+        const int a = partOf(model, s.a), b = partOf(model, s.b);
+        known.push_back({ConflictKind::NoOverlap, separationName(model, s),
+                         model.parts[std::min(a, b)].name + ", " + model.parts[std::max(a, b)].name});
+    }
+    known.push_back({ConflictKind::NoOverlap, kStillMeeting, ""});
+    for (const auto& [inner, outer] : drawnInside(model))
+        known.push_back({ConflictKind::DrawnInside, drawnInsideName(model, inner, outer),
+                         model.cuboids[inner].name + " in " + model.cuboids[outer].name});
+    for (const std::string& name : result.conflict)
+        for (const Conflict& k : known)
+            if (k.name == name) {
+                result.conflicts.push_back(k);
+                break;
+            }
+    return result;
+}
+
 }  // namespace
 
 SolveResult solve(const Model& model)
@@ -787,11 +853,11 @@ SolveResult solve(const Model& model)
     for (const Part& part : model.parts) {
         Pieces pieces = piecesOf(model, part);
         if (!pieces.error.empty())
-            return {false, model, {"one piece: " + part.name}, 0, {pieces.error}, {part.name}};
+            return typed(model, {}, {false, model, {onePieceName(part)}, 0, {pieces.error}, {part.name}, {}});
         pieceNotes.insert(pieceNotes.end(), pieces.notes.begin(), pieces.notes.end());
     }
     if (SolveResult inside = refusedDrawnInside(model); !inside.conflict.empty())
-        return inside;
+        return typed(model, {}, inside);
     Eigen::VectorXd target(6 * model.cuboids.size());
     Drawing drawing;
     for (size_t c = 0; c < model.cuboids.size(); ++c) {
@@ -820,30 +886,30 @@ SolveResult solve(const Model& model)
             break;
         // Every round adds poses where parts still meet: a bound, never reached so far.
         if (round == kRounds) {
-            r = {false, target, r.violation, {"no overlap"}};
+            r = {false, target, r.violation, {kStillMeeting}};
             break;
         }
     }
     const std::vector<Separation> separations = apart.all();
     SolveResult result{r.solved,   r.solved ? withCoordinates(model, r.x) : model, r.conflict, r.violation,
-                       pieceNotes, blamedParts(moving, separations, r.conflict)};
+                       pieceNotes, blamedParts(moving, separations, r.conflict),   {}};
     for (const Cover& c : model.cover)
         addNotes(result.notes, c.name, c.notes);
     for (const Support& s : model.support)
         addNotes(result.notes, s.name, s.notes);
     if (!r.solved)
-        return result;
+        return typed(moving, separations, result);
     // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
     keepPivotsOnFaces(model, result.model);
     const std::vector<Unplaced> unplaced = placePivots(result.model);
     if (unplaced.empty())
         return result;
-    SolveResult failed{false, model, {}, r.violation, result.notes, {}};
+    SolveResult failed{false, model, {}, r.violation, result.notes, {}, {}};
     for (const Unplaced& u : unplaced) {
         failed.conflict.push_back(u.joint);
         failed.notes.push_back(u.joint + ": " + u.reason);
     }
-    return failed;
+    return typed(model, {}, failed);
 }
 
 }  // namespace fabguide::function

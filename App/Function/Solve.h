@@ -34,13 +34,37 @@ Pieces piecesOf(const Model& model, const Part& part);
 /// sizes unnamed). Throws std::invalid_argument naming a Flush whose faces are not parallel.
 std::vector<LinearConstraint> constraints(const Model& model);
 
+/// What a name in a conflict stands for: a relationship of the model (by its kind), a double pivot, a lock, a
+/// part kept in one piece, a cavity's wall, two parts kept apart, or a part drawn inside another.
+enum class ConflictKind {
+    Cover,
+    FitInside,
+    Support,
+    Flush,
+    Geometric,
+    DoublePivot,
+    Lock,
+    OnePiece,
+    Wall,
+    NoOverlap,
+    DrawnInside
+};
+
+struct Conflict {
+    ConflictKind kind = ConflictKind::Cover;
+    std::string name;  ///< as SolveResult::conflict has it
+    std::string
+        subject;  ///< the relationship or joint, the locked face, the part, the cavity, "a, b", "a in b"
+};
+
 struct SolveResult {
     bool solved = false;
     Model model;                        ///< the solved model (unchanged when not solved)
     std::vector<std::string> conflict;  ///< relationships (or double pivots) that cannot hold together
     double violation = 0;
-    std::vector<std::string> notes;  ///< why, where the names alone do not say
-    std::vector<std::string> parts;  ///< parts a conflict blames beyond its relationships' (overlaps, walls)
+    std::vector<std::string> notes;   ///< why, where the names alone do not say
+    std::vector<std::string> parts;   ///< parts a conflict blames beyond its relationships' (overlaps, walls)
+    std::vector<Conflict> conflicts;  ///< `conflict` typed, in its order: callers read kinds, never wording
 };
 
 /// The model at `factor` times its size (a works-like prototype printed at 1:5): coordinates, slide offsets,

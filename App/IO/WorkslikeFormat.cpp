@@ -137,6 +137,24 @@ const std::map<std::string, function::Joint::Type> kJointTypes{
     {"double_pivot", function::Joint::Type::DoublePivot},
     {"fixed", function::Joint::Type::Fixed}};
 
+/// A conflict's kind as the report says it: a relationship's or joint's by the type this format gives it.
+std::string conflictKindName(function::ConflictKind kind)
+{
+    using K = function::ConflictKind;
+    static const std::map<K, std::string> names{{K::Cover, "cover"},
+                                                {K::FitInside, "fit_inside"},
+                                                {K::Support, "support"},
+                                                {K::Flush, "flush"},
+                                                {K::Geometric, "geometric"},
+                                                {K::DoublePivot, "double_pivot"},
+                                                {K::Lock, "lock"},
+                                                {K::OnePiece, "one_piece"},
+                                                {K::Wall, "wall"},
+                                                {K::NoOverlap, "no_overlap"},
+                                                {K::DrawnInside, "drawn_inside"}};
+    return names.at(kind);
+}
+
 /// A double pivot's pivot: ["cuboid.side", [x, y, z]], a point on that face of a cuboid of `part`; returns
 /// the face and the point's in-plane offsets from the cuboid's low corner.
 std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, const Fields& j,
@@ -799,12 +817,15 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                           {"configurations", configurations},
                           {"relationships", relationships},
                           {"locks", locks}};
-    if (result)
-        out["report"] = {{"solved", result->solved},
-                         {"conflict", result->conflict},
-                         {"violation", result->violation},
-                         {"notes", result->notes},
-                         {"parts", result->parts}};
+    if (result) {
+        nlohmann::json conflicts = nlohmann::json::array();
+        for (const function::Conflict& c : result->conflicts)
+            conflicts.push_back(
+                {{"kind", conflictKindName(c.kind)}, {"name", c.name}, {"subject", c.subject}});
+        out["report"] = {{"solved", result->solved}, {"conflict", result->conflict},
+                         {"conflicts", conflicts},   {"violation", result->violation},
+                         {"notes", result->notes},   {"parts", result->parts}};
+    }
     return out;
 }
 

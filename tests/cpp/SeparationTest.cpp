@@ -12,6 +12,8 @@ using function::Side;
 using nlohmann::json;
 using testsupport::cuboid;
 using testsupport::cuboidPart;
+using testsupport::typedConflict;
+using Kind = function::ConflictKind;
 
 namespace {
 
@@ -75,6 +77,7 @@ TEST(Separation, APartDrawnInsideAnotherBeforeItsCavityIsNamedAndNothingChanges)
     function::SolveResult r = function::solve(drawn);
     EXPECT_FALSE(r.solved);
     EXPECT_EQ(r.conflict, std::vector<std::string>{"drawn inside: tray in carcass"});
+    EXPECT_EQ(typedConflict(r), (decltype(typedConflict(r)){{Kind::DrawnInside, "tray in carcass"}}));
     EXPECT_EQ(r.parts, (std::vector<std::string>{"tray", "carcass"}));
     ASSERT_EQ(r.notes.size(), 1u);
     EXPECT_NE(r.notes[0].find("make a cavity in 'carcass' where 'tray' goes"), std::string::npos)
@@ -114,6 +117,9 @@ TEST(Separation, LockedPartsThatOverlapAreAConflictNamingThem)
     const function::SolveResult r = function::solve(io::readWorkslike(d));
     ASSERT_FALSE(r.solved);
     EXPECT_EQ(r.conflict, (std::vector<std::string>{"lock: a.right", "lock: b.left", "no overlap: a, b"}));
+    EXPECT_EQ(typedConflict(r),
+              (decltype(typedConflict(r)){
+                  {Kind::Lock, "a.right"}, {Kind::Lock, "b.left"}, {Kind::NoOverlap, "a, b"}}));
 }
 
 TEST(Separation, ADrawerInACompartmentStaysInsideItButThroughTheMouth)
@@ -189,6 +195,10 @@ TEST(Separation, AWallCannotBeEatenBelowTheMinimum)
     ASSERT_FALSE(r.solved);
     EXPECT_EQ(r.conflict, (std::vector<std::string>{"wall: well", "tray in the well", "lock: box.right",
                                                     "lock: tray.right"}));  // the right side is enough
+    EXPECT_EQ(typedConflict(r), (decltype(typedConflict(r)){{Kind::Wall, "well"},
+                                                            {Kind::FitInside, "tray in the well"},
+                                                            {Kind::Lock, "box.right"},
+                                                            {Kind::Lock, "tray.right"}}));
 }
 
 TEST(Separation, AnInnerPartOfAFitInsideMayLieInTheEnclosingSolid)

@@ -143,6 +143,21 @@ TEST(Solve, ContradictionsAreReportedByName)
     EXPECT_FALSE(r.solved);
     // The lid would have no height, below the (never blamed) minimum size: the two flushes are the conflict.
     EXPECT_EQ(r.conflict, (std::vector<std::string>{"lid on body", "lid top level with body top"}));
+    EXPECT_EQ(testsupport::typedConflict(r),
+              (decltype(testsupport::typedConflict(r)){
+                  {function::ConflictKind::Flush, "lid on body"},
+                  {function::ConflictKind::Flush, "lid top level with body top"}}));
+}
+
+TEST(Solve, APartDrawnInPiecesIsAConflictOfItsKind)
+{
+    json d = boxWithLid();
+    d["parts"][1]["cuboids"].push_back(
+        testsupport::cuboid("knob", {40, 20, 80}, {60, 40, 90}));  // 33 mm above
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    EXPECT_FALSE(r.solved);
+    EXPECT_EQ(testsupport::typedConflict(r),
+              (decltype(testsupport::typedConflict(r)){{function::ConflictKind::OnePiece, "lid"}}));
 }
 
 TEST(Solve, FacesThatAreNotParallelCannotBeFlush)

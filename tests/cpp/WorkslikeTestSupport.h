@@ -1,11 +1,14 @@
 // Helper shared by the works-like tests.
 #pragma once
 
+#include "Function/Solve.h"
 #include "IO/Json.h"
 #include "IO/WorkslikeFormat.h"
 
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fabguide::testsupport {
 
@@ -35,6 +38,16 @@ inline std::string workslikeError(const nlohmann::json& document)
         return e.what();
     }
     return "";
+}
+
+/// A solve's conflict as its kinds and subjects read (SolveResult::conflicts), in its order.
+inline std::vector<std::pair<function::ConflictKind, std::string>> typedConflict(
+    const function::SolveResult& r)
+{
+    std::vector<std::pair<function::ConflictKind, std::string>> typed;
+    for (const function::Conflict& c : r.conflicts)
+        typed.emplace_back(c.kind, c.subject);
+    return typed;
 }
 
 }  // namespace fabguide::testsupport

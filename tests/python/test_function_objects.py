@@ -184,6 +184,24 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
     assert touched(doc) == []
 
 
+def test_the_hint_after_a_conflict_follows_the_kinds_the_core_gives_not_the_names():
+    def hint(parts, locks=()):
+        model = {"format": "fabguide.workslike", "version": 1, "locks": list(locks),
+                 "parts": [{"name": name, "cuboids": [{"name": cuboid, "min": low, "max": high}]}
+                           for name, cuboid, low, high in parts]}
+        report = fabguide_core.solve(model)["report"]
+        assert not report["solved"] and len(report["conflicts"]) == len(report["conflict"]), report
+        return mechanism.what_to_do(report["conflicts"])
+
+    inside = hint([("Carcass", "carcass", [0, 0, 0], [600, 400, 800]),
+                   ("Tray", "tray", [30, 0, 610], [570, 380, 770])])
+    assert inside == "Mend the model as the note below says."
+    # Parts named like the core's words change nothing: the kinds decide.
+    locked = hint([("lock: A", "a", [0, 0, 0], [10, 10, 10]), ("one piece", "b", [8, 0, 0], [20, 10, 10])],
+                  ["a.right", "b.left"])
+    assert "unlock a box" in locked and "move the parts that meet apart" in locked and "Mend" not in locked
+
+
 def test_parts_are_kept_apart_and_parts_that_must_overlap_are_blamed(doc):
     a, b = box(doc, "A", (0, 0, 0), (100, 50, 50)), box(doc, "B", (97, 10, 0), (200, 40, 50))  # 3 mm into A
     doc.recompute()

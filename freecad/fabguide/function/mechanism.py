@@ -179,7 +179,7 @@ def solve(obj):
             obj.Label, messages.in_words(str(error), data, messages.WORKSLIKE)))
     report = solved["report"]
     conflict = report["conflict"]
-    if not report["solved"] and set(conflict) & {"lock: " + e for e in edited}:
+    if not report["solved"] and {c["subject"] for c in report["conflicts"] if c["kind"] == "lock"} & set(edited):
         refuse(obj, report)
         say_changes(obj, [])
         return solved
@@ -199,7 +199,7 @@ def solve(obj):
     if not report["solved"]:
         obj.Status = "Conflict: " + ", ".join(conflict)
         FreeCAD.Console.PrintWarning(translate("FabGuide", "{}: these cannot hold together: {}. {}\n").format(
-            obj.Label, ", ".join(conflict), what_to_do(conflict)))
+            obj.Label, ", ".join(conflict), what_to_do(report["conflicts"])))
         for note in report.get("notes", []):
             FreeCAD.Console.PrintWarning("  {}\n".format(note))
         say_changes(obj, [])
@@ -211,14 +211,15 @@ def solve(obj):
     return solved
 
 
-def what_to_do(conflict):
-    """A hint after a conflict: what the user can change."""
-    if any(n.startswith(("drawn inside", "one piece")) for n in conflict):
+def what_to_do(conflicts):
+    """A hint after a conflict (the report's typed conflicts): what the user can change."""
+    kinds = {c["kind"] for c in conflicts}
+    if kinds & {"drawn_inside", "one_piece"}:
         return translate("FabGuide", "Mend the model as the note below says.")
     hints = [translate("FabGuide", "Change or delete one of the relationships.")]
-    if any(n.startswith("lock: ") for n in conflict):
+    if "lock" in kinds:
         hints.append(translate("FabGuide", "Or unlock a box (the mechanism's Locks)."))
-    if any(n.startswith("no overlap") for n in conflict):
+    if "no_overlap" in kinds:
         hints.append(translate("FabGuide", "Or move the parts that meet apart."))
     return " ".join(hints)
 
