@@ -1,21 +1,17 @@
 // `fabguide printable`: a works-like model as print-in-place bodies (thesis 4.5), checked, written as STL,
 // 3MF and STEP.
+#include "Api/PrintInPlace.h"
 #include "Cli/Commands.h"
 #include "IO/Json.h"
 #include "IO/Output.h"
 #include "IO/PrintFiles.h"
-#include "IO/WorkslikeFormat.h"
-#include "Printable/Checks.h"
 
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -43,32 +39,28 @@ std::optional<printable::Size> buildVolume(const std::string& text)
     return size;
 }
 
-/// Printer profiles: the gap a printer needs so parts do not fuse (FDM 0.4 mm, resin 0.2 mm).
-const std::map<std::string, double> kPrinters{{"fdm", 0.4}, {"resin", 0.2}};
-
 /// report.json: what the run made and measured, for tools and tests (docs/formats.md).
-nlohmann::json report(const printable::Fitted& fitted, const std::vector<double>& volumes,
-                      const printable::Size& size, const printable::Check& check, double gap, bool ok,
-                      double seconds, const std::vector<std::string>& files)
+nlohmann::json reportJson(const api::PrintReport& made, double seconds, const std::vector<std::string>& files)
 {
     nlohmann::json bodies = nlohmann::json::array();
-    for (size_t b = 0; b < volumes.size(); ++b)
-        bodies.push_back({{"name", fitted.printable.bodies[b].name}, {"volume_mm3", volumes[b]}});
+    for (size_t b = 0; b < made.volumes.size(); ++b)
+        bodies.push_back({{"name", made.fitted.printable.bodies[b].name}, {"volume_mm3", made.volumes[b]}});
     std::vector<std::string> names;  // in the output folder
     for (const std::string& path : files)
         names.push_back(std::filesystem::path(path).filename().string());
+    const printable::Check& check = *made.check;
     return {{"format", "fabguide.printable-report"},
             {"version", 1},
-            {"ok", ok},
-            {"scale", fitted.scale},
-            {"turned", fitted.turned},
-            {"size_mm", size},
-            {"gap_mm", gap},
+            {"ok", made.ok()},
+            {"scale", made.fitted.scale},
+            {"turned", made.fitted.turned},
+            {"size_mm", made.size},
+            {"gap_mm", made.gap},
             {"clearance", {{"least_mm", check.clearance}, {"where", check.where}}},
             {"invalid", check.invalid},
             {"loose", check.loose},
             {"bodies", bodies},
-            {"notes", fitted.printable.notes},
+            {"notes", made.fitted.printable.notes},
             {"seconds", seconds},
             {"files", names}};
 }
@@ -78,31 +70,22 @@ int run(const PrintableArguments& args)
     const auto started = std::chrono::steady_clock::now();
     io::checkWritableFolder(args.output);  // before minutes of geometry, not after
     io::OutputBatch files;
-    const double gap = args.gap >= 0 ? args.gap : kPrinters.at(args.printer);
-    const std::optional<printable::Size> fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
-    const printable::Printer printer{gap, args.partSeconds};
-    printable::Fitted fitted =
-        printable::printed(io::readWorkslike(io::readJsonFile(args.input)), printer, args.scale, fit);
-    if (fit)
-        std::printf("scale %.4g: fits %s mm%s\n", fitted.scale, args.fit.c_str(),
-                    fitted.turned ? ", turned a quarter about z" : "");
-    const function::Model& model = fitted.model;
-    // Joint geometry placed where it clears, then checked as written.
-    const printable::Checked placed = printable::placedByCheck(model, fitted.printable, printer);
-    fitted.printable = placed.printable;
-    const printable::Printable& made = fitted.printable;
-    const printable::Check& check = placed.check;
-    const printable::Printable onTheBed = printable::onTheBed(made, fitted.turned);
-    const printable::Size size = printable::sizeOf(onTheBed);
-    std::printf("size %.1f x %.1f x %.1f mm\n", size[0], size[1], size[2]);
-    std::vector<double> volumes;
-    for (const printable::Body& b : made.bodies) {
-        GProp_GProps volume;
-        BRepGProp::VolumeProperties(b.shape, volume);
-        volumes.push_back(volume.Mass());
-        std::printf("body %-28s %10.1f mm3\n", b.name.c_str(), volumes.back());
-    }
-    for (const std::string& note : made.notes)
+    api::PrintJob job;
+    job.model = io::readJsonFile(args.input);
+    job.printer = args.printer;
+    job.gap = args.gap >= 0 ? std::optional<double>(args.gap) : std::nullopt;
+    job.scale = args.scale;
+    job.fit = args.fit.empty() ? std::nullopt : buildVolume(args.fit);
+    job.partSeconds = args.partSeconds;
+    const api::PrintReport made = api::printInPlace(job);
+    if (job.fit)
+        std::printf("scale %.4g: fits %s mm%s\n", made.fitted.scale, args.fit.c_str(),
+                    made.fitted.turned ? ", turned a quarter about z" : "");
+    std::printf("size %.1f x %.1f x %.1f mm\n", made.size[0], made.size[1], made.size[2]);
+    for (size_t b = 0; b < made.volumes.size(); ++b)
+        std::printf("body %-28s %10.1f mm3\n", made.fitted.printable.bodies[b].name.c_str(), made.volumes[b]);
+    const printable::Check& check = *made.check;
+    for (const std::string& note : made.fitted.printable.notes)
         std::printf("note: %s\n", note.c_str());
     for (const std::string& name : check.invalid)
         std::printf("INVALID solid: %s\n", name.c_str());
@@ -111,19 +94,20 @@ int run(const PrintableArguments& args)
             "IN PIECES: %s (a cut went through it: a joint turning the wrong way round, or a "
             "part in the way)\n",
             body.c_str());
-    std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, gap, check.where.c_str());
+    std::printf("minimum clearance %.3f mm (gap %.2f mm): %s\n", check.clearance, made.gap,
+                check.where.c_str());
     io::replaceSetOf((std::filesystem::path(args.output) / "report.json").string());  // bodies since renamed
-    std::vector<std::string> written = io::writePrintFiles(onTheBed, args.output);
+    std::vector<std::string> written =
+        io::writePrintFiles(printable::onTheBed(made.fitted.printable, made.fitted.turned), args.output);
     for (const std::string& path : written)
         std::printf("wrote %s\n", path.c_str());
     const std::string reportPath = (std::filesystem::path(args.output) / "report.json").string();
     written.push_back(reportPath);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const bool ok = check.invalid.empty() && check.loose.empty() && check.clearance >= gap - 0.01;
-    io::writeJsonFile(reportPath, report(fitted, volumes, size, check, gap, ok, seconds, written));
+    io::writeJsonFile(reportPath, reportJson(made, seconds, written));
     std::printf("wrote %s\n", reportPath.c_str());
     files.commit();
-    return ok ? 0 : 1;
+    return made.ok() ? 0 : 1;
 }
 
 }  // namespace
@@ -137,8 +121,11 @@ void addPrintableCommand(CLI::App& app)
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->output, "folder for assembly.* and one file per body")
         ->capture_default_str();
+    std::vector<std::string> printers;
+    for (const api::PrinterProfile& p : api::printerProfiles())
+        printers.push_back(p.id);
     cmd->add_option("--printer", args->printer, "printer profile: fdm (0.4 mm gap) or resin (0.2 mm)")
-        ->check(CLI::IsMember({"fdm", "resin"}))
+        ->check(CLI::IsMember(printers))
         ->capture_default_str();
     cmd->add_option("--gap", args->gap, "clearance between parts in mm (overrides the printer's)")
         ->check(between(0.01, 10.0));

@@ -1,5 +1,6 @@
 // Bindings of print-in-place geometry (thesis 4.5): bodies cross as BREP text, which FreeCAD's Part module
 // reads (Part.Shape().importBrepFromString).
+#include "Api/PrintInPlace.h"
 #include "Bindings.h"
 #include "IO/Json.h"
 #include "IO/PrintFiles.h"
@@ -8,10 +9,8 @@
 #include "Printable/Checks.h"
 #include "Printable/Motion.h"
 
-#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 
 #include <pybind11/stl.h>
@@ -40,14 +39,6 @@ auto geometry(Work&& work)
     }
 }
 
-/// The model solved and scaled, or fitted to a build volume, and its printable bodies (RuntimeError naming
-/// what conflicts).
-printable::Fitted made(const py::object& model, double gap, double scale, const Fit& fit)
-{
-    const function::Model read = io::readWorkslike(toJson(model));
-    return geometry([&] { return printable::printed(read, {gap}, scale, fit); });
-}
-
 std::string brep(const TopoDS_Shape& shape)
 {
     std::ostringstream text;
@@ -55,28 +46,28 @@ std::string brep(const TopoDS_Shape& shape)
     return text.str();
 }
 
-/// {"bodies": [{"name", "part", "brep", "volume"}], "sweeps": [brep], "notes", "scale", "size", "clearance",
-/// "where", "invalid", "loose"}
-py::dict printableBodies(const py::object& model, double gap, bool check, double scale, const Fit& fit)
+/// The print-in-place job (App/Api/PrintInPlace.h) without the GIL: {"bodies": [{"name", "part", "brep",
+/// "volume"}], "sweeps": [brep], "notes", "scale", "turned", "size", "gap", and when checked "clearance",
+/// "where", "invalid", "loose", "too_close", "ok"}.
+py::dict printableBodies(const py::object& model, double gap, bool check, double scale, const Fit& fit,
+                         double partSeconds)
 {
-    printable::Fitted m = made(model, gap, scale, fit);
-    printable::Check c;
-    if (check) {  // joint geometry placed where it clears, as checked
-        const printable::Checked placed =
-            geometry([&] { return printable::placedByCheck(m.model, m.printable, {gap}); });
-        m.printable = placed.printable;
-        c = placed.check;
-    }
-    const printable::Printable& p = m.printable;
+    api::PrintJob job;
+    job.model = toJson(model);
+    job.gap = gap;
+    job.check = check;
+    job.scale = scale;
+    job.fit = fit;
+    job.partSeconds = partSeconds;
+    const api::PrintReport made = geometry([&] { return api::printInPlace(job); });
+    const printable::Printable& p = made.fitted.printable;
     py::list bodies, sweeps;
-    for (const printable::Body& b : p.bodies) {
-        GProp_GProps volume;
-        BRepGProp::VolumeProperties(b.shape, volume);
+    for (size_t b = 0; b < p.bodies.size(); ++b) {
         py::dict body;
-        body["name"] = b.name;
-        body["part"] = b.part;
-        body["brep"] = brep(b.shape);
-        body["volume"] = volume.Mass();
+        body["name"] = p.bodies[b].name;
+        body["part"] = p.bodies[b].part;
+        body["brep"] = brep(p.bodies[b].shape);
+        body["volume"] = made.volumes[b];
         bodies.append(body);
     }
     for (const TopoDS_Shape& s : p.sweeps)
@@ -85,14 +76,17 @@ py::dict printableBodies(const py::object& model, double gap, bool check, double
     out["bodies"] = bodies;
     out["sweeps"] = sweeps;
     out["notes"] = p.notes;
-    out["scale"] = m.scale;
-    out["turned"] = m.turned;
-    out["size"] = printable::sizeOf(printable::onTheBed(p, m.turned));
-    if (check) {
-        out["clearance"] = c.clearance;
-        out["where"] = c.where;
-        out["invalid"] = c.invalid;
-        out["loose"] = c.loose;
+    out["scale"] = made.fitted.scale;
+    out["turned"] = made.fitted.turned;
+    out["size"] = made.size;
+    out["gap"] = made.gap;
+    if (made.check) {
+        out["clearance"] = made.check->clearance;
+        out["where"] = made.check->where;
+        out["invalid"] = made.check->invalid;
+        out["loose"] = made.check->loose;
+        out["too_close"] = made.tooClose();
+        out["ok"] = made.ok();
     }
     return out;
 }
@@ -150,10 +144,22 @@ void bindPrintable(py::module_& m)
         "{part name: three rows (r0, r1, r2, translation)}.");
     m.def("printable", &printableBodies, py::arg("model"), py::arg("gap") = 0.4, py::arg("check") = true,
           py::arg("scale") = 1.0, py::arg("fit") = py::none(),
+          py::arg("part_seconds") = printable::Printer{}.partSeconds,
           "Print-in-place bodies of a works-like model (solved first) at `scale`, or at the largest\n"
           "scale that fits the build volume `fit` (x, y, z mm): {'bodies': [{'name', 'part', 'brep',\n"
           "'volume'}], 'sweeps', 'notes', 'scale', 'turned' (a quarter about z to fit), 'size' (x, y, z\n"
-          "mm on the bed), and with check 'clearance' (mm), 'where', 'invalid', 'loose'}.");
+          "mm on the bed), 'gap', and with check 'clearance' (mm), 'where', 'invalid', 'loose',\n"
+          "'too_close' (nearer than the gap), 'ok' (the print passes)}. part_seconds: what OpenCASCADE\n"
+          "may take on one part or joint at each step before a RuntimeError naming it.");
+    m.def(
+        "printer_profiles",
+        [] {
+            py::list out;
+            for (const api::PrinterProfile& p : api::printerProfiles())
+                out.append(py::dict(py::arg("id") = p.id, py::arg("name") = p.name, py::arg("gap") = p.gap));
+            return out;
+        },
+        "The printer profiles: [{'id', 'name', 'gap' (mm)}], FDM and resin.");
     m.def(
         "printable_body_names",
         [](const py::object& model) { return printable::bodyNames(io::readWorkslike(toJson(model))); },

@@ -9,7 +9,7 @@ from freecad.fabguide import background, messages, preferences, properties
 from freecad.fabguide.function import mechanism
 from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
-PRINTERS = {"FDM (0.4 mm gap)": 0.4, "Resin (0.2 mm gap)": 0.2, "Custom": None}
+PRINTERS = dict([(p["name"], p["gap"]) for p in fabguide_core.printer_profiles()] + [("Custom", None)])
 
 
 class PrintableError(ValueError):
@@ -96,7 +96,7 @@ class Printable(properties.Proxy):
                                                            "went through them, a joint turning the wrong way round or "
                                                            "a part in the way").format(
                     obj.Label, "; ".join(data["loose"])))
-            if data["clearance"] < obj.Gap.Value - 0.01:
+            if data["too_close"]:
                 FreeCAD.Console.PrintWarning(translate("FabGuide", "{}: parts come within {:.3f} mm of each other "
                                                                    "({}), less than the {} mm gap\n").format(
                     obj.Label, data["clearance"], data["where"], obj.Gap.Value))

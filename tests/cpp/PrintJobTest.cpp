@@ -1,0 +1,73 @@
+// The print-in-place use case (App/Api/PrintInPlace.h) on the bundled box with a hinged lid: the printer's
+// gap unless the job gives one, every body measured, the size on the bed, and the one pass rule both the
+// CLI's exit code and FreeCAD's Printable read.
+#include "Api/PrintInPlace.h"
+#include "IO/Json.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace fabguide;
+
+namespace {
+
+api::PrintJob boxWithLid()
+{
+    api::PrintJob job;
+    job.model = io::readJsonFile(std::string(FABGUIDE_SOURCE_DIR) + "/examples/box-with-lid.workslike.json");
+    return job;
+}
+
+}  // namespace
+
+TEST(PrintJobTest, TheBoxPrintsWithThePrintersGapEveryBodyMeasured)
+{
+    api::PrintJob job = boxWithLid();
+    job.printer = "resin";
+    const api::PrintReport made = api::printInPlace(job);
+    EXPECT_EQ(made.gap, 0.2);
+    ASSERT_TRUE(made.check);
+    EXPECT_TRUE(made.ok()) << made.check->where;
+    ASSERT_EQ(made.volumes.size(), made.fitted.printable.bodies.size());
+    for (double v : made.volumes)
+        EXPECT_GT(v, 0);
+    EXPECT_EQ(made.size, printable::sizeOf(printable::onTheBed(made.fitted.printable, made.fitted.turned)));
+}
+
+TEST(PrintJobTest, AGapGivenOverridesThePrinterAndAnUnknownPrinterIsNamed)
+{
+    api::PrintJob job = boxWithLid();
+    job.check = false;
+    job.gap = 0.3;
+    const api::PrintReport made = api::printInPlace(job);
+    EXPECT_EQ(made.gap, 0.3);
+    EXPECT_FALSE(made.check);
+    EXPECT_FALSE(made.ok());  // nothing checked: not known to pass
+    job.gap.reset();
+    job.printer = "sls";
+    try {
+        api::printInPlace(job);
+        FAIL() << "an unknown printer was taken";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'sls'"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PrintJobTest, APrintPassesWithNoInvalidSolidNoBodyInPiecesAndPartsAGapApart)
+{
+    api::PrintReport r;
+    r.gap = 0.4;
+    r.check = printable::Check{};
+    r.check->clearance = 0.395;  // a hundredth of a mm to spare
+    EXPECT_TRUE(r.ok());
+    r.check->clearance = 0.385;
+    EXPECT_TRUE(r.tooClose());
+    EXPECT_FALSE(r.ok());
+    r.check->clearance = 1;
+    r.check->loose = {"lever: 2 pieces"};
+    EXPECT_FALSE(r.ok());
+    r.check->loose.clear();
+    r.check->invalid = {"lid"};
+    EXPECT_FALSE(r.ok());
+}
