@@ -225,8 +225,8 @@ Exploration minWastage(const DesignSpace& design, const MaterialSpace& material,
     const auto deadline = started + seconds(std::max(0.0, options.timeLimit));
     Exploration exploration;
     // The design as it is gets a quarter of the time: suggestions are measured against its best layout.
-    exploration.start = layOut(design, material, options.seed, std::min(10.0, options.timeLimit / 4),
-                               options.cancel, options.kept);
+    exploration.start =
+        layOut(design, material, options.seed, options.timeLimit / 4, options.cancel, options.kept);
     std::vector<Entry> entries{{exploration.start, orderOf(exploration.start.layout), {exploration.start}}};
     std::vector<Entry> pool;
     // Saving a sheet first, in a fifth of the time limit: the rounds then improve on the designs it found.

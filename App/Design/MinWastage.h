@@ -27,8 +27,10 @@ struct MinWastageOptions {
     int suggestions = 3;
     int threads = 2;         ///< 1 runs everything on the caller's thread
     std::uint64_t seed = 1;  ///< same seed, same suggestions (unless the time limit cuts the search)
-    double timeLimit = 8;    ///< seconds; the search ends with what it has found
-    bool guided = true;      ///< shrink the layout's locking chains; false: random sizes (baseline)
+    /// Seconds; the search ends with what it has found. Every stage also ends by its work (rounds, tasks,
+    /// iterations): a limit well beyond that work makes the suggestions the seed's alone, at any load.
+    double timeLimit = 8;
+    bool guided = true;  ///< shrink the layout's locking chains; false: random sizes (baseline)
     const std::atomic<bool>* cancel = nullptr;
     /// The layout the design's file keeps: the user's design laid out by it besides the search.
     KeptLayout kept;

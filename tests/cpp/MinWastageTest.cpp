@@ -127,7 +127,7 @@ TEST_F(MinWastageTest, LockingChainsGiveSizesTheDesignCanShrink)
 TEST_F(MinWastageTest, SuggestionsWasteLessOnNoMoreSheetsAndKeepEveryConstraint)
 {
     MinWastageOptions options;
-    options.timeLimit = 60;
+    options.timeLimit = 600;  // a backstop: the search ends by its work (rounds, tasks, iterations)
     const Exploration e = minWastage(design, material, options);
     ASSERT_FALSE(e.suggestions.empty());
     EXPECT_LE(e.suggestions.size(), 3u);
@@ -156,7 +156,7 @@ TEST_F(MinWastageTest, SuggestionsWasteLessOnNoMoreSheetsAndKeepEveryConstraint)
 TEST_F(MinWastageTest, TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo)
 {
     MinWastageOptions options;
-    options.timeLimit = 60;
+    options.timeLimit = 600;  // a backstop: the search ends by its work (rounds, tasks, iterations)
     options.seed = 7;
     options.threads = 1;
     const Exploration one = minWastage(design, material, options);
@@ -202,7 +202,7 @@ TEST(ParametricDesignTest, IsImprovedThroughItsGradients)
         Eigen::Vector2d(300, 170), Eigen::Vector2d(200, 100), Eigen::Vector2d(400, 300));
     const MaterialSpace material({{"mdf", "mdf", 900, 600, 12, 1}}, {1.0, 0, 0, 0}, design.parts());
     MinWastageOptions options;
-    options.timeLimit = 60;
+    options.timeLimit = 600;  // a backstop: the search ends by its work (rounds, tasks, iterations)
     options.rounds = 2;
     const Exploration e = minWastage(design, material, options);
     ASSERT_FALSE(e.suggestions.empty());
