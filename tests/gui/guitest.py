@@ -151,17 +151,45 @@ def report_view():
 
 
 def screenshot(name, window=None):
-    """Grab the FreeCAD window (panels, toolbars), or another top-level `window` (a dialog), into
-    $FABGUIDE_SCREENSHOTS/name.png; returns the path. The 3-D view is OpenGL, which a window grab leaves blank:
-    see view_image. With no task panel open, the Model tab is shown."""
+    """Grab the FreeCAD window (panels, toolbars, and the 3-D view as users see it), or another top-level
+    `window` (a dialog), into $FABGUIDE_SCREENSHOTS/name.png; returns the path. With no task panel open, the Model
+    tab is shown."""
     path = _path(name)
     if window is None and not FreeCADGui.Control.activeDialog():
         show_model_tab()  # FreeCAD 1.0 leaves the empty Tasks tab in front when a panel closes
     settle()
     FreeCADGui.updateGui()
-    if not (window or FreeCADGui.getMainWindow()).grab().save(path):
+    grabbed = (window or FreeCADGui.getMainWindow()).grab()
+    if window is None:
+        with_3d_view(grabbed, path)
+    if not grabbed.save(path):
         raise RuntimeError("could not save screenshot " + path)
     return path
+
+
+def with_3d_view(grabbed, scratch):
+    """The active 3-D view drawn into a grab of the main window where it lies: a window grab leaves OpenGL
+    blank, so the view renders itself (saveImage, as view_image) and is painted over its place."""
+    document = FreeCADGui.activeDocument()
+    view = document.activeView() if document else None
+    if not hasattr(view, "saveImage"):
+        return
+    main = FreeCADGui.getMainWindow()
+    gl = [w for w in main.findChildren(QtGui.QWidget)
+          if w.metaObject().className() in ("QOpenGLWidget", "QGLWidget", "Gui::View3DInventorViewer")
+          and w.isVisible() and w.width() > 50]
+    if not gl:
+        return
+    widget = max(gl, key=lambda w: w.width() * w.height())
+    rendered = scratch + ".view.png"
+    view.saveImage(rendered, widget.width(), widget.height(), "Current")
+    image = QtGui.QImage(rendered)
+    os.remove(rendered)
+    if image.isNull():
+        return
+    painter = QtGui.QPainter(grabbed)
+    painter.drawImage(widget.mapTo(main, QtCore.QPoint(0, 0)), image)
+    painter.end()
 
 
 REFERENCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference")
