@@ -88,9 +88,48 @@ struct Joint {
     /// in-plane offsets from its cuboid's low corner (along the two axes after the normal, cyclically).
     Face pivotFace, basePivotFace;
     std::array<double, 2> pivot{}, basePivot{};
-    bool turns() const { return type == Type::Hinge || type == Type::SlidingHinge; }
-    bool slides() const { return type == Type::Slide || type == Type::SlidingHinge; }
+    bool turns() const;   ///< about an edge: hinges and sliding hinges (JointKind::turns)
+    bool slides() const;  ///< along an axis: slides and sliding hinges (JointKind::slides)
 };
+
+/// Each joint kind, once: the name the formats, the bindings and the workbench give it, and how it moves. A
+/// new kind is an entry here, its geometry (App/Printable/Joints.cpp) and its test.
+struct JointKind {
+    Joint::Type type;
+    const char* name;
+    bool turns, slides;
+};
+
+inline constexpr std::array<JointKind, 5> kJointKinds{
+    {{Joint::Type::Hinge, "hinge", true, false},
+     {Joint::Type::Slide, "slide", false, true},
+     {Joint::Type::SlidingHinge, "sliding_hinge", true, true},
+     {Joint::Type::DoublePivot, "double_pivot", false, false},
+     {Joint::Type::Fixed, "fixed", false, false}}};
+
+static_assert(
+    [] {
+        for (size_t k = 0; k < kJointKinds.size(); ++k)
+            if (static_cast<size_t>(kJointKinds[k].type) != k)
+                return false;
+        return true;
+    }(),
+    "kJointKinds lists the kinds in Joint::Type's order");
+
+inline const JointKind& kindOf(Joint::Type type)
+{
+    return kJointKinds[static_cast<size_t>(type)];  // in Type's order
+}
+
+inline bool Joint::turns() const
+{
+    return kindOf(type).turns;
+}
+
+inline bool Joint::slides() const
+{
+    return kindOf(type).slides;
+}
 
 /// How a configuration poses one joint: the angle (degrees) of a hinge, the offset (mm) of a slide, both for
 /// a sliding hinge; a double pivot's turn (angle) about its pole.

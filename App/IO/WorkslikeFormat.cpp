@@ -130,13 +130,6 @@ int axisNamed(const nlohmann::json& value, const std::string& path, const char* 
     return static_cast<int>(axis - std::begin(kAxes));
 }
 
-const std::map<std::string, function::Joint::Type> kJointTypes{
-    {"hinge", function::Joint::Type::Hinge},
-    {"slide", function::Joint::Type::Slide},
-    {"sliding_hinge", function::Joint::Type::SlidingHinge},
-    {"double_pivot", function::Joint::Type::DoublePivot},
-    {"fixed", function::Joint::Type::Fixed}};
-
 /// A conflict's kind as the report says it: a relationship's or joint's by the type this format gives it.
 std::string conflictKindName(function::ConflictKind kind)
 {
@@ -227,13 +220,16 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
         if (joint.base == joint.part)
             throw FormatError(j.pathOf("base"), "a part cannot hang on itself");
     }
-    const auto known = kJointTypes.find(type);
-    if (known == kJointTypes.end())
-        throw FormatError(
-            j.pathOf("type"),
-            "\"" + type +
-                "\" is not a joint this FabGuide knows (hinge, slide, sliding_hinge, double_pivot, fixed)");
-    joint.type = known->second;
+    const auto known = std::find_if(function::kJointKinds.begin(), function::kJointKinds.end(),
+                                    [&](const function::JointKind& k) { return k.name == type; });
+    if (known == function::kJointKinds.end()) {
+        std::string kinds;
+        for (const function::JointKind& k : function::kJointKinds)
+            kinds += (kinds.empty() ? "" : ", ") + std::string(k.name);
+        throw FormatError(j.pathOf("type"),
+                          "\"" + type + "\" is not a joint this FabGuide knows (" + kinds + ")");
+    }
+    joint.type = known->type;
     if (joint.type == function::Joint::Type::Fixed && joint.base < 0)
         throw FormatError(j.pathOf("base"), "a fixed joint holds its part to a base part");
     if (joint.type == function::Joint::Type::DoublePivot)
@@ -781,9 +777,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();
     for (const function::Joint& j : model.joints) {
         nlohmann::json joint = {{"name", j.name}, {"part", model.parts[j.part].name}};
-        for (const auto& [name, type] : kJointTypes)
-            if (type == j.type)
-                joint["type"] = name;
+        joint["type"] = function::kindOf(j.type).name;
         if (j.base >= 0)
             joint["base"] = model.parts[j.base].name;
         if (j.turns())

@@ -40,6 +40,16 @@ void bindFunction(py::module_& m)
         "FormatError (a ValueError) naming a bad field, e.g. \"relationships[0].faces[1]: no cuboid named "
         "'bodyy'\".");
     m.def(
+        "joint_kinds",
+        [] {
+            py::list kinds;
+            for (const function::JointKind& k : function::kJointKinds)
+                kinds.append(py::dict(py::arg("name") = k.name, py::arg("turns") = k.turns,
+                                      py::arg("slides") = k.slides));
+            return kinds;
+        },
+        "Every joint kind once, as the core knows it: [{'name', 'turns', 'slides'}].");
+    m.def(
         "solve", &solve, py::arg("model"),
         "Solve a works-like model (a *.workslike.json dict) for the least change that satisfies its "
         "relationships;\n"

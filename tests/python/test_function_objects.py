@@ -184,6 +184,17 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
     assert touched(doc) == []
 
 
+def test_every_joint_kind_the_core_knows_is_a_joint_the_workbench_makes_and_moves_as_the_core_does(doc):
+    core = {k["name"]: (k["turns"], k["slides"]) for k in fabguide_core.joint_kinds()}
+    assert set(core) == set(joints.KINDS)
+    lid, body = box(doc, "Lid", (0, 0, 40), (100, 60, 45)), box(doc, "Body", (0, 0, 0), (100, 60, 40))
+    doc.recompute()
+    lid_part, body_part = parts.create(doc, [lid], "Lid part"), parts.create(doc, [body], "Body part")
+    for name, (turns, slides) in core.items():
+        made = joints.create(doc, name, lid_part, base=body_part, axis="z" if slides else None)
+        assert (joints.turns(made), joints.slides(made)) == (turns, slides), name
+
+
 def test_the_hint_after_a_conflict_follows_the_kinds_the_core_gives_not_the_names():
     def hint(parts, locks=()):
         model = {"format": "fabguide.workslike", "version": 1, "locks": list(locks),

@@ -45,7 +45,7 @@ def pose_properties(joint):
     """{property: (type, tip)} of a joint's pose in a configuration: an angle (degrees) for what turns, an offset
     (mm) for what slides; properties of their own, so they take units and expressions (a spreadsheet's cell)."""
     posed = {}
-    if joints.kind(joint) in ("hinge", "sliding_hinge", "double_pivot"):
+    if joints.angled(joint):
         posed[joint.Name + "Angle"] = ("App::PropertyAngle", QT_TRANSLATE_NOOP(
             "App::Property", "How far the joint turns its part (right-handed about its edge's +x/+y/+z direction)"))
     if joints.slides(joint):
@@ -103,7 +103,8 @@ def as_dict(obj):
 
 def pose_dict(joint, angle, offset, pole):
     """A joint's pose as *.workslike.json writes it."""
-    kind = joints.kind(joint)
-    return ({"angle": angle, "offset": offset} if kind == "sliding_hinge"
-            else {"angle": angle, "pole": list(pole)} if kind == "double_pivot"
-            else angle if kind == "hinge" else offset)
+    if joints.kind(joint) == "double_pivot":
+        return {"angle": angle, "pole": list(pole)}
+    if joints.turns(joint) and joints.slides(joint):
+        return {"angle": angle, "offset": offset}
+    return angle if joints.turns(joint) else offset

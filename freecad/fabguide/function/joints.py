@@ -2,10 +2,13 @@
 axis, a sliding hinge does both; a double pivot links a point on a face of the part to a point on a coplanar face
 of its Base by a rigid link (the solve places both pivots, 4.3.6); a fixed joint holds the part rigidly to its Base
 (no poses; print-in-place fuses the two). A joint may hang on another moving part (its Base), which carries it."""
+from freecad.fabguide.core import fabguide_core
 from freecad.fabguide import properties
 from freecad.fabguide import cuboids
 from freecad.fabguide.function import parts
 from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
+
+MOTIONS = {k["name"]: k for k in fabguide_core.joint_kinds()}  # how each kind moves, as the core says
 
 AXES = ["x", "y", "z"]
 
@@ -22,10 +25,10 @@ class Joint(properties.Proxy):
         add(obj, "App::PropertyLink", "Base", "Joint",
             QT_TRANSLATE_NOOP("App::Property", "The part it hangs on, which carries it along when it moves; empty: the "
                                                "ground"))
-        if self.KIND in ("hinge", "sliding_hinge"):
+        if MOTIONS[self.KIND]["turns"]:
             add(obj, "App::PropertyLinkSub", "Edge", "Joint",
                 QT_TRANSLATE_NOOP("App::Property", "The edge of one of the part's boxes it turns about"))
-        if self.KIND in ("slide", "sliding_hinge"):
+        if MOTIONS[self.KIND]["slides"]:
             add(obj, "App::PropertyEnumeration", "Axis", "Joint",
                 QT_TRANSLATE_NOOP("App::Property", "The direction it slides along"), AXES)
         if self.KIND == "double_pivot":
@@ -99,11 +102,16 @@ def kind(obj):
 
 def turns(obj):
     """Turns about an edge (hinges)."""
-    return kind(obj) in ("hinge", "sliding_hinge")
+    return MOTIONS[kind(obj)]["turns"]
 
 
 def slides(obj):
-    return kind(obj) in ("slide", "sliding_hinge")
+    return MOTIONS[kind(obj)]["slides"]
+
+
+def angled(obj):
+    """Posed by an angle: it turns about an edge, or (a double pivot) about its pole."""
+    return turns(obj) or kind(obj) == "double_pivot"
 
 
 def moves(obj):

@@ -58,7 +58,7 @@ class ConfigurationsPanel:
             offset.setToolTip(translate("FabGuide", "Offset along the slide"))
             moves.setEnabled(joints.moves(joint))
             grid.addWidget(moves, 2 * row, 0, 1, 3)
-            for column, box, used in ((1, angle, joints.kind(joint) not in ("slide", "fixed")),
+            for column, box, used in ((1, angle, joints.angled(joint)),
                                       (2, offset, joints.slides(joint))):
                 box.setEnabled(used)
                 box.setVisible(used)
