@@ -1,5 +1,5 @@
-"""docs/formats.md names every key the tools write: a layout from `fabguide pack` (with saw cuts and a shared line)
-and the summary of `fabguide optimise`, read from real runs on the bundled examples and compared with the keys the
+"""docs/formats.md names every key the tools write: a layout from `fabguide pack` (with saw cuts and a shared line),
+the summary of `fabguide optimise`, a solve's report with a conflict and a print's report.json, read from real runs on the bundled examples and compared with the keys the
 document's sections name in `code`."""
 import json
 import os
@@ -66,3 +66,26 @@ def test_every_key_of_an_optimise_summary_is_in_formats_md(fabguide_cli, source_
     with open(os.path.join(source_dir, "examples", "coffee-table.flatpack.json"), encoding="utf-8") as f:
         result = fabguide_core.optimise(json.load(f), time_limit=1, rounds=1)
     assert set(result) == set(summary)
+
+
+def test_every_key_of_a_solve_report_with_a_conflict_is_in_formats_md(source_dir):
+    from freecad.fabguide.core import fabguide_core
+
+    def part(name, low, high):
+        return {"name": name, "cuboids": [{"name": name, "min": low, "max": high}]}
+
+    model = {"format": "fabguide.workslike", "version": 1, "locks": ["a.right", "b.left"],
+             "parts": [part("a", [0, 0, 0], [10, 10, 10]), part("b", [8, 0, 0], [20, 10, 10])]}
+    solved = fabguide_core.solve(model)
+    assert solved["report"]["conflicts"], "two locked parts overlapping conflict"
+    assert keys(solved["report"]) - named(section(source_dir, "`*.workslike.json`")) == set()
+    kinds = {c["kind"] for c in solved["report"]["conflicts"]}
+    assert kinds == {"lock", "no_overlap"} and kinds <= named(section(source_dir, "`*.workslike.json`"))
+
+
+def test_every_key_of_a_printable_report_is_in_formats_md(source_dir, tmp_path):
+    printer = os.path.join(os.environ["FABGUIDE_BUILD_DIR"], "fabguide-print")
+    run([printer, "printable", os.path.join(source_dir, "examples", "box-with-lid.workslike.json"), "-o",
+         str(tmp_path)])
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert keys(report) - named(section(source_dir, "Print-in-place files")) == set()
