@@ -1,6 +1,6 @@
 """docs/formats.md names every key the tools write: a layout from `fabguide pack` (with saw cuts and a shared line),
-the summary of `fabguide optimise`, a solve's report with a conflict and a print's report.json, read from real runs on the bundled examples and compared with the keys the
-document's sections name in `code`."""
+the summary of `fabguide optimise`, a solve's report with a conflict and a print's report.json, read from real
+runs on the bundled examples and compared with the keys the document's sections name in `code`."""
 import json
 import os
 import re
