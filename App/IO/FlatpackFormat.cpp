@@ -249,6 +249,16 @@ void readConstraint(Design& design, const nlohmann::json& json, const std::strin
     c.noOthers();
 }
 
+/// A grain as the formats name it: -1 for "free", 0-2 for "x", "y", "z"; nullopt for anything else.
+std::optional<int> grainAxisNamed(const std::string& grain)
+{
+    if (grain == "free")
+        return -1;
+    if (grain.size() == 1 && grain[0] >= 'x' && grain[0] <= 'z')
+        return grain[0] - 'x';
+    return std::nullopt;
+}
+
 material::DesignBoard readPart(const nlohmann::json& json, const std::string& path,
                                const std::vector<double>& thicknesses)
 {
@@ -483,15 +493,6 @@ const char* nameOf(material::Exploration::NoSheetSaved why)
 
 }  // namespace
 
-std::optional<int> grainAxisNamed(const std::string& grain)
-{
-    if (grain == "free")
-        return -1;
-    if (grain.size() == 1 && grain[0] >= 'x' && grain[0] <= 'z')
-        return grain[0] - 'x';
-    return std::nullopt;
-}
-
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
 {
     checkNumbers(document);
@@ -533,6 +534,27 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
     if (satisfied == Satisfied::Required)
         checkSatisfied(design);
     return result;
+}
+
+ParametricParts readParametricParts(const nlohmann::json& parts)
+{
+    if (!parts.is_array())
+        throw FormatError("parts", "must be a list of parts");
+    ParametricParts read;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        const Fields part(parts[i], at("parts", i));
+        read.kinds.push_back({part.text("id"), part.integer("quantity", 1)});
+        if (read.kinds.back().quantity < 1)
+            throw FormatError(part.pathOf("quantity"), "must be at least 1");
+        const std::string grain = part.text("grain", "free");
+        const std::optional<int> axis = grainAxisNamed(grain);
+        if (!axis)
+            throw FormatError(part.pathOf("grain"),
+                              "must be \"free\", \"x\", \"y\" or \"z\", got \"" + grain + "\"");
+        read.grainAxes.push_back(*axis);
+        part.noOthers();
+    }
+    return read;
 }
 
 material::Design forSuggestions(const FlatpackDesign& f)

@@ -51,9 +51,13 @@ struct ConstraintError : FormatError {
 /// Whether a design read must already satisfy its constraints.
 enum class Satisfied { Required, NotRequired };
 
-/// A part's "grain" (docs/formats.md): the model axis "x", "y" or "z" it runs along (0, 1, 2), or -1 for
-/// "free"; nothing for any other word.
-std::optional<int> grainAxisNamed(const std::string& grain);
+/// The parts of a parametric design (thesis 5.4.2.2), [{id, quantity (1), grain ("free", "x", "y" or "z")}]:
+/// their kinds and each one's grain axis (-1: free). FormatError naming the field (parts[2].grain).
+struct ParametricParts {
+    std::vector<material::PartKind> kinds;
+    std::vector<int> grainAxes;
+};
+ParametricParts readParametricParts(const nlohmann::json& parts);
 
 /// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, and, unless told
 /// otherwise, when the design does not satisfy its own constraints (naming them).

@@ -107,23 +107,12 @@ py::object optimiseParametric(const py::list& parts,
                               double timeLimit, int rounds,
                               const std::function<void(double, double)>& progress, CancelToken* cancel)
 {
-    std::vector<material::PartKind> kinds;
-    std::vector<int> grainAxes;
-    for (const py::handle& p : parts) {
-        kinds.push_back(
-            {p["id"].cast<std::string>(), p.contains("quantity") ? p["quantity"].cast<int>() : 1});
-        const std::string grain = p.contains("grain") ? p["grain"].cast<std::string>() : "free";
-        const std::optional<int> axis = io::grainAxisNamed(grain);
-        if (!axis)
-            throw io::FormatError("parts[" + std::to_string(grainAxes.size()) +
-                                  "].grain: must be \"free\", \"x\", \"y\" or \"z\", got \"" + grain + "\"");
-        grainAxes.push_back(*axis);
-    }
+    const io::ParametricParts read = io::readParametricParts(toJson(parts));
     const auto toVector = [](const std::vector<double>& v) {
         return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
     };
     const material::ParametricDesign design = material::parametricBoards(
-        kinds, grainAxes,
+        read.kinds, read.grainAxes,
         [sides](const Eigen::VectorXd& X) {
             const std::vector<double> s = sides(std::vector<double>(X.data(), X.data() + X.size()));
             return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(s.data(), s.size()));

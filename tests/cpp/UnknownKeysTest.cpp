@@ -224,3 +224,25 @@ TEST(UnknownKeys, EveryObjectOfALayoutRefusesAKeyItDoesNotKnow)
         }
     EXPECT_GT(sawn, 0u) << "no layout with saw cuts was spoilt";
 }
+
+TEST(UnknownKeys, AParametricDesignsPartsRefuseWhatTheyDoNotKnowNamingTheField)
+{
+    const json parts = json::parse(R"([{"id": "side", "quantity": 2, "grain": "z"}, {"id": "bottom"}])");
+    const io::ParametricParts read = io::readParametricParts(parts);
+    ASSERT_EQ(read.kinds.size(), 2u);
+    EXPECT_EQ(read.kinds[0].quantity, 2);
+    EXPECT_EQ(read.grainAxes, (std::vector<int>{2, -1}));
+    const auto fieldOf = [&](const char* key, const json& value) {
+        json spoilt = parts;
+        spoilt[1][key] = value;
+        try {
+            io::readParametricParts(spoilt);
+        } catch (const io::FormatError& e) {
+            return e.field();
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(fieldOf("grain", "Y"), "parts[1].grain");
+    EXPECT_EQ(fieldOf("quantity", 0), "parts[1].quantity");
+    EXPECT_EQ(fieldOf("quantitty", 1), "parts[1].quantitty");
+}
