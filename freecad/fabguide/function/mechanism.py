@@ -12,6 +12,7 @@ from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 SATISFIED = "Satisfied"
 STALE = "Unknown: the mechanism did not solve (see its Status)"
+CONFLICT = "Conflict: "  # a relationship's Status begins so when it takes part in a conflict
 
 
 
@@ -187,7 +188,7 @@ def solve(obj):
     for rel in members(obj, relationships.is_relationship):
         others = ", ".join(n for n in conflict if n != rel.Label) or "it cannot hold as the boxes are drawn"
         status = (satisfied(rel, report["notes"]) if report["solved"] else
-                  "Conflict: " + others if rel.Label in conflict else "")
+                  CONFLICT + others if rel.Label in conflict else "")
         if rel.Status != status:
             rel.Status = status
         relationships.keep_pairs(rel, by_name.get(rel.Label, {}), {box.Label: box for box in boxes(obj)})
@@ -197,7 +198,7 @@ def solve(obj):
     for note in report["notes"] if report["solved"] else []:
         FreeCAD.Console.PrintMessage("{}: {}\n".format(obj.Label, note))
     if not report["solved"]:
-        obj.Status = "Conflict: " + ", ".join(conflict)
+        obj.Status = CONFLICT + ", ".join(conflict)
         FreeCAD.Console.PrintWarning(translate("FabGuide", "{}: these cannot hold together: {}. {}\n").format(
             obj.Label, ", ".join(conflict), what_to_do(report["conflicts"])))
         for note in report.get("notes", []):
@@ -245,6 +246,11 @@ def refuse(obj, report):
     obj.Status = "Edit refused: {} cannot hold together; the boxes are as they were".format(
         ", ".join(report["conflict"]))
     FreeCAD.Console.PrintWarning("{}: {}\n".format(obj.Label, obj.Status))
+
+
+def in_conflict(rel):
+    """Whether the last solve found the relationship in a conflict."""
+    return rel.Status.startswith(CONFLICT)
 
 
 def unsolved(obj, error):

@@ -62,7 +62,7 @@ def add(doc, kind, boxes, label=None, **values):
         obj = design.add_constraint(target, kind, label, **values)
         viewproviders.ViewProviderDesignConstraint(obj.ViewObject)
         doc.recompute()
-    if "Broken" in obj.Status:
+    if design.broken(obj):
         tell(translate("FabGuide", "{} does not hold for the design as it is: {}").format(obj.Label, obj.Status))
     return obj
 

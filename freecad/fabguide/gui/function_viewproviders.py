@@ -157,7 +157,7 @@ def show_conflicts(mech):
     overlap, walls too thin), in red; all others in their own colour."""
     red = set()
     for rel in mechanism.members(mech, relationships.is_relationship):
-        if rel.Status.startswith("Conflict"):
+        if mechanism.in_conflict(rel):
             red.update(b.Name for p in relationship_parts(rel) for b in parts.boxes(p))
     blamed = set(getattr(mech, "Blamed", []))  # overlapping parts, thin walls
     red.update(b.Name for p in mechanism.members(mech, parts.is_part) if p.Label in blamed for b in parts.boxes(p))

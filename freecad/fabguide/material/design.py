@@ -15,6 +15,7 @@ from freecad.fabguide.material import master_board
 from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 
 SATISFIED = "Satisfied"
+BROKEN = "Broken: "  # a constraint's or volume's Status begins so when the design breaks it
 UNBOUNDED = 1e11  # a range's Min or Max beyond this is absent
 KINDS = ("equal", "sum", "fixed", "symmetric", "ground", "coplanar", "snap", "range")
 GRAINS = ("Free", "X", "Y", "Z")  # a box's Grain: none, or the model axis its wood's grain runs along
@@ -423,11 +424,16 @@ def held(obj, result):
     return "; edit {}, held by {}".format(kept, ", ".join(limits))
 
 
+def broken(c):
+    """Whether the design breaks the constraint or volume `c`, as its last recompute found."""
+    return c.Status.startswith(BROKEN)
+
+
 def mark_constraints(obj, said, names=()):
     """The constraints and volumes named in `names` show `said`; the others are satisfied."""
     for c in obj.Group:
         if is_constraint(c) or is_volume(c):
-            status = "Broken: " + said if c.Label in names else SATISFIED
+            status = BROKEN + said if c.Label in names else SATISFIED
             if c.Status != status:
                 c.Status = status
 
