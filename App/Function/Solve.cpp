@@ -817,9 +817,8 @@ SolveResult typed(const Model& model, const std::vector<Separation>& separations
     relationships(ConflictKind::Support, model.support);
     relationships(ConflictKind::Flush, model.flush);
     relationships(ConflictKind::Geometric, model.geometric);
-    for (const Joint& j : model.joints)
-        if (j.type == Joint::Type::DoublePivot)
-            known.push_back({ConflictKind::DoublePivot, j.name, j.name});
+    for (const Joint& j : model.joints)  // a double pivot's pivots, a fixed joint's hold
+        known.push_back({ConflictKind::Joint, j.name, j.name});
     for (const Lock& lock : model.locks)
         known.push_back({ConflictKind::Lock, lockName(model, lock), faceName(model, lock.face)});
     for (const Part& part : model.parts)

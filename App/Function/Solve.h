@@ -34,15 +34,16 @@ Pieces piecesOf(const Model& model, const Part& part);
 /// sizes unnamed). Throws std::invalid_argument naming a Flush whose faces are not parallel.
 std::vector<LinearConstraint> constraints(const Model& model);
 
-/// What a name in a conflict stands for: a relationship of the model (by its kind), a double pivot, a lock, a
-/// part kept in one piece, a cavity's wall, two parts kept apart, or a part drawn inside another.
+/// What a name in a conflict stands for: a relationship of the model (by its kind), a joint (a double pivot
+/// that cannot be placed, a fixed joint's hold), a lock, a part kept in one piece, a cavity's wall, two parts
+/// kept apart, or a part drawn inside another.
 enum class ConflictKind {
     Cover,
     FitInside,
     Support,
     Flush,
     Geometric,
-    DoublePivot,
+    Joint,
     Lock,
     OnePiece,
     Wall,

@@ -139,7 +139,7 @@ std::string conflictKindName(function::ConflictKind kind)
                                                 {K::Support, "support"},
                                                 {K::Flush, "flush"},
                                                 {K::Geometric, "geometric"},
-                                                {K::DoublePivot, "double_pivot"},
+                                                {K::Joint, "joint"},
                                                 {K::Lock, "lock"},
                                                 {K::OnePiece, "one_piece"},
                                                 {K::Wall, "wall"},

@@ -114,7 +114,7 @@ TEST(DoublePivot, APoseTheLinkCannotReachNamesTheJoints)
     EXPECT_EQ(r.conflict, (std::vector<std::string>{"head pivot left", "head pivot right", "foot pivot left",
                                                     "foot pivot right"}));
     for (const function::Conflict& c : r.conflicts)
-        EXPECT_EQ(c.kind, function::ConflictKind::DoublePivot) << c.name;
+        EXPECT_EQ(c.kind, function::ConflictKind::Joint) << c.name;
     EXPECT_EQ(r.conflicts.size(), r.conflict.size());
 }
 

@@ -149,6 +149,27 @@ TEST(Solve, ContradictionsAreReportedByName)
                   {function::ConflictKind::Flush, "lid top level with body top"}}));
 }
 
+TEST(Solve, AFixedJointsHoldInAConflictIsAJointConflict)
+{
+    json d = {{"parts",
+               {testsupport::cuboidPart("a", {0, 0, 0}, {10, 10, 10}),
+                testsupport::cuboidPart("knob", {10, 0, 0}, {15, 10, 10})}},
+              {"joints", {{{"name", "knob held"}, {"type", "fixed"}, {"part", "knob"}, {"base", "a"}}}},
+              {"locks", {"a.right"}},
+              {"relationships",
+               {{{"type", "geometric"},
+                 {"name", "knob away"},
+                 {"relation", "equal"},
+                 {"left", "knob.left"},
+                 {"right", "a.right"},
+                 {"offset", 3}}}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    EXPECT_FALSE(r.solved);
+    EXPECT_EQ(testsupport::typedConflict(r),
+              (decltype(testsupport::typedConflict(r)){{function::ConflictKind::Geometric, "knob away"},
+                                                       {function::ConflictKind::Joint, "knob held"}}));
+}
+
 TEST(Solve, APartDrawnInPiecesIsAConflictOfItsKind)
 {
     json d = boxWithLid();
