@@ -65,6 +65,19 @@ TEST(Separation, OverlappingPartsMoveApartByTheLeastChange)
     EXPECT_EQ(at(r.model, "b", Side::Near), 10);  // nothing else moves
 }
 
+TEST(Separation, ThePartMoreInsideTheOtherIsTheOneDrawnInside)
+{
+    // A tray filling most of its carcass: the carcass is more than half within the tray's box too (68 %), and
+    // was named as drawn inside the tray, with a cavity to make in the tray.
+    json d = {{"parts",
+               {cuboidPart("carcass", {0, 0, 0}, {400, 350, 200}),
+                cuboidPart("drawer tray", {20, 10, 20}, {380, 340, 180})}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    EXPECT_FALSE(r.solved);
+    EXPECT_EQ(r.conflict, std::vector<std::string>{"drawn inside: drawer tray in carcass"});
+    EXPECT_EQ(typedConflict(r), (decltype(typedConflict(r)){{Kind::DrawnInside, "drawer tray in carcass"}}));
+}
+
 TEST(Separation, APartDrawnInsideAnotherBeforeItsCavityIsNamedAndNothingChanges)
 {
     // A tray drawn inside a carcass, its cavity not made yet. Keeping them apart shrank the carcass
