@@ -134,7 +134,7 @@ double Fields::number(const std::string& key, std::optional<double> fallback,
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key), "missing (a number is required)");
+            missing(key, "a number");
         return *fallback;
     }
     if (!value->is_number() || !std::isfinite(value->get<double>()))
@@ -158,7 +158,7 @@ int Fields::integer(const std::string& key, std::optional<int> fallback) const
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key), "missing (a whole number is required)");
+            missing(key, "a whole number");
         return *fallback;
     }
     if (!value->is_number_integer() || std::abs(value->get<double>()) > kLargestNumber)
@@ -172,7 +172,7 @@ std::string Fields::text(const std::string& key, std::optional<std::string> fall
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!fallback)
-            throw FormatError(pathOf(key), "missing (a string is required)");
+            missing(key, "a string");
         return *fallback;
     }
     if (!value->is_string())
@@ -229,6 +229,16 @@ void Fields::only(const std::vector<std::string>& known) const
     }
 }
 
+void Fields::missing(const std::string& key, const std::string& what) const
+{
+    // A key one letter off that no reader asked for is the required one misspelt ("coverring", "maxx").
+    for (const auto& item : object_.items())
+        if (item.key().size() >= 4 && editDistance(item.key(), key) == 1 &&
+            std::find(asked_.begin(), asked_.end(), item.key()) == asked_.end())
+            throw FormatError(pathOf(item.key()), "no such key; did you mean \"" + key + "\"?");
+    throw FormatError(pathOf(key), "missing (" + what + " is required)");
+}
+
 bool Fields::has(const std::string& key) const
 {
     if (std::find(asked_.begin(), asked_.end(), key) == asked_.end())
@@ -274,7 +284,7 @@ const nlohmann::json& Fields::array(const std::string& key, bool optional) const
     const nlohmann::json* value = find(key);
     if (!value) {
         if (!optional)
-            throw FormatError(pathOf(key), "missing (an array is required)");
+            missing(key, "an array");
         return empty;
     }
     if (!value->is_array())

@@ -80,6 +80,8 @@ public:
 
 private:
     const nlohmann::json* find(const std::string& key) const;
+    /// Throws FormatError: `key` is missing (`what` is required), or misspelt as a key one letter off.
+    [[noreturn]] void missing(const std::string& key, const std::string& what) const;
     const nlohmann::json& object_;
     std::string path_;
     mutable std::vector<std::string> asked_;  ///< every key read or looked for, for noOthers

@@ -246,3 +246,29 @@ TEST(UnknownKeys, AParametricDesignsPartsRefuseWhatTheyDoNotKnowNamingTheField)
     EXPECT_EQ(fieldOf("quantity", 0), "parts[1].quantity");
     EXPECT_EQ(fieldOf("quantitty", 1), "parts[1].quantitty");
 }
+
+TEST(UnknownKeys, ARequiredKeyMisspeltIsNamedAsMisspeltNotAsMissing)
+{
+    // A user's "coverring" was reported as "covering: missing", the misspelling left for them to find.
+    for (const fs::path& file : filesEndingIn(".workslike.json")) {
+        const json document = io::readJsonFile(file.string());
+        json spoilt = document;
+        json& cuboid = spoilt["parts"][0]["cuboids"][0];
+        cuboid["maxx"] = cuboid["max"];
+        cuboid.erase("max");
+        try {
+            io::readWorkslike(spoilt);
+            ADD_FAILURE() << file << ": read without its max";
+        } catch (const io::FormatError& e) {
+            EXPECT_EQ(e.field(), "parts[0].cuboids[0].maxx") << e.what();
+            EXPECT_NE(std::string(e.what()).find("did you mean \"max\"?"), std::string::npos) << e.what();
+        }
+        cuboid.erase("maxx");  // gone altogether: missing
+        EXPECT_THROW(
+            try { io::readWorkslike(spoilt); } catch (const io::FormatError& e) {
+                EXPECT_EQ(e.field(), "parts[0].cuboids[0].max") << e.what();
+                throw;
+            },
+            io::FormatError);
+    }
+}
