@@ -35,8 +35,12 @@ double gapOf(const PrintJob& job)
     const auto& profiles = printerProfiles();
     const auto found = std::find_if(profiles.begin(), profiles.end(),
                                     [&](const PrinterProfile& p) { return p.id == job.printer; });
-    if (found == profiles.end())
-        throw std::invalid_argument("no printer profile '" + job.printer + "' (fdm or resin)");
+    if (found == profiles.end()) {
+        std::string ids;
+        for (const PrinterProfile& p : profiles)
+            ids += (ids.empty() ? "" : ", ") + p.id;
+        throw std::invalid_argument("no printer profile '" + job.printer + "' (" + ids + ")");
+    }
     return found->gap;
 }
 

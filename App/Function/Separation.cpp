@@ -9,7 +9,6 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <optional>
 #include <set>
 #include <tuple>
 
@@ -220,20 +219,15 @@ std::vector<std::pair<int, int>> drawnInside(const Model& model)
     std::vector<std::pair<int, int>> found;
     for (const auto& [a, b] : nearPairs(model, -1, 0)) {  // overlapping pairs that nothing lets overlap
         const double both = material(boxOf(model, a, -1), {a, b});
-        // The one more inside the other is the inner (a tray in its carcass, though the carcass may be more
-        // than half within the tray's box too).
-        double most = 0.5;
-        std::optional<std::pair<int, int>> pick;
-        for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}}) {
+        // The share of each within the other: the one more inside is the inner (a tray in its carcass, though
+        // the carcass may be more than half within the tray's box too), when it is at least half inside.
+        const auto share = [&](int inner) {
             const double own = material(boxOf(model, inner, -1), {inner});
-            const double share = own > 0 ? both / own : HUGE_VAL;
-            if (share >= most && !(pick && share == most)) {
-                most = share;
-                pick = {inner, outer};
-            }
-        }
-        if (pick)
-            found.push_back(*pick);
+            return own > 0 ? both / own : HUGE_VAL;
+        };
+        const double ofA = share(a), ofB = share(b);
+        if (std::max(ofA, ofB) >= 0.5)
+            found.push_back(ofB > ofA ? std::pair{b, a} : std::pair{a, b});
     }
     return found;
 }
