@@ -234,12 +234,14 @@ std::vector<Coordinates> gapped(const Model& m, double gap)
             x[s] += s % 2 ? -steps[c][s] : steps[c][s];
         out.push_back(x);
     }
-    // Cuboids of one body stay joined: where one face stepped back, the cuboid glued to it follows (a drawer
-    // front stepping back from a door that swings past it, and its knob).
+    // Cuboids of one body stay joined: where one face stepped back further than the face glued to it, that
+    // face follows (a drawer front stepping back from a door that swings past it, and its knob; a knob
+    // stepping back from the shell its lever slides in, and the lever's end, which steps from nothing).
     const auto glued = [&](size_t a, size_t b, int side) {
         const Coordinates &x = m.cuboids[a].coordinates, &y = m.cuboids[b].coordinates;
         if (a == b || bodyOf[partOf[a]] != bodyOf[partOf[b]] || m.cuboids[a].cavity() ||
-            m.cuboids[b].cavity() || std::abs(x[side] - y[side ^ 1]) >= hair)
+            m.cuboids[b].cavity() || std::abs(x[side] - y[side ^ 1]) >= hair ||
+            steps[a][side] <= steps[b][side ^ 1])
             return false;
         for (int o = 0; o < 3; ++o)
             if (o != side / 2 && overlapOf(along(x, o), along(y, o)) <= hair)

@@ -113,6 +113,27 @@ TEST(Gaps, AFixedPartFollowsTheFaceOfItsBaseThatStepsBack)
     EXPECT_EQ(at[2][4], 5);
 }
 
+TEST(Gaps, AFixedPartStepsBackFromTheShellItsBaseSlidesInAndItsBaseFollows)
+{
+    // A toaster's lever slides in a slot open at the front, a knob fixed on it rests on the shell's front
+    // (found by a new user's model): the knob steps the gap off the shell and the lever's end comes out with
+    // it. Before, the lever's end, which steps from nothing (the slot opens there), held the knob on the
+    // shell: a body fused to the shell, clearance 0.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "shell", "cuboids": [{"name": "shell", "min": [0, 0, 0], "max": [260, 150, 180]},
+                     {"name": "slot", "min": [115, 0, 40], "max": [145, 20, 170], "cavity": true}]},
+                  {"name": "lever", "cuboids": [{"name": "lever", "min": [118, 0, 140], "max": [142, 18, 160]}]},
+                  {"name": "knob", "cuboids": [{"name": "knob", "min": [112, -25, 138], "max": [148, 0, 162]}]}],
+        "joints": [{"name": "lever slide", "type": "slide", "part": "lever", "axis": "z"},
+                   {"name": "knob on lever", "type": "fixed", "part": "knob", "base": "lever"}],
+        "configurations": [{"name": "down", "poses": {"lever slide": -90}}]})"));
+    const std::vector<Coordinates> at = gapped(m, 0.4);
+    EXPECT_NEAR(at[3][3], -0.4, 1e-9);  // the knob's back, off the shell's front
+    EXPECT_EQ(at[2][2], at[3][3]);      // the lever's end, still joined to it
+    EXPECT_EQ(at[0], m.cuboids[0].coordinates);
+}
+
 TEST(Sweeps, AShiftSweepsAPrismAndATurnAQuarterCylinder)
 {
     const TopoDS_Shape shifted = turnedThenShifted(box({0, 10, 0, 10, 0, 10}), gp_Ax1(), 0, gp_Vec(5, 0, 0));

@@ -260,7 +260,8 @@ def add_bin(p, cab, bay, n):
     rng = p.rng
     just = rng.random() < 0.4
     play = 0.0 if just else round_to(rng.uniform(0.5, 3))
-    lo = [bay.lo[0] + play, round_to(rng.uniform(0, 5)), bay.lo[2]]
+    pulled = rng.random() < 0.35
+    lo = [bay.lo[0] + play, 0.0 if pulled else round_to(rng.uniform(0, 5)), bay.lo[2]]
     hi = [bay.hi[0] - play, bay.hi[1] - round_to(rng.uniform(1, 10)),
           bay.hi[2] - round_to(rng.uniform(0.05, 0.3) * (bay.hi[2] - bay.lo[2]))]
     wall = round_to(max(1.5, min(cab.t / 2, (hi[0] - lo[0]) / 6)))
@@ -272,7 +273,21 @@ def add_bin(p, cab, bay, n):
     fields = {"just": ["x"]} if just else {}
     p.relate("fit_inside", name + " fits " + bay.name, inner=[name], enclosing="carcass", cavity=bay.name, **fields)
     p.features.add("bin")
+    if pulled:
+        add_pull(p, bay, name, lo, hi)
     return name
+
+
+def add_pull(p, bay, bin_, lo, hi):
+    """A pull bar fixed across a bin's face, wider than its bay: it rests on the carcass' face when the bin is
+    in (a toaster's knob on its lever, a drawer's stop)."""
+    k = round_to(max(2, min(20, (hi[2] - lo[2]) / 4)))
+    z = round_to((lo[2] + hi[2]) / 2 - k / 2)
+    x0 = round_to((bay.lo[0] + bay.room_lo[0]) / 2)
+    x1 = round_to((bay.hi[0] + bay.room_hi[0]) / 2)
+    name = p.part(bin_ + " pull", box(bin_ + " pull", [x0, -k, z], [x1, 0, z + k]))
+    p.joint({"name": name + " fixed", "type": "fixed", "part": name, "base": bin_})
+    p.features.add("pull")
 
 
 def add_pocket_doors(p, cab, bay, n):

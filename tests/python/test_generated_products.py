@@ -70,7 +70,7 @@ def test_generated_products_are_valid_by_construction_and_varied():
         assert problems == [] and warnings == [], (seed, problems, warnings)
         features |= p.features
     for feature in ("door", "flap down", "flap up", "drawer", "pull-out", "chain", "bin", "pocket door",
-                    "sliding door", "knob", "lid", "folding lid", "legs", "link", "links doubled", "cover",
+                    "sliding door", "knob", "pull", "lid", "folding lid", "legs", "link", "links doubled", "cover",
                     "fit_inside", "support", "flush", "geometric", "just cover", "locked carcass"):
         assert feature in features, feature
     assert any(f.startswith("door at ") for f in features)  # turns that are not quarter turns
