@@ -568,6 +568,25 @@ void addNotes(std::vector<std::string>& notes, const std::string& name, const In
         notes.push_back(name + ": " + note);
 }
 
+/// For each fit inside in a conflict whose enclosing part has no cavity: the inner parts may lie in its solid
+/// (4.2.2) but never move through it; the note says what to make.
+void cavityNotes(const Model& model, const std::vector<std::string>& conflict,
+                 std::vector<std::string>& notes)
+{
+    for (const FitInside& f : model.fitInside) {
+        const Part& enclosing = model.parts[f.enclosing];
+        if (std::find(conflict.begin(), conflict.end(), f.name) == conflict.end() ||
+            std::any_of(enclosing.cuboids.begin(), enclosing.cuboids.end(),
+                        [&](int c) { return model.cuboids[c].cavity(); }))
+            continue;
+        std::string inner;
+        for (int p : f.inner)
+            inner += (inner.empty() ? "'" : ", '") + model.parts[p].name + "'";
+        notes.push_back(f.name + ": '" + enclosing.name + "' has no cavity for " + inner +
+                        " to move in; make a cavity in '" + enclosing.name + "' where it goes");
+    }
+}
+
 /// `least` (a least change under `rows`) with `holds` added to `rows` where the relationships allow them: all
 /// at once or, when they cannot have that, one at a time in their order.
 LeastChangeResult heldWhereAllowed(const Eigen::VectorXd& target, std::vector<LinearConstraint>& rows,
@@ -691,7 +710,10 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& draw
 /// that conflicts, a pair the conflict names is kept apart its other ways that the drawing is near
 /// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
 /// out of the conflict (a door and a drawer front side by side in one plane, not one in front of the other:
-/// the least overlap as drawn chose wrong).
+/// the least overlap as drawn chose wrong). When no way is kept, the conflict names what each way tried
+/// conflicts with: the pair is kept apart no way because of all of them (a lid turned past upright is held
+/// over the casket by the cover and behind it by a limit on how far behind it goes; the limit is part of
+/// why).
 LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawing,
                             const std::vector<LinearConstraint>& relationships, const Model& moving,
                             Apart& apart, const Eigen::VectorXd& start, int& tries)
@@ -705,6 +727,7 @@ LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawin
         return leastChange(target, drawing, rows, &start);
     };
     LeastChangeResult r = solveApart();
+    std::vector<std::string> because = r.conflict;
     for (bool revised = true; !r.solved && revised;) {
         revised = false;
         for (const Apart::Key& key : apart.named(moving, r.conflict)) {
@@ -719,13 +742,21 @@ LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawin
                 if (t.solved || std::find(still.begin(), still.end(), key) == still.end()) {
                     r = std::move(t);
                     revised = true;
+                } else {
+                    for (const std::string& name : t.conflict)
+                        if (std::find(because.begin(), because.end(), name) == because.end())
+                            because.push_back(name);
                 }
             }
             if (revised)
                 break;
             apart.chosen[key] = was;
         }
+        if (revised)
+            because = r.conflict;
     }
+    if (!r.solved)
+        r.conflict = because;
     return r;
 }
 
@@ -896,8 +927,10 @@ SolveResult solve(const Model& model)
         addNotes(result.notes, c.name, c.notes);
     for (const Support& s : model.support)
         addNotes(result.notes, s.name, s.notes);
-    if (!r.solved)
+    if (!r.solved) {
+        cavityNotes(model, r.conflict, result.notes);
         return typed(moving, separations, result);
+    }
     // Stage 2 (thesis 4.4): the double pivots' pivots, with the cuboids fixed.
     keepPivotsOnFaces(model, result.model);
     const std::vector<Unplaced> unplaced = placePivots(result.model);

@@ -244,3 +244,63 @@ TEST(Separation, PosesTurnedByOtherThanQuartersAreNotExact)
     EXPECT_FALSE(function::exactlyPosed(m, 1, 1));
     EXPECT_TRUE(function::exactlyPosed(m, 0, 1));
 }
+
+TEST(Separation, APairKeptApartNoWayIsAConflictNamingWhatEachWayConflictsWith)
+{
+    // Two blocks drawn overlapping at a corner, kept apart across x or across y; one relationship holds them
+    // together across x, another across y. Before, the conflict named the first way's only: the x one and the
+    // overlap, which hold together once the y one is gone.
+    json blocks = {
+        {"parts", {cuboidPart("a", {0, 0, 0}, {100, 100, 10}), cuboidPart("b", {98, 97, 0}, {150, 150, 10})}},
+        {"relationships",
+         {{{"type", "geometric"},
+           {"name", "b over a across x"},
+           {"relation", "at_most"},
+           {"left", "b.left"},
+           {"right", "a.right"},
+           {"offset", -2}},
+          {{"type", "geometric"},
+           {"name", "b over a across y"},
+           {"relation", "at_most"},
+           {"left", "b.near"},
+           {"right", "a.far"},
+           {"offset", -3}}}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(blocks));
+    ASSERT_FALSE(r.solved);
+    const auto typed = typedConflict(r);
+    EXPECT_EQ(typed.size(), 3u) << testing::PrintToString(r.conflict);
+    for (const auto& conflict : {std::pair{Kind::Geometric, std::string("b over a across x")},
+                                 std::pair{Kind::Geometric, std::string("b over a across y")},
+                                 std::pair{Kind::NoOverlap, std::string("a, b")}})
+        EXPECT_NE(std::find(typed.begin(), typed.end(), conflict), typed.end())
+            << conflict.second << " not in " << testing::PrintToString(r.conflict);
+    for (int drop : {0, 1}) {  // either way alone holds
+        json one = blocks;
+        one["relationships"].erase(drop);
+        EXPECT_TRUE(function::solve(io::readWorkslike(one)).solved) << drop;
+    }
+}
+
+TEST(Separation, AFitInsideWhoseEnclosingPartHasNoCavitySaysToMakeOne)
+{
+    // A drawer fitting inside a solid carcass lies in it, but cannot slide out through it (a new user's
+    // model): the conflict says what to make, not only what conflicts.
+    const json drawer = {
+        {"parts",
+         {cuboidPart("carcass", {0, 0, 0}, {400, 350, 200}),
+          cuboidPart("drawer", {20, 0, 20}, {380, 330, 180})}},
+        {"joints", {{{"name", "runner"}, {"type", "slide"}, {"part", "drawer"}, {"axis", "y"}}}},
+        {"configurations", {{{"name", "out"}, {"poses", {{"runner", -250}}}}}},
+        {"relationships",
+         {{{"type", "fit_inside"},
+           {"name", "drawer in carcass"},
+           {"inner", {"drawer"}},
+           {"enclosing", "carcass"}}}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(drawer));
+    ASSERT_FALSE(r.solved);
+    const std::string note =
+        "drawer in carcass: 'carcass' has no cavity for 'drawer' to move in; make a cavity in 'carcass' "
+        "where it goes";
+    EXPECT_NE(std::find(r.notes.begin(), r.notes.end(), note), r.notes.end())
+        << testing::PrintToString(r.notes);
+}
