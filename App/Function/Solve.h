@@ -5,6 +5,7 @@
 #include "Function/LeastChange.h"
 #include "Function/Model.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,42 @@ enum class ConflictKind {
     NoOverlap,
     DrawnInside
 };
+
+/// Each kind as the formats name it: a relationship's type (the reader's, in a model) or a conflict's kind
+/// (in a report). The one list of the relationships' kinds, which the reader, the writer and the bindings
+/// read.
+struct ConflictKindName {
+    ConflictKind kind;
+    const char* name;
+    bool relationship;  ///< a relationship of the model (thesis 4.2)
+};
+
+inline constexpr std::array<ConflictKindName, 11> kConflictKinds{
+    {{ConflictKind::Cover, "cover", true},
+     {ConflictKind::FitInside, "fit_inside", true},
+     {ConflictKind::Support, "support", true},
+     {ConflictKind::Flush, "flush", true},
+     {ConflictKind::Geometric, "geometric", true},
+     {ConflictKind::Joint, "joint", false},
+     {ConflictKind::Lock, "lock", false},
+     {ConflictKind::OnePiece, "one_piece", false},
+     {ConflictKind::Wall, "wall", false},
+     {ConflictKind::NoOverlap, "no_overlap", false},
+     {ConflictKind::DrawnInside, "drawn_inside", false}}};
+
+static_assert(
+    [] {
+        for (size_t k = 0; k < kConflictKinds.size(); ++k)
+            if (static_cast<size_t>(kConflictKinds[k].kind) != k)
+                return false;
+        return true;
+    }(),
+    "kConflictKinds lists the kinds in ConflictKind's order");
+
+inline const char* nameOf(ConflictKind kind)
+{
+    return kConflictKinds[static_cast<size_t>(kind)].name;  // in ConflictKind's order
+}
 
 struct Conflict {
     ConflictKind kind = ConflictKind::Cover;

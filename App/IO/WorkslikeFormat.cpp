@@ -130,24 +130,6 @@ int axisNamed(const nlohmann::json& value, const std::string& path, const char* 
     return static_cast<int>(axis - std::begin(kAxes));
 }
 
-/// A conflict's kind as the report says it: a relationship's or joint's by the type this format gives it.
-std::string conflictKindName(function::ConflictKind kind)
-{
-    using K = function::ConflictKind;
-    static const std::map<K, std::string> names{{K::Cover, "cover"},
-                                                {K::FitInside, "fit_inside"},
-                                                {K::Support, "support"},
-                                                {K::Flush, "flush"},
-                                                {K::Geometric, "geometric"},
-                                                {K::Joint, "joint"},
-                                                {K::Lock, "lock"},
-                                                {K::OnePiece, "one_piece"},
-                                                {K::Wall, "wall"},
-                                                {K::NoOverlap, "no_overlap"},
-                                                {K::DrawnInside, "drawn_inside"}};
-    return names.at(kind);
-}
-
 /// A double pivot's pivot: ["cuboid.side", [x, y, z]], a point on that face of a cuboid of `part`; returns
 /// the face and the point's in-plane offsets from the cuboid's low corner.
 std::pair<Face, std::array<double, 2>> readPivot(const function::Model& model, const Fields& j,
@@ -519,6 +501,19 @@ int configurationNamed(const function::Model& model, const Fields& r)
     throw FormatError(r.pathOf("configuration"), "no configuration named '" + name + "'");
 }
 
+/// The relationship kind a type names (function::kConflictKinds), or a FormatError listing those there are.
+function::ConflictKind relationshipKind(const std::string& type, const std::string& path)
+{
+    std::string known;
+    for (const function::ConflictKindName& k : function::kConflictKinds)
+        if (k.relationship) {
+            if (type == k.name)
+                return k.kind;
+            known += (known.empty() ? "" : ", ") + std::string(k.name);
+        }
+    throw FormatError(path, "\"" + type + "\" is not a relationship this FabGuide knows (" + known + ")");
+}
+
 void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path)
 {
     const Fields r(json, path);
@@ -531,37 +526,44 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside) ||
         named(model.cover))
         throw FormatError(r.pathOf("name"), "'" + name + "' is used twice");
-    if (type == "flush") {
-        const nlohmann::json& faces = r.array("faces");
-        if (faces.size() != 2)
-            throw FormatError(r.pathOf("faces"), "must name two faces");
-        model.flush.push_back({name, face(model, faces[0], at(r.pathOf("faces"), 0)),
-                               face(model, faces[1], at(r.pathOf("faces"), 1)), configuration});
-    } else if (type == "geometric") {
-        const std::string relation = r.text("relation", "equal");
-        if (relation != "equal" && relation != "at_most")
-            throw FormatError(r.pathOf("relation"),
-                              "must be \"equal\" or \"at_most\", got \"" + relation + "\"");
-        if (!r.has("left") || !r.has("right"))
-            throw FormatError(r.pathOf(r.has("left") ? "right" : "left"), "missing");
-        function::Geometric g{name,
-                              relation == "equal" ? function::Geometric::Relation::Equal
-                                                  : function::Geometric::Relation::AtMost,
-                              sum(model, json["left"], r.pathOf("left")),
-                              sum(model, json["right"], r.pathOf("right"))};
-        g.right.constant = r.number("offset", 0.0);
-        g.configuration = configuration;
-        model.geometric.push_back(g);
-    } else if (type == "fit_inside") {
-        model.fitInside.push_back(readFitInside(model, r, name, configuration));
-    } else if (type == "support") {
-        model.support.push_back(readSupport(model, r, name, configuration));
-    } else if (type == "cover") {
-        model.cover.push_back(readCover(model, r, name, configuration));
-    } else {
-        throw FormatError(r.pathOf("type"), "\"" + type +
-                                                "\" is not a relationship this FabGuide knows (cover, "
-                                                "fit_inside, support, flush, geometric)");
+    using K = function::ConflictKind;
+    switch (relationshipKind(type, r.pathOf("type"))) {
+        case K::Flush: {
+            const nlohmann::json& faces = r.array("faces");
+            if (faces.size() != 2)
+                throw FormatError(r.pathOf("faces"), "must name two faces");
+            model.flush.push_back({name, face(model, faces[0], at(r.pathOf("faces"), 0)),
+                                   face(model, faces[1], at(r.pathOf("faces"), 1)), configuration});
+            break;
+        }
+        case K::Geometric: {
+            const std::string relation = r.text("relation", "equal");
+            if (relation != "equal" && relation != "at_most")
+                throw FormatError(r.pathOf("relation"),
+                                  "must be \"equal\" or \"at_most\", got \"" + relation + "\"");
+            if (!r.has("left") || !r.has("right"))
+                throw FormatError(r.pathOf(r.has("left") ? "right" : "left"), "missing");
+            function::Geometric g{name,
+                                  relation == "equal" ? function::Geometric::Relation::Equal
+                                                      : function::Geometric::Relation::AtMost,
+                                  sum(model, json["left"], r.pathOf("left")),
+                                  sum(model, json["right"], r.pathOf("right"))};
+            g.right.constant = r.number("offset", 0.0);
+            g.configuration = configuration;
+            model.geometric.push_back(g);
+            break;
+        }
+        case K::FitInside:
+            model.fitInside.push_back(readFitInside(model, r, name, configuration));
+            break;
+        case K::Support:
+            model.support.push_back(readSupport(model, r, name, configuration));
+            break;
+        case K::Cover:
+            model.cover.push_back(readCover(model, r, name, configuration));
+            break;
+        default:  // not a relationship: relationshipKind refused it
+            break;
     }
     r.noOthers();
 }
@@ -705,6 +707,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         }
         parts.push_back({{"name", part.name}, {"cuboids", cuboids}});
     }
+    using K = function::ConflictKind;
     auto inConfiguration = [&](nlohmann::json relationship, int configuration) {
         if (configuration >= 0)
             relationship["configuration"] = model.configurations[configuration].name;
@@ -712,13 +715,13 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
     };
     for (const function::Flush& f : model.flush)
         relationships.push_back(
-            inConfiguration({{"type", "flush"},
+            inConfiguration({{"type", function::nameOf(K::Flush)},
                              {"name", f.name},
                              {"faces", {function::faceName(model, f.a), function::faceName(model, f.b)}}},
                             f.configuration));
     for (const function::Geometric& g : model.geometric)
         relationships.push_back(inConfiguration(
-            {{"type", "geometric"},
+            {{"type", function::nameOf(K::Geometric)},
              {"name", g.name},
              {"relation", g.relation == function::Geometric::Relation::Equal ? "equal" : "at_most"},
              {"left", expression(g.left)},
@@ -730,7 +733,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         for (const auto& [a, b] : s.pairs)
             pairs.push_back(
                 {function::faceName(model, {a, Side::Top}), function::faceName(model, {b, Side::Bottom})});
-        relationships.push_back(inConfiguration({{"type", "support"},
+        relationships.push_back(inConfiguration({{"type", function::nameOf(K::Support)},
                                                  {"name", s.name},
                                                  {"supporting", partNames(model, s.supporting)},
                                                  {"supported", partNames(model, s.supported)},
@@ -744,7 +747,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
             apart.push_back({model.cuboids[a.a].name, kAxes[a.axis], model.cuboids[a.b].name});
         for (const auto& [in, wall] : f.just)
             just.push_back({function::faceName(model, in), function::faceName(model, wall)});
-        nlohmann::json fit = {{"type", "fit_inside"},
+        nlohmann::json fit = {{"type", function::nameOf(K::FitInside)},
                               {"name", f.name},
                               {"inner", partNames(model, f.inner)},
                               {"enclosing", model.parts[f.enclosing].name},
@@ -763,7 +766,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         nlohmann::json pairs = nlohmann::json::array();
         for (const auto& [a, b] : c.pairs)
             pairs.push_back({function::faceName(model, a), function::faceName(model, b)});
-        relationships.push_back(inConfiguration({{"type", "cover"},
+        relationships.push_back(inConfiguration({{"type", function::nameOf(K::Cover)},
                                                  {"name", c.name},
                                                  {"covering", partNames(model, c.covering)},
                                                  {"covered", partNames(model, c.covered)},
@@ -815,7 +818,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
         nlohmann::json conflicts = nlohmann::json::array();
         for (const function::Conflict& c : result->conflicts)
             conflicts.push_back(
-                {{"kind", conflictKindName(c.kind)}, {"name", c.name}, {"subject", c.subject}});
+                {{"kind", function::nameOf(c.kind)}, {"name", c.name}, {"subject", c.subject}});
         out["report"] = {{"solved", result->solved}, {"conflict", result->conflict},
                          {"conflicts", conflicts},   {"violation", result->violation},
                          {"notes", result->notes},   {"parts", result->parts}};

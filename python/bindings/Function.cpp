@@ -50,6 +50,16 @@ void bindFunction(py::module_& m)
         },
         "Every joint kind once, as the core knows it: [{'name', 'turns', 'slides'}].");
     m.def(
+        "conflict_kinds",
+        [] {
+            py::list kinds;
+            for (const function::ConflictKindName& k : function::kConflictKinds)
+                kinds.append(py::dict(py::arg("name") = k.name, py::arg("relationship") = k.relationship));
+            return kinds;
+        },
+        "Every kind a solve's conflicts give, once, as the core knows it: [{'name', 'relationship'}]; a "
+        "relationship's kind is also its type in a model.");
+    m.def(
         "solve", &solve, py::arg("model"),
         "Solve a works-like model (a *.workslike.json dict) for the least change that satisfies its "
         "relationships;\n"

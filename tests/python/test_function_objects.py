@@ -184,6 +184,12 @@ def test_the_example_imports_solves_and_exports_as_the_core_reads_it(doc, source
     assert touched(doc) == []
 
 
+def test_every_relationship_kind_the_core_knows_is_one_the_workbench_makes_and_hints_read_the_cores_kinds():
+    core = fabguide_core.conflict_kinds()
+    assert {k["name"] for k in core if k["relationship"]} == set(relationships.KINDS)
+    assert set(mechanism.HINTED) <= {k["name"] for k in core}
+
+
 def test_every_joint_kind_the_core_knows_is_a_joint_the_workbench_makes_and_moves_as_the_core_does(doc):
     core = {k["name"]: (k["turns"], k["slides"]) for k in fabguide_core.joint_kinds()}
     assert set(core) == set(joints.KINDS)

@@ -13,6 +13,9 @@ from freecad.fabguide.i18n import QT_TRANSLATE_NOOP, translate
 SATISFIED = "Satisfied"
 STALE = "Unknown: the mechanism did not solve (see its Status)"
 CONFLICT = "Conflict: "  # a relationship's Status begins so when it takes part in a conflict
+# The conflicts' kinds a refusal and the hints read (of the core's: fabguide_core.conflict_kinds()).
+MENDED, LOCK, NO_OVERLAP = {"drawn_inside", "one_piece"}, "lock", "no_overlap"
+HINTED = MENDED | {LOCK, NO_OVERLAP}
 
 
 
@@ -180,7 +183,7 @@ def solve(obj):
             obj.Label, messages.in_words(str(error), data, messages.WORKSLIKE)))
     report = solved["report"]
     conflict = report["conflict"]
-    if not report["solved"] and {c["subject"] for c in report["conflicts"] if c["kind"] == "lock"} & set(edited):
+    if not report["solved"] and {c["subject"] for c in report["conflicts"] if c["kind"] == LOCK} & set(edited):
         refuse(obj, report)
         say_changes(obj, [])
         return solved
@@ -215,12 +218,12 @@ def solve(obj):
 def what_to_do(conflicts):
     """A hint after a conflict (the report's typed conflicts): what the user can change."""
     kinds = {c["kind"] for c in conflicts}
-    if kinds & {"drawn_inside", "one_piece"}:
+    if kinds & MENDED:
         return translate("FabGuide", "Mend the model as the note below says.")
     hints = [translate("FabGuide", "Change or delete one of the relationships.")]
-    if "lock" in kinds:
+    if LOCK in kinds:
         hints.append(translate("FabGuide", "Or unlock a box (the mechanism's Locks)."))
-    if "no_overlap" in kinds:
+    if NO_OVERLAP in kinds:
         hints.append(translate("FabGuide", "Or move the parts that meet apart."))
     return " ".join(hints)
 
