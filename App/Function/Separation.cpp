@@ -319,6 +319,18 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
     return best.separation;
 }
 
+bool sameWay(const Choice& x, const Choice& y)
+{
+    if (x.separations.size() != y.separations.size())
+        return false;
+    for (size_t i = 0; i < x.separations.size(); ++i) {
+        const Separation &s = x.separations[i], &t = y.separations[i];
+        if (s.a != t.a || s.b != t.b || s.direction != t.direction || s.walls != t.walls)
+            return false;
+    }
+    return true;
+}
+
 std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
                                  const std::vector<int>& judged)
 {
@@ -332,15 +344,8 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
             if (std::find(poses.begin(), poses.end(), k) != poses.end())
                 c.separations.push_back(std::move(o.separation));
         }
-        const auto same = [&](const Choice& other) {
-            for (size_t i = 0; i < c.separations.size(); ++i) {
-                const Separation &x = c.separations[i], &y = other.separations[i];
-                if (x.a != y.a || x.b != y.b || x.direction != y.direction || x.walls != y.walls)
-                    return false;
-            }
-            return true;
-        };
-        if (std::none_of(choices.begin(), choices.end(), same))
+        if (std::none_of(choices.begin(), choices.end(),
+                         [&](const Choice& other) { return sameWay(c, other); }))
             choices.push_back(std::move(c));
     };
     std::map<int, std::pair<Box, Box>> at;  // the posed boxes of a and b in each pose

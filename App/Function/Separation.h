@@ -54,6 +54,9 @@ struct Choice {
                        ///< kInferenceDistance, from where this way keeps it
 };
 
+/// Whether two choices keep the pair apart the same way in each pose (whatever they cost).
+bool sameWay(const Choice& x, const Choice& y);
+
 /// The ways of keeping a and b apart in each of `poses` (poses of one motion: a configuration and poses on
 /// the way to it, or the modelled pose alone), each chosen for all of them together, ranked by the change
 /// they make in all the poses `judged` (those and the rest of the motion): kept out pose by pose as

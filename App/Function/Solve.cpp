@@ -503,9 +503,12 @@ bool turnEach(const Model& model, int p, int q, int k)
 
 /// Adds the pairs that come near in `model` (`margin` as nearPairs), in the modelled pose and configurations
 /// [0, `configurations`), to those kept apart, each pair's ways along a motion found anew on `arranged` (the
-/// model as its relationships arrange it) when it gains a pose. Returns how many poses it added.
-size_t separateNear(const Model& arranged, const Model& model, double margin, int configurations,
-                    Apart& apart)
+/// model as its relationships arrange it) when it gains a pose, a way near where it is near on `arranged` or
+/// on `drawn` (a jewellery box's lid turned past upright drawn behind the casket, arranged over it by a limit
+/// on how far behind it goes: the way behind is tried, and the limit named when it conflicts). Returns how
+/// many poses it added.
+size_t separateNear(const Model& arranged, const Model& drawn, const Model& model, double margin,
+                    int configurations, Apart& apart)
 {
     std::set<Apart::Key> grown;
     size_t added = 0;
@@ -533,7 +536,19 @@ size_t separateNear(const Model& arranged, const Model& model, double margin, in
                  (model.configurations[k].along == along && !turnEach(model, partOf[a], partOf[b], k))) &&
                 std::find(judged.begin(), judged.end(), k) == judged.end())
                 judged.push_back(k);
-        apart.choices[key] = choicesAlong(arranged, a, b, apart.poses[key], judged);
+        std::vector<Choice> ways = choicesAlong(arranged, a, b, apart.poses[key], judged);
+        const std::vector<Choice> asDrawn = choicesAlong(drawn, a, b, apart.poses[key], judged);
+        for (const Choice& d : asDrawn) {  // near as the relationships arrange them, or as the user drew them
+            if (!d.near)
+                continue;
+            const auto same =
+                std::find_if(ways.begin(), ways.end(), [&](const Choice& w) { return sameWay(d, w); });
+            if (same == ways.end())
+                ways.push_back(d);  // tried after those the arrangement ranks
+            else
+                same->near = true;
+        }
+        apart.choices[key] = std::move(ways);
         apart.chosen[key] = 0;
     }
     return added;
@@ -907,12 +922,13 @@ SolveResult solve(const Model& model)
     const int configurations = static_cast<int>(moving.configurations.size());
     const Model arranged = r.solved ? withCoordinates(moving, r.x) : moving;
     Apart apart;
-    separateNear(arranged, arranged, model.minimumSize, static_cast<int>(model.configurations.size()), apart);
+    separateNear(arranged, moving, arranged, model.minimumSize, static_cast<int>(model.configurations.size()),
+                 apart);
     int tries = kRevisions;
     for (int round = 0; r.solved; ++round) {
         r = keptApart(target, drawing, relationships, moving, apart, r.x, tries);
         if (!r.solved ||
-            separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
+            separateNear(arranged, moving, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;
         // Every round adds poses where parts still meet: a bound, never reached so far.
         if (round == kRounds) {

@@ -304,3 +304,38 @@ TEST(Separation, AFitInsideWhoseEnclosingPartHasNoCavitySaysToMakeOne)
     EXPECT_NE(std::find(r.notes.begin(), r.notes.end(), note), r.notes.end())
         << testing::PrintToString(r.notes);
 }
+
+TEST(Separation, AWayNearAsDrawnIsTried)
+{
+    // A jewellery box's lid turned back 100° on its far edge (a new user's model), drawn behind the casket,
+    // no more than 15 mm behind it; the relationships alone arrange it over the casket, where it meets the
+    // cover. Before, only the way over the casket was tried, and the solve was refused naming the cover and
+    // the overlap, which hold together. Behind the casket, it holds: the lid and the tray it covers get
+    // shallower (the least change that keeps the limit).
+    json box = {
+        {"parts",
+         {{{"name", "casket"},
+           {"cuboids",
+            {cuboid("casket", {0, 0, 0}, {150, 100, 60}), cuboid("tray", {8, 8, 8}, {142, 92, 60}, true)}}},
+          cuboidPart("lid", {1, 1, 61}, {149, 99, 73})}},
+        {"joints",
+         {{{"name", "lid hinge"}, {"type", "hinge"}, {"part", "lid"}, {"edge", {"lid.far", "lid.bottom"}}}}},
+        {"configurations", {{{"name", "open"}, {"poses", {{"lid hinge", -100}}}}}},
+        {"relationships",
+         {{{"type", "cover"},
+           {"name", "lid closes the casket"},
+           {"covering", {"lid"}},
+           {"covered", {"casket"}}},
+          {{"type", "geometric"},
+           {"name", "open lid at most 15 behind"},
+           {"relation", "at_most"},
+           {"configuration", "open"},
+           {"left", "lid.far"},
+           {"right", "casket.far"},
+           {"offset", 15}}}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(box));
+    ASSERT_TRUE(r.solved) << testing::PrintToString(r.conflict);
+    EXPECT_LT(r.violation, 1e-6);
+    EXPECT_LT(at(r.model, "lid", Side::Far) - at(r.model, "lid", Side::Near), 98 - 1);
+    EXPECT_EQ(at(r.model, "lid", Side::Bottom), at(r.model, "casket", Side::Top));
+}
