@@ -456,13 +456,35 @@ Model withCoordinates(Model model, const Eigen::VectorXd& x)
 }
 
 /// The pairs kept apart: by (cuboid a, cuboid b, the configuration whose motion), the poses where they came
-/// near (the configuration's, those on the way to it; -1 for the modelled pose alone), the ways of keeping
-/// them apart there (choicesAlong) and the one chosen.
+/// near (the configuration's, those on the way to it; -1 for the modelled pose alone), those its ways are
+/// judged in, the ways of keeping them apart there (choicesAlong) and the one chosen.
 struct Apart {
     using Key = std::tuple<int, int, int>;
-    std::map<Key, std::vector<int>> poses;
+    std::map<Key, std::vector<int>> poses, judged;
     std::map<Key, std::vector<Choice>> choices;
     std::map<Key, size_t> chosen;
+    std::set<Key> drawnWays;  ///< the pairs whose ways near as drawn are among their choices
+    /// The pair's ways near as the user drew the parts (`drawn`) count as near too, those the arrangement did
+    /// not find tried after its own (a jewellery box's lid turned past upright drawn behind the casket,
+    /// arranged over it by a limit on how far behind it goes). Found once a pair's ways are revised: a
+    /// conflict's cost.
+    void addDrawnWays(const Model& drawn, const Key& key)
+    {
+        if (!drawnWays.insert(key).second)
+            return;
+        std::vector<Choice>& ways = choices[key];
+        for (const Choice& d :
+             choicesAlong(drawn, std::get<0>(key), std::get<1>(key), poses[key], judged[key])) {
+            if (!d.near)
+                continue;
+            const auto same =
+                std::find_if(ways.begin(), ways.end(), [&](const Choice& w) { return sameWay(d, w); });
+            if (same == ways.end())
+                ways.push_back(d);
+            else
+                same->near = true;
+        }
+    }
     std::vector<Separation> all() const
     {
         std::vector<Separation> out;
@@ -503,12 +525,9 @@ bool turnEach(const Model& model, int p, int q, int k)
 
 /// Adds the pairs that come near in `model` (`margin` as nearPairs), in the modelled pose and configurations
 /// [0, `configurations`), to those kept apart, each pair's ways along a motion found anew on `arranged` (the
-/// model as its relationships arrange it) when it gains a pose, a way near where it is near on `arranged` or
-/// on `drawn` (a jewellery box's lid turned past upright drawn behind the casket, arranged over it by a limit
-/// on how far behind it goes: the way behind is tried, and the limit named when it conflicts). Returns how
-/// many poses it added.
-size_t separateNear(const Model& arranged, const Model& drawn, const Model& model, double margin,
-                    int configurations, Apart& apart)
+/// model as its relationships arrange it) when it gains a pose. Returns how many poses it added.
+size_t separateNear(const Model& arranged, const Model& model, double margin, int configurations,
+                    Apart& apart)
 {
     std::set<Apart::Key> grown;
     size_t added = 0;
@@ -536,19 +555,9 @@ size_t separateNear(const Model& arranged, const Model& drawn, const Model& mode
                  (model.configurations[k].along == along && !turnEach(model, partOf[a], partOf[b], k))) &&
                 std::find(judged.begin(), judged.end(), k) == judged.end())
                 judged.push_back(k);
-        std::vector<Choice> ways = choicesAlong(arranged, a, b, apart.poses[key], judged);
-        const std::vector<Choice> asDrawn = choicesAlong(drawn, a, b, apart.poses[key], judged);
-        for (const Choice& d : asDrawn) {  // near as the relationships arrange them, or as the user drew them
-            if (!d.near)
-                continue;
-            const auto same =
-                std::find_if(ways.begin(), ways.end(), [&](const Choice& w) { return sameWay(d, w); });
-            if (same == ways.end())
-                ways.push_back(d);  // tried after those the arrangement ranks
-            else
-                same->near = true;
-        }
-        apart.choices[key] = std::move(ways);
+        apart.choices[key] = choicesAlong(arranged, a, b, apart.poses[key], judged);
+        apart.judged[key] = std::move(judged);
+        apart.drawnWays.erase(key);
         apart.chosen[key] = 0;
     }
     return added;
@@ -722,13 +731,13 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& draw
 }
 
 /// The least change that keeps the pairs apart as chosen, from `start` (kept when it does already). Where
-/// that conflicts, a pair the conflict names is kept apart its other ways that the drawing is near
-/// (Choice::near), one try at a time while `tries` last, and a way kept when it solves or leaves that pair
-/// out of the conflict (a door and a drawer front side by side in one plane, not one in front of the other:
-/// the least overlap as drawn chose wrong). When no way is kept, the conflict names what each way tried
-/// conflicts with: the pair is kept apart no way because of all of them (a lid turned past upright is held
-/// over the casket by the cover and behind it by a limit on how far behind it goes; the limit is part of
-/// why).
+/// that conflicts, a pair the conflict names is kept apart its other ways that are near (Choice::near, as
+/// arranged or as drawn in `moving`: Apart::addDrawnWays), one try at a time while `tries` last, and a way
+/// kept when it solves or leaves that pair out of the conflict (a door and a drawer front side by side in one
+/// plane, not one in front of the other: the least overlap as drawn chose wrong). When no way is kept, the
+/// conflict names what each way tried conflicts with: the pair is kept apart no way because of all of them (a
+/// lid turned past upright is held over the casket by the cover and behind it by a limit on how far behind it
+/// goes; the limit is part of why).
 LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawing,
                             const std::vector<LinearConstraint>& relationships, const Model& moving,
                             Apart& apart, const Eigen::VectorXd& start, int& tries)
@@ -746,6 +755,7 @@ LeastChangeResult keptApart(const Eigen::VectorXd& target, const Drawing& drawin
     for (bool revised = true; !r.solved && revised;) {
         revised = false;
         for (const Apart::Key& key : apart.named(moving, r.conflict)) {
+            apart.addDrawnWays(moving, key);
             const size_t was = apart.chosen[key];
             for (size_t way = was + 1; way < apart.choices[key].size() && tries > 0 && !revised; ++way) {
                 if (!apart.choices[key][way].near)
@@ -922,13 +932,12 @@ SolveResult solve(const Model& model)
     const int configurations = static_cast<int>(moving.configurations.size());
     const Model arranged = r.solved ? withCoordinates(moving, r.x) : moving;
     Apart apart;
-    separateNear(arranged, moving, arranged, model.minimumSize, static_cast<int>(model.configurations.size()),
-                 apart);
+    separateNear(arranged, arranged, model.minimumSize, static_cast<int>(model.configurations.size()), apart);
     int tries = kRevisions;
     for (int round = 0; r.solved; ++round) {
         r = keptApart(target, drawing, relationships, moving, apart, r.x, tries);
         if (!r.solved ||
-            separateNear(arranged, moving, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
+            separateNear(arranged, withCoordinates(moving, r.x), -1e-6, configurations, apart) == 0)
             break;
         // Every round adds poses where parts still meet: a bound, never reached so far.
         if (round == kRounds) {
