@@ -6,6 +6,7 @@
 #include <GProp_GProps.hxx>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace fabguide::api {
 
@@ -21,9 +22,27 @@ bool PrintReport::tooClose() const
     return check && check->clearance < gap - 0.01;
 }
 
+std::vector<std::string> PrintReport::failures() const
+{
+    std::vector<std::string> why;
+    if (!check)
+        return why;
+    for (const std::string& name : check->invalid)
+        why.push_back("'" + name + "' is no valid solid");
+    for (const std::string& body : check->loose)
+        why.push_back("'" + body + "' prints in pieces");
+    if (tooClose()) {
+        char line[96];
+        std::snprintf(line, sizeof line, "parts come %.3f mm apart, under the %.2f mm gap, ",
+                      check->clearance, gap);
+        why.push_back(line + check->where);
+    }
+    return why;
+}
+
 bool PrintReport::ok() const
 {
-    return check && check->invalid.empty() && check->loose.empty() && !tooClose();
+    return check && failures().empty();
 }
 
 namespace {

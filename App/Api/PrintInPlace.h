@@ -43,7 +43,10 @@ struct PrintReport {
 
     /// Parts come nearer than the gap somewhere along a motion (a hundredth of a mm to spare).
     bool tooClose() const;
-    /// The print passes: checked, no invalid solid, no body in pieces, not too close.
+    /// Why the print does not pass, each in words: an invalid solid, a body in pieces, parts nearer than the
+    /// gap (and where); none when it passes or was not checked.
+    std::vector<std::string> failures() const;
+    /// The print passes: checked, and nothing fails.
     bool ok() const;
 };
 

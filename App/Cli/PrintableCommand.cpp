@@ -65,26 +65,6 @@ nlohmann::json reportJson(const api::PrintReport& made, double seconds, const st
             {"files", names}};
 }
 
-/// Why a print does not pass, in a line (empty when it does): what report.json's "ok" false stands for.
-std::string whyNot(const api::PrintReport& made)
-{
-    std::vector<std::string> why;
-    for (const std::string& name : made.check->invalid)
-        why.push_back("'" + name + "' is no valid solid");
-    for (const std::string& body : made.check->loose)
-        why.push_back("'" + body + "' prints in pieces");
-    if (made.tooClose()) {
-        char line[96];
-        std::snprintf(line, sizeof line, "parts come %.3f mm apart, under the %.2f mm gap, ",
-                      made.check->clearance, made.gap);
-        why.push_back(line + made.check->where);
-    }
-    std::string text;
-    for (const std::string& w : why)
-        text += (text.empty() ? "" : "; ") + w;
-    return text;
-}
-
 int run(const PrintableArguments& args)
 {
     const auto started = std::chrono::steady_clock::now();
@@ -129,9 +109,12 @@ int run(const PrintableArguments& args)
     files.commit();
     if (made.ok())
         return 0;
+    std::string why;
+    for (const std::string& failure : made.failures())
+        why += (why.empty() ? "" : "; ") + failure;
     std::fprintf(stderr,
                  "fabguide printable: not printable as it is: %s (the files are written to look at)\n",
-                 whyNot(made).c_str());
+                 why.c_str());
     return 1;
 }
 

@@ -61,13 +61,20 @@ TEST(PrintJobTest, APrintPassesWithNoInvalidSolidNoBodyInPiecesAndPartsAGapApart
     r.check = printable::Check{};
     r.check->clearance = 0.395;  // a hundredth of a mm to spare
     EXPECT_TRUE(r.ok());
+    EXPECT_TRUE(r.failures().empty());
     r.check->clearance = 0.385;
+    r.check->where = "box and lid near (1.0, 2.0, 3.0) mm";
     EXPECT_TRUE(r.tooClose());
     EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.failures(),
+              std::vector<std::string>{"parts come 0.385 mm apart, under the 0.40 mm gap, box and lid "
+                                       "near (1.0, 2.0, 3.0) mm"});
     r.check->clearance = 1;
     r.check->loose = {"lever: 2 pieces"};
     EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.failures(), std::vector<std::string>{"'lever: 2 pieces' prints in pieces"});
     r.check->loose.clear();
     r.check->invalid = {"lid"};
     EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.failures(), std::vector<std::string>{"'lid' is no valid solid"});
 }
