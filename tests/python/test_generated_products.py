@@ -18,14 +18,16 @@ import products  # noqa: E402
 import roughen  # noqa: E402
 import workslike_checker  # noqa: E402
 
-SOLVED = range(0, 240)  # solve + check: a few hundred in CI
-PRINTED = range(0, 200, 10)  # fitted prints of every tenth
+# FABGUIDE_SAMPLE=N judges one in N of each (CI's Debian 13 run: 2; docs/decisions.md)
+SAMPLE = int(os.environ.get("FABGUIDE_SAMPLE") or 1)
+SOLVED = range(0, 240, SAMPLE)  # solve + check: a few hundred in CI
+PRINTED = range(0, 200, 10 * SAMPLE)  # fitted prints of every tenth
 
 
 def regressions():
     """The rough models that once failed (tests/gen/regressions), each with what it is known to be."""
     folder = os.path.join(GEN, "regressions")
-    return sorted(f for f in os.listdir(folder) if f.endswith(".workslike.json"))
+    return sorted(f for f in os.listdir(folder) if f.endswith(".workslike.json"))[::SAMPLE]
 
 
 def known(what, seeds):
