@@ -24,6 +24,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace fabguide::printable {
 
@@ -129,26 +130,42 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
 }
 
 /// The box joining a hinge's yokes to the cuboid they hang on across the stand-off, between `from` and `to`
-/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face. None
-/// when the axis lies on the cuboid.
+/// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face; off
+/// the cuboid's edge (standing off two faces), r past the edge along the further stand-off, so that it rests
+/// on the nearer face rather than meeting the cuboid along the edge alone (one body, not a yoke in pieces).
+/// None when the axis lies on the cuboid.
 std::optional<Coordinates> bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to,
                                   double r)
 {
+    const auto low = [&](int a) { return base.at(static_cast<Side>(2 * a)); };
+    const auto high = [&](int a) { return base.at(static_cast<Side>(2 * a + 1)); };
+    const auto standOff = [&](int a) {
+        const double x = coord(axis.Location(), a);
+        return std::max(x - high(a), low(a) - x);
+    };
     Coordinates c{};
-    bool apart = false;
+    std::vector<int> off;  // the axes across which it stands off the cuboid
     for (int a = 0; a < 3; ++a) {
-        const double low = base.at(static_cast<Side>(2 * a)), high = base.at(static_cast<Side>(2 * a + 1));
         const double x = coord(axis.Location(), a);
         if (a == along) {
             c[2 * a] = from, c[2 * a + 1] = to;
-        } else if (x > high + 1e-3 || x < low - 1e-3) {
-            apart = true;
-            c[2 * a] = std::min(x, high), c[2 * a + 1] = std::max(x, low);
+        } else if (standOff(a) > 1e-3) {
+            c[2 * a] = std::min(x, high(a)), c[2 * a + 1] = std::max(x, low(a));
+            off.push_back(a);
         } else {  // level with a face or within: r of the cuboid on the side of the axis' other offset
-            c[2 * a] = std::max(low, x - r), c[2 * a + 1] = std::min(high, x + r);
+            c[2 * a] = std::max(low(a), x - r), c[2 * a + 1] = std::min(high(a), x + r);
         }
     }
-    return apart ? std::optional(c) : std::nullopt;
+    if (off.empty())
+        return std::nullopt;
+    if (off.size() == 2) {
+        const int a = standOff(off[0]) > standOff(off[1]) ? off[0] : off[1];
+        if (coord(axis.Location(), a) > high(a))
+            c[2 * a] = std::max(low(a), high(a) - r);
+        else
+            c[2 * a + 1] = std::min(high(a), low(a) + r);
+    }
+    return c;
 }
 
 /// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
@@ -163,25 +180,16 @@ std::pair<double, double> travel(const Model& m, int j)
     return {low, high};
 }
 
-/// A rod along a hinge's axis, made a slot over a sliding hinge's travel by the rod at both ends of the
-/// travel and the box between: slotted yokes and their clearances.
+/// A rod along a hinge's axis, made a slot over a sliding hinge's travel (longer, where it slides along the
+/// axis): slotted yokes and their clearances.
 TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
 {
     const Joint& joint = m.joints[j];
     const auto [low, high] = travel(m, j);
-    if (high - low < 1e-9)
-        return rod(at, along, from, to, r);
-    auto shifted = [&](double by) {
-        return at.Translated(gp_Vec(joint.axis == 0, joint.axis == 1, joint.axis == 2) * by);
-    };
-    Coordinates span{};
-    for (int a = 0; a < 3; ++a) {
-        const double centre = coord(at, a);
-        span[2 * a] = a == along ? from : a == joint.axis ? centre + low : centre - r;
-        span[2 * a + 1] = a == along ? to : a == joint.axis ? centre + high : centre + r;
-    }
-    return fuse(fuse(rod(shifted(low), along, from, to, r), rod(shifted(high), along, from, to, r)),
-                box(span));
+    const gp_Vec axis(joint.axis == 0, joint.axis == 1, joint.axis == 2);
+    return joint.axis == along
+               ? rod(at, along, from + low, to + high, r)
+               : slot(at.Translated(axis * low), at.Translated(axis * high), along, from, to, r);
 }
 
 /// How far the point on the face lies from the face's edges.
@@ -281,31 +289,41 @@ void giveWay(const Model& m, int k, int along, double lo, double hi, double radi
 }
 
 /// A part that slides past hinge j's round parts (along `span`, out to `radius` round the axis, the gap
-/// included), and stands within the gap of them as printed (not only on its edge), gives way round them
-/// (their box where it moves) along its motion, in its own frame: a drawer front just above a flap's hinge
-/// gets a groove under it, where a thinner pin could not clear (too little room for the least pin and its
-/// gap). Noted.
+/// included) and the bridges that hold them off the base (`clear`, grown by the gap), or turns past them on
+/// the base by a hinge of its own, and stands within the gap of them as printed (not only on its edge), gives
+/// way round them (their boxes where they go) along its motion, in its own frame: a drawer front just above a
+/// flap's hinge gets a groove under it, where a thinner pin could not clear (too little room for the least
+/// pin and its gap); a door beside another door's hinge is trimmed along its turn where the yokes stand.
+/// Noted.
 void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, double> span, double radius,
-                           std::vector<TopoDS_Shape>& shapes, Printable& out)
+                           const std::vector<Coordinates>& clear, std::vector<TopoDS_Shape>& shapes,
+                           Printable& out)
 {
     const Joint& joint = m.joints[j];
     const gp_Ax1 axis = hingeAxis(m, joint);
     const int along = hingeAlong(joint);
-    Coordinates room{};
+    std::vector<Coordinates> room{Coordinates{}};
     for (int a = 0; a < 3; ++a) {
-        room[2 * a] = a == along ? span.first : coord(axis.Location(), a) - radius;
-        room[2 * a + 1] = a == along ? span.second : coord(axis.Location(), a) + radius;
+        room[0][2 * a] = a == along ? span.first : coord(axis.Location(), a) - radius;
+        room[0][2 * a + 1] = a == along ? span.second : coord(axis.Location(), a) + radius;
     }
-    const TopoDS_Shape roomSolid = rod(axis.Location(), along, span.first, span.second, radius);
+    room.insert(room.end(), clear.begin(), clear.end());
+    std::vector<TopoDS_Shape> roomSolids{rod(axis.Location(), along, span.first, span.second, radius)};
+    for (const Coordinates& c : clear)
+        roomSolids.push_back(box(c));
     Bnd_Box reach;
-    BRepBndLib::Add(roomSolid, reach);
+    for (const TopoDS_Shape& r : roomSolids)
+        BRepBndLib::Add(r, reach);
     for (int q = 0; q < static_cast<int>(shapes.size()); ++q) {
         if (q == joint.part || q == base || function::carrierOf(m, q) == joint.part ||
             (standsStill(m, q) && standsStill(m, base)))
             continue;
         Bnd_Box its;
         BRepBndLib::Add(shapes[q], its);
-        if (reach.IsOut(its) || volumeOf(BRepAlgoAPI_Common(roomSolid, shapes[q]).Shape()) < 1e-3)
+        if (reach.IsOut(its) ||
+            std::none_of(roomSolids.begin(), roomSolids.end(), [&](const TopoDS_Shape& r) {
+                return volumeOf(BRepAlgoAPI_Common(r, shapes[q]).Shape()) >= 1e-3;
+            }))
             continue;
         std::vector<TopoDS_Shape> around;
         for (int k = 0; k < static_cast<int>(m.configurations.size()); ++k) {
@@ -317,14 +335,14 @@ void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, do
             bool slides = true;
             for (int step = 1; step <= 8; ++step)
                 slides = slides && std::abs(apart(step / 8.0).GetRotation().GetRotationAngle()) < 1e-12;
-            if (!slides)
-                continue;  // a groove along a turn costs more cuts than a part has time for
-            for (const TopoDS_Shape& swept : pathRelative(m, k, base, q, {room}))
+            if (!slides && hingeOn(m, q, base, k) < 0)
+                continue;  // a groove along turns upon turns costs more cuts than a part has time for
+            for (const TopoDS_Shape& swept : pathRelative(m, k, base, q, room))
                 around.push_back(swept);
         }
         if (around.empty())
             continue;  // it never moves past them: the gaps as printed are the other joints' business
-        around.push_back(roomSolid);
+        around.insert(around.end(), roomSolids.begin(), roomSolids.end());
         shapes[q] = cut(shapes[q], around);
         out.notes.push_back(m.parts[q].name + ": grooved to clear the round parts of '" + joint.name + "'");
     }
@@ -473,7 +491,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         other = fuse(other, cut(box(b), hole));
     part = fuse(part,
                 fuse(rod(at, along, lo + yoke + g, hi - yoke - g, r.outer), rod(at, along, lo, hi, r.pin)));
-    makeWayPastRoundParts(m, j, base, {lo - g, hi + g}, r.outer + g, shapes, out);
+    makeWayPastRoundParts(m, j, base, {lo - g, hi + g}, r.outer + g, clear, shapes, out);
 }
 
 std::vector<RailPlace> railPlaces(const Model& m, int j)

@@ -3,18 +3,24 @@
 #include <BOPAlgo_Alerts.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
 
 #include <algorithm>
 #include <cctype>
@@ -147,7 +153,8 @@ TopoDS_Shape cut(const TopoDS_Shape& a, const std::vector<TopoDS_Shape>& tools)
     const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>(shapes, "cut");
     const double before = volumeOf(a), lost = before - held - volumeOf(result);
     if (lost > 1e-6 * before + 1e-3)
-        throw std::runtime_error("geometry: a cut lost " + std::to_string(lost) +
+        throw std::runtime_error("geometry: a cut" + Handle(Budget)(new Budget())->part() + " lost " +
+                                 std::to_string(lost) +
                                  " mm3 more than its tools hold (OpenCASCADE); try another --gap or --scale");
     return result;
 }
@@ -178,6 +185,29 @@ TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r)
     setCoord(start, axis, from);
     return BRepPrimAPI_MakeCylinder(gp_Ax2(start, gp_Dir(axis == 0, axis == 1, axis == 2)), r, to - from)
         .Shape();
+}
+
+TopoDS_Shape slot(const gp_Pnt& a, const gp_Pnt& b, int axis, double from, double to, double r)
+{
+    gp_Pnt p = a, q = b;
+    setCoord(p, axis, from);
+    setCoord(q, axis, from);
+    if (p.Distance(q) < 1e-9)
+        return rod(p, axis, from, to, r);
+    const gp_Dir n(axis == 0, axis == 1, axis == 2), d(gp_Vec(p, q));
+    const gp_Vec side = gp_Vec(n.Crossed(d)) * r;
+    // Each half circle runs anticlockwise about n: from +side round p's far end, from -side round q's.
+    const auto half = [&](const gp_Pnt& centre, const gp_Vec& start) {
+        return BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(centre, n), r), centre.Translated(start),
+                                       centre.Translated(-start))
+            .Edge();
+    };
+    const TopoDS_Wire profile =
+        BRepBuilderAPI_MakeWire(
+            half(p, side), BRepBuilderAPI_MakeEdge(p.Translated(-side), q.Translated(-side)), half(q, -side),
+            BRepBuilderAPI_MakeEdge(q.Translated(side), p.Translated(side)))
+            .Wire();
+    return BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile).Face(), gp_Vec(n) * (to - from)).Shape();
 }
 
 TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double from, double to, double radius)

@@ -95,6 +95,12 @@ TopoDS_Shape moved(const TopoDS_Shape& s, const gp_Trsf& t);
 /// A cylinder of radius r around the axis `axis` through `at`, from `from` to `to` along it.
 TopoDS_Shape rod(const gp_Pnt& at, int axis, double from, double to, double r);
 
+/// What a rod of radius r round the axis `axis`, from `from` to `to` along it, fills moving from a to b
+/// across it (a slot): two half rods joined by flat sides, one profile extruded, so that no Boolean leaves
+/// tangent faces for OpenCASCADE to merge at a large tolerance (which made later cuts take away more than
+/// their tools).
+TopoDS_Shape slot(const gp_Pnt& a, const gp_Pnt& b, int axis, double from, double to, double r);
+
 /// A rod of `radius` round p along normal axis n, from `from` to `to` measured from `face` in direction
 /// `sign` (+1 or -1), whichever way round that puts its ends.
 TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double from, double to, double radius);

@@ -66,16 +66,15 @@ std::vector<Coordinates> splitAtAxis(const std::vector<Coordinates>& boxes, cons
     return pieces;
 }
 
-/// The plain hinge on which part `carried` turns on `base` in configuration k, or -1.
+}  // namespace
+
 int hingeOn(const Model& m, int carried, int base, int k)
 {
     const int j = jointMoving(m, function::carrierOf(m, carried));
-    return j >= 0 && m.joints[j].base == base && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k)
-               ? j
-               : -1;
+    const bool onBase =
+        j >= 0 && (m.joints[j].base == base || (m.joints[j].base < 0 && standsStill(m, base)));
+    return onBase && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k) ? j : -1;
 }
-
-}  // namespace
 
 std::vector<TopoDS_Shape> turnedThenShifted(const std::vector<Coordinates>& boxes, const gp_Ax1& axis,
                                             double radians, const gp_Vec& by)

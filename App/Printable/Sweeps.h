@@ -31,6 +31,10 @@ std::vector<TopoDS_Shape> sweep(const Model& m, int part, int k, const std::vect
 std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
                                      const std::vector<Coordinates>& boxes);
 
+/// The plain hinge on which part `carried` turns on `base` in configuration k, or -1 (a hinge on the ground
+/// turns on any part that stands still).
+int hingeOn(const Model& m, int carried, int base, int k);
+
 /// What part a's boxes sweep in part b's frame as both move to configuration k: when one turns on the other
 /// by a hinge, the revolution about it (exact); otherwise a at 32 poses while they turn (the first half) and
 /// 8 while they slide.

@@ -15,6 +15,7 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <fstream>
 
@@ -461,6 +462,53 @@ TEST(Joints, APartMovingPastAHingesRoundPartsGivesWayRoundThem)
     EXPECT_TRUE(placed.check.loose.empty());
 }
 
+TEST(Joints, ADoorTurningPastAnotherDoorsRoundPartsGivesWayRoundThemAndTheirBridges)
+{
+    // Two doors side by side, each hinged on its left near edge: the right one 20 mm thick, so its yokes
+    // stand off the carcass on bridges, across the end of the left door. The left door, turning on its own
+    // hinge past them, is trimmed along its turn (it met the bridges as printed, clearance 0, before: seed
+    // 733's class).
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "carcass", "cuboids": [{"name": "carcass", "min": [0, 0, 0], "max": [200, 100, 100]}]},
+                  {"name": "door A", "cuboids": [{"name": "door A", "min": [0, -10, 0], "max": [99, 0, 100]}]},
+                  {"name": "door B", "cuboids": [{"name": "door B", "min": [100, -20, 0], "max": [200, 0, 100]}]}],
+        "joints": [{"name": "A hinge", "type": "hinge", "part": "door A", "edge": ["door A.left", "door A.near"]},
+                   {"name": "B hinge", "type": "hinge", "part": "door B", "edge": ["door B.left", "door B.near"]}],
+        "configurations": [{"name": "A open", "poses": {"A hinge": -90}},
+                           {"name": "B open", "poses": {"B hinge": -90}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    EXPECT_FALSE(inside(p.bodies[1].shape, gp_Pnt(98, -5, 50)));  // where its end sweeps past the knuckle
+    EXPECT_TRUE(inside(p.bodies[1].shape, gp_Pnt(80, -5, 50)));
+    EXPECT_NE(
+        std::find(p.notes.begin(), p.notes.end(), "door A: grooved to clear the round parts of 'B hinge'"),
+        p.notes.end());
+    const Checked placed = placedByCheck(m, p, {0.4}, 8);
+    EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
+    EXPECT_TRUE(placed.check.loose.empty());
+}
+
+TEST(Joints, YokesStandingOffTheBasesEdgeRestOnItsNearerFace)
+{
+    // A flap over a case's front, its top 0.4 mm above the case and hinged on its top near edge: the axis
+    // stands off the case's top by 0.4 mm and its front by 4. The bridges reached the case's edge alone, and
+    // the case printed in three pieces (generated seed 2123); they now rest on its top, one body with it.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "case", "cuboids": [{"name": "case", "min": [0, 0, 0], "max": [100, 60, 100]},
+                   {"name": "bay", "min": [6, 0, 6], "max": [94, 54, 94], "cavity": true}]},
+                  {"name": "flap", "cuboids": [{"name": "flap", "min": [6, -4, 6], "max": [94, 0, 100.4]}]}],
+        "joints": [{"name": "flap hinge", "type": "hinge", "part": "flap", "edge": ["flap.top", "flap.near"]}],
+        "configurations": [{"name": "up", "poses": {"flap hinge": -80}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    const Check c = check(m, p, 0.4, 16);
+    EXPECT_TRUE(c.loose.empty()) << c.loose.front();
+    EXPECT_TRUE(c.invalid.empty());
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+}
+
 TEST(Joints, ALinksRoundPartsStayWithinTheFacesTheyStandOn)
 {
     // A crate's 10 mm board on a link to the base's side, the base pivot 3 mm under the base's top: the
@@ -629,6 +677,23 @@ TEST(Solids, OpenCascadePastAPartsTimeBudgetStopsWithAnErrorNamingThePartAndTheO
     }
     const Work box2("box");  // the print's 30 s, counted afresh
     EXPECT_NEAR(volumeOf(fuse(box({0, 10, 0, 10, 0, 10}), box({5, 15, 5, 15, 5, 15}))), 2000 - 125, 1e-6);
+}
+
+TEST(Solids, ASlotIsTheRodsPathInOneSolidAtTheModellingTolerance)
+{
+    // A slotted yoke's clearance: a 3 mm rod along z moved 8 mm along y. Fused from two rods and the box
+    // between (their faces tangent), OpenCASCADE grew an edge's tolerance to 10 mm, and a door cut by it lost
+    // 14 cm3 more than the slot holds (generated seed 2130).
+    const TopoDS_Shape s = slot(gp_Pnt(0, 0, 0), gp_Pnt(0, 8, 0), 2, 1, 11, 3);
+    EXPECT_TRUE(BRepCheck_Analyzer(s).IsValid());
+    EXPECT_NEAR(volumeOf(s), (kPi * 9 + 6 * 8) * 10, 1e-6);
+    EXPECT_LE(BRep_Tool::MaxTolerance(s, TopAbs_EDGE), 1e-6);
+    const TopoDS_Shape door =
+        box({1, 40, -5, 2, 1, 11});  // it takes the quarter of the slot's end beyond x = 1
+    EXPECT_NEAR(volumeOf(cut(door, s)), volumeOf(door) - volumeOf(BRepAlgoAPI_Common(door, s).Shape()), 1e-6);
+    EXPECT_FALSE(inside(s, gp_Pnt(3.5, 4, 5)));
+    EXPECT_TRUE(inside(s, gp_Pnt(2.9, 4, 5)));
+    EXPECT_TRUE(inside(s, gp_Pnt(0, 10.9, 5)));
 }
 
 TEST(Solids, TheHingedLidPrintsWithinItsBudgetAndAnExhaustedOneNamesAPart)
