@@ -1,5 +1,6 @@
 #include "Api/PrintInPlace.h"
 
+#include "Core/Text.h"
 #include "IO/WorkslikeFormat.h"
 
 #include <BRepGProp.hxx>
@@ -55,10 +56,8 @@ double gapOf(const PrintJob& job)
     const auto found = std::find_if(profiles.begin(), profiles.end(),
                                     [&](const PrinterProfile& p) { return p.id == job.printer; });
     if (found == profiles.end()) {
-        std::string ids;
-        for (const PrinterProfile& p : profiles)
-            ids += (ids.empty() ? "" : ", ") + p.id;
-        throw std::invalid_argument("no printer profile '" + job.printer + "' (" + ids + ")");
+        throw std::invalid_argument("no printer profile '" + job.printer + "' (" +
+                                    joined(profiles, [](const PrinterProfile& p) { return p.id; }) + ")");
     }
     return found->gap;
 }

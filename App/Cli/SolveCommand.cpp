@@ -1,6 +1,7 @@
 // `fabguide solve`: the works-like model nearest to the given one that satisfies its relationships
 // (thesis 4.4).
 #include "Cli/Commands.h"
+#include "Core/Text.h"
 #include "Function/Pose.h"
 #include "IO/Json.h"
 #include "IO/Output.h"
@@ -79,10 +80,8 @@ int run(const SolveArguments& args)
     report("flush", model.flush);
     report("geometric", model.geometric);
     if (!result.solved) {
-        std::string names;
-        for (const std::string& name : result.conflict)
-            names += (names.empty() ? "" : ", ") + ("'" + name + "'");
-        std::fprintf(stderr, "fabguide solve: these cannot hold together: %s\n", names.c_str());
+        std::fprintf(stderr, "fabguide solve: these cannot hold together: %s\n",
+                     joined(result.conflict, quoted).c_str());
         for (const std::string& note : result.notes)
             std::fprintf(stderr, "  %s\n", note.c_str());
         return 1;

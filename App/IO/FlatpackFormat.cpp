@@ -95,7 +95,7 @@ std::vector<int> partsOf(const Design& design, const Fields& c, size_t least)
 
 /// The first few of `list` joined, "a = b = c = … (40 in all)": a name every equality of the constraint
 /// carries (100,000 references joined in full, once per equality, took all the memory).
-std::string joined(const nlohmann::json& list, const std::string& separator)
+std::string firstFew(const nlohmann::json& list, const std::string& separator)
 {
     constexpr size_t kNamed = 4;
     std::string text;
@@ -139,7 +139,7 @@ struct ConstraintReader {
     void equalKind()
     {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
-        const std::string name = named(joined(c.array("refs"), " = "));
+        const std::string name = named(firstFew(c.array("refs"), " = "));
         for (size_t k = 1; k < refs.size(); ++k)
             equal(name, refs[k] - refs[0]);
     }
@@ -147,7 +147,7 @@ struct ConstraintReader {
     {
         const Linear lhs = sum(references(design, c, "lhs", 1)), rhs = sum(references(design, c, "rhs", 1));
         const double offset = c.number("offset", 0.0);
-        equal(named(joined(c.array("lhs"), " + ") + " = " + joined(c.array("rhs"), " + ") +
+        equal(named(firstFew(c.array("lhs"), " + ") + " = " + firstFew(c.array("rhs"), " + ") +
                     (offset != 0 ? " + " + show(offset) : "")),
               lhs - rhs - material::constant(offset));
     }
@@ -166,7 +166,7 @@ struct ConstraintReader {
                              : json["about"].is_number()
                                  ? material::constant(json["about"].get<double>())
                                  : reference(design, json["about"], c.pathOf("about"));
-        equal(named(joined(c.array("refs"), ", ")), refs[0] + refs[1] - about * 2.0);
+        equal(named(firstFew(c.array("refs"), ", ")), refs[0] + refs[1] - about * 2.0);
     }
     void groundKind()
     {
@@ -188,7 +188,7 @@ struct ConstraintReader {
                 throw FormatError(c.pathOf("parts"),
                                   design.boards[b].id + " is not parallel to " + design.boards[parts[0]].id);
         for (size_t k = 1; k < parts.size(); ++k)
-            equal(named(joined(c.array("parts"), ", ")),
+            equal(named(firstFew(c.array("parts"), ", ")),
                   material::centreOf(parts[k], normal) - material::centreOf(parts[0], normal));
     }
     void snapKind(const std::string& path)
@@ -593,7 +593,7 @@ nlohmann::json drawnEqualConstraints(const nlohmann::json& document)
                 return std::includes(h.begin(), h.end(), wanted.begin(), wanted.end());
             }))
             constraints.push_back({{"kind", "equal"},
-                                   {"name", "drawn equal: " + size + " of " + joined(ids, ", ")},
+                                   {"name", "drawn equal: " + size + " of " + firstFew(ids, ", ")},
                                    {"refs", refs}});
     }
     return constraints;

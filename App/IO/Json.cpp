@@ -1,5 +1,6 @@
 #include "IO/Json.h"
 
+#include "Core/Text.h"
 #include "IO/Output.h"
 
 #include <algorithm>
@@ -219,13 +220,10 @@ void Fields::only(const std::vector<std::string>& known) const
         const auto closest = std::min_element(known.begin(), known.end(), [&](const auto& a, const auto& b) {
             return editDistance(key, a) < editDistance(key, b);
         });
-        std::string knownList;
-        for (const std::string& k : known)
-            knownList += (knownList.empty() ? "" : ", ") + k;
         throw FormatError(pathOf(key),
                           "no such key" + (closest != known.end() && editDistance(key, *closest) <= 2
                                                ? "; did you mean \"" + *closest + "\"?"
-                                               : " (known: " + knownList + ")"));
+                                               : " (known: " + joined(known) + ")"));
     }
 }
 

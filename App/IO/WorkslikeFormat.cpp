@@ -1,5 +1,6 @@
 #include "IO/WorkslikeFormat.h"
 
+#include "Core/Text.h"
 #include "Function/Cover.h"
 #include "Function/FitInside.h"
 #include "Function/Pose.h"
@@ -205,11 +206,10 @@ void readJoint(function::Model& model, const nlohmann::json& json, const std::st
     const auto known = std::find_if(function::kJointKinds.begin(), function::kJointKinds.end(),
                                     [&](const function::JointKind& k) { return k.name == type; });
     if (known == function::kJointKinds.end()) {
-        std::string kinds;
-        for (const function::JointKind& k : function::kJointKinds)
-            kinds += (kinds.empty() ? "" : ", ") + std::string(k.name);
-        throw FormatError(j.pathOf("type"),
-                          "\"" + type + "\" is not a joint this FabGuide knows (" + kinds + ")");
+        throw FormatError(
+            j.pathOf("type"),
+            "\"" + type + "\" is not a joint this FabGuide knows (" +
+                joined(function::kJointKinds, [](const function::JointKind& k) { return k.name; }) + ")");
     }
     joint.type = known->type;
     if (joint.type == function::Joint::Type::Fixed && joint.base < 0)

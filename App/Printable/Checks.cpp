@@ -1,6 +1,7 @@
 #include "Printable/Checks.h"
 
 #include "Core/Parallel.h"
+#include "Core/Text.h"
 #include "Printable/Joints.h"
 #include "Printable/Motion.h"
 
@@ -322,12 +323,10 @@ Checked placedByCheck(const function::Model& m, Printable made, const Printer& p
         }
         places[j] = best;
         if (fails(c))
-            tried.push_back("'" + m.joints[j].name + "'");
+            tried.push_back(quoted(m.joints[j].name));
     }
     if (fails(c) && !tried.empty()) {
-        std::string names;
-        for (const std::string& name : tried)
-            names += (names.empty() ? "" : ", ") + name;
+        const std::string names = joined(tried);
         const bool one = tried.size() == 1;
         c.where +=
             (one ? "; joint " : "; joints ") + names + (one ? " is" : " are") + " in the way" +

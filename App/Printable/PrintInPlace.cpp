@@ -1,5 +1,6 @@
 #include "Printable/PrintInPlace.h"
 
+#include "Core/Text.h"
 #include "Function/Solve.h"
 #include "Geometry/Interval.h"
 #include "Printable/Gaps.h"
@@ -239,9 +240,7 @@ Model solvedToPrint(const Model& model, double scale)
 {
     const function::SolveResult solved = function::solve(model);
     if (!solved.solved) {
-        std::string names;
-        for (const std::string& name : solved.conflict)
-            names += (names.empty() ? "" : ", ") + ("'" + name + "'");
+        const std::string names = joined(solved.conflict, quoted);
         std::string why;  // a double pivot's reason, where the names alone do not say
         for (const std::string& note : solved.notes)
             for (const std::string& name : solved.conflict)
