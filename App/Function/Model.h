@@ -252,8 +252,8 @@ Model indexed(Model model);
 /// "lid.top": how a face is named in files and messages.
 std::string faceName(const Model& model, const Face& face);
 
-/// A length in messages, to three significant digits: "7", "110", "0.5".
-std::string millimetres(double mm);
+/// A length in messages, to three significant digits (or `digits`): "7", "110", "0.5".
+std::string millimetres(double mm, int digits = 3);
 
 /// Whether side `side` of a cavity is an opening (4.1.1), which stays on its solid's face: it lies there as
 /// modelled, within half the minimum wall (a rough drawing's mouth a hair short of the face), a cover names

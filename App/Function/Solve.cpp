@@ -228,10 +228,10 @@ std::string faceName(const Model& model, const Face& face)
     return model.cuboids[face.cuboid].name + "." + sideName(face.side);
 }
 
-std::string millimetres(double mm)
+std::string millimetres(double mm, int digits)
 {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", mm);
+    std::snprintf(text, sizeof text, "%.*g", digits, mm);
     return text;
 }
 

@@ -61,7 +61,7 @@ Radii sized(double side, double g)
 }
 
 /// sized() for a joint's cuboids: round parts that stand proud of a thin part, up to twice its thickness,
-/// noted; thinner parts are refused.
+/// noted; thinner parts are refused, their thickness said to four digits (1.597 mm, not the 1.6 they need).
 Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboids, double g, Printable& out)
 {
     const double side = thinnestOf(m, cuboids);
@@ -72,7 +72,7 @@ Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboi
     const double least = leastOuter(g);
     if (side < least)
         throw std::invalid_argument("joint '" + joint.name + "': its parts are too thin (cuboid '" +
-                                    m.cuboids[thinCuboid].name + "' is " + function::millimetres(side) +
+                                    m.cuboids[thinCuboid].name + "' is " + function::millimetres(side, 4) +
                                     " mm as printed; a pin and its yokes need " +
                                     function::millimetres(least) + " mm with a " + function::millimetres(g) +
                                     " mm gap): make it thicker, or print larger");
