@@ -2,6 +2,7 @@
 // 3MF and STEP.
 #include "Api/PrintInPlace.h"
 #include "Cli/Commands.h"
+#include "Core/Text.h"
 #include "IO/Json.h"
 #include "IO/Output.h"
 #include "IO/PrintFiles.h"
@@ -109,12 +110,9 @@ int run(const PrintableArguments& args)
     files.commit();
     if (made.ok())
         return 0;
-    std::string why;
-    for (const std::string& failure : made.failures())
-        why += (why.empty() ? "" : "; ") + failure;
     std::fprintf(stderr,
                  "fabguide printable: not printable as it is: %s (the files are written to look at)\n",
-                 why.c_str());
+                 joined(made.failures(), asIs, "; ").c_str());
     return 1;
 }
 

@@ -18,11 +18,17 @@ std::string joined(const Items& items, Text text, const std::string& separator =
     return all;
 }
 
+/// A text as it is: joined(texts, asIs, "; ").
+inline const std::string& asIs(const std::string& text)
+{
+    return text;
+}
+
 /// Texts, ", " between them.
 template <class Items>
 std::string joined(const Items& texts)
 {
-    return joined(texts, [](const std::string& text) { return text; });
+    return joined(texts, asIs);
 }
 
 /// A name as messages quote it: 'name'.

@@ -17,8 +17,8 @@
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
 #include <TopTools_ListOfShape.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Wire.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
@@ -153,8 +153,7 @@ TopoDS_Shape cut(const TopoDS_Shape& a, const std::vector<TopoDS_Shape>& tools)
     const TopoDS_Shape result = boolean<BRepAlgoAPI_Cut>(shapes, "cut");
     const double before = volumeOf(a), lost = before - held - volumeOf(result);
     if (lost > 1e-6 * before + 1e-3)
-        throw std::runtime_error("geometry: a cut" + Handle(Budget)(new Budget())->part() + " lost " +
-                                 std::to_string(lost) +
+        throw std::runtime_error("geometry: a cut" + Budget().part() + " lost " + std::to_string(lost) +
                                  " mm3 more than its tools hold (OpenCASCADE); try another --gap or --scale");
     return result;
 }
