@@ -38,6 +38,8 @@ struct Cuboid {
     std::array<double, 6> coordinates{};  ///< indexed by Side
     int within = -1;                      ///< a cavity: the solid cuboid it is cut from; -1: solid
     std::array<double, 3> drawn{};        ///< sizes the user drew, before any solve (0: unknown)
+    double least = 0;  ///< mm along each axis, what a joint's geometry on it needs: print in place sets it,
+                       ///< so that the solve keeps it that thick where it is drawn so (Solve.cpp, collapsed)
     double at(Side side) const { return coordinates[static_cast<int>(side)]; }
     bool cavity() const { return within >= 0; }
 };

@@ -640,28 +640,32 @@ LinearConstraint sizeHeld(int i, double size)
     return {{{i + 1, 1.0}, {i, -1.0}}, size, size, ""};
 }
 
-/// Sizes the least change `x` cuts to less than half of the larger of what the user drew (`drawn`, a size per
-/// axis of each cuboid) and what they are now, the thinnest first, each held as it is now.
-std::vector<LinearConstraint> collapsed(const Eigen::VectorXd& target, const std::vector<double>& drawn,
+/// What the solve holds the least change to, where the relationships allow (leastChange).
+struct Drawing {
+    std::vector<double> sizes;               ///< what the user drew: a size per axis of each cuboid
+    std::vector<double> least;               ///< what a joint's geometry needs of each cuboid (Cuboid::least)
+    std::vector<std::pair<int, int>> twins;  ///< cuboids that stay alike
+};
+
+/// Sizes the least change `x` cuts to less than half of the larger of what the user drew and what they are
+/// now, or below what a joint's geometry on them needs (Cuboid::least) where they are not below it now, the
+/// thinnest first, each held as it is now.
+std::vector<LinearConstraint> collapsed(const Eigen::VectorXd& target, const Drawing& drawing,
                                         const Eigen::VectorXd& x)
 {
     std::vector<std::pair<double, int>> thinned;  // (size left / size drawn, the axis' low variable)
-    for (int i = 0; i + 1 < target.size(); i += 2)
-        if (const double was = std::max(drawn[i / 2], target[i + 1] - target[i]), now = x[i + 1] - x[i];
-            now < was / 2)
+    for (int i = 0; i + 1 < target.size(); i += 2) {
+        const double size = target[i + 1] - target[i], was = std::max(drawing.sizes[i / 2], size),
+                     now = x[i + 1] - x[i], least = drawing.least[i / 6];
+        if (now < was / 2 || (now < least - 1e-9 && least <= size))
             thinned.push_back({now / was, i});
+    }
     std::sort(thinned.begin(), thinned.end());
     std::vector<LinearConstraint> holds;
     for (const auto& [left, i] : thinned)
         holds.push_back(sizeHeld(i, target[i + 1] - target[i]));
     return holds;
 }
-
-/// What the solve holds the least change to, where the relationships allow (leastChange).
-struct Drawing {
-    std::vector<double> sizes;               ///< what the user drew: a size per axis of each cuboid
-    std::vector<std::pair<int, int>> twins;  ///< cuboids that stay alike
-};
 
 /// Pairs of cuboids alike now (the same three sizes, to 1e-6 mm: a pair of doors, a row of shelves) that one
 /// relationship names both of (its rows touch both). A relationship that names one of them only (a's width
@@ -715,8 +719,9 @@ std::vector<LinearConstraint> twinsApart(const std::vector<std::pair<int, int>>&
 /// thick so that its hinge edge moves 8 mm back; then no hinge fits it): a size it cuts to less than half of
 /// what the user drew is held as it was before this solve, and the parts move instead. What the user drew is
 /// `drawn`, so that successive solves cannot halve a size again and again (a door 20 mm, then 10.2,
-/// then 5.1). Twins stay alike (the left door thinned, the right not). Both where the relationships
-/// allow.
+/// then 5.1). Nor does it thin a part below what a joint's geometry on it needs (Cuboid::least: a lid pushed
+/// into its carcass moves up rather than thin below its hinge's pin). Twins stay alike (the left door
+/// thinned, the right not). All where the relationships allow.
 LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& drawing,
                               const std::vector<LinearConstraint>& rows, const Eigen::VectorXd* start)
 {
@@ -724,7 +729,7 @@ LeastChangeResult leastChange(const Eigen::VectorXd& target, const Drawing& draw
     if (!least.solved)
         return least;
     std::vector<LinearConstraint> held = rows;
-    const std::vector<LinearConstraint> thinned = collapsed(target, drawing.sizes, least.x);
+    const std::vector<LinearConstraint> thinned = collapsed(target, drawing, least.x);
     least = heldWhereAllowed(target, held, std::move(least), thinned);
     const std::vector<LinearConstraint> twins = twinsApart(drawing.twins, least.x);
     return heldWhereAllowed(target, held, std::move(least), twins);
@@ -920,6 +925,7 @@ SolveResult solve(const Model& model)
             target[6 * c + k] = model.cuboids[c].coordinates[k];
         for (int a = 0; a < 3; ++a)
             drawing.sizes.push_back(model.cuboids[c].drawn[a]);
+        drawing.least.push_back(model.cuboids[c].least);
     }
     const std::vector<LinearConstraint> relationships = constraints(model);
     drawing.twins = twins(model, relationships);

@@ -356,6 +356,19 @@ std::string linkName(const Joint& joint)
     return named ? joint.name : joint.name + " link";  // "upper link", not "upper link link"
 }
 
+Model needingRoundParts(Model model, double g, double scale)
+{
+    const double least = leastOuter(g) / scale;
+    for (const Joint& joint : model.joints) {
+        if (joint.turns())
+            model.cuboids[joint.edgeA.cuboid].least = least;
+        if (joint.type == Joint::Type::DoublePivot)
+            for (int c : {joint.pivotFace.cuboid, joint.basePivotFace.cuboid})
+                model.cuboids[c].least = least;
+    }
+    return model;
+}
+
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 {
     const double thin = thinnest(m.cuboids[joint.edgeA.cuboid]);
@@ -582,14 +595,19 @@ void addRails(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     }
     const double width = at.high - at.low,
                  centre = std::clamp((at.low + at.high) / 2, centres(h).first, centres(h).second);
-    if (h < 2 * g || !fits(h) || to - from < 4 * h)
+    if (h < 2 * g || !fits(h) || to - from < 4 * h) {
+        // What the least rails (2g deep) need here: the strip as much wider as their centres are short of
+        // room, 4 depths long, on parts 2.5 depths thick.
+        const double wider = std::max(0.0, centres(2 * g).first - centres(2 * g).second);
         throw NoRoom("joint '" + joint.name + "': part '" + m.parts[joint.part].name + "' rests on '" +
                      m.cuboids[at.base].name + "' over " + function::millimetres(width) + " x " +
                      function::millimetres(to - from) + " mm of material, too little for rails " +
                      function::millimetres(h) + " mm deep at a " + function::millimetres(g) +
-                     " mm gap (they need " + function::millimetres(6 * g) + " x " +
-                     function::millimetres(8 * g) + " mm, and parts " + function::millimetres(5 * g) +
+                     " mm gap (the least rails, " + function::millimetres(2 * g) + " mm deep, need " +
+                     function::millimetres(width + wider) + " x " + function::millimetres(8 * g) +
+                     " mm here, and parts " + function::millimetres(5 * g) +
                      " mm thick): widen the contact, or print larger");
+    }
     // The dovetail's cross-section (across, normal), narrow at the base (1 mm into it), wide at the top; the
     // groove's is the same offset outwards by the gap, edge by edge.
     auto tongue = [&](double grow, double start, double length) {

@@ -27,6 +27,11 @@ std::string linkName(const Joint& joint);
 /// moving cuboid's thickness, else twice it; bridges join its yokes to it.
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
 
+/// The model with the cuboids that joints' round parts stand on (a hinge's moving cuboid, a double pivot's
+/// two) needing, along each axis, the least thickness that holds a pin at gap g, printed at `scale`
+/// (Cuboid::least): the solve then moves a part drawn thick enough rather than thin it below that.
+function::Model needingRoundParts(function::Model model, double g, double scale);
+
 /// Hinge and sliding hinge (4.5.2): a pin along the edge and a knuckle around it in the middle third on the
 /// moving part, two yokes at the ends on the part the edge lies on (slotted along a sliding hinge's travel),
 /// each cleared of the other by the gap; at `place` 1, 2 or 3 along the edge's middle, first or second half

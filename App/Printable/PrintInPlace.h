@@ -36,9 +36,10 @@ struct Printable {
     std::vector<std::string> notes;    ///< joints left without geometry, and why
 };
 
-/// The model solved (both stages) and scaled (a 1:5 prototype: 0.2) for printing; std::runtime_error naming
-/// the relationships that cannot hold together when it does not solve.
-function::Model solvedToPrint(const function::Model& model, double scale);
+/// The model solved (both stages) and scaled (a 1:5 prototype: 0.2) for printing, the parts that joints'
+/// round parts stand on kept as thick as those need at `gap` where drawn so (needingRoundParts);
+/// std::runtime_error naming the relationships that cannot hold together when it does not solve.
+function::Model solvedToPrint(const function::Model& model, double scale, double gap);
 
 /// Which of its candidate places each joint's geometry takes, by joint (0, the first, where not given).
 using Places = std::vector<int>;
