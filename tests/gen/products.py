@@ -332,6 +332,14 @@ def add_slider(p, cab, bay, n):
     p.joint({"name": name + " track", "type": "slide", "part": name, "axis": "x"}, [round_to(by)])
     p.features.add("sliding door")
     cover_front(p, name, name, bay, lo, hi)
+    # the rim its rails run on, kept as a designer keeps it: the wider one it overlays, by RAILED at least
+    rail = RAILED / cab.printed
+    if hi[1] - bay.hi[2] >= bay.lo[2] - lo[1]:
+        p.relate("geometric", name + " rides on the rim above " + bay.name, relation="at_most",
+                 left=bay.name + ".top", right=name + ".top", offset=-rail)
+    else:
+        p.relate("geometric", name + " rides on the rim below " + bay.name, relation="at_most",
+                 left=name + ".bottom", right=bay.name + ".bottom", offset=-rail)
     return name
 
 
