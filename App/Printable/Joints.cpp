@@ -330,8 +330,12 @@ void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, do
             const auto apart = [&](double t) {
                 return partMotion(m, base, k, t).Inverted() * partMotion(m, q, k, t);
             };
-            if (axis.Transformed(apart(1)).IsCoaxial(axis, 1e-9, 1e-6))
-                continue;  // q stays with base in k or turns round the same axis: the round parts stay put
+            // q stays with base in k or turns round the same axis (its points stay put): the round parts stay
+            // put; sliding along the axis moves it past them (a sliding door under a flap's hinge).
+            const gp_Trsf end = apart(1);
+            if (axis.Location().Transformed(end).Distance(axis.Location()) < 1e-6 &&
+                axis.Direction().Transformed(end).Angle(axis.Direction()) < 1e-9)
+                continue;
             bool slides = true;
             for (int step = 1; step <= 8; ++step)
                 slides = slides && std::abs(apart(step / 8.0).GetRotation().GetRotationAngle()) < 1e-12;

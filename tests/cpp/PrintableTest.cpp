@@ -489,6 +489,30 @@ TEST(Joints, APartMovingPastAHingesRoundPartsGivesWayRoundThem)
     EXPECT_TRUE(placed.check.loose.empty());
 }
 
+TEST(Joints, ASlidingDoorUnderAFlapsHingeGivesWayRoundItsYokesAlongTheAxis)
+{
+    // A flap hinged at its front bottom edge, over a sliding door that runs along that edge: the yokes'
+    // bridges back to the carcass pass through the door's top. A slide along the hinge's axis keeps the axis
+    // where it was, so it was taken for no motion past the yokes, and the door was left in them (generated
+    // seeds 883, 1368).
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "carcass", "cuboids": [{"name": "carcass", "min": [0, 0, 0], "max": [100, 50, 60]}]},
+                  {"name": "slider", "cuboids": [{"name": "slider", "min": [0, -5, 0], "max": [60, 0, 30]}]},
+                  {"name": "flap", "cuboids": [{"name": "flap", "min": [0, -5, 30], "max": [100, 0, 60]}]}],
+        "joints": [{"name": "slider track", "type": "slide", "part": "slider", "axis": "x"},
+                   {"name": "flap hinge", "type": "hinge", "part": "flap", "edge": ["flap.bottom", "flap.near"]}],
+        "configurations": [{"name": "open", "poses": {"slider track": 40, "flap hinge": 80}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 3u);
+    EXPECT_NE(
+        std::find(p.notes.begin(), p.notes.end(), "slider: grooved to clear the round parts of 'flap hinge'"),
+        p.notes.end());
+    const Checked placed = placedByCheck(m, p, {0.4}, 8);
+    EXPECT_GE(placed.check.clearance, 0.4 - 0.01) << placed.check.where;
+    EXPECT_TRUE(placed.check.loose.empty() && placed.check.invalid.empty());
+}
+
 TEST(Joints, ADoorTurningPastAnotherDoorsRoundPartsGivesWayRoundThemAndTheirBridges)
 {
     // Two doors side by side, each hinged on its left near edge: the right one 20 mm thick, so its yokes
