@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -129,14 +130,45 @@ int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double re
     return best;
 }
 
+/// Bridge c, when all it meets of cuboid onEdge lies in one of its cavities or that cavity's mouth (across
+/// every axis but `along`), carried on to the cavity's nearest wall that is no opening, r into it.
+Coordinates overWalls(const Model& m, int onEdge, Coordinates c, int along, double r)
+{
+    constexpr double hair = 1e-6;
+    const Coordinates& base = m.cuboids[onEdge].coordinates;
+    for (size_t k = 0; k < m.cuboids.size(); ++k) {
+        const Coordinates& cavity = m.cuboids[k].coordinates;
+        bool inAir = m.cuboids[k].within == onEdge;
+        for (int a = 0; a < 3 && inAir; ++a)  // the part of c at or in the cuboid, within the cavity
+            inAir = a == along || (std::max(c[2 * a], base[2 * a]) >= cavity[2 * a] - hair &&
+                                   std::min(c[2 * a + 1], base[2 * a + 1]) <= cavity[2 * a + 1] + hair);
+        if (!inAir)
+            continue;
+        int wall = -1;
+        double reach = std::numeric_limits<double>::infinity();
+        for (int side = 0; side < 6; ++side)
+            if (side / 2 != along && !function::isOpening(m, static_cast<int>(k), side))
+                if (const double d = side % 2 ? cavity[side] + r - c[side] : c[side] - (cavity[side] - r);
+                    d < reach)
+                    reach = d, wall = side;
+        if (wall >= 0)
+            c[wall] = cavity[wall] + (wall % 2 ? r : -r);
+        return c;
+    }
+    return c;
+}
+
 /// The box joining a hinge's yokes to the cuboid they hang on across the stand-off, between `from` and `to`
 /// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face; off
 /// the cuboid's edge (standing off two faces), r past the edge along the further stand-off, so that it rests
 /// on the nearer face rather than meeting the cuboid along the edge alone (one body, not a yoke in pieces).
-/// None when the axis lies on the cuboid.
-std::optional<Coordinates> bridge(const Cuboid& base, const gp_Ax1& axis, int along, double from, double to,
-                                  double r)
+/// None when the axis lies on the cuboid. Where it would meet the cuboid only in a cavity's mouth (a pocket
+/// door hinged 2 mm inside its bay's side: the yokes and their bridge stood in the bay, apart from the
+/// carcass), it is carried across the cavity to its nearest wall (overWalls).
+std::optional<Coordinates> bridge(const Model& m, int onEdge, const gp_Ax1& axis, int along, double from,
+                                  double to, double r)
 {
+    const Cuboid& base = m.cuboids[onEdge];
     const auto low = [&](int a) { return base.at(static_cast<Side>(2 * a)); };
     const auto high = [&](int a) { return base.at(static_cast<Side>(2 * a + 1)); };
     const auto standOff = [&](int a) {
@@ -165,7 +197,7 @@ std::optional<Coordinates> bridge(const Cuboid& base, const gp_Ax1& axis, int al
         else
             c[2 * a + 1] = std::min(high(a), low(a) + r);
     }
-    return c;
+    return overWalls(m, onEdge, c, along, r);
 }
 
 /// A sliding joint's travel: the least and greatest offset over its configurations (0 as modelled).
@@ -460,7 +492,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
                                     slotted(m, j, at, along, hi - yoke - g, hi + g, r.outer + g));
     std::vector<Coordinates> bridges, clear;
     for (const auto& [from, to] : {std::pair{lo, lo + yoke}, std::pair{hi - yoke, hi}})
-        if (const std::optional<Coordinates> b = bridge(m.cuboids[onEdge], axis, along, from, to, r.outer)) {
+        if (const std::optional<Coordinates> b = bridge(m, onEdge, axis, along, from, to, r.outer)) {
             bridges.push_back(*b);
             clear.push_back(*b);
             for (int i = 0; i < 6; ++i)

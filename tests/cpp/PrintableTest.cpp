@@ -560,6 +560,28 @@ TEST(Joints, YokesStandingOffTheBasesEdgeRestOnItsNearerFace)
     EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
 }
 
+TEST(Joints, YokesOverACavitysMouthAreBridgedToItsNearestWall)
+{
+    // A pocket door hinged 2 mm inside its bay's side, 0.5 mm in front of the carcass: the bridges ended on
+    // the carcass's front where the bay opens, so the yokes printed apart from it (generated seed 3499). They
+    // are carried on to the bay's side wall.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "carcass", "cuboids": [{"name": "carcass", "min": [0, 0, 0], "max": [60, 40, 40]},
+                   {"name": "bay", "min": [4, 0, 4], "max": [56, 36, 36], "cavity": true}]},
+                  {"name": "door", "cuboids": [{"name": "door", "min": [6, -3, 4], "max": [30, -0.5, 36]}]}],
+        "joints": [{"name": "door hinge", "type": "sliding_hinge", "part": "door", "edge": ["door.left", "door.far"],
+                    "axis": "y"}],
+        "configurations": [{"name": "open", "poses": {"door hinge": {"angle": 90, "offset": 20}}}]})"));
+    const Printable p = makePrintable(m, {0.4});
+    ASSERT_EQ(p.bodies.size(), 2u);
+    const Check c = check(m, p, 0.4, 8);
+    EXPECT_TRUE(c.loose.empty()) << c.loose.front();
+    EXPECT_GE(c.clearance, 0.4 - 0.01) << c.where;
+    EXPECT_TRUE(
+        inside(p.bodies[0].shape, gp_Pnt(3, -0.2, 5)));  // the bridge, in front of the bay's side wall
+}
+
 TEST(Joints, APartJustThinnerThanItsPinNeedsIsRefusedSayingByHowMuch)
 {
     // A lid 1.597 mm thin on a 0.4 mm gap's least round parts (1.6 mm): the message said "1.6 mm ... need 1.6
