@@ -526,6 +526,7 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
     if (named(model.flush) || named(model.geometric) || named(model.support) || named(model.fitInside) ||
         named(model.cover))
         throw FormatError(r.pathOf("name"), "'" + name + "' is used twice");
+    model.relationshipOrder.push_back(name);
     using K = function::ConflictKind;
     switch (relationshipKind(type, r.pathOf("type"))) {
         case K::Flush: {
@@ -598,6 +599,17 @@ nlohmann::json partNames(const function::Model& model, const std::vector<int>& p
     for (int p : parts)
         names.push_back(model.parts[p].name);
     return names;
+}
+
+/// Relationships (written kind by kind) put back in the order they were read; those not read (made by
+/// code) follow, kind by kind.
+void inReadingOrder(nlohmann::json& relationships, const std::vector<std::string>& order)
+{
+    const auto rank = [&](const nlohmann::json& r) {
+        return std::find(order.begin(), order.end(), r["name"].get<std::string>()) - order.begin();
+    };
+    std::stable_sort(relationships.begin(), relationships.end(),
+                     [&](const nlohmann::json& a, const nlohmann::json& b) { return rank(a) < rank(b); });
 }
 
 }  // namespace
@@ -775,6 +787,7 @@ nlohmann::json workslikeToJson(const function::Model& model, const function::Sol
                                                  {"distance", c.distance}},
                                                 c.configuration));
     }
+    inReadingOrder(relationships, model.relationshipOrder);
     for (const function::Lock& lock : model.locks)
         locks.push_back(function::faceName(model, lock.face));
     nlohmann::json joints = nlohmann::json::array(), configurations = nlohmann::json::array();

@@ -221,3 +221,13 @@ TEST(WorkslikeFormat, WritesWhatItReads)
     EXPECT_EQ(again.flush.size(), 1u);
     EXPECT_EQ(again.geometric[0].right.constant, 8);
 }
+
+TEST(WorkslikeFormat, WritesRelationshipsInTheOrderTheyWereRead)
+{
+    json d = boxWithLid();
+    d["relationships"] = {d["relationships"][1], d["relationships"][0]};  // geometric before flush
+    const json written = io::workslikeToJson(function::solve(io::readWorkslike(d)).model);
+    ASSERT_EQ(written["relationships"].size(), 2u);
+    EXPECT_EQ(written["relationships"][0]["name"], d["relationships"][0]["name"]);
+    EXPECT_EQ(written["relationships"][1]["name"], d["relationships"][1]["name"]);
+}
