@@ -224,6 +224,21 @@ TopoDS_Shape slotted(const Model& m, int j, const gp_Pnt& at, int along, double 
                : slot(at.Translated(axis * low), at.Translated(axis * high), along, from, to, r);
 }
 
+/// The box round `slotted`'s solid, which sweeps take in its place: OpenCASCADE loses what the round end of a
+/// slot sweeps turning about another axis (a sliding hinge's yokes as its part turns).
+Coordinates slottedBox(const Model& m, int j, const gp_Pnt& at, int along, double from, double to, double r)
+{
+    const auto [low, high] = travel(m, j);
+    Coordinates c;
+    for (int a = 0; a < 3; ++a) {
+        c[2 * a] = a == along ? from : coord(at, a) - r;
+        c[2 * a + 1] = a == along ? to : coord(at, a) + r;
+        if (a == m.joints[j].axis && m.joints[j].slides())
+            c[2 * a] += low, c[2 * a + 1] += high;
+    }
+    return c;
+}
+
 /// How far the point on the face lies from the face's edges.
 double roomOnFace(const Model& m, const function::Face& face, const gp_Pnt& p)
 {
@@ -503,19 +518,20 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     // In its frame they turn back about the axis, then (turned back) slide back along the turned-back axis;
     // round yokes that only turn need no turning back.
     std::vector<TopoDS_Shape> around{yokes};
+    std::vector<Coordinates> moving = clear;
     for (const Coordinates& c : clear)
         around.push_back(box(c));
+    if (joint.slides())
+        moving.insert(moving.end(), {slottedBox(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
+                                     slottedBox(m, j, at, along, hi - yoke - g, hi + g, r.outer + g)});
     for (size_t k = 0; k < m.configurations.size(); ++k)
         if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
             gp_Trsf turnBack;
             turnBack.SetRotation(axis, -pose->angle * kPi / 180);
             gp_Vec back(0, 0, 0);
             setCoord(back, joint.axis, -pose->offset);
-            const double angle = -pose->angle * kPi / 180;
-            if (joint.slides())
-                around.push_back(turnedThenShifted(yokes, axis, angle, back.Transformed(turnBack)));
             for (const TopoDS_Shape& swept :
-                 turnedThenShifted(clear, axis, angle, back.Transformed(turnBack)))
+                 turnedThenShifted(moving, axis, -pose->angle * kPi / 180, back.Transformed(turnBack)))
                 around.push_back(swept);
         }
     part = cut(part, around);

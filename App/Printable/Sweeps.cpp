@@ -73,7 +73,8 @@ int hingeOn(const Model& m, int carried, int base, int k)
     const int j = jointMoving(m, function::carrierOf(m, carried));
     const bool onBase =
         j >= 0 && (m.joints[j].base == base || (m.joints[j].base < 0 && standsStill(m, base)));
-    return onBase && m.joints[j].type == Joint::Type::Hinge && poseOf(m, j, k) ? j : -1;
+    const bool hinge = j >= 0 && m.joints[j].turns() && m.joints[j].type != Joint::Type::DoublePivot;
+    return onBase && hinge && poseOf(m, j, k) ? j : -1;
 }
 
 std::vector<TopoDS_Shape> turnedThenShifted(const std::vector<Coordinates>& boxes, const gp_Ax1& axis,
@@ -134,12 +135,19 @@ std::vector<TopoDS_Shape> sweep(const Model& m, int part, int k, const std::vect
 }
 
 std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
-                                     const std::vector<Coordinates>& boxes)
+                                     const std::vector<Coordinates>& boxes, int direction)
 {
+    const gp_Ax1 axis = hingeAxis(m, joint);
+    const double radians = direction * pose.angle * kPi / 180;
     gp_Vec by(0, 0, 0);
     if (joint.slides())
         setCoord(by, joint.axis, pose.offset);
-    return turnedThenShifted(boxes, hingeAxis(m, joint), pose.angle * kPi / 180, by);
+    if (direction < 0) {  // undone: turned back, then shifted back along the slide turned back
+        gp_Trsf back;
+        back.SetRotation(axis, radians);
+        by = -by.Transformed(back);
+    }
+    return turnedThenShifted(boxes, axis, radians, by);
 }
 
 std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
@@ -147,8 +155,7 @@ std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
 {
     for (const auto& [carried, base, sign] : {std::tuple{b, a, -1}, std::tuple{a, b, 1}})
         if (const int j = hingeOn(m, carried, base, k); j >= 0)
-            return turnedThenShifted(boxes, hingeAxis(m, m.joints[j]),
-                                     sign * poseOf(m, j, k)->angle * kPi / 180, gp_Vec(0, 0, 0));
+            return hingeSweep(m, m.joints[j], *poseOf(m, j, k), boxes, sign);
     const TopoDS_Shape shape = solid(boxes);
     const auto relative = [&](double t) {
         return partMotion(m, b, k, t).Inverted() * partMotion(m, a, k, t);

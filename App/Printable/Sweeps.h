@@ -27,17 +27,18 @@ std::vector<TopoDS_Shape> turnedThenShifted(const std::vector<Coordinates>& boxe
 std::vector<TopoDS_Shape> sweep(const Model& m, int part, int k, const std::vector<Coordinates>& boxes);
 
 /// What a part sweeps by its own hinge (or sliding hinge) alone, in the frame of the part it turns on: the
-/// revolution about the edge, then the prism along the slide.
+/// revolution about the edge, then the prism along the slide. Direction -1: what the base's boxes sweep in
+/// the turning part's frame (the motion undone).
 std::vector<TopoDS_Shape> hingeSweep(const Model& m, const Joint& joint, const function::JointPose& pose,
-                                     const std::vector<Coordinates>& boxes);
+                                     const std::vector<Coordinates>& boxes, int direction = 1);
 
-/// The plain hinge on which part `carried` turns on `base` in configuration k, or -1 (a hinge on the ground
-/// turns on any part that stands still).
+/// The hinge or sliding hinge on which part `carried` turns on `base` in configuration k, or -1 (a hinge on
+/// the ground turns on any part that stands still).
 int hingeOn(const Model& m, int carried, int base, int k);
 
 /// What part a's boxes sweep in part b's frame as both move to configuration k: when one turns on the other
-/// by a hinge, the revolution about it (exact); otherwise a at 32 poses while they turn (the first half) and
-/// 8 while they slide.
+/// by a hinge or sliding hinge, its revolution and slide (exact); otherwise a at 32 poses while they turn
+/// (the first half) and 8 while they slide.
 std::vector<TopoDS_Shape> pathRelative(const Model& m, int k, int a, int b,
                                        const std::vector<Coordinates>& boxes);
 

@@ -46,15 +46,15 @@ def test_a_four_bar_drawn_with_a_link_over_the_others_pin_is_refused_by_name(fab
 
 
 def test_a_print_that_does_not_pass_ends_saying_why(fabguide_cli, tmp_path):
-    """A product whose flipper door meets another hinge's yokes (tests/data/printable/not-printable): the files
-    are written to look at, report.json says not ok, and the last line on stderr says why, naming the parts and
-    the joint."""
+    """A product whose folding door's leaf (turning upon turns) meets another hinge's yokes
+    (tests/data/printable/not-printable): the files are written to look at, report.json says not ok, and the last
+    line on stderr says why, naming the parts and the joint."""
     run = subprocess.run([fabguide_cli, "printable", os.path.join(SUITE, "not-printable",
-                                                                  "flipper-door-beside-thick-door.workslike.json"),
+                                                                  "folding-door-beside-thick-door.workslike.json"),
                           "-o", str(tmp_path / "out")], capture_output=True, text=True, timeout=600)
     assert run.returncode == 1, run.stdout + run.stderr
     last = run.stderr.strip().split("\n")[-1]
     assert re.fullmatch(r"fabguide printable: not printable as it is: parts come 0\.\d{3} mm apart, under the 0\.40 mm "
-                        r"gap, carcass and door A as printed near .*joint 'B hinge' is in the way.* \(the files are "
+                        r"gap, carcass and leaf as printed near .*joint 'B hinge' is in the way.* \(the files are "
                         r"written to look at\)", last), last
     assert not json.loads((tmp_path / "out" / "report.json").read_text())["ok"]
