@@ -6,6 +6,7 @@
 #include "IO/Json.h"
 #include "IO/Output.h"
 #include "IO/PrintFiles.h"
+#include "IO/WorkslikeFormat.h"
 
 #include <Standard_Failure.hxx>
 
@@ -100,6 +101,9 @@ int run(const PrintableArguments& args)
     io::replaceSetOf((std::filesystem::path(args.output) / "report.json").string());  // bodies since renamed
     std::vector<std::string> written =
         io::writePrintFiles(printable::onTheBed(made.fitted.printable, made.fitted.turned), args.output);
+    const std::string solvedPath = (std::filesystem::path(args.output) / "solved.workslike.json").string();
+    io::writeJsonFile(solvedPath, io::workslikeToJson(made.fitted.solved));
+    written.push_back(solvedPath);
     for (const std::string& path : written)
         std::printf("wrote %s\n", path.c_str());
     const std::string reportPath = (std::filesystem::path(args.output) / "report.json").string();

@@ -271,7 +271,7 @@ Model solvedToPrint(const Model& model, double scale, double gap)
                     why += "; " + note;
         throw std::runtime_error("the model does not solve: " + names + " cannot hold together" + why);
     }
-    return function::scaled(inPlanes(solved.model), scale);
+    return inPlanes(solved.model);
 }
 
 int placesOf(const Model& m, int j)
@@ -336,6 +336,7 @@ Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
         return r;
     };
     Fitted f;
+    f.solved = solved;
     const Size turned{volume[1], volume[0], volume[2]};  // the bed as the model sees it turned a quarter
     f.turned = std::min(1.0, room(extent, turned)) > std::min(1.0, room(extent, volume)) * (1 + 1e-9);
     const Size& bed = f.turned ? turned : volume;
@@ -386,7 +387,10 @@ Fitted printed(const Model& model, const Printer& printer, double scale, const s
 {
     if (fit)
         return fitted(solvedToPrint(model, 1, printer.gap), *fit, printer);
-    Fitted f{scale, solvedToPrint(model, scale, printer.gap), {}};
+    Fitted f;
+    f.scale = scale;
+    f.solved = solvedToPrint(model, scale, printer.gap);
+    f.model = function::scaled(f.solved, scale);
     checkPrintSize(f.model);
     f.printable = makePrintable(f.model, printer);
     return f;

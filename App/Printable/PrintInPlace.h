@@ -36,8 +36,8 @@ struct Printable {
     std::vector<std::string> notes;    ///< joints left without geometry, and why
 };
 
-/// The model solved (both stages) and scaled (a 1:5 prototype: 0.2) for printing, the parts that joints'
-/// round parts stand on kept as thick as those need at `gap` where drawn so (needingRoundParts);
+/// The model solved (both stages) for printing at `scale` (a 1:5 prototype: 0.2), not yet scaled: the parts
+/// that joints' round parts stand on kept as thick as those need at `gap` where drawn so (needingRoundParts);
 /// std::runtime_error naming the relationships that cannot hold together when it does not solve.
 function::Model solvedToPrint(const function::Model& model, double scale, double gap);
 
@@ -66,7 +66,8 @@ Size sizeOf(const Printable& printable);
 /// A model scaled to print on a printer, and its bodies (as modelled, where its motions are defined).
 struct Fitted {
     double scale = 1;
-    function::Model model;
+    function::Model solved;  ///< as solved for the print (solvedToPrint), before scaling
+    function::Model model;   ///< scaled
     Printable printable;
     bool turned = false;  ///< printed turned a quarter about z: the model's x along the bed's depth
 };

@@ -666,13 +666,13 @@ TEST(PrintInPlace, ASolveForPrintMovesALidRatherThanThinItBelowWhatItsHingeNeeds
         "configurations": [{"name": "open", "poses": {"lid hinge": -90}}],
         "relationships": [{"type": "cover", "name": "lid covers the well", "covering": ["lid"],
                            "covered": ["box"]}]})"));
-    const auto lidThickness = [](const function::Model& solved, double scale) {
+    const auto lidThickness = [](const function::Model& solved) {
         const auto& lid = solved.cuboids[2].coordinates;
-        return (lid[5] - lid[4]) / scale;
+        return lid[5] - lid[4];
     };
-    EXPECT_NEAR(lidThickness(function::solve(m).model, 1), 1.4, 1e-6);  // the least change alone
-    EXPECT_NEAR(lidThickness(solvedToPrint(m, 1, 0.4), 1), 2.4, 1e-6);
-    EXPECT_NEAR(lidThickness(solvedToPrint(m, 0.5, 0.4), 0.5), 1.4, 1e-6);
+    EXPECT_NEAR(lidThickness(function::solve(m).model), 1.4, 1e-6);  // the least change alone
+    EXPECT_NEAR(lidThickness(solvedToPrint(m, 1, 0.4)), 2.4, 1e-6);
+    EXPECT_NEAR(lidThickness(solvedToPrint(m, 0.5, 0.4)), 1.4, 1e-6);
 }
 
 TEST(PrintInPlace, FacesTheSolveLeavesAHairApartArePrintedInOnePlane)

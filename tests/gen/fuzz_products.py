@@ -92,7 +92,7 @@ def judge_model(model, known, cli=CLI, print_it=False):
             json.dump(model, f)
         verdict = solve_and_check(cli, {"model": model, "known": known}, path, out)
         if verdict is None and print_it and known is None:
-            verdict = print_and_check(cli, path, out, os.path.join(tmp, "print"))
+            verdict = print_and_check(cli, path, os.path.join(tmp, "print"))
     return verdict
 
 
@@ -121,7 +121,9 @@ def solve_and_check(cli, c, path, out):
     return None
 
 
-def print_and_check(cli, path, solved, folder):
+def print_and_check(cli, path, folder):
+    """The print, judged on the model as its own solve left it (solved.workslike.json): the relationships
+    hold there, and the bodies clear each other along its motions."""
     r = run(cli, ["printable", path, "-o", folder, "--fit", FIT, "--part-seconds", "30"], timeout=600)
     if r is None:
         return "print: timeout", ""
@@ -133,6 +135,11 @@ def print_and_check(cli, path, solved, folder):
             [line for line in lines if line.startswith("minimum clearance")]
         said = said[0] if said else (r.stderr.strip() or r.stdout.strip()).split("\n")[-1]
         return "print refused: " + shape(said), said[-400:]
+    solved = os.path.join(folder, "solved.workslike.json")
+    with open(path) as f, open(solved) as g:
+        problems, _ = workslike_checker.check_all(json.load(g), json.load(f))
+    if problems:
+        return "print's solve: " + shape(problems[0]), problems[0]
     problems = print_checker.check(path, folder, solved)
     if problems:
         return "print: " + shape(problems[0]), problems[0]

@@ -247,3 +247,40 @@ def test_a_print_longer_than_5_m_is_refused_before_any_geometry(fabguide_cli, so
     assert run.stderr.strip() == ("fabguide: error: the print would be 60000 mm long along x; FabGuide prints up "
                                   "to 5000 mm: print it at a smaller scale, or fitted to your printer")
     assert not out.exists()
+
+
+def test_the_print_writes_the_model_as_it_solved_it(fabguide_cli, tmp_path):
+    """A lid drawn 2.4 mm thick, pushed 1 mm into its box: the least change alone thins it to 1.4 mm, under the
+    1.6 mm its hinge needs at a 0.4 mm gap, so the print's own solve lifts it instead. solved.workslike.json says
+    what the bodies were made from, and reads back as a works-like model."""
+    model = {"format": "fabguide.workslike", "version": 1,
+             "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 30, 20]},
+                                                   {"name": "well", "min": [2, 2, 2], "max": [38, 28, 20],
+                                                    "cavity": True}]},
+                       {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 18.5], "max": [40, 30, 20.9]}]}],
+             "joints": [{"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]}],
+             "configurations": [{"name": "open", "poses": {"lid hinge": -90}}],
+             "relationships": [{"type": "cover", "name": "lid covers the well", "covering": ["lid"],
+                                "covered": ["box"]}]}
+    path = tmp_path / "lidded.workslike.json"
+    path.write_text(json.dumps(model))
+
+    def lid(solved):
+        c = next(c for p in solved["parts"] for c in p["cuboids"] if c["name"] == "lid")
+        return c["min"][2], c["max"][2]
+
+    run = subprocess.run([fabguide_cli, "solve", str(path), "-o", str(tmp_path / "solved.workslike.json")],
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    low, high = lid(json.loads((tmp_path / "solved.workslike.json").read_text()))
+    assert high - low == pytest.approx(1.4, abs=1e-6)
+    run = subprocess.run([fabguide_cli, "printable", str(path), "-o", str(tmp_path / "out")],
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    out = tmp_path / "out"
+    assert "solved.workslike.json" in report(out)["files"]
+    low, high = lid(json.loads((out / "solved.workslike.json").read_text()))
+    assert high - low == pytest.approx(2.4, abs=1e-6)
+    again = subprocess.run([fabguide_cli, "solve", str(out / "solved.workslike.json"),
+                            "-o", str(tmp_path / "again.workslike.json")], capture_output=True, text=True, timeout=600)
+    assert again.returncode == 0, again.stderr
