@@ -23,6 +23,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace fabguide::printable {
 
@@ -257,6 +258,30 @@ Model inPlanes(Model model)
     return model;
 }
 
+/// How much larger `size` could be in `bed`, 0.01 mm short of each side (meshes are written to a micrometre).
+double room(const Size& size, const Size& bed)
+{
+    double r = 1e300;
+    for (int a = 0; a < 3; ++a)
+        r = std::min(r, (bed[a] - 0.01) / std::max(size[a], 1e-9));
+    return r;
+}
+
+/// The bed as the model sees it turned a quarter about z.
+Size turnedBed(const Size& volume)
+{
+    return {volume[1], volume[0], volume[2]};
+}
+
+/// Whether the model prints larger turned a quarter, and the largest scale (at most 1) its cuboids allow.
+std::pair<bool, double> firstFit(const Model& solved, const Size& volume)
+{
+    const Size extent = extentOf(solved);
+    const bool turned =
+        std::min(1.0, room(extent, turnedBed(volume))) > std::min(1.0, room(extent, volume)) * (1 + 1e-9);
+    return {turned, std::min(1.0, room(extent, turned ? turnedBed(volume) : volume))};
+}
+
 }  // namespace
 
 Model solvedToPrint(const Model& model, double scale, double gap)
@@ -327,20 +352,10 @@ Size sizeOf(const Printable& printable)
 Fitted fitted(const Model& solved, const Size& volume, const Printer& printer)
 {
     // First as large as the cuboids allow, then smaller by what joints and links add beyond them.
-    const Size extent = extentOf(solved);
-    // How much larger it could be in `bed`, 0.01 mm short of each side (meshes are written to a micrometre).
-    auto room = [](const Size& size, const Size& bed) {
-        double r = 1e300;
-        for (int a = 0; a < 3; ++a)
-            r = std::min(r, (bed[a] - 0.01) / std::max(size[a], 1e-9));
-        return r;
-    };
     Fitted f;
     f.solved = solved;
-    const Size turned{volume[1], volume[0], volume[2]};  // the bed as the model sees it turned a quarter
-    f.turned = std::min(1.0, room(extent, turned)) > std::min(1.0, room(extent, volume)) * (1 + 1e-9);
-    const Size& bed = f.turned ? turned : volume;
-    f.scale = std::min(1.0, room(extent, bed));
+    std::tie(f.turned, f.scale) = firstFit(solved, volume);
+    const Size bed = f.turned ? turnedBed(volume) : volume;
     // Joints do not scale with the part (least pins, the gap): rescale by the room left until the print
     // fits with less than 0.1 % to spare, keeping the largest that fits.
     std::optional<Fitted> fits;
@@ -385,8 +400,11 @@ Printable onTheBed(Printable printable, bool turned)
 
 Fitted printed(const Model& model, const Printer& printer, double scale, const std::optional<Size>& fit)
 {
-    if (fit)
-        return fitted(solvedToPrint(model, 1, printer.gap), *fit, printer);
+    if (fit) {  // what joints need taken at the scale the cuboids fit at (joints may make it a little less)
+        const Model whole = solvedToPrint(model, 1, printer.gap);
+        const double first = firstFit(whole, *fit).second;
+        return fitted(first < 1 ? solvedToPrint(model, first, printer.gap) : whole, *fit, printer);
+    }
     Fitted f;
     f.scale = scale;
     f.solved = solvedToPrint(model, scale, printer.gap);

@@ -675,6 +675,25 @@ TEST(PrintInPlace, ASolveForPrintMovesALidRatherThanThinItBelowWhatItsHingeNeeds
     EXPECT_NEAR(lidThickness(solvedToPrint(m, 0.5, 0.4)), 1.4, 1e-6);
 }
 
+TEST(PrintInPlace, AFittedPrintKeepsALidAsThickAsItsHingeNeedsAtTheScaleItFitsAt)
+{
+    // A 400 mm box fits a 250 mm bed at 0.625: its 4 mm lid, pushed 3 mm in, was taken down to 2 mm by the
+    // solve (enough at full size: 1.6 mm), then printed 1.25 mm thick, under the 1.6 mm its pin needs.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [400, 300, 200]},
+                   {"name": "well", "min": [10, 10, 10], "max": [390, 290, 200], "cavity": true}]},
+                  {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 197], "max": [400, 300, 201]}]}],
+        "joints": [{"name": "lid hinge", "type": "hinge", "part": "lid", "edge": ["lid.far", "lid.bottom"]}],
+        "configurations": [{"name": "open", "poses": {"lid hinge": -90}}],
+        "relationships": [{"type": "cover", "name": "lid covers the well", "covering": ["lid"],
+                           "covered": ["box"]}]})"));
+    const Fitted f = printed(m, {0.4}, 1, Size{250, 210, 210});
+    EXPECT_NEAR(f.scale, 0.625, 0.01);
+    const auto& lid = f.solved.cuboids[2].coordinates;
+    EXPECT_NEAR(lid[5] - lid[4], 4, 1e-6);
+}
+
 TEST(PrintInPlace, FacesTheSolveLeavesAHairApartArePrintedInOnePlane)
 {
     // A lid's side 4e-4 mm past its box's: the Boolean operations made a sliver of the hair, which no mesh
