@@ -19,6 +19,8 @@
 #   make fuzz            the fuzz harnesses of tests/fuzz for FUZZ_SECONDS each (default 60), build-sanitize/
 #   make fuzz-products   PRODUCTS generated products (tests/gen) solved and checked, PRINTS of them printed too
 #   make translations    the .ts files of Resources/translations updated from the code and .ui files, and compiled
+#   make same-outputs BASE=<commit>   whether this build writes what BASE's does, byte for byte, on the bundled
+#                        inputs and SEEDS generated products (tests/bench/same_outputs.py; BASE built in build-base/)
 SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -27,6 +29,8 @@ FUZZ_SECONDS ?= 60
 PRODUCTS ?= 300
 PRINTS ?= 0
 FIRST ?= 0
+BASE ?= HEAD
+SEEDS ?= 200
 CTEST_ARGS ?=
 # The clang builds check the code, not its speed: -O1 compiles in half the time of -O3 and keeps the sanitizers fast.
 CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFABGUIDE_WERROR=ON
@@ -34,7 +38,7 @@ SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS)
 
 .PHONY: all deps test check demo install bench format clean test-debian13 demo-debian13 test-clang test-sanitize fuzz \
-	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14 translations
+	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14 translations same-outputs
 
 all: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -96,6 +100,10 @@ fuzz-products: all
 	/usr/bin/python3 tests/gen/fuzz_products.py --products $(PRODUCTS) --prints $(PRINTS) --first $(FIRST) \
 	  --cli $(BUILD)/fabguide --keep $(BUILD)/fuzz-products
 
+same-outputs: all
+	tools/build-at $(BASE) build-base
+	/usr/bin/python3 tests/bench/same_outputs.py build-base/build $(BUILD) --seeds $(SEEDS) --prints
+
 bench: all
 	python3 tests/bench/benchmarks.py
 
@@ -103,7 +111,7 @@ format:
 	clang-format -i $$(find App python/bindings tests -name '*.cpp' -o -name '*.h')
 
 clean:
-	rm -rf $(BUILD) build-clang build-sanitize
+	rm -rf $(BUILD) build-clang build-sanitize build-base
 
 translations:
 	pylupdate5 -noobsolete $$(git ls-files 'freecad/*.py') Resources/ui/*.ui \

@@ -525,15 +525,9 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
         moving.insert(moving.end(), {slottedBox(m, j, at, along, lo - g, lo + yoke + g, r.outer + g),
                                      slottedBox(m, j, at, along, hi - yoke - g, hi + g, r.outer + g)});
     for (size_t k = 0; k < m.configurations.size(); ++k)
-        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k))) {
-            gp_Trsf turnBack;
-            turnBack.SetRotation(axis, -pose->angle * kPi / 180);
-            gp_Vec back(0, 0, 0);
-            setCoord(back, joint.axis, -pose->offset);
-            for (const TopoDS_Shape& swept :
-                 turnedThenShifted(moving, axis, -pose->angle * kPi / 180, back.Transformed(turnBack)))
+        if (const function::JointPose* pose = poseOf(m, j, static_cast<int>(k)))
+            for (const TopoDS_Shape& swept : hingeSweep(m, joint, *pose, moving, -1))
                 around.push_back(swept);
-        }
     part = cut(part, around);
     // The knuckle's slot, in every part it would reach: the base, and a part beside it that the round
     // reaches (a wall's next carcass, flush with the base, whose corner the knuckle would graze).
