@@ -258,6 +258,28 @@ Model inPlanes(Model model)
     return model;
 }
 
+/// What the print's solve (`solved`) kept thicker than a plain solve of `model` would, for joints' round
+/// parts at `scale` and `gap`, one sentence per size: "lid: kept 2.4 mm thick, not thinned to 1.4 mm, ...".
+std::vector<std::string> keptForJoints(const Model& model, const Model& solved, double scale, double gap)
+{
+    const function::SolveResult plain = function::solve(model);
+    const Model needing = needingRoundParts(model, gap, scale);
+    std::vector<std::string> notes;
+    for (size_t c = 0; c < solved.cuboids.size() && plain.solved; ++c)
+        for (int a = 0; a < 3; ++a) {
+            const auto size = [&](const Model& m) {
+                return m.cuboids[c].coordinates[2 * a + 1] - m.cuboids[c].coordinates[2 * a];
+            };
+            const double least = needing.cuboids[c].least;
+            if (size(plain.model) < least - 1e-9 && size(solved) > size(plain.model) + 1e-6)
+                notes.push_back(solved.cuboids[c].name + ": kept " + function::millimetres(size(solved)) +
+                                " mm thick, not thinned to " + function::millimetres(size(plain.model)) +
+                                " mm, for a joint's round parts on it (" + function::millimetres(least) +
+                                " mm at this scale and gap)");
+        }
+    return notes;
+}
+
 /// How much larger `size` could be in `bed`, 0.01 mm short of each side (meshes are written to a micrometre).
 double room(const Size& size, const Size& bed)
 {
@@ -400,17 +422,20 @@ Printable onTheBed(Printable printable, bool turned)
 
 Fitted printed(const Model& model, const Printer& printer, double scale, const std::optional<Size>& fit)
 {
+    Fitted f;
     if (fit) {  // what joints need taken at the scale the cuboids fit at (joints may make it a little less)
         const Model whole = solvedToPrint(model, 1, printer.gap);
-        const double first = firstFit(whole, *fit).second;
-        return fitted(first < 1 ? solvedToPrint(model, first, printer.gap) : whole, *fit, printer);
+        scale = firstFit(whole, *fit).second;
+        f = fitted(scale < 1 ? solvedToPrint(model, scale, printer.gap) : whole, *fit, printer);
+    } else {
+        f.scale = scale;
+        f.solved = solvedToPrint(model, scale, printer.gap);
+        f.model = function::scaled(f.solved, scale);
+        checkPrintSize(f.model);
+        f.printable = makePrintable(f.model, printer);
     }
-    Fitted f;
-    f.scale = scale;
-    f.solved = solvedToPrint(model, scale, printer.gap);
-    f.model = function::scaled(f.solved, scale);
-    checkPrintSize(f.model);
-    f.printable = makePrintable(f.model, printer);
+    const std::vector<std::string> kept = keptForJoints(model, f.solved, scale, printer.gap);
+    f.printable.notes.insert(f.printable.notes.begin(), kept.begin(), kept.end());
     return f;
 }
 

@@ -692,6 +692,10 @@ TEST(PrintInPlace, AFittedPrintKeepsALidAsThickAsItsHingeNeedsAtTheScaleItFitsAt
     EXPECT_NEAR(f.scale, 0.625, 0.01);
     const auto& lid = f.solved.cuboids[2].coordinates;
     EXPECT_NEAR(lid[5] - lid[4], 4, 1e-6);
+    ASSERT_FALSE(f.printable.notes.empty());
+    EXPECT_EQ(f.printable.notes.front(),
+              "lid: kept 4 mm thick, not thinned to 2 mm, for a joint's round parts on "
+              "it (2.56 mm at this scale and gap)");
 }
 
 TEST(PrintInPlace, FacesTheSolveLeavesAHairApartArePrintedInOnePlane)

@@ -281,6 +281,8 @@ def test_the_print_writes_the_model_as_it_solved_it(fabguide_cli, tmp_path):
     assert "solved.workslike.json" in report(out)["files"]
     low, high = lid(json.loads((out / "solved.workslike.json").read_text()))
     assert high - low == pytest.approx(2.4, abs=1e-6)
+    assert "lid: kept 2.4 mm thick, not thinned to 1.4 mm, for a joint's round parts on it (1.6 mm at this scale " \
+        "and gap)" in report(out)["notes"]
     again = subprocess.run([fabguide_cli, "solve", str(out / "solved.workslike.json"),
                             "-o", str(tmp_path / "again.workslike.json")], capture_output=True, text=True, timeout=600)
     assert again.returncode == 0, again.stderr
