@@ -80,8 +80,9 @@ Fitted fitted(const function::Model& solved, const Size& volume, const Printer& 
 /// The bodies as they go on the printer's bed: turned a quarter about z when the fit says so (`turned`).
 Printable onTheBed(Printable printable, bool turned);
 
-/// The model solved (solvedToPrint), then scaled by `scale`, or fitted to the build volume `fit` when given,
-/// and its bodies.
+/// The model solved (solvedToPrint), then scaled by `scale`, or fitted to the build volume `fit` when given
+/// (solved again at the scale its cuboids fit at, for what joints need there), and its bodies; noted, each
+/// part the print's solve kept thicker than a plain solve would.
 Fitted printed(const function::Model& model, const Printer& printer, double scale,
                const std::optional<Size>& fit = std::nullopt);
 
