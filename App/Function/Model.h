@@ -239,8 +239,7 @@ struct Model {
     std::vector<FitInside> fitInside;
     std::vector<Cover> cover;
     std::vector<Lock> locks;
-    std::vector<std::string>
-        relationshipOrder;   ///< relationships' names as read: the writer keeps their order
+    std::vector<std::string> relationshipOrder;  ///< names as read: the writer keeps the file's order
     double minimumSize = 1;  ///< mm, every cuboid at least this big along each axis; also the least overlap
                              ///< of supporting faces
     double minimumWall = 1;  ///< mm, the least wall around a cavity on a side that is not an opening

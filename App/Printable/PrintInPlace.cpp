@@ -258,19 +258,18 @@ Model inPlanes(Model model)
     return model;
 }
 
-/// What the print's solve (`solved`) kept thicker than a plain solve of `model` would, for joints' round
-/// parts at `scale` and `gap`, one sentence per size: "lid: kept 2.4 mm thick, not thinned to 1.4 mm, ...".
-std::vector<std::string> keptForJoints(const Model& model, const Model& solved, double scale, double gap)
+/// What the print's solve (`solved`, its cuboids marked with what joints need: solvedToPrint) kept thicker
+/// than a plain solve of `model` would, one sentence per size ("lid: kept 2.4 mm thick, not thinned ...").
+std::vector<std::string> keptForJoints(const Model& model, const Model& solved)
 {
     const function::SolveResult plain = function::solve(model);
-    const Model needing = needingRoundParts(model, gap, scale);
     std::vector<std::string> notes;
     for (size_t c = 0; c < solved.cuboids.size() && plain.solved; ++c)
         for (int a = 0; a < 3; ++a) {
             const auto size = [&](const Model& m) {
                 return m.cuboids[c].coordinates[2 * a + 1] - m.cuboids[c].coordinates[2 * a];
             };
-            const double least = needing.cuboids[c].least;
+            const double least = solved.cuboids[c].least;
             if (size(plain.model) < least - 1e-9 && size(solved) > size(plain.model) + 1e-6)
                 notes.push_back(solved.cuboids[c].name + ": kept " + function::millimetres(size(solved)) +
                                 " mm thick, not thinned to " + function::millimetres(size(plain.model)) +
@@ -434,7 +433,7 @@ Fitted printed(const Model& model, const Printer& printer, double scale, const s
         checkPrintSize(f.model);
         f.printable = makePrintable(f.model, printer);
     }
-    const std::vector<std::string> kept = keptForJoints(model, f.solved, scale, printer.gap);
+    const std::vector<std::string> kept = keptForJoints(model, f.solved);
     f.printable.notes.insert(f.printable.notes.begin(), kept.begin(), kept.end());
     return f;
 }

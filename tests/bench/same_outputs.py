@@ -23,7 +23,6 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tests", "gen"))
-sys.path.insert(0, os.path.join(ROOT, "tests", "python"))
 import fuzz_products  # noqa: E402
 
 PRINTS = ["box-with-lid", "cellphone", "sliding-box", "toolbox"]
@@ -61,9 +60,9 @@ def cases(seeds, prints):
 def digest(folder, status, stderr):
     """The hash of what a case wrote: each file's name and bytes (STEP and 3MF left out, a JSON report's
     `seconds` dropped), its exit status and its last line on stderr."""
-    h = hashlib.sha256(("%d\n%s\n" % (status, (stderr.strip().split("\n") or [""])[-1])).encode())
+    h = hashlib.sha256(("%d\n%s\n" % (status, stderr.strip().split("\n")[-1])).encode())
     for path in sorted(glob.glob(os.path.join(folder, "**", "*"), recursive=True)):
-        if os.path.isdir(path) or path.endswith((".step", ".3mf", "IN.json")):
+        if os.path.isdir(path) or path.endswith((".step", ".3mf")):
             continue
         with open(path, "rb") as f:
             data = f.read()
@@ -77,15 +76,16 @@ def digest(folder, status, stderr):
 
 def run(build, case):
     name, source, arguments, tool = case
-    with tempfile.TemporaryDirectory() as folder:
-        path = source
+    with tempfile.TemporaryDirectory() as tmp:
+        path, folder = source, os.path.join(tmp, "out")
+        os.mkdir(folder)
         if not isinstance(source, str):
-            path = os.path.join(folder, "IN.json")
+            path = os.path.join(tmp, "in.json")
             with open(path, "w") as f:
                 json.dump(source, f)
         args = [path if a == "IN" else a.replace("OUT", folder) for a in arguments]
         r = subprocess.run([os.path.join(build, tool)] + args, capture_output=True, text=True, timeout=1800)
-        return digest(folder, r.returncode, r.stderr.replace(folder, "OUT"))
+        return digest(folder, r.returncode, r.stderr.replace(tmp, "TMP"))
 
 
 def main():
