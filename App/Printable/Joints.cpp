@@ -162,9 +162,10 @@ Coordinates overWalls(const Model& m, int onEdge, Coordinates c, int along, doub
 /// along the axis: from the axis to the cuboid, r deep into it where the axis runs level with its face; off
 /// the cuboid's edge (standing off two faces), r past the edge along the further stand-off, so that it rests
 /// on the nearer face rather than meeting the cuboid along the edge alone (one body, not a yoke in pieces).
-/// None when the axis lies on the cuboid. Where it would meet the cuboid only in a cavity's mouth (a pocket
-/// door hinged 2 mm inside its bay's side: the yokes and their bridge stood in the bay, apart from the
-/// carcass), it is carried across the cavity to its nearest wall (overWalls).
+/// None when the axis lies in the cuboid's material. Where it would meet the cuboid only in a cavity's mouth
+/// (a pocket door hinged 2 mm inside its bay's side: the yokes and their bridge stood in the bay, apart from
+/// the carcass), or the axis runs in a cavity's air (a pocket door hinged inside its bay's mouth), it is
+/// carried across the cavity to its nearest wall (overWalls).
 std::optional<Coordinates> bridge(const Model& m, int onEdge, const gp_Ax1& axis, int along, double from,
                                   double to, double r)
 {
@@ -188,8 +189,10 @@ std::optional<Coordinates> bridge(const Model& m, int onEdge, const gp_Ax1& axis
             c[2 * a] = std::max(low(a), x - r), c[2 * a + 1] = std::min(high(a), x + r);
         }
     }
-    if (off.empty())
-        return std::nullopt;
+    if (off.empty()) {
+        const Coordinates carried = overWalls(m, onEdge, c, along, r);
+        return carried == c ? std::nullopt : std::optional(carried);
+    }
     if (off.size() == 2) {
         const int a = standOff(off[0]) > standOff(off[1]) ? off[0] : off[1];
         if (coord(axis.Location(), a) > high(a))
@@ -335,13 +338,14 @@ void giveWay(const Model& m, int k, int along, double lo, double hi, double radi
     part = cut(part, around);
 }
 
-/// A part that slides past hinge j's round parts (along `span`, out to `radius` round the axis, the gap
-/// included) and the bridges that hold them off the base (`clear`, grown by the gap), or turns past them on
-/// the base by a hinge of its own, and stands within the gap of them as printed (not only on its edge), gives
-/// way round them (their boxes where they go) along its motion, in its own frame: a drawer front just above a
-/// flap's hinge gets a groove under it, where a thinner pin could not clear (too little room for the least
-/// pin and its gap); a door beside another door's hinge is trimmed along its turn where the yokes stand.
-/// Noted.
+/// A part that stands within the gap of hinge j's round parts as printed (along `span`, out to `radius` round
+/// the axis, the gap included) or of the bridges that hold them off the base (`clear`, grown by the gap), not
+/// only on its edge, gives way round them: where it is printed, and, when it slides past them or turns past
+/// them on the base by a hinge of its own, along its motion in its own frame (their boxes where they go). A
+/// drawer front just above a flap's hinge gets a groove under it, where a thinner pin could not clear (too
+/// little room for the least pin and its gap); a door beside another door's hinge is trimmed along its turn
+/// where the yokes stand; a pull-out's front 0.1 mm beside a door's hinge, proud of the door, is notched
+/// where it stands. Noted.
 void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, double> span, double radius,
                            const std::vector<Coordinates>& clear, std::vector<TopoDS_Shape>& shapes,
                            Printable& out)
@@ -391,8 +395,6 @@ void makeWayPastRoundParts(const Model& m, int j, int base, std::pair<double, do
             for (const TopoDS_Shape& swept : pathRelative(m, k, base, q, room))
                 around.push_back(swept);
         }
-        if (around.empty())
-            continue;  // it never moves past them: the gaps as printed are the other joints' business
         around.insert(around.end(), roomSolids.begin(), roomSolids.end());
         shapes[q] = cut(shapes[q], around);
         out.notes.push_back(m.parts[q].name + ": grooved to clear the round parts of '" + joint.name + "'");

@@ -55,6 +55,6 @@ def test_a_print_that_does_not_pass_ends_saying_why(fabguide_cli, tmp_path):
     assert run.returncode == 1, run.stdout + run.stderr
     last = run.stderr.strip().split("\n")[-1]
     assert re.fullmatch(r"fabguide printable: not printable as it is: parts come 0\.\d{3} mm apart, under the 0\.40 mm "
-                        r"gap, carcass and leaf as printed near .*joint 'B hinge' is in the way.* \(the files are "
+                        r"gap, leaf and door B in 'A open' at \d+% near .*joint 'B hinge' is in the way.* \(the files are "
                         r"written to look at\)", last), last
     assert not json.loads((tmp_path / "out" / "report.json").read_text())["ok"]
