@@ -96,15 +96,15 @@ result = fabguide_core.optimise(design.flatpack(table), seed=1, threads=2)
 best = result["suggestions"][0]
 print("Coffee table: usage {:.3f} -> {:.3f} ({} suggestions in {:.1f} s; the design's constraints all hold)".format(
     table.Usage, best["usage"], len(result["suggestions"]), result["seconds"]))
-before = {p["id"]: p["size"] for p in design.parts_of(table)}
+before = {p["id"]: design.sizes(p) for p in design.parts_of(table)}
 doc.openTransaction("Accept suggestion")
 design.apply_parts(table, best["design"]["parts"])
 doc.recompute()
 doc.commitTransaction()
 for p in design.parts_of(table):
-    if p["size"] != before[p["id"]]:
+    if design.sizes(p) != before[p["id"]]:
         print("  {:<6} {:.1f} x {:.1f} x {:.1f} -> {:.1f} x {:.1f} x {:.1f} mm".format(p["id"], *before[p["id"]],
-                                                                                      *p["size"]))
+                                                                                      *design.sizes(p)))
 if abs(table.Usage - best["usage"]) > 0.02 or "Broken" in "".join(c.Status for c in table.Group
                                                                   if design.is_constraint(c)):
     sys.exit("the accepted coffee table does not lay out as suggested: " + table.Status)

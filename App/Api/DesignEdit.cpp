@@ -30,8 +30,8 @@ std::vector<std::string> idsOf(const nlohmann::json& parts)
 nlohmann::json withBoards(nlohmann::json drawn, const nlohmann::json& parts)
 {
     for (size_t b = 0; b < parts.size(); ++b)
-        for (const char* key : {"position", "size"})
-            drawn["parts"][b][key] = parts[b][key];
+        for (const char* corner : {"min", "max"})
+            drawn["parts"][b][corner] = parts[b][corner];
     return drawn;
 }
 
@@ -40,9 +40,7 @@ Eigen::VectorXd variablesOf(const material::Design& design, const nlohmann::json
 {
     material::Design drawn = design;
     for (size_t b = 0; b < design.boards.size(); ++b) {
-        const io::Fields part(parts[b], "parts[" + std::to_string(b) + "]");
-        drawn.boards[b].size = part.vector3("size");
-        drawn.boards[b].centre = part.vector3("position") + drawn.boards[b].size / 2;
+        io::placeBoard(drawn.boards[b], io::Fields(parts[b], "parts[" + std::to_string(b) + "]"));
     }
     return drawn.variables();
 }
@@ -123,13 +121,16 @@ nlohmann::json layOutDesign(const io::FlatpackDesign& f, std::uint64_t seed, dou
 DesignEditReport editDesign(const DesignEdit& edit)
 {
     DesignEditReport report;
-    report.design = edit.design;
+    report.design = io::currentFlatpack(edit.design);
+    // The valid state as this version writes parts (a document saved by an older FabGuide kept them in its
+    // own).
+    const nlohmann::json valid =
+        edit.valid ? io::currentFlatpack({{"parts", *edit.valid}})["parts"] : nlohmann::json();
     std::optional<nlohmann::json>
         start;  // the design with its valid boards, when the drawn ones are an edit of them
-    if (edit.valid && idsOf(*edit.valid) == idsOf(partsOf(edit.design)) &&
-        *edit.valid != partsOf(edit.design)) {
-        start = edit.design;
-        (*start)["parts"] = *edit.valid;
+    if (edit.valid && idsOf(valid) == idsOf(partsOf(report.design)) && valid != partsOf(report.design)) {
+        start = report.design;
+        (*start)["parts"] = valid;
     }
     if (start && edit.keepEdits) {
         try {
@@ -145,7 +146,7 @@ DesignEditReport editDesign(const DesignEdit& edit)
         if (!start)
             throw;
         if (!absorbed(*start, edit, report)) {
-            report.design = withBoards(edit.design, *edit.valid);
+            report.design = withBoards(io::currentFlatpack(edit.design), valid);
             report.undone = error.what();
         }
     }

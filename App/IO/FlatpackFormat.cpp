@@ -5,6 +5,7 @@
 #include "IO/PackFormat.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -259,14 +260,44 @@ std::optional<int> grainAxisNamed(const std::string& grain)
     return std::nullopt;
 }
 
+/// Migration 1 to 2: a box by its lower corner and size ("position", "size") becomes one by its corners
+/// ("min", "max"), as every box of the formats is written; the fields are named as the file has them.
+void boxesByCorners(nlohmann::json& document)
+{
+    for (const char* list : {"parts", "inner_volumes"}) {
+        if (!document.contains(list) || !document[list].is_array())
+            continue;  // the reader says what is wrong
+        nlohmann::json& boxes = document[list];
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            const Fields box(boxes[i], at(list, i));
+            const Eigen::Vector3d low = box.vector3("position"), size = box.vector3("size");
+            if (size.minCoeff() <= 0)
+                throw FormatError(box.pathOf("size"), "every side must be longer than 0");
+            const Eigen::Vector3d high = low + size;
+            boxes[i].erase("position");
+            boxes[i].erase("size");
+            boxes[i]["min"] = {low.x(), low.y(), low.z()};
+            boxes[i]["max"] = {high.x(), high.y(), high.z()};
+        }
+    }
+}
+
+/// The version a document without "version" was written in, as its boxes say: version 1 wrote "position".
+int versionWritten(const nlohmann::json& document)
+{
+    const nlohmann::json& parts = document.value("parts", nlohmann::json::array());
+    const bool first =
+        parts.is_array() && !parts.empty() && parts[0].is_object() && parts[0].contains("position");
+    return first ? 1 : kFlatpackFormatVersion;
+}
+
 material::DesignBoard readPart(const nlohmann::json& json, const std::string& path,
                                const std::vector<double>& thicknesses)
 {
     const Fields part(json, path);
     material::DesignBoard board;
     board.id = part.text("id");
-    board.size = part.vector3("size");
-    board.centre = part.vector3("position") + board.size / 2;
+    placeBoard(board, part);
     board.quantity = part.integer("quantity", 1);
     board.followsGrain = part.flag("follow_grain", false);
     if (board.quantity < 1)
@@ -289,8 +320,6 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
         board.followsGrain = *axis >= 0;
         board.grainAxis = *axis;
     }
-    if (board.size.minCoeff() <= 0)
-        throw FormatError(part.pathOf("size"), "every side must be longer than 0");
     if (std::none_of(thicknesses.begin(), thicknesses.end(),
                      [&](double t) { return material::ofThickness(board.size[board.normal], t); })) {
         std::string all;
@@ -298,8 +327,8 @@ material::DesignBoard readPart(const nlohmann::json& json, const std::string& pa
             if (std::find(thicknesses.begin(), thicknesses.begin() + k, thicknesses[k]) ==
                 thicknesses.begin() + k)
                 all += (all.empty() ? "" : ", ") + show(thicknesses[k]);
-        throw FormatError(part.pathOf("size"), "its thinnest side " + show(board.size[board.normal]) +
-                                                   " must be the thickness of a master board (" + all + ")");
+        throw FormatError(path, "its thinnest side " + show(board.size[board.normal]) +
+                                    " must be the thickness of a master board (" + all + ")");
     }
     part.noOthers();
     return board;
@@ -390,10 +419,9 @@ void readInnerVolumes(const Fields& root, Design& design)
         material::InnerVolume v;
         v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
         v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
-        v.size = volume.vector3("size");
-        if (v.size.minCoeff() <= 0)  // a space no part could be kept out of
-            throw FormatError(volume.pathOf("size"), "every side must be longer than 0");
-        const Eigen::Vector3d position = volume.vector3("position");
+        const BoxSides box = volume.box();  // max beyond min: a space of no volume keeps no part out
+        const Eigen::Vector3d position(box[0], box[2], box[4]);
+        v.size = Eigen::Vector3d(box[1], box[3], box[5]) - position;
         const material::DesignBoard& on = design.boards[v.on];
         for (int axis = 0; axis < 3; ++axis) {  // its nearer face, the lower one on a tie
             const double low = on.centre[axis] - on.size[axis] / 2,
@@ -493,9 +521,33 @@ const char* nameOf(material::Exploration::NoSheetSaved why)
 
 }  // namespace
 
-FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied)
+void placeBoard(material::DesignBoard& board, const Fields& part)
 {
-    checkNumbers(document);
+    const BoxSides box = part.box();
+    board.size = {box[1] - box[0], box[3] - box[2], box[5] - box[4]};
+    board.centre = Eigen::Vector3d(box[0], box[2], box[4]) + board.size / 2;
+}
+
+nlohmann::json currentFlatpack(nlohmann::json document)
+{
+    using Migration = void (*)(nlohmann::json&);
+    static const std::array<Migration, kFlatpackFormatVersion - 1> kMigrations = {boxesByCorners};
+    if (!document.is_object())
+        return document;
+    const nlohmann::json given = document.value("version", nlohmann::json(versionWritten(document)));
+    if (!given.is_number_integer())
+        return document;  // the reader says what is wrong
+    for (int version = given.get<int>(); version >= 1 && version < kFlatpackFormatVersion; ++version) {
+        kMigrations[version - 1](document);
+        document["version"] = version + 1;
+    }
+    return document;
+}
+
+FlatpackDesign readFlatpack(const nlohmann::json& given, Satisfied satisfied)
+{
+    checkNumbers(given);
+    const nlohmann::json document = currentFlatpack(given);
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result;
@@ -603,26 +655,27 @@ nlohmann::json partsAt(const Design& design, const Eigen::VectorXd& X)
 {
     nlohmann::json parts = nlohmann::json::array();
     for (const material::DesignBoard& b : design.boardsAt(X)) {
-        const Eigen::Vector3d low = b.centre - b.size / 2;
-        parts.push_back({{"id", b.id},
-                         {"position", {low.x(), low.y(), low.z()}},
-                         {"size", {b.size.x(), b.size.y(), b.size.z()}}});
+        const Eigen::Vector3d low = b.centre - b.size / 2, high = low + b.size;
+        parts.push_back(
+            {{"id", b.id}, {"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}});
     }
     return parts;
 }
 
 nlohmann::json withParts(nlohmann::json document, const Design& design, const Eigen::VectorXd& X)
 {
+    document = currentFlatpack(std::move(document));
     const nlohmann::json parts = partsAt(design, X);
-    for (size_t i = 0; i < parts.size(); ++i) {
-        document["parts"][i]["position"] = parts[i]["position"];
-        document["parts"][i]["size"] = parts[i]["size"];
-    }
+    for (size_t i = 0; i < parts.size(); ++i)
+        for (const char* corner : {"min", "max"})
+            document["parts"][i][corner] = parts[i][corner];
     // Inner volumes move with their boards (5.1: the shelf space travels with the shelf).
     for (size_t i = 0; i < design.innerVolumes.size(); ++i) {
         const material::InnerVolume& v = design.innerVolumes[i];
-        document["inner_volumes"][i]["position"] = {v.lower(0).value(X), v.lower(1).value(X),
-                                                    v.lower(2).value(X)};
+        const Eigen::Vector3d low(v.lower(0).value(X), v.lower(1).value(X), v.lower(2).value(X)),
+            high = low + v.size;
+        document["inner_volumes"][i]["min"] = {low.x(), low.y(), low.z()};
+        document["inner_volumes"][i]["max"] = {high.x(), high.y(), high.z()};
     }
     return document;
 }

@@ -14,7 +14,7 @@
 
 namespace fabguide::io {
 
-constexpr int kFlatpackFormatVersion = 1;
+constexpr int kFlatpackFormatVersion = 2;
 
 /// Boards to cut (quantities added up) the design exploration finishes in its time limit: 300
 /// snapped in a row took 3.3 s of a 2 s limit (one correction of their constraints, or one QP of their
@@ -59,8 +59,16 @@ struct ParametricParts {
 };
 ParametricParts readParametricParts(const nlohmann::json& parts);
 
-/// Reads a `*.flatpack.json` document. Throws FormatError naming the offending field, and, unless told
-/// otherwise, when the design does not satisfy its own constraints (naming them).
+/// `board`'s centre and size from its corners as the format writes them (`part`'s "min" and "max").
+void placeBoard(material::DesignBoard& board, const Fields& part);
+
+/// `document` in this version's form: the migrations from the version it was written in applied in turn
+/// (version 1 wrote a box as "position" and "size"). FormatError naming a field a migration cannot read.
+nlohmann::json currentFlatpack(nlohmann::json document);
+
+/// Reads a `*.flatpack.json` document of this version or an older one. Throws FormatError naming the
+/// offending field, and, unless told otherwise, when the design does not satisfy its own constraints (naming
+/// them).
 FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied = Satisfied::Required);
 
 /// The boards of `document` drawn equal (Design/DrawnEqual.h) as the "equal" constraints of the format it
@@ -68,7 +76,7 @@ FlatpackDesign readFlatpack(const nlohmann::json& document, Satisfied satisfied 
 /// ["post.size.z", "post 2.size.z"]}]. The design need not satisfy its own constraints yet.
 nlohmann::json drawnEqualConstraints(const nlohmann::json& document);
 
-/// The parts at design vector X: [{"id", "position" (lower corner), "size"}].
+/// The parts at design vector X: [{"id", "min", "max"}].
 nlohmann::json partsAt(const material::Design& design, const Eigen::VectorXd& X);
 
 /// `document` with its parts moved and resized to X, its inner volumes moved with their boards; constraints

@@ -276,6 +276,15 @@ Eigen::Vector3d Fields::vector3(const std::string& key) const
     return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
 }
 
+BoxSides Fields::box() const
+{
+    const Eigen::Vector3d low = vector3("min"), high = vector3("max");
+    for (int a = 0; a < 3; ++a)
+        if (!(high[a] > low[a]))
+            throw FormatError(pathOf("max"), "must exceed min along every axis");
+    return {low.x(), high.x(), low.y(), high.y(), low.z(), high.z()};
+}
+
 const nlohmann::json& Fields::array(const std::string& key, bool optional) const
 {
     static const nlohmann::json empty = nlohmann::json::array();

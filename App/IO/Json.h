@@ -1,6 +1,8 @@
 // Reading JSON model files with errors that name the file, the position and the field.
 #pragma once
 
+#include "Geometry/Interval.h"
+
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
@@ -65,6 +67,9 @@ public:
     void header(const std::string& format, int version) const;
     /// A vector [x, y, z].
     Eigen::Vector3d vector3(const std::string& key) const;
+    /// A box by its corners "min" and "max" ([x, y, z] each, max beyond min along every axis): the formats'
+    /// one way of writing a box.
+    BoxSides box() const;
     /// The value at key as written, null when absent: for what the reader of that value checks itself.
     const nlohmann::json& value(const std::string& key) const;
     /// The array at key (required unless `optional`, then empty when absent).

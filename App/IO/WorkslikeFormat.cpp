@@ -636,12 +636,8 @@ function::Model readWorkslike(const nlohmann::json& document)
             for (const function::Cuboid& other : model.cuboids)
                 if (other.name == name)
                     throw FormatError(cuboid.pathOf("name"), "'" + name + "' is used twice");
-            const auto low = point(cuboid, "min"), high = point(cuboid, "max");
-            for (int a = 0; a < 3; ++a)
-                if (!(high[a] > low[a]))
-                    throw FormatError(cuboid.pathOf("max"), "must exceed min along every axis");
             built.cuboids.push_back(static_cast<int>(model.cuboids.size()));
-            model.cuboids.push_back({name, {low[0], high[0], low[1], high[1], low[2], high[2]}});
+            model.cuboids.push_back({name, cuboid.box()});
             if (cuboid.has("drawn"))
                 model.cuboids.back().drawn = drawnSizes(cuboid);
             if (cuboid.flag("cavity", false)) {

@@ -165,9 +165,18 @@ void bindExplore(py::module_& m)
         "Raises FormatError naming a bad field, ConstraintError naming constraints no move satisfies, "
         "PackingError when the design does not fit and there is no edit to undo.");
     m.def(
-        "check_design", [](const py::object& design) { io::readFlatpack(toJson(design)); }, py::arg("design"),
-        "Reads a *.flatpack.json design dict as every command does, laying nothing out: raises FormatError "
-        "naming a bad field, ConstraintError naming the constraints it breaks.");
+        "check_design",
+        [](const py::object& design) {
+            const nlohmann::json document = toJson(design);
+            io::readFlatpack(document);
+            return fromJson(io::currentFlatpack(document));
+        },
+        py::arg("design"),
+        "Reads a *.flatpack.json design dict as every command does, laying nothing out, and returns it as "
+        "this "
+        "version writes it (an older version's migrated): raises FormatError naming a bad field, "
+        "ConstraintError "
+        "naming the constraints it breaks.");
     m.def(
         "drawn_equal",
         [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },

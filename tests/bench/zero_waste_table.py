@@ -92,7 +92,7 @@ def parametric_row(core, name, seconds):
         at = sides(p)
         design = {"boards": SHEETS["boards"], "settings": SHEETS["settings"],
                   "parts": [dict(id=part["id"], quantity=part["quantity"], grain=part["grain"],
-                                 position=[0, 0, 0], size=at[3 * i:3 * i + 3]) for i, part in enumerate(parts)]}
+                                 min=[0, 0, 0], max=at[3 * i:3 * i + 3]) for i, part in enumerate(parts)]}
         problems += ["suggestion {}: {}".format(k + 1, q) for q in flatpack_checker.layout_problems(design,
                                                                                                   s["layout"])]
         if s["sheets"] > result["before"]["sheets"]:

@@ -20,10 +20,10 @@ Design table(const nlohmann::json& extra = nlohmann::json::array(),
     nlohmann::json doc = {{"format", "fabguide.flatpack"},
                           {"boards", {{{"width", 1220}, {"height", 915}, {"thickness", 12}}}},
                           {"parts",
-                           {{{"id", "top"}, {"position", {0, 0, 388}}, {"size", {700, 420, 12}}},
-                            {{"id", "left"}, {"position", {0, 0, 0}}, {"size", {12, 420, 388}}},
-                            {{"id", "right"}, {"position", {688, 0, 0}}, {"size", {12, 420, 388}}},
-                            {{"id", "shelf"}, {"position", {12, 60, 150}}, {"size", {676, 300, 12}}}}},
+                           {{{"id", "top"}, {"min", {0, 0, 388}}, {"max", {700, 420, 400}}},
+                            {{"id", "left"}, {"min", {0, 0, 0}}, {"max", {12, 420, 388}}},
+                            {{"id", "right"}, {"min", {688, 0, 0}}, {"max", {700, 420, 388}}},
+                            {{"id", "shelf"}, {"min", {12, 60, 150}}, {"max", {688, 360, 162}}}}},
                           {"constraints", extra},  // the legs stand on the ground (below)
                           {"inner_volumes", inner}};
     doc["constraints"].push_back({{"kind", "ground"}, {"parts", {"left", "right"}}});
@@ -97,7 +97,7 @@ TEST(CorrectionTest, AnInnerVolumeIsKeptFreeByHoldingThePartThatWouldEnterIt)
     // Space for magazines on the shelf. Raising the shelf 50 mm pushes the volume into the top: the top is
     // held on the volume and rises with it (the legs grow); with the table height capped, the shelf stops.
     const nlohmann::json magazines = {
-        {"name", "magazines"}, {"on", "shelf"}, {"position", {100, 80, 162}}, {"size", {300, 200, 200}}};
+        {"name", "magazines"}, {"on", "shelf"}, {"min", {100, 80, 162}}, {"max", {400, 280, 362}}};
     Eigen::VectorXd u = Eigen::VectorXd::Zero(24);
     u[centreVariable(3, 2)] = 50;
 
@@ -126,7 +126,7 @@ TEST(CorrectionTest, NoBoardShrinksBelowTheMinimumLength)
     nlohmann::json doc = {{"format", "fabguide.flatpack"},
                           {"settings", {{"min_length", 100}}},
                           {"boards", {{{"width", 1220}, {"height", 915}, {"thickness", 12}}}},
-                          {"parts", {{{"id", "shelf"}, {"position", {0, 0, 0}}, {"size", {300, 250, 12}}}}}};
+                          {"parts", {{{"id", "shelf"}, {"min", {0, 0, 0}}, {"max", {300, 250, 12}}}}}};
     const Design design = io::readFlatpack(doc).design;
     Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
     u[sizeVariable(0, 1)] = -200;  // to 50 mm
@@ -162,15 +162,14 @@ TEST(CorrectionTest, TheFormatNamesWhatItCannotRead)
     EXPECT_EQ(error({{{"kind", "snap"}, {"parts", {"shelf", "top"}}}}),
               "constraints[0]: shelf and top do not touch");
     try {
-        table(nlohmann::json::array(),
-              {{{"on", "shelf"}, {"position", {20, 60, 162}}, {"size", {100, -50, 80}}}});
+        table(nlohmann::json::array(), {{{"on", "shelf"}, {"min", {20, 60, 162}}, {"max", {120, 10, 242}}}});
         ADD_FAILURE() << "a negative inner volume read";
     } catch (const io::FormatError& e) {
-        EXPECT_STREQ(e.what(), "inner_volumes[0].size: every side must be longer than 0");
+        EXPECT_STREQ(e.what(), "inner_volumes[0].max: must exceed min along every axis");
     }
     try {  // the top enters the books' space: the message says by what, `names` the volume's own name
         table(nlohmann::json::array(),
-              {{{"name", "books"}, {"on", "shelf"}, {"position", {20, 60, 162}}, {"size", {100, 200, 300}}}});
+              {{{"name", "books"}, {"on", "shelf"}, {"min", {20, 60, 162}}, {"max", {120, 260, 462}}}});
         ADD_FAILURE() << "no ConstraintError";
     } catch (const io::ConstraintError& e) {
         EXPECT_STREQ(e.what(), "the design does not satisfy its own constraints: books (entered by top)");

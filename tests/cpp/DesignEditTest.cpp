@@ -16,10 +16,15 @@ using namespace fabguide;
 
 namespace {
 
+nlohmann::json read(const std::string& path)
+{
+    std::ifstream in(std::string(FABGUIDE_SOURCE_DIR) + "/" + path);
+    return nlohmann::json::parse(in);
+}
+
 nlohmann::json coffeeTable()
 {
-    std::ifstream in(std::string(FABGUIDE_SOURCE_DIR) + "/examples/coffee-table.flatpack.json");
-    return nlohmann::json::parse(in);
+    return read("examples/coffee-table.flatpack.json");
 }
 
 /// The part `id` of a design document.
@@ -34,7 +39,15 @@ Json& part(Json& design, const std::string& id)
 
 double size(const nlohmann::json& design, const std::string& id, int axis)
 {
-    return part(design, id)["size"][axis].template get<double>();
+    const nlohmann::json& p = part(design, id);
+    return p["max"][axis].get<double>() - p["min"][axis].get<double>();
+}
+
+/// The part `id` drawn `length` long along `axis`, from the same lower corner.
+void resize(nlohmann::json& design, const std::string& id, int axis, double length)
+{
+    nlohmann::json& p = part(design, id);
+    p["max"][axis] = p["min"][axis].get<double>() + length;
 }
 
 /// The edit of `valid` (parts) into `drawn`, or `drawn` alone.
@@ -83,14 +96,26 @@ TEST(DesignEditTest, AWiderTopIsKeptAndTheLegsAndShelfFollowWithTheMagazines)
 {
     const nlohmann::json valid = coffeeTable();
     nlohmann::json drawn = valid;
-    part(drawn, "top")["size"][0] = 760;
+    resize(drawn, "top", 0, 760);
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
     EXPECT_NEAR(report.kept, 1, 1e-9);
     EXPECT_NEAR(size(report.design, "top", 0), 760, 1e-6);
     EXPECT_NEAR(size(report.design, "shelf", 0), 760 - 24, 1e-6);
     // The magazines' space rests on the shelf: it moved with the shelf's nearer face.
-    const double shelfLeft = part(report.design, "shelf")["position"][0].get<double>();
-    EXPECT_NEAR(report.design["inner_volumes"][0]["position"][0].get<double>() - shelfLeft, 210 - 12, 1e-6);
+    const double shelfLeft = part(report.design, "shelf")["min"][0].get<double>();
+    EXPECT_NEAR(report.design["inner_volumes"][0]["min"][0].get<double>() - shelfLeft, 210 - 12, 1e-6);
+    expectValidAndLaidOut(report);
+}
+
+TEST(DesignEditTest, AValidStateAnOlderVersionWroteIsKeptFrom)
+{
+    // A FreeCAD document saved by FabGuide 0.x keeps its valid boards as format version 1 wrote them.
+    const nlohmann::json valid = read("tests/data/flatpack/version-1/coffee-table.flatpack.json");
+    nlohmann::json drawn = coffeeTable();
+    resize(drawn, "top", 0, 760);
+    const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
+    EXPECT_TRUE(report.warning.empty()) << report.warning;
+    EXPECT_NEAR(size(report.design, "shelf", 0), 760 - 24, 1e-6);
     expectValidAndLaidOut(report);
 }
 
@@ -98,7 +123,7 @@ TEST(DesignEditTest, AnEditPastARangeIsKeptAsFarAsTheRangeAllows)
 {
     const nlohmann::json valid = coffeeTable();
     nlohmann::json drawn = valid;
-    part(drawn, "top")["size"][0] = 2000;  // the range allows 720 x 1.25 = 900
+    resize(drawn, "top", 0, 2000);  // the range allows 720 x 1.25 = 900
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
     EXPECT_LT(report.kept, 1);
     EXPECT_FALSE(report.limits.empty());
@@ -110,7 +135,7 @@ TEST(DesignEditTest, WithoutKeepingEditsTheBoardsAreTakenAsDrawnAndMovedOnlyToSa
 {
     const nlohmann::json valid = coffeeTable();
     nlohmann::json drawn = valid;
-    part(drawn, "left")["size"][2] = 380;  // the legs are equal: the other one follows, or this one goes back
+    resize(drawn, "left", 2, 380);  // the legs are equal: the other one follows, or this one goes back
     api::DesignEdit asDrawn = edit(drawn, valid["parts"]);
     asDrawn.keepEdits = false;
     const api::DesignEditReport report = api::editDesign(asDrawn);
@@ -124,7 +149,7 @@ TEST(DesignEditTest, AnOverflowIsAbsorbedByThePartsSharingItsLine)
 {
     const nlohmann::json valid = without(coffeeTable(), "range");
     nlohmann::json drawn = valid;
-    part(drawn, "top")["size"][0] = 1000;  // no layout fits it with the others as they are
+    resize(drawn, "top", 0, 1000);  // no layout fits it with the others as they are
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
     EXPECT_TRUE(report.absorbed);
     EXPECT_FALSE(report.snapped.empty());
@@ -136,7 +161,7 @@ TEST(DesignEditTest, AnEditLargerThanEveryBoardIsUndoneWithTheReason)
 {
     const nlohmann::json valid = without(without(coffeeTable(), "range"), "symmetric");
     nlohmann::json drawn = valid;
-    part(drawn, "shelf")["size"][1] = 1300;
+    resize(drawn, "shelf", 1, 1300);
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
     EXPECT_EQ(report.undone, "part 'shelf' is larger than every master board");
     EXPECT_EQ(report.design["parts"], valid["parts"]);
@@ -146,7 +171,7 @@ TEST(DesignEditTest, AnEditLargerThanEveryBoardIsUndoneWithTheReason)
 TEST(DesignEditTest, ADesignThatDoesNotFitWithNoEditToUndoIsRefused)
 {
     nlohmann::json drawn = without(coffeeTable(), "range");
-    part(drawn, "shelf")["size"][1] = 1300;
+    resize(drawn, "shelf", 1, 1300);
     EXPECT_THROW(api::editDesign(edit(drawn)), material::PackingError);
     EXPECT_THROW(api::editDesign(edit(drawn, drawn["parts"])),
                  material::PackingError);  // nothing changed since
@@ -172,9 +197,9 @@ TEST(DesignEditTest, AValidStateThatNoLongerReadsIsSaidAndTheBoardsAreTakenAsDra
 {
     const nlohmann::json drawn = coffeeTable();
     nlohmann::json valid = drawn["parts"];
-    valid[0]["size"] = "wide";
+    valid[0]["max"] = "wide";
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid));
-    EXPECT_NE(report.warning.find("parts[0].size"), std::string::npos) << report.warning;
+    EXPECT_NE(report.warning.find("parts[0].max"), std::string::npos) << report.warning;
     EXPECT_EQ(report.design, drawn);
     expectValidAndLaidOut(report);
 }
@@ -183,16 +208,16 @@ TEST(DesignEditTest, WhatTheValidPartsDoNotSayIsTakenAsDrawn)
 {
     const nlohmann::json valid = coffeeTable();
     nlohmann::json drawn = valid;
-    part(drawn, "top")["size"][0] = 760;
+    resize(drawn, "top", 0, 760);
     part(drawn, "shelf")["grain"] = "y";  // set with the edit: the valid parts have none
     const api::DesignEditReport report = api::editDesign(edit(drawn, valid["parts"]));
     EXPECT_EQ(part(report.design, "shelf")["grain"], "y");
     EXPECT_NEAR(size(report.design, "shelf", 0), 760 - 24, 1e-6);
     expectValidAndLaidOut(report);
 
-    part(drawn, "shelf")["size"][1] = 1300;  // undone: the boards go back, the grain stays as drawn
+    resize(drawn, "shelf", 1, 1300);  // undone: the boards go back, the grain stays as drawn
     const api::DesignEditReport undone = api::editDesign(edit(without(drawn, "range"), valid["parts"]));
     ASSERT_FALSE(undone.undone.empty());
     EXPECT_EQ(part(undone.design, "shelf")["grain"], "y");
-    EXPECT_EQ(part(undone.design, "shelf")["size"], part(valid, "shelf")["size"]);
+    EXPECT_EQ(part(undone.design, "shelf")["max"], part(valid, "shelf")["max"]);
 }

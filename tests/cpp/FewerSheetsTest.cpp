@@ -72,12 +72,12 @@ TEST(LeastDesignTest, ShortestSidesBoundEveryDesignWhereSidesAreTied)
     // Two boards side by side whose widths add up to a third's fixed 1000 mm, each at least 100: the least
     // design takes one split of the 1000, the bound must take 100 for each (no design has either narrower).
     const io::FlatpackDesign f = io::readFlatpack(nlohmann::json::parse(R"({
-        "format": "fabguide.flatpack", "version": 1,
+        "format": "fabguide.flatpack", "version": 2,
         "boards": [{"width": 2440, "height": 1220, "thickness": 18}],
         "settings": {"min_length": 100},
-        "parts": [{"id": "a", "position": [0, 0, 0], "size": [400, 300, 18]},
-                  {"id": "b", "position": [400, 0, 0], "size": [600, 300, 18]},
-                  {"id": "c", "position": [0, 400, 0], "size": [1000, 300, 18]}],
+        "parts": [{"id": "a", "min": [0, 0, 0], "max": [400, 300, 18]},
+                  {"id": "b", "min": [400, 0, 0], "max": [1000, 300, 18]},
+                  {"id": "c", "min": [0, 400, 0], "max": [1000, 700, 18]}],
         "constraints": [{"kind": "sum", "lhs": ["a.size.x", "b.size.x"], "rhs": ["c.size.x"]},
                         {"kind": "fixed", "ref": "c.size.x"}]})"));
     const ConstrainedDesign design(f.design);

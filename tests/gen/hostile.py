@@ -91,17 +91,20 @@ def changed(document, path, value):
     return result
 
 
+def box(pid, low, size):
+    """A flat-pack part: its lower corner and sizes as the format's corners."""
+    return {"id": pid, "min": low, "max": [lo + s for lo, s in zip(low, size)]}
+
+
 def flatpack_row(parts, touching=True):
     """A flat-pack design of `parts` upright boards side by side, touching (snapped in a row) or apart on a
     grid, cut from as many sheets as it takes."""
     design = example("coffee-table.flatpack.json")
     design["boards"][0]["count"] = -1
     if touching:
-        design["parts"] = [{"id": "b{}".format(i), "position": [i * 12, 0, 0], "size": [12, 450, 400]}
-                           for i in range(parts)]
+        design["parts"] = [box("b{}".format(i), [i * 12, 0, 0], [12, 450, 400]) for i in range(parts)]
     else:
-        design["parts"] = [{"id": "b{}".format(i), "position": [i % 400 * 24, i // 400 % 100 * 60,
-                                                                i // 40000 * 60], "size": [12, 45, 40]}
+        design["parts"] = [box("b{}".format(i), [i % 400 * 24, i // 400 % 100 * 60, i // 40000 * 60], [12, 45, 40])
                            for i in range(parts)]
     design["constraints"] = []
     design.pop("inner_volumes", None)

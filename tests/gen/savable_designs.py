@@ -56,14 +56,14 @@ def design(seed, slack=SLACK):
     for k, b in enumerate(boards):
         pid = "board {}".format(k + 1)
         w, h = b["drawn"]
-        parts.append({"id": pid, "position": [x, 0, 0], "size": [w, h, b["thickness"]]})
+        parts.append({"id": pid, "min": [x, 0, 0], "max": [x + w, h, b["thickness"]]})
         x += w + 100  # apart: nothing snaps
         for axis, low, high in (("x", b["least"][0], w), ("y", b["least"][1], h)):
             constraints.append({"kind": "range", "ref": "{}.size.{}".format(pid, axis), "min": low, "max": high})
     usable = (SHEET[0] - 2 * SETTINGS["trim"]) * (SHEET[1] - 2 * SETTINGS["trim"])
     drawn_at_least = sum(-(-sum(b["drawn"][0] * b["drawn"][1] for b in boards if b["thickness"] == t) // usable)
                          for t in THICKNESSES)
-    document = {"format": "fabguide.flatpack", "version": 1, "title": "savable {}".format(seed),
+    document = {"format": "fabguide.flatpack", "version": 2, "title": "savable {}".format(seed),
                 "settings": dict(SETTINGS, max_growth=1.0),
                 "boards": [{"name": "{} mm".format(t), "width": SHEET[0], "height": SHEET[1], "thickness": t,
                             "count": -1} for t in THICKNESSES],

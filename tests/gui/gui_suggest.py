@@ -55,7 +55,7 @@ def shelf_along_the_grain(d):
 
 def places(parts):
     """Parts as a suggestion's path gives them: where they are and their sizes (no grain)."""
-    return [{key: p[key] for key in ("id", "position", "size")} for p in parts]
+    return [{key: p[key] for key in ("id", "min", "max")} for p in parts]
 
 
 def boxes_become_a_design_with_live_usage():
@@ -259,7 +259,7 @@ def a_design_the_search_refuses_is_said_with_the_boxes_labels():
     panel = design_commands.COMMANDS["FabGuide_Suggest"].panel
     panel.wait()
     said = panel.message.text()
-    assert "box 'shelf' size: its thinnest side 0.5" in said and "parts[" not in said, said
+    assert "box 'shelf': its thinnest side 0.5" in said and "parts[" not in said, said
     panel.reject()
     guitest.settle(0.3)
     shelf.Height = thickness

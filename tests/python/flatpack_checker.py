@@ -2,7 +2,7 @@
 """An independent checker for `fabguide optimise` suggestions (`*.flatpack.json`, layout JSON, summary.json).
 
 It shares no code with FabGuide and trusts nothing the optimiser says about the suggestion: it reads the JSON
-files, rebuilds every board's box from its position and size, and judges the suggestion as a furniture maker with
+files, rebuilds every board's box from its corners, and judges the suggestion as a furniture maker with
 a CNC router would, against the ORIGINAL design (docs/formats.md, *.flatpack.json and layout JSON):
 
 - the suggestion is the same furniture: the same parts in the same order, the same quantities, every board still
@@ -48,11 +48,16 @@ RELOAD_TIMEOUT = 120  # s
 
 
 class Box:
+    """A part or volume as a file writes it: "min" and "max" corners, or version 1's "position" and "size"."""
+
     def __init__(self, part):
         self.id = part["id"]
-        self.lo = [float(v) for v in part["position"]]
-        self.size = [float(v) for v in part["size"]]
-        self.hi = [self.lo[k] + self.size[k] for k in range(3)]
+        if "min" in part:
+            self.lo, self.hi = [float(v) for v in part["min"]], [float(v) for v in part["max"]]
+            self.size = [self.hi[k] - self.lo[k] for k in range(3)]
+        else:
+            self.lo, self.size = [float(v) for v in part["position"]], [float(v) for v in part["size"]]
+            self.hi = [self.lo[k] + self.size[k] for k in range(3)]
         self.quantity = int(part.get("quantity", 1))
         self.normal = min(range(3), key=lambda k: self.size[k])  # the thin side; x before y before z on ties
 
@@ -275,11 +280,11 @@ def constraint_problems(original, suggestion, tol=TOL):
         if on not in B0:
             problems.append("%s: no board %r" % (vname, on))
             continue
-        v0 = Box({"id": vname, "position": vol["position"], "size": vol["size"]})
+        v0 = Box(dict(vol, id=vname))
         # it keeps its distance from the face of its board it was drawn nearer to (the lower one on a tie)
         lo = [v0.lo[k] + (B1[on].lo[k] - B0[on].lo[k] if v0.lo[k] - B0[on].lo[k] <= B0[on].hi[k] - v0.hi[k]
                           else B1[on].hi[k] - B0[on].hi[k]) for k in range(3)]
-        v = Box({"id": vname, "position": lo, "size": vol["size"]})
+        v = Box({"id": vname, "position": lo, "size": v0.size})
         for k in B1[on].in_plane():  # and stands on it: the board under all of it, or overhung no more than drawn
             for side, drawn, now in (("lower", B0[on].lo[k] - v0.lo[k], B1[on].lo[k] - v.lo[k]),
                                      ("upper", v0.hi[k] - B0[on].hi[k], v.hi[k] - B1[on].hi[k])):
@@ -344,9 +349,9 @@ def structure_problems(original, suggestion):
 
 def identical(original, suggestion, tol=1e-6):
     for p0, p1 in zip(original.get("parts", []), suggestion.get("parts", [])):
-        for key in ("position", "size"):
-            if any(abs(float(a) - float(b)) > tol for a, b in zip(p0[key], p1[key])):
-                return False
+        b0, b1 = Box(p0), Box(p1)
+        if any(abs(a - b) > tol for a, b in zip(b0.lo + b0.hi, b1.lo + b1.hi)):
+            return False
     return True
 
 
@@ -599,10 +604,10 @@ def check_output(outdir, original, cli=None, reload=True):
 def drawn_equal_problems(original, suggestion, tol=TOL):
     """Boards the original draws the same size (every side within 1e-4 mm) that the suggestion sizes apart: asked
     for by `optimise --keep-drawn-equal` and by the designs FreeCAD makes from boxes."""
-    sizes = {p["id"]: p["size"] for p in suggestion.get("parts", [])}
+    sizes = {p["id"]: Box(p).size for p in suggestion.get("parts", [])}
     groups = {}
     for p in original.get("parts", []):
-        groups.setdefault(tuple(round(v / 1e-4) for v in p["size"]), []).append(p["id"])
+        groups.setdefault(tuple(round(v / 1e-4) for v in Box(p).size), []).append(p["id"])
     problems = []
     for ids in groups.values():
         for other in ids[1:]:
@@ -615,9 +620,9 @@ def alike_problems(suggestions):
     """Suggestions (designs, in order) with no board that differs by DISTINCT from an earlier one's."""
     problems = []
     for k, later in enumerate(suggestions):
-        sizes = {p["id"]: p["size"] for p in later["parts"]}
+        sizes = {p["id"]: Box(p).size for p in later["parts"]}
         for j, earlier in enumerate(suggestions[:k]):
-            if max(abs(a - b) for p in earlier["parts"] for a, b in zip(p["size"], sizes[p["id"]])) < DISTINCT - TOL:
+            if max(abs(a - b) for p in earlier["parts"] for a, b in zip(Box(p).size, sizes[p["id"]])) < DISTINCT - TOL:
                 problems.append("suggestion %d: no board differs by %g mm from suggestion %d" % (k + 1, DISTINCT,
                                                                                                 j + 1))
     return problems

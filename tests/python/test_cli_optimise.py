@@ -63,12 +63,12 @@ def test_grain_runs_along_the_axis_a_part_names(fabguide_cli, tmp_path):
     """A bookcase's 1800 mm sides on 1220 x 2440 sheets whose grain runs along their height: with the grain along
     the side's length (z) they are laid along the sheet; 'follow_grain' (the first in-plane axis, y, 300 mm)
     cannot be cut from these sheets."""
-    design = {"format": "fabguide.flatpack", "version": 1,
+    design = {"format": "fabguide.flatpack", "version": 2,
               "boards": [{"name": "birch", "width": 1220, "height": 2440, "thickness": 18, "count": 2,
                           "grain": "height"}],
               "settings": {"resolution": 1, "kerf": 0.2, "spacing": 3},
-              "parts": [{"id": "side", "position": [0, 0, 0], "size": [18, 300, 1800], "grain": "z"},
-                        {"id": "shelf", "position": [18, 0, 900], "size": [582, 300, 18], "grain": "x"}]}
+              "parts": [{"id": "side", "min": [0, 0, 0], "max": [18, 300, 1800], "grain": "z"},
+                        {"id": "shelf", "min": [18, 0, 900], "max": [600, 300, 918], "grain": "x"}]}
     path = tmp_path / "bookcase.flatpack.json"
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out", "--time-limit", "1")
@@ -128,11 +128,11 @@ def test_bad_designs_are_refused_with_the_field_named(fabguide_cli, source_dir, 
     assert run.returncode == 1
     assert "constraints[8].refs[1]: no part \"legs\"" in run.stderr
     design["constraints"].pop()
-    design["parts"][0]["size"] = [700, 420, 15]
+    design["parts"][0]["max"][2] += 3
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out")
-    assert "parts[0].size: its thinnest side 15 must be the thickness of a master board (12)" in run.stderr
-    design["parts"][0]["size"] = [700, 420, 12]
+    assert "parts[0]: its thinnest side 15 must be the thickness of a master board (12)" in run.stderr
+    design["parts"][0]["max"][2] -= 3
     design.setdefault("settings", {})["cuts"] = "guillotine"  # the design search lays out free cuts only: said
     path.write_text(json.dumps(design))
     run = optimise(fabguide_cli, str(path), tmp_path / "out")

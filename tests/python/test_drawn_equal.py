@@ -63,7 +63,7 @@ def test_a_design_holding_them_already_gets_none_again(fabguide_cli, tmp_path):
 
 def test_the_inferred_constraints_name_the_boards_and_sides():
     design = load(os.path.join(SUITE, "bunk-bed.flatpack.json"))
-    sizes = {p["id"]: p["size"] for p in design["parts"]}
+    sizes = {p["id"]: [hi - lo for lo, hi in zip(p["min"], p["max"])] for p in design["parts"]}
     inferred = fabguide_core.drawn_equal(design)
     rails = ["lower-rail-front", "lower-rail-back", "upper-rail-front", "upper-rail-back"]
     assert {"kind": "equal", "name": "drawn equal: size.x of " + ", ".join(rails),
@@ -77,7 +77,7 @@ def test_the_checker_catches_a_rail_grown_alone():
     original = load(os.path.join(SUITE, "bunk-bed.flatpack.json"))
     spoiled = copy.deepcopy(original)
     rail = next(p for p in spoiled["parts"] if p["id"] == "upper-rail-back")
-    rail["size"][0] += 50
+    rail["max"][0] += 50
     assert flatpack_checker.drawn_equal_problems(original, original) == []
     found = flatpack_checker.drawn_equal_problems(original, spoiled)
     assert len(found) == 1 and "upper-rail-back" in found[0], found

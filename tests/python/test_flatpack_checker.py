@@ -1,5 +1,6 @@
 """The independent flat-pack checker (flatpack_checker.py) on tiny hand-made cases: a three-board shelf in 12 mm
-ply on a 1000 x 600 sheet, a suggestion worked out by hand, and that suggestion broken one way at a time."""
+ply on a 1000 x 600 sheet, a suggestion worked out by hand, and that suggestion broken one way at a time. They are
+written in format version 1 (boxes by position and size), which the checker and FabGuide still read."""
 import copy
 import os
 import sys

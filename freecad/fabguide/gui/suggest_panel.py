@@ -355,7 +355,7 @@ class SuggestPanel:
             if item.checkState() != QtCore.Qt.Checked:
                 continue
             box = self.doc.getObjectsByLabel(item.text())[0]
-            size = by_id[item.text()]["size"]
+            size = design.sizes(by_id[item.text()])
             for axis in cuboids.in_plane(size):
                 ref = "{}.size.{}".format(item.text(), "xyz"[axis])
                 obj = design.add_constraint(self.design, "fixed", "Locked " + ref, Refs=[ref], Value=size[axis])

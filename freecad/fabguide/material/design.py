@@ -236,11 +236,11 @@ def inner_volumes(obj):
 
 
 def parts_of(obj):
-    """The boards as the format's parts: {id, position, size, grain if set}, from the boxes as they are now."""
+    """The boards as the format's parts: {id, min, max, grain if set}, from the boxes as they are now."""
     parts = []
     for box in boxes(obj):
         c = cuboids.coordinates(box)
-        part = {"id": box.Label, "position": [c[0], c[2], c[4]], "size": [c[1] - c[0], c[3] - c[2], c[5] - c[4]]}
+        part = {"id": box.Label, "min": list(c[0::2]), "max": list(c[1::2])}
         if getattr(box, "Grain", "Free") != "Free":
             part["grain"] = box.Grain.lower()  # one across the board is refused by the core, by name
         parts.append(part)
@@ -279,13 +279,14 @@ def volume_dicts(obj):
             continue
         low = v.Placement.Base
         size = [v.Length.Value, v.Width.Value, v.Height.Value]
+        box = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
         if v.Kind == "Inner":
             if v.On is None:
                 raise DesignError(translate("FabGuide", "inner volume '{}': choose the board it rests on (On)").format(
                     v.Label))
-            inner.append({"name": v.Label, "on": v.On.Label, "position": [low.x, low.y, low.z], "size": size})
+            inner.append(dict(name=v.Label, on=v.On.Label, **box))
         else:
-            outer = {"min": [low.x, low.y, low.z], "max": [low.x + size[0], low.y + size[1], low.z + size[2]]}
+            outer = box
     return inner, outer
 
 
@@ -315,7 +316,7 @@ def flatpack(obj, parts=None):
             raise DesignError(translate("FabGuide", "no boxes to lay out (drag the furniture's Part boxes into the "
                                                     "design)"))
         inner, outer = volume_dicts(obj)
-        doc = {"format": "fabguide.flatpack", "version": 1,
+        doc = {"format": "fabguide.flatpack", "version": 2,
                "settings": {"resolution": obj.Resolution.Value, "kerf": obj.Kerf.Value, "spacing": obj.Spacing.Value,
                             "trim": obj.Trim.Value, "snap": obj.Snap, "max_growth": obj.MaxGrowth},
                "boards": [master_board.as_problem_board(m) for m in obj.MasterBoards],
@@ -465,9 +466,9 @@ def write_parts(obj, parts, start=None):
         on, at = was["on"], []
         for a in range(3):
             low, high = before[on][2 * a], before[on][2 * a + 1]
-            face = 2 * a + (was["position"][a] - low > high - was["position"][a] - was["size"][a])
+            face = 2 * a + (was["min"][a] - low > high - was["max"][a])
             shift = after[on][face] - before[on][face]
-            at.append(round(was["position"][a] + shift, 9) if shift else was["position"][a])  # exactly back
+            at.append(round(was["min"][a] + shift, 9) if shift else was["min"][a])  # exactly back
         at = FreeCAD.Vector(*at)
         if (v.Placement.Base - at).Length > 1e-9:
             v.Placement = FreeCAD.Placement(at, FreeCAD.Rotation())
@@ -476,7 +477,7 @@ def write_parts(obj, parts, start=None):
 
 def corners(part):
     """A format part's [left, right, near, far, bottom, top], as cuboids.coordinates has a box's."""
-    return [v for a in range(3) for v in (part["position"][a], part["position"][a] + part["size"][a])]
+    return [v for a in range(3) for v in (part["min"][a], part["max"][a])]
 
 
 @contextlib.contextmanager
@@ -516,8 +517,7 @@ def apply_parts(obj, parts, start=None, laid=None):
 def from_file(doc, path, label=None):
     """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes."""
     with open(path) as f:
-        data = json.load(f)
-    fabguide_core.check_design(data)  # refuse what the core cannot read, with its message
+        data = fabguide_core.check_design(json.load(f))  # as this version writes it, or refused with why
     masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
                                    b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"),
                                    b.get("cost", 1.0))
@@ -526,8 +526,8 @@ def from_file(doc, path, label=None):
     for p in data["parts"]:
         box = doc.addObject("Part::Box", "Box")
         box.Label = p["id"]
-        box.Length, box.Width, box.Height = p["size"]
-        box.Placement.Base = FreeCAD.Vector(*p["position"])
+        box.Length, box.Width, box.Height = sizes(p)
+        box.Placement.Base = FreeCAD.Vector(*p["min"])
         made[p["id"]] = box
     obj = create(doc, made.values(), masters, label or data.get("title", "FlatpackDesign"))
     for p in data["parts"]:
@@ -557,17 +557,21 @@ def from_file(doc, path, label=None):
             values["Parts"] = [made[p] for p in c["parts"]]
         add_constraint(obj, c["kind"], c.get("name"), made, **values)
     for v in data.get("inner_volumes", []):
-        add_volume(obj, "Inner", v["position"], v["size"], made[v["on"]], v.get("name"))
+        add_volume(obj, "Inner", v["min"], sizes(v), made[v["on"]], v.get("name"))
     if "outer_volume" in data:
-        low, high = data["outer_volume"]["min"], data["outer_volume"]["max"]
-        add_volume(obj, "Outer", low, [h - l for h, l in zip(high, low)])
+        add_volume(obj, "Outer", data["outer_volume"]["min"], sizes(data["outer_volume"]))
     return obj
+
+
+def sizes(box):
+    """A format box's sizes along x, y and z."""
+    return [high - low for low, high in zip(box["min"], box["max"])]
 
 
 def grain_named(part):
     """A file part's grain as a box's Grain; the older follow_grain is its first axis in the board's face."""
     if part.get("follow_grain") and "grain" not in part:
-        return GRAINS[cuboids.in_plane(part["size"])[0] + 1]
+        return GRAINS[cuboids.in_plane(sizes(part))[0] + 1]
     return part.get("grain", "free").capitalize()
 
 
@@ -576,6 +580,6 @@ def fraction_bounds(data, c):
     part, what, axis = c["ref"].rsplit(".", 2)
     p = next(q for q in data["parts"] if q["id"] == part)
     a = "xyz".index(axis)
-    value = {"size": p["size"][a], "min": p["position"][a], "max": p["position"][a] + p["size"][a]}.get(
-        what, p["position"][a] + p["size"][a] / 2)
+    value = {"size": p["max"][a] - p["min"][a], "min": p["min"][a], "max": p["max"][a]}.get(
+        what, (p["min"][a] + p["max"][a]) / 2)
     return {"Min": c.get("min", value * (1 - c["fraction"])), "Max": c.get("max", value * (1 + c["fraction"]))}

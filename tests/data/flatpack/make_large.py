@@ -19,8 +19,13 @@ def birch18(count):
              "count": count}]
 
 
+def corners(low, size):
+    """A box's "min" and "max" from its lower corner and sizes."""
+    return {"min": list(low), "max": [lo + s for lo, s in zip(low, size)]}
+
+
 def part(pid, position, size):
-    return {"id": pid, "position": list(position), "size": list(size)}
+    return dict(id=pid, **corners(position, size))
 
 
 def kitchen_run():
@@ -82,11 +87,10 @@ def kitchen_run():
         part("plinth-front-b", [1650, 50, 0], [750, 18, 130]),
     ]
     volumes = [
-        {"name": "dishwasher 600 x 560 x 820", "on": "cab-2-side-right", "position": [1050, 0, 0],
-         "size": [600, 560, 820]},
-        {"name": "pots and pans", "on": "cab-1-bottom", "position": [30, 20, 148], "size": [530, 480, 280]},
-        {"name": "bottles", "on": "cab-3-bottom", "position": [1680, 20, 148], "size": [230, 480, 350]},
-        {"name": "cutlery trays", "on": "cab-2-drawer-2-bottom", "position": [660, 20, 528], "size": [320, 440, 60]},
+        dict(name="dishwasher 600 x 560 x 820", on="cab-2-side-right", **corners([1050, 0, 0], [600, 560, 820])),
+        dict(name="pots and pans", on="cab-1-bottom", **corners([30, 20, 148], [530, 480, 280])),
+        dict(name="bottles", on="cab-3-bottom", **corners([1680, 20, 148], [230, 480, 350])),
+        dict(name="cutlery trays", on="cab-2-drawer-2-bottom", **corners([660, 20, 528], [320, 440, 60])),
     ]
     constraints = [
         {"kind": "ground", "parts": ["plinth-front-a", "plinth-front-b"] +
@@ -101,7 +105,7 @@ def kitchen_run():
         {"kind": "range", "ref": "cab-1-side-left.size.y", "min": 540, "max": 580, "name": "carcass depth"},
     ] + constraints
     return {
-        "format": "fabguide.flatpack", "version": 1, "title": "Kitchen run, 2400 mm niche",
+        "format": "fabguide.flatpack", "version": 2, "title": "Kitchen run, 2400 mm niche",
         "description": "Four base cabinets and a 600 mm dishwasher gap between two walls 2400 mm apart, 46 boards "
                        "of 18 mm birch: carcasses (sides, bottom, front and back top rails, a wall-hanging rail, "
                        "a shelf), a 600 with two doors, a 450 with two drawer boxes, a 300 bottle pull-out, a "
@@ -149,10 +153,10 @@ def shop_shelving():
         {"kind": "range", "ref": "bay-1-stiffener-1.size.z", "min": 50, "max": 80},
         {"kind": "range", "ref": "bay-1-shelf-1.min.z", "min": 80, "max": 150},
     ]
-    volumes = [{"name": "storage bins, bay %d" % (b + 1), "on": "bay-%d-shelf-1" % (b + 1),
-                "position": [b * 818 + 38, 20, 118], "size": [600, 340, 290]} for b in range(bays)]
+    volumes = [dict(name="storage bins, bay %d" % (b + 1), on="bay-%d-shelf-1" % (b + 1),
+                    **corners([b * 818 + 38, 20, 118], [600, 340, 290])) for b in range(bays)]
     return {
-        "format": "fabguide.flatpack", "version": 1, "title": "Garage shelving, 4 bays x 6 shelves",
+        "format": "fabguide.flatpack", "version": 2, "title": "Garage shelving, 4 bays x 6 shelves",
         "description": "Workshop shelving along a 3400 mm garage wall in 18 mm birch: five uprights, 24 shelves "
                        "with front stiffeners, a low and a top back brace per bay. Bays 760-840 wide, shelves "
                        "350-420 deep, uprights 1700-1850 under the door rail; every level lines up across the "
