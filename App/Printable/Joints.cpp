@@ -44,12 +44,14 @@ double thinnestOf(const Model& m, std::initializer_list<int> cuboids)
     return side;
 }
 
-constexpr double kLeastPin = 0.4, kLeastWall = 0.8;
+constexpr double kLeastPin = 0.4, kLeastWall = 0.8, kWallShare = 0.3;
 
-/// The outer radius of the least round parts that hold a pin with gap g.
+/// The outer radius of the least round parts that hold a pin with gap g: the least pin, the gap and the wall
+/// sized() puts round it (its 30 % of the radius is the more from a 2.67 mm radius on, so from a 1.47 mm
+/// gap).
 double leastOuter(double g)
 {
-    return kLeastPin + g + kLeastWall;
+    return std::max(kLeastPin + g + kLeastWall, (kLeastPin + g) / (1 - kWallShare));
 }
 
 /// The sizes of a joint's round parts (4.5.2) on parts `side` thin: outer radius half of it, the pin inside
@@ -58,7 +60,7 @@ double leastOuter(double g)
 Radii sized(double side, double g)
 {
     const double outer = std::max(side / 2, leastOuter(g));
-    return {outer, outer - g - std::max(kLeastWall, 0.3 * outer)};
+    return {outer, outer - g - std::max(kLeastWall, kWallShare * outer)};
 }
 
 /// sized() for a joint's cuboids: round parts that stand proud of a thin part, up to twice its thickness,
