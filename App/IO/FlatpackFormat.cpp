@@ -548,6 +548,7 @@ FlatpackDesign readFlatpack(const nlohmann::json& given, Satisfied satisfied)
 {
     checkNumbers(given);
     const nlohmann::json document = currentFlatpack(given);
+    checkNumbers(document);  // a corner a migration added up, beyond what this version reads
     const Fields root(document, "");
     root.header("fabguide.flatpack", kFlatpackFormatVersion);
     FlatpackDesign result;
