@@ -761,6 +761,24 @@ TEST(PrintInPlace, FacesTheSolveLeavesAHairApartArePrintedInOnePlane)
     EXPECT_EQ(printed.cuboids[1].at(Side::Near), 0.002);
 }
 
+TEST(PrintInPlace, ALockedFaceKeepsItsPlaneWhenFacesAHairFromItAreMovedOntoIt)
+{
+    // The box's locked front at 0, a drawer's front 5e-4 mm in front of it: the plane was the run's first,
+    // and the lock moved (generated seed 7792). It is the locked face's.
+    const function::Model m = io::readWorkslike(nlohmann::json::parse(R"({"format": "fabguide.workslike",
+        "version": 1,
+        "parts": [{"name": "box", "cuboids": [{"name": "box", "min": [0, 0, 0], "max": [40, 30, 20]},
+                   {"name": "bay", "min": [2, 0, 2], "max": [38, 28, 18], "cavity": true}]},
+                  {"name": "drawer", "cuboids": [{"name": "front", "min": [0, -3.0005, 0], "max": [40, -0.0005, 20]},
+                   {"name": "tray", "min": [3, -0.0005, 3], "max": [37, 27, 17]}]}],
+        "joints": [{"name": "drawer slide", "type": "slide", "part": "drawer", "axis": "y"}],
+        "configurations": [{"name": "open", "poses": {"drawer slide": -20}}],
+        "locks": ["box.near"]})"));
+    const function::Model printed = solvedToPrint(m, 1, 0.4);
+    EXPECT_EQ(printed.cuboids[0].at(Side::Near), 0);
+    EXPECT_EQ(printed.cuboids[2].at(Side::Far), 0);  // the front's back, a hair off it, in its plane
+}
+
 TEST(Joints, ALinksRoundPartsStayWithinTheFacesTheyStandOn)
 {
     // A crate's 10 mm board on a link to the base's side, the base pivot 3 mm under the base's top: the

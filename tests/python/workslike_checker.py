@@ -855,6 +855,26 @@ def check_cover(model, r, tol, problems):
                                    fmt(over[0][1][0]), AXES[v], fmt(over[0][0][1]), fmt(over[0][1][1])))
 
 
+def covering_alongside(model, r, pairs, tol):
+    """The drawing links a covered face to some covering faces; the cover's other covering parts help cover it
+    where, solved, a face of theirs on the same side lies in its plane over it (a lid and its flap over one well,
+    the flap drawn 11 mm above it: seed 7591)."""
+    k = configuration_of(r)
+    extra = []
+    for a, b in pairs:
+        covered, side = model.face(b)[0], model.face(a)[1]
+        n = side // 2
+        over = model.posed(covered, k).bbox
+        for c in (c for p in r["covering"] for c in model.solids(p)):
+            face = "%s.%s" % (c.name, SIDES[side])
+            box = model.posed(c, k).bbox
+            if [face, b] in pairs + extra or abs(box[side % 2][n] - model.value(covered, side ^ 1, k)) > tol:
+                continue
+            if all(min(box[1][u], over[1][u]) - max(box[0][u], over[0][u]) > tol for u in range(3) if u != n):
+                extra.append([face, b])
+    return extra
+
+
 def check_cover_intent(model, drawn, r, tol, problems):
     """A cover drawn without pairs, read by the checker itself on the drawing (faces within twice the cover
     distance, a user's gap of up to 10 mm): what it links must be covered in the solved model too. Only for
@@ -864,6 +884,7 @@ def check_cover_intent(model, drawn, r, tol, problems):
     mine = infer_cover_pairs(drawn, dict(r, distance=2 * float(r.get("distance", 5))), configuration_of(r))
     if not mine:
         return
+    mine += covering_alongside(model, r, mine, tol)
     found = []
     check_cover(model, dict(r, pairs=mine), tol, found)
     reading = "; ".join("%s over %s" % (a, b) for a, b in mine)
