@@ -121,7 +121,8 @@ nlohmann::json layOutDesign(const io::FlatpackDesign& f, std::uint64_t seed, dou
 DesignEditReport editDesign(const DesignEdit& edit)
 {
     DesignEditReport report;
-    report.design = io::currentFlatpack(edit.design);
+    const nlohmann::json drawn = io::currentFlatpack(edit.design);
+    report.design = drawn;
     // The valid state as this version writes parts (a document saved by an older FabGuide kept them in its
     // own).
     const nlohmann::json valid =
@@ -146,7 +147,7 @@ DesignEditReport editDesign(const DesignEdit& edit)
         if (!start)
             throw;
         if (!absorbed(*start, edit, report)) {
-            report.design = withBoards(io::currentFlatpack(edit.design), valid);
+            report.design = withBoards(drawn, valid);
             report.undone = error.what();
         }
     }

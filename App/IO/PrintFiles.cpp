@@ -33,7 +33,6 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <tuple>
 
 namespace fabguide::io {
 
@@ -191,7 +190,7 @@ std::string fileName(const std::string& name)
 
 void writeStl(const std::vector<printable::Body>& bodies, const std::string& path)
 {
-    meshed(bodies);
+    meshed(bodies);  // the bodies' faces triangulated in place, which meshOf reads
     std::vector<Mesh> meshes;
     std::uint32_t count = 0;
     for (const printable::Body& body : bodies) {

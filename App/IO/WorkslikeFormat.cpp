@@ -89,10 +89,8 @@ function::Expression sum(const function::Model& model, const nlohmann::json& val
 
 std::array<double, 3> point(const Fields& fields, const std::string& key)
 {
-    const nlohmann::json& p = fields.array(key);
-    if (p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
-        throw FormatError(fields.pathOf(key), "must be [x, y, z], got " + p.dump());
-    return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
+    const Eigen::Vector3d p = fields.vector3(key);
+    return {p.x(), p.y(), p.z()};
 }
 
 /// A cuboid's sizes as the user drew them, before any solve: three positive numbers.

@@ -172,11 +172,9 @@ void bindExplore(py::module_& m)
             return fromJson(io::currentFlatpack(document));
         },
         py::arg("design"),
-        "Reads a *.flatpack.json design dict as every command does, laying nothing out, and returns it as "
-        "this "
-        "version writes it (an older version's migrated): raises FormatError naming a bad field, "
-        "ConstraintError "
-        "naming the constraints it breaks.");
+        "Reads a *.flatpack.json design dict as every command does, laying nothing out, and "
+        "returns it as this version writes it (an older version's migrated): raises FormatError "
+        "naming a bad field, ConstraintError naming the constraints it breaks.");
     m.def(
         "drawn_equal",
         [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },
