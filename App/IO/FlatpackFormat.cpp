@@ -124,11 +124,13 @@ bool addSnapping(Design& design, int a, int b)
     return !snap.equalities.empty();
 }
 
-/// One entry of "constraints" being read: the design it adds to, its fields, and the design's values now.
+/// One entry of "constraints" being read: the design it adds to, its fields, the design's values now, and
+/// the entry's normal form, where each default it takes is written.
 struct ConstraintReader {
     Design& design;
     const nlohmann::json& json;
     const Fields& c;
+    nlohmann::json& normal;
     std::string kind;
     Eigen::VectorXd X;
 
@@ -148,6 +150,7 @@ struct ConstraintReader {
     {
         const Linear lhs = sum(references(design, c, "lhs", 1)), rhs = sum(references(design, c, "rhs", 1));
         const double offset = c.number("offset", 0.0);
+        normal["offset"] = offset;
         equal(named(firstFew(c.array("lhs"), " + ") + " = " + firstFew(c.array("rhs"), " + ") +
                     (offset != 0 ? " + " + show(offset) : "")),
               lhs - rhs - material::constant(offset));
@@ -156,6 +159,7 @@ struct ConstraintReader {
     {
         const Linear r = ref();
         const double value = c.number("value", r.value(X));
+        normal["value"] = value;
         equal(named(refText() + " = " + show(value)), r - material::constant(value));
     }
     void symmetricKind()
@@ -163,7 +167,9 @@ struct ConstraintReader {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         if (refs.size() != 2)
             throw FormatError(c.pathOf("refs"), "symmetric takes two references");
-        const Linear about = !c.has("about") ? material::constant((refs[0] + refs[1]).value(X) / 2)
+        if (!c.has("about"))
+            normal["about"] = (refs[0] + refs[1]).value(X) / 2;
+        const Linear about = !c.has("about") ? material::constant(normal["about"].get<double>())
                              : json["about"].is_number()
                                  ? material::constant(json["about"].get<double>())
                                  : reference(design, json["about"], c.pathOf("about"));
@@ -176,6 +182,7 @@ struct ConstraintReader {
         for (size_t b = 0; b < design.boards.size(); ++b)
             lowest = std::min(lowest, material::lowerFace(static_cast<int>(b), 2).value(X));
         const double level = c.number("level", lowest);
+        normal["level"] = level;
         for (int b : parts)
             equal(named(design.boards[b].id + " on z = " + show(level)),
                   material::lowerFace(b, 2) - material::constant(level));
@@ -209,6 +216,10 @@ struct ConstraintReader {
         const double high = c.number("max", fraction > 0 ? value * (1 + fraction) : HUGE_VAL);
         if (!c.has("min") && !c.has("max") && !(fraction > 0))
             throw FormatError(path, "a range needs min, max or fraction");
+        normal.erase("fraction");  // its ends, taken from the values now
+        for (const auto& [key, end] : {std::pair{"min", low}, std::pair{"max", high}})
+            if (std::isfinite(end))
+                normal[key] = end;
         // A named range names both its ends: "table height (min)", "table height (max)".
         const auto end = [&](const char* side, const std::string& fallback) {
             return c.has("name") ? c.text("name") + " (" + side + ")" : fallback;
@@ -222,11 +233,13 @@ struct ConstraintReader {
     }
 };
 
-/// One entry of "constraints": equalities into design.equalities, ranges into design.bounds.
-void readConstraint(Design& design, const nlohmann::json& json, const std::string& path)
+/// One entry of "constraints": equalities into design.equalities, ranges into design.bounds; the defaults it
+/// takes written into `normal`.
+void readConstraint(Design& design, const nlohmann::json& json, const std::string& path,
+                    nlohmann::json& normal)
 {
     const Fields c(json, path);
-    ConstraintReader r{design, json, c, c.text("kind"), design.variables()};
+    ConstraintReader r{design, json, c, normal, c.text("kind"), design.variables()};
     if (r.kind == "equal")
         r.equalKind();
     else if (r.kind == "sum")
@@ -378,8 +391,8 @@ void readParts(const Fields& root, const std::vector<double>& thicknesses, Desig
 }
 
 /// What "settings" asks of every board: no in-plane side below min_length (or its present length if shorter),
-/// and, with snap on, every two boards that touch stay touching.
-void addSettingConstraints(const Fields& settings, Design& design)
+/// and, with `snap`, every two boards that touch stay touching.
+void addSettingConstraints(const Fields& settings, bool snap, Design& design)
 {
     const Eigen::VectorXd X = design.variables();
     const char* axes = "xyz";
@@ -391,7 +404,7 @@ void addSettingConstraints(const Fields& settings, Design& design)
             design.bounds.push_back({design.boards[b].id + ".size." + axes[axis] + " >= " + show(least),
                                      material::constant(least) - material::sizeOf(b, axis)});
         }
-    if (!settings.flag("snap", true))
+    if (!snap)
         return;
     for (int a = 0; a < static_cast<int>(design.boards.size()); ++a)
         for (int b = a + 1; b < static_cast<int>(design.boards.size()); ++b)
@@ -411,13 +424,15 @@ void addStandsOn(Design& design, const material::InnerVolume& v)
             design.bounds.push_back({name, over - material::constant(std::max(0.0, over.value(X)))});
 }
 
-void readInnerVolumes(const Fields& root, Design& design)
+/// The inner volumes into `design`, each one's name written into `normal`, their normal form.
+void readInnerVolumes(const Fields& root, Design& design, nlohmann::json& normal)
 {
     const nlohmann::json& inner = root.array("inner_volumes", true);
     for (size_t i = 0; i < inner.size(); ++i) {
         const Fields volume(inner[i], at("inner_volumes", i));
         material::InnerVolume v;
         v.name = volume.text("name", "inner volume " + std::to_string(i + 1));
+        normal[i]["name"] = v.name;
         v.on = boardIndex(design, volume.text("on"), volume.pathOf("on"));
         const BoxSides box = volume.box();  // max beyond min: a space of no volume keeps no part out
         const Eigen::Vector3d position(box[0], box[2], box[4]);
@@ -519,6 +534,29 @@ const char* nameOf(material::Exploration::NoSheetSaved why)
     }
 }
 
+/// `normal` (the document read) with its master boards, settings and parts as `read` has them: every
+/// default written, "follow_grain" as the grain axis it means (the board's first axis in its plane).
+void normalBoards(nlohmann::json& normal, const FlatpackDesign& read, bool snap)
+{
+    normal["boards"] = nlohmann::json::array();
+    for (const material::MasterBoard& b : read.boards)
+        normal["boards"].push_back(boardToJson(b));
+    const nlohmann::json given = normal.value("settings", nlohmann::json::object());
+    normal["settings"] = settingsToJson(read.settings);
+    normal["settings"]["snap"] = snap;
+    normal["settings"]["max_growth"] = read.maxGrowth;
+    if (given.contains("min_length"))  // else twice each board's thickness
+        normal["settings"]["min_length"] = given["min_length"];
+    for (size_t i = 0; i < read.design.boards.size(); ++i) {
+        const material::DesignBoard& b = read.design.boards[i];
+        nlohmann::json& part = normal["parts"][i];
+        const int grain = b.grainAxis >= 0 ? b.grainAxis : b.followsGrain ? b.inPlane()[0] : -1;
+        part.erase("follow_grain");
+        part["quantity"] = b.quantity;
+        part["grain"] = grain < 0 ? "free" : std::string(1, "xyz"[grain]);
+    }
+}
+
 }  // namespace
 
 void placeBoard(material::DesignBoard& board, const Fields& part)
@@ -571,17 +609,22 @@ FlatpackDesign readFlatpack(const nlohmann::json& given, Satisfied satisfied)
     const nlohmann::json noSettings = nlohmann::json::object();
     const Fields settings(document.contains("settings") ? document["settings"] : noSettings, "settings");
     result.maxGrowth = settings.number("max_growth", 1.5, 1.0);
-    addSettingConstraints(settings, design);
+    const bool snap = settings.flag("snap", true);
+    addSettingConstraints(settings, snap, design);
+    nlohmann::json& normal = result.document = document;
+    normalBoards(normal, result, snap);
     const nlohmann::json& constraints = root.array("constraints", true);
+    normal["constraints"] = constraints;
     for (size_t i = 0; i < constraints.size(); ++i)
-        readConstraint(design, constraints[i], at("constraints", i));
-    readInnerVolumes(root, design);
+        readConstraint(design, constraints[i], at("constraints", i), normal["constraints"][i]);
+    normal["inner_volumes"] = root.array("inner_volumes", true);
+    readInnerVolumes(root, design, normal["inner_volumes"]);
     if (root.has("outer_volume"))
         readOuterVolume(design, document["outer_volume"]);
     const std::vector<material::DesignConstraint> apart = material::keptApart(design);
     design.bounds.insert(design.bounds.end(), apart.begin(), apart.end());
     // The title names the design in FreeCAD; a suggestion's usage and path are written for people.
-    root.text("title", "");
+    normal["title"] = root.text("title", "");
     result.kept = readKeptLayout(document, root, design);
     root.noOthers({"settings", "boards", "usage", "path"});
     if (satisfied == Satisfied::Required)

@@ -30,6 +30,9 @@ struct FlatpackDesign {
     /// "layout" (or the older "layout_order", its order alone): the layout the file keeps, as a suggestion is
     /// written, so that it reopens on the sheets it was found on.
     material::KeptLayout kept;
+    /// The document read in its normal form (docs/formats.md): this version's, with every default the reader
+    /// took written in, what FreeCAD's import builds from.
+    nlohmann::json document;
 };
 
 /// The design the suggestions are searched in: `f`'s, with no board side longer than maxGrowth times its

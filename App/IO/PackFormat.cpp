@@ -572,24 +572,27 @@ nlohmann::json problemToJson(const material::PackProblem& problem)
         }
         parts.push_back(part);
     }
-    const material::PackSettings& s = problem.settings;
     return {{"format", "fabguide.pack"},
             {"version", kPackFormatVersion},
-            {"settings",
-             {{"resolution", s.resolution},
-              {"kerf", s.kerf},
-              {"spacing", s.spacing},
-              {"trim", s.trim},
-              {"dogbone", s.dogbone},
-              {"tab_width", s.tabWidth},
-              {"tab_below", s.tabBelow},
-              {"rotation_step", s.rotationStep},
-              {"cuts", nameOf(s.cuts, cutsNames())},
-              {"stages", s.stages},
-              {"first_cut", nameOf(s.firstCut, firstCutNames())},
-              {"common_line", s.commonLine}}},
+            {"settings", settingsToJson(problem.settings)},
             {"boards", boards},
             {"parts", parts}};
+}
+
+nlohmann::json settingsToJson(const material::PackSettings& s)
+{
+    return {{"resolution", s.resolution},
+            {"kerf", s.kerf},
+            {"spacing", s.spacing},
+            {"trim", s.trim},
+            {"dogbone", s.dogbone},
+            {"tab_width", s.tabWidth},
+            {"tab_below", s.tabBelow},
+            {"rotation_step", s.rotationStep},
+            {"cuts", nameOf(s.cuts, cutsNames())},
+            {"stages", s.stages},
+            {"first_cut", nameOf(s.firstCut, firstCutNames())},
+            {"common_line", s.commonLine}};
 }
 
 nlohmann::json sawCutsToJson(const std::vector<std::vector<material::SawCut>>& sheets)

@@ -47,6 +47,9 @@ enum class PartNames { Ids, Indices };
 /// A master board as *.pack.json writes it.
 nlohmann::json boardToJson(const material::MasterBoard& board);
 
+/// Settings as *.pack.json writes them, every one.
+nlohmann::json settingsToJson(const material::PackSettings& settings);
+
 /// A problem as a *.pack.json document (rectangles as width and height, other parts as outlines).
 nlohmann::json problemToJson(const material::PackProblem& problem);
 

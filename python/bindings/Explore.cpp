@@ -166,15 +166,12 @@ void bindExplore(py::module_& m)
         "PackingError when the design does not fit and there is no edit to undo.");
     m.def(
         "check_design",
-        [](const py::object& design) {
-            const nlohmann::json document = toJson(design);
-            io::readFlatpack(document);
-            return fromJson(io::currentFlatpack(document));
-        },
+        [](const py::object& design) { return fromJson(io::readFlatpack(toJson(design)).document); },
         py::arg("design"),
         "Reads a *.flatpack.json design dict as every command does, laying nothing out, and "
-        "returns it as this version writes it (an older version's migrated): raises FormatError "
-        "naming a bad field, ConstraintError naming the constraints it breaks.");
+        "returns its normal form: as this version writes it (an older version's migrated), "
+        "every default filled in (docs/formats.md). Raises FormatError naming a bad field, "
+        "ConstraintError naming the constraints it breaks.");
     m.def(
         "drawn_equal",
         [](const py::object& design) { return fromJson(io::drawnEqualConstraints(toJson(design))); },

@@ -515,12 +515,12 @@ def apply_parts(obj, parts, start=None, laid=None):
 
 
 def from_file(doc, path, label=None):
-    """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes."""
+    """A design from a *.flatpack.json file: boxes, master boards, constraints and volumes, built from the
+    file's normal form (the core's reading of it: every default filled in)."""
     with open(path) as f:
-        data = fabguide_core.check_design(json.load(f))  # as this version writes it, or refused with why
-    masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b.get("count", 1),
-                                   b.get("material", "plywood"), b.get("name", "MasterBoard"), b.get("grain", "none"),
-                                   b.get("cost", 1.0))
+        data = fabguide_core.check_design(json.load(f))  # or refused with why
+    masters = [master_board.create(doc, b["width"], b["height"], b["thickness"], b["count"], b["material"],
+                                   b["name"], b["grain"], b["cost"])
                for b in data["boards"]]
     made = {}
     for p in data["parts"]:
@@ -529,35 +529,32 @@ def from_file(doc, path, label=None):
         box.Length, box.Width, box.Height = sizes(p)
         box.Placement.Base = FreeCAD.Vector(*p["min"])
         made[p["id"]] = box
-    obj = create(doc, made.values(), masters, label or data.get("title", "FlatpackDesign"))
+    obj = create(doc, made.values(), masters, label or data["title"] or "FlatpackDesign")
     for p in data["parts"]:
-        made[p["id"]].Grain = grain_named(p)
-    s = data.get("settings", {})
-    obj.Resolution, obj.Kerf = s.get("resolution", 0.5), s.get("kerf", 0)
-    obj.Spacing, obj.Trim = s.get("spacing", 0), s.get("trim", 0)
-    obj.MinimumLength, obj.Snap = s.get("min_length", 0), s.get("snap", True)
-    obj.MaxGrowth = s.get("max_growth", 1.5)
-    for c in data.get("constraints", []):
+        made[p["id"]].Grain = p["grain"].capitalize()
+    s = data["settings"]
+    obj.Resolution, obj.Kerf, obj.Spacing, obj.Trim = s["resolution"], s["kerf"], s["spacing"], s["trim"]
+    obj.MinimumLength = s.get("min_length", 0)  # none: twice each board's thickness
+    obj.Snap, obj.MaxGrowth = s["snap"], s["max_growth"]
+    for c in data["constraints"]:
         values = {}
         if "refs" in c:
             values["Refs"] = c["refs"]
-        if "lhs" in c:
-            values.update(Refs=c["lhs"], Rhs=c["rhs"], Value=c.get("offset", 0))
+        if c["kind"] == "sum":
+            values.update(Refs=c["lhs"], Rhs=c["rhs"], Value=c["offset"])
         if "ref" in c:
             values["Refs"] = [c["ref"]]
-        if c["kind"] == "fixed" and "value" in c:
+        if c["kind"] == "fixed":
             values["Value"] = c["value"]
-        if c["kind"] == "range":
+        if c["kind"] == "range":  # an end not given is none
             values.update(Min=c.get("min", -10 * UNBOUNDED), Max=c.get("max", 10 * UNBOUNDED))
-            if "fraction" in c:
-                values.update(fraction_bounds(data, c))
         if isinstance(c.get("about"), str):
             values["About"] = c["about"]
         if "parts" in c:
             values["Parts"] = [made[p] for p in c["parts"]]
         add_constraint(obj, c["kind"], c.get("name"), made, **values)
-    for v in data.get("inner_volumes", []):
-        add_volume(obj, "Inner", v["min"], sizes(v), made[v["on"]], v.get("name"))
+    for v in data["inner_volumes"]:
+        add_volume(obj, "Inner", v["min"], sizes(v), made[v["on"]], v["name"])
     if "outer_volume" in data:
         add_volume(obj, "Outer", data["outer_volume"]["min"], sizes(data["outer_volume"]))
     return obj
@@ -566,20 +563,3 @@ def from_file(doc, path, label=None):
 def sizes(box):
     """A format box's sizes along x, y and z."""
     return [high - low for low, high in zip(box["min"], box["max"])]
-
-
-def grain_named(part):
-    """A file part's grain as a box's Grain; the older follow_grain is its first axis in the board's face."""
-    if part.get("follow_grain") and "grain" not in part:
-        return GRAINS[cuboids.in_plane(sizes(part))[0] + 1]
-    return part.get("grain", "free").capitalize()
-
-
-def fraction_bounds(data, c):
-    """A range given as a fraction of the present value, as Min and Max."""
-    part, what, axis = c["ref"].rsplit(".", 2)
-    p = next(q for q in data["parts"] if q["id"] == part)
-    a = "xyz".index(axis)
-    value = {"size": p["max"][a] - p["min"][a], "min": p["min"][a], "max": p["max"][a]}.get(
-        what, (p["min"][a] + p["max"][a]) / 2)
-    return {"Min": c.get("min", value * (1 - c["fraction"])), "Max": c.get("max", value * (1 + c["fraction"]))}
