@@ -18,7 +18,7 @@ import products  # noqa: E402
 import roughen  # noqa: E402
 import workslike_checker  # noqa: E402
 
-# FABGUIDE_SAMPLE=N judges one in N of each (CI's Debian 13 run: 4; docs/decisions.md)
+# FABGUIDE_SAMPLE=N judges one in N of each (CI's Debian 13 run: 6; docs/decisions.md)
 SAMPLE = int(os.environ.get("FABGUIDE_SAMPLE") or 1)
 SOLVED = range(0, 240, SAMPLE)  # solve + check: a few hundred in CI
 PRINTED = range(0, 200, 10 * SAMPLE)  # fitted prints of every tenth
