@@ -42,6 +42,11 @@ struct Cuboid {
                        ///< so that the solve keeps it that thick where it is drawn so (Solve.cpp, collapsed)
     double at(Side side) const { return coordinates[static_cast<int>(side)]; }
     bool cavity() const { return within >= 0; }
+    double thinnest() const  ///< its thinnest side
+    {
+        return std::min({at(Side::Right) - at(Side::Left), at(Side::Far) - at(Side::Near),
+                         at(Side::Top) - at(Side::Bottom)});
+    }
 };
 
 struct Part {

@@ -208,8 +208,9 @@ double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(i
                    std::vector<int>& parts)
 {
     const Joint& joint = m.joints[j];
-    const double thin = thinnest(
-        m.cuboids[joint.type == Joint::Type::DoublePivot ? joint.pivotFace.cuboid : joint.edgeA.cuboid]);
+    const double thin =
+        m.cuboids[joint.type == Joint::Type::DoublePivot ? joint.pivotFace.cuboid : joint.edgeA.cuboid]
+            .thinnest();
     parts = {joint.part};
     if (joint.turns()) {  // pin, knuckle and yokes round the axis along the edge, on the part and its base
         const gp_Ax1 axis = hingeAxis(m, joint);

@@ -40,7 +40,7 @@ double thinnestOf(const Model& m, std::initializer_list<int> cuboids)
 {
     double side = 1e300;
     for (int c : cuboids)
-        side = std::min(side, thinnest(m.cuboids[c]));
+        side = std::min(side, m.cuboids[c].thinnest());
     return side;
 }
 
@@ -70,7 +70,7 @@ Radii radii(const Model& m, const Joint& joint, std::initializer_list<int> cuboi
     const double side = thinnestOf(m, cuboids);
     int thinCuboid = *cuboids.begin();
     for (int c : cuboids)
-        if (thinnest(m.cuboids[c]) == side)
+        if (m.cuboids[c].thinnest() == side)
             thinCuboid = c;
     const double least = leastOuter(g);
     if (side < least)
@@ -426,7 +426,7 @@ Model needingRoundParts(Model model, double g, double scale)
 
 int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
 {
-    const double thin = thinnest(m.cuboids[joint.edgeA.cuboid]);
+    const double thin = m.cuboids[joint.edgeA.cuboid].thinnest();
     for (double reach : {1e-3, thin, 2 * thin})
         if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
             return c;
@@ -443,7 +443,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     if (onEdge < 0)  // printed without a hinge, the part would come out loose
         throw std::invalid_argument(
             "joint '" + joint.name + "': no other part lies along its edge, or within " +
-            function::millimetres(2 * thinnest(m.cuboids[joint.edgeA.cuboid])) +
+            function::millimetres(2 * m.cuboids[joint.edgeA.cuboid].thinnest()) +
             " mm of it, to hold the hinge's yokes: move the edge onto the part it turns on");
     const int base = function::partOf(m, onEdge);
     const Coordinates& edge = gapped[joint.edgeA.cuboid];  // the pin and yokes end where the part does

@@ -215,14 +215,6 @@ TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double fr
     return rod(p, n, std::min(a, b), std::max(a, b), radius);
 }
 
-double thinnest(const Cuboid& c)
-{
-    double side = 1e300;
-    for (int a = 0; a < 3; ++a)
-        side = std::min(side, c.at(static_cast<Side>(2 * a + 1)) - c.at(static_cast<Side>(2 * a)));
-    return side;
-}
-
 std::vector<Coordinates> boxesOf(const Model& m, int part, const std::vector<Coordinates>& at, double grow)
 {
     std::vector<Coordinates> boxes;

@@ -105,9 +105,6 @@ TopoDS_Shape slot(const gp_Pnt& a, const gp_Pnt& b, int axis, double from, doubl
 /// `sign` (+1 or -1), whichever way round that puts its ends.
 TopoDS_Shape rodFrom(const gp_Pnt& p, int n, double face, double sign, double from, double to, double radius);
 
-/// A cuboid's thinnest side.
-double thinnest(const Cuboid& c);
-
 /// A part's solid cuboids, grown by `grow` all round.
 std::vector<Coordinates> boxesOf(const Model& m, int part, const std::vector<Coordinates>& at,
                                  double grow = 0);

@@ -170,6 +170,56 @@ TEST(Solve, AFixedJointsHoldInAConflictIsAJointConflict)
                                                        {function::ConflictKind::Joint, "knob held"}}));
 }
 
+namespace {
+
+/// A cabinet whose door, hinged on the carcass's front left edge, swings through a post on the carcass's
+/// plinth.
+json doorThroughPost()
+{
+    return json::parse(R"({"format": "fabguide.workslike", "version": 1,
+      "parts": [{"name": "carcass", "cuboids": [
+                   {"name": "carcass", "min": [0, 0, 0], "max": [200, 100, 100]},
+                   {"name": "plinth", "min": [0, -120, -10], "max": [200, 100, 0]},
+                   {"name": "post", "min": [150, -90, 0], "max": [170, -70, 100]}]},
+                {"name": "door", "cuboids": [{"name": "door", "min": [0, -10, 0], "max": [200, 0, 100]}]}],
+      "joints": [{"name": "door hinge", "type": "hinge", "part": "door", "edge": ["door.left", "door.far"]}],
+      "configurations": [{"name": "open", "poses": {"door hinge": -90}}]})");
+}
+
+}  // namespace
+
+TEST(Solve, AHingeStaysOnTheCuboidItWasDrawnAlong)
+{
+    const function::SolveResult r = function::solve(io::readWorkslike(doorThroughPost()));
+    ASSERT_TRUE(r.solved);
+    const function::Cuboid &carcass = r.model.cuboids[0], &door = r.model.cuboids[3];
+    const double thick = 10 + 1e-6;  // off it by no more than the door's thickness, where the print finds it
+    EXPECT_GE(door.at(Side::Left), carcass.at(Side::Left) - thick);
+    EXPECT_LE(door.at(Side::Left), carcass.at(Side::Right) + thick);
+    EXPECT_GE(door.at(Side::Far), carcass.at(Side::Near) - thick);
+    EXPECT_LE(door.at(Side::Far), carcass.at(Side::Far) + thick);
+    EXPECT_GE(std::min(door.at(Side::Top), carcass.at(Side::Top)) -
+                  std::max(door.at(Side::Bottom), carcass.at(Side::Bottom)),
+              1 - 1e-6);  // running beside it
+}
+
+TEST(Solve, AHingeAskedOffItsPartIsAConflictNamingTheJoint)
+{
+    json d = doorThroughPost();
+    d["parts"][0]["cuboids"] = json::array({d["parts"][0]["cuboids"][0]});  // the carcass alone
+    d["locks"] = {"carcass.left", "carcass.right", "carcass.near", "carcass.far"};
+    d["relationships"] = {{{"type", "geometric"},
+                           {"name", "door off to the left"},
+                           {"left", "door.left"},
+                           {"right", "carcass.left"},
+                           {"offset", -50}}};
+    const function::SolveResult r = function::solve(io::readWorkslike(d));
+    EXPECT_FALSE(r.solved);
+    EXPECT_EQ(testsupport::typedConflict(r), (decltype(testsupport::typedConflict(r)){
+                                                 {function::ConflictKind::Geometric, "door off to the left"},
+                                                 {function::ConflictKind::Joint, "door hinge"}}));
+}
+
 TEST(Solve, APartDrawnInPiecesIsAConflictOfItsKind)
 {
     json d = boxWithLid();
