@@ -1,4 +1,5 @@
 #include "Function/Pose.h"
+#include "Geometry/Interval.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,37 @@ std::vector<Move> chain(const Model& model, int cuboid, int configuration)
 }
 
 }  // namespace
+
+int cuboidNear(const Model& model, const Joint& joint, double reach)
+{
+    const Cuboid& own = model.cuboids[joint.edgeA.cuboid];
+    const int a = axisOf(joint.edgeA.side), b = axisOf(joint.edgeB.side), running = 3 - a - b;
+    int best = -1;
+    double longest = 0;
+    for (int p = 0; p < static_cast<int>(model.parts.size()); ++p) {
+        // The part it turns on: its base, or on the ground one that no joint moves (not a neighbouring door).
+        if (p == joint.part ||
+            (joint.base >= 0 ? p != joint.base : jointMoving(model, carrierOf(model, p)) >= 0))
+            continue;
+        for (int c : model.parts[p].cuboids) {
+            if (model.cuboids[c].cavity())
+                continue;
+            double d2 = 0;  // the edge's distance from the box across the axis
+            for (const Face& f : {joint.edgeA, joint.edgeB}) {
+                const Interval box = along(model.cuboids[c].coordinates, axisOf(f.side));
+                const double out = std::max({0.0, box.lower - own.at(f.side), own.at(f.side) - box.upper});
+                d2 += out * out;
+            }
+            const double shared =
+                overlapOf(along(model.cuboids[c].coordinates, running), along(own.coordinates, running));
+            if (std::sqrt(d2) <= reach && shared > longest) {
+                longest = shared;
+                best = c;
+            }
+        }
+    }
+    return best;
+}
 
 std::pair<double, double> cosSin(double degrees)
 {

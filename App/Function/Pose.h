@@ -53,6 +53,11 @@ int jointMovingIn(const Model& model, int part, int configuration);
 /// it).
 int carrierOf(const Model& model, int part);
 
+/// The cuboid of the part hinge `joint` turns on (its base, else one no joint moves) that runs longest beside
+/// its edge, of those within `reach` of the edge across its axis; -1 for none. The solve holds the edge
+/// beside it, and the print hangs the yokes on it.
+int cuboidNear(const Model& model, const Joint& joint, double reach);
+
 /// cos and sin of an angle in degrees, exact at multiples of 90° (std::cos(π/2) is 6e-17, not 0).
 std::pair<double, double> cosSin(double degrees);
 

@@ -147,38 +147,21 @@ void heldFixed(std::vector<LinearConstraint>& rows, const Model& model, const Jo
         glue(rows, model, a, b, joint.name);
 }
 
-/// A hinge holds its part on the part it turns on (its base, else one no joint moves): its edge stays beside
-/// that part's cuboid it was drawn along (within twice the edge cuboid's thinnest side, the one running
-/// longest beside it, as the print picks it), no farther off it across the axis than the edge cuboid's
-/// thinnest side or as drawn, and running beside it along the axis. A door whose swing met a post on the
-/// carcass's plinth had its hinge moved 269 mm off the carcass, and printed without one.
+/// A hinge holds its part on the part it turns on: its edge stays beside that part's cuboid it was drawn
+/// along (cuboidNear within twice the edge cuboid's thinnest side, the farthest the print looks), no farther
+/// off it across the axis than the edge cuboid's thinnest side or as drawn, and running beside it along the
+/// axis. A door whose swing met a post on the carcass's plinth had its hinge moved 269 mm off the carcass,
+/// and printed without one.
 void heldOnEdge(std::vector<LinearConstraint>& rows, const Model& model, const Joint& joint)
 {
     const Cuboid& own = model.cuboids[joint.edgeA.cuboid];
     const std::array<Face, 2> edge{joint.edgeA, joint.edgeB};
     const int running = 3 - axisOf(edge[0].side) - axisOf(edge[1].side);
-    int base = -1;
-    double longest = 0;
-    for (int p = 0; p < static_cast<int>(model.parts.size()); ++p) {
-        if (p == joint.part ||
-            (joint.base >= 0 ? p != joint.base : jointMoving(model, carrierOf(model, p)) >= 0))
-            continue;
-        for (int c : model.parts[p].cuboids) {
-            double off = 0;  // the edge's distance from the box across the axis
-            for (const Face& f : edge) {
-                const Interval box = along(model.cuboids[c].coordinates, axisOf(f.side));
-                off =
-                    std::hypot(off, std::max({0.0, box.lower - own.at(f.side), own.at(f.side) - box.upper}));
-            }
-            const double beside =
-                overlapOf(along(model.cuboids[c].coordinates, running), along(own.coordinates, running));
-            if (!model.cuboids[c].cavity() && off <= 2 * own.thinnest() && beside > longest)
-                std::tie(base, longest) = std::pair{c, beside};
-        }
-    }
+    const int base = cuboidNear(model, joint, 2 * own.thinnest());
     if (base < 0)
         return;  // the print says that nothing holds its yokes
     const Cuboid& on = model.cuboids[base];
+    const double longest = overlapOf(along(on.coordinates, running), along(own.coordinates, running));
     for (const Face& f : edge) {
         const int low = 6 * base + 2 * axisOf(f.side), high = low + 1;
         rows.push_back({{{variable(f), 1.0}, {low, -1.0}},

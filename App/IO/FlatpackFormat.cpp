@@ -167,9 +167,10 @@ struct ConstraintReader {
         const std::vector<Linear> refs = references(design, c, "refs", 2);
         if (refs.size() != 2)
             throw FormatError(c.pathOf("refs"), "symmetric takes two references");
+        const double midway = (refs[0] + refs[1]).value(X) / 2;
         if (!c.has("about"))
-            normal["about"] = (refs[0] + refs[1]).value(X) / 2;
-        const Linear about = !c.has("about") ? material::constant(normal["about"].get<double>())
+            normal["about"] = midway;
+        const Linear about = !c.has("about") ? material::constant(midway)
                              : json["about"].is_number()
                                  ? material::constant(json["about"].get<double>())
                                  : reference(design, json["about"], c.pathOf("about"));

@@ -214,7 +214,7 @@ double beyondReach(const function::Model& m, int j, const std::function<gp_Pnt(i
     parts = {joint.part};
     if (joint.turns()) {  // pin, knuckle and yokes round the axis along the edge, on the part and its base
         const gp_Ax1 axis = hingeAxis(m, joint);
-        const int base = cuboidAtEdge(m, joint, axis);
+        const int base = cuboidAtEdge(m, joint);
         if (base >= 0)
             parts.push_back(function::partOf(m, base));
         const Coordinates& edge = m.cuboids[joint.edgeA.cuboid].coordinates;

@@ -97,41 +97,6 @@ double head(const Radii& r)
     return std::max(1.0, r.outer / 3);
 }
 
-/// cuboidAtEdge within `reach` of the axis.
-int cuboidNear(const Model& m, const Joint& joint, const gp_Ax1& axis, double reach)
-{
-    int best = -1;
-    double longest = 0;
-    const Cuboid& own = m.cuboids[joint.edgeA.cuboid];
-    for (size_t p = 0; p < m.parts.size(); ++p) {
-        // The part it turns on: its base, or on the ground one that no joint moves (not a neighbouring door).
-        if (static_cast<int>(p) == joint.part || (joint.base >= 0 && static_cast<int>(p) != joint.base) ||
-            (joint.base < 0 && !standsStill(m, static_cast<int>(p))))
-            continue;
-        for (int c : m.parts[p].cuboids) {
-            if (m.cuboids[c].cavity())
-                continue;
-            double d2 = 0, shared = 0;  // the axis' distance from the box, and how long they run together
-            for (int a = 0; a < 3; ++a) {
-                const double low = m.cuboids[c].at(static_cast<Side>(2 * a)),
-                             high = m.cuboids[c].at(static_cast<Side>(2 * a + 1));
-                if (std::abs(coord(axis.Direction(), a)) > 0.5) {
-                    shared = overlapOf({low, high}, along(own.coordinates, a));
-                    continue;
-                }
-                const double x = coord(axis.Location(), a);
-                const double out = std::max({0.0, low - x, x - high});
-                d2 += out * out;
-            }
-            if (std::sqrt(d2) <= reach && shared > longest) {
-                longest = shared;
-                best = c;
-            }
-        }
-    }
-    return best;
-}
-
 /// Bridge c, when all it meets of cuboid onEdge lies in one of its cavities or that cavity's mouth (across
 /// every axis but `along`), carried on to the cavity's nearest wall that is no opening, r into it.
 Coordinates overWalls(const Model& m, int onEdge, Coordinates c, int along, double r)
@@ -424,11 +389,11 @@ Model needingRoundParts(Model model, double g, double scale)
     return model;
 }
 
-int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis)
+int cuboidAtEdge(const Model& m, const Joint& joint)
 {
     const double thin = m.cuboids[joint.edgeA.cuboid].thinnest();
     for (double reach : {1e-3, thin, 2 * thin})
-        if (const int c = cuboidNear(m, joint, axis, reach); c >= 0)
+        if (const int c = function::cuboidNear(m, joint, reach); c >= 0)
             return c;
     return -1;
 }
@@ -439,7 +404,7 @@ void addHinge(const Model& m, int j, const std::vector<Coordinates>& gapped, dou
     const Joint& joint = m.joints[j];
     const gp_Ax1 axis = hingeAxis(m, joint);
     const int along = hingeAlong(joint);
-    const int onEdge = cuboidAtEdge(m, joint, axis);
+    const int onEdge = cuboidAtEdge(m, joint);
     if (onEdge < 0)  // printed without a hinge, the part would come out loose
         throw std::invalid_argument(
             "joint '" + joint.name + "': no other part lies along its edge, or within " +

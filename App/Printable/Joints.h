@@ -25,7 +25,7 @@ std::string linkName(const Joint& joint);
 /// yokes hang on), or -1. An edge standing off every other part (the sofa bunk's headrest, hinged 20 mm
 /// behind the seat; a camera's flip screen, hinged on its outer edge) hangs on the nearest one within the
 /// moving cuboid's thickness, else twice it; bridges join its yokes to it.
-int cuboidAtEdge(const Model& m, const Joint& joint, const gp_Ax1& axis);
+int cuboidAtEdge(const Model& m, const Joint& joint);
 
 /// The model with the cuboids that joints' round parts stand on (a hinge's moving cuboid, a double pivot's
 /// two) needing, along each axis, the least thickness that holds a pin at gap g, printed at `scale`

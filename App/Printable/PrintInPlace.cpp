@@ -122,7 +122,7 @@ void clearHingeBases(const Model& m, const std::vector<Coordinates>& at, double 
 {
     for (size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
-        const int edge = joint.turns() ? cuboidAtEdge(m, joint, hingeAxis(m, joint)) : -1;
+        const int edge = joint.turns() ? cuboidAtEdge(m, joint) : -1;
         for (size_t k = 0; k < m.configurations.size() && edge >= 0; ++k)
             if (const function::JointPose* pose = poseOf(m, static_cast<int>(j), static_cast<int>(k))) {
                 const int base = function::partOf(m, edge);
