@@ -98,14 +98,14 @@ def inside(points, triangles):
     ok = numpy.abs(a) > 1e-12
     f = numpy.where(ok, 1.0 / numpy.where(ok, a, 1.0), 0.0)
     result = numpy.zeros(len(points), dtype=bool)
-    for i, p in enumerate(points):
-        s = p - v0
-        u = f * numpy.einsum("ij,ij->i", s, h)
+    for start in range(0, len(points), 64):  # 64 points against every triangle at once
+        s = points[start:start + 64, None, :] - v0
+        u = f * numpy.einsum("ptj,tj->pt", s, h)
         q = numpy.cross(s, e1)
         v = f * (q @ direction)
-        t = f * numpy.einsum("ij,ij->i", e2, q)
+        t = f * numpy.einsum("tj,ptj->pt", e2, q)
         hits = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0)
-        result[i] = bool(numpy.count_nonzero(hits) % 2)
+        result[start:start + 64] = numpy.count_nonzero(hits, axis=1) % 2 == 1
     return result
 
 
@@ -113,6 +113,12 @@ def to_box(points, lo, hi):
     """Distance of each point from the box [lo, hi] (0 inside)."""
     out = numpy.maximum(numpy.maximum(lo - points, points - hi), 0.0)
     return numpy.sqrt((out * out).sum(axis=1))
+
+
+def to_boxes(points, lo, hi):
+    """Distance of each point from the nearest of the boxes [lo[i], hi[i]]."""
+    out = numpy.maximum(numpy.maximum(lo - points[:, None, :], points[:, None, :] - hi), 0.0)
+    return numpy.sqrt((out * out).sum(axis=2)).min(axis=1)
 
 
 def to_segment(points, a, b):
@@ -125,6 +131,24 @@ def to_segment(points, a, b):
 def moved(transform, points):
     r, t = transform
     return points @ numpy.array(r).T + numpy.array(t)
+
+
+def unmoved(transform, points):
+    """The points a rigid transform moves onto `points`."""
+    r, t = transform
+    return (points - t) @ r
+
+
+def part_frames(model):
+    """A part's model transform `f` of the way to configuration k, as numpy arrays, each computed once."""
+    frames = {}
+
+    def frame(part, k, f):
+        if (part, k, f) not in frames:
+            r, t = model.part_transform(part, k, f)
+            frames[part, k, f] = numpy.array(r), numpy.array(t)
+        return frames[part, k, f]
+    return frame
 
 
 def joint_reach(model, j, scale, gap):
@@ -154,11 +178,12 @@ def joint_places(model, j):
     return [(j["part"], pivot, pivot, link), (j["base"], base, base, link)]
 
 
-def untouched_points(model, part, scale, gap):
+def untouched_points(model, part, scale, gap, frame=None):
     """Points of a part's material, in its frame as modelled, deeper than a gap in it, that no other part comes
     within the gaps and rails of (2 gaps and 1.5 mm as printed), as modelled, in any configuration or along the
     way to it (POSES poses; between two, a part may pass within half its move), and that no joint's geometry
-    reaches."""
+    reaches. `frame`: part_frames(model), shared by the parts of one model."""
+    frame = frame or part_frames(model)
     margin = (2 * gap + 1.5) / scale
     points = []
     for s in model.solids(part):
@@ -173,33 +198,30 @@ def untouched_points(model, part, scale, gap):
         if c.cavity:
             points = points[to_box(points, numpy.array(c.lo), numpy.array(c.hi)) > 1e-9]
     keep = numpy.ones(len(points), dtype=bool)
-    others = [q for q in model.parts if q != part]
+    boxes = {q: (numpy.array([s.lo for s in model.solids(q)]), numpy.array([s.hi for s in model.solids(q)]))
+             for q in model.parts if q != part and model.solids(q)}
+    corners = {q: numpy.array([[x, y, z] for s in model.solids(q) for x in (s.lo[0], s.hi[0])
+                               for y in (s.lo[1], s.hi[1]) for z in (s.lo[2], s.hi[2])]) for q in boxes}
     places = [(place, joint_reach(model, j, scale, gap)) for j in model.joints.values()
               if j["type"] in ("hinge", "sliding_hinge", "double_pivot") for place in joint_places(model, j)]
     ways = [[(None, 1.0)]] + [[(k, i / POSES) for i in range(POSES + 1)] for k in model.configuration_order]
     for way in ways:
         last = {}
         for k, f in way:
-            back = works.inverse(model.part_transform(part, k, f))  # the world into the part's frame
-            for q in others:
-                if not model.solids(q):
-                    continue
-                into_q = works.inverse(works.compose(back, model.part_transform(q, k, f)))  # part's frame -> q's
-                local = moved(into_q, points)
-                corners = moved(works.inverse(into_q), numpy.array([[x, y, z] for s in model.solids(q)
-                                                                    for x in (s.lo[0], s.hi[0])
-                                                                    for y in (s.lo[1], s.hi[1])
-                                                                    for z in (s.lo[2], s.hi[2])]))
-                step = float(numpy.linalg.norm(corners - last[q][1], axis=1).max()) if q in last else 0.0
-                near = numpy.min([to_box(local, numpy.array(s.lo), numpy.array(s.hi)) for s in model.solids(q)],
-                                 axis=0)
+            at = frame(part, k, f)
+            world = moved(at, points)
+            for q, (lo, hi) in boxes.items():
+                near = to_boxes(unmoved(frame(q, k, f), world), lo, hi)
+                posed = unmoved(at, moved(frame(q, k, f), corners[q]))  # q's corners in the part's frame
                 keep &= near > margin
                 if q in last:  # on the way between the last pose and this one: within half the move
+                    step = float(numpy.linalg.norm(posed - last[q][1], axis=1).max())
                     keep &= numpy.minimum(near, last[q][0]) > margin + 0.55 * step
-                last[q] = (near, corners)
-            for (frame, a, b, radius), reach in places:
-                into = works.compose(back, model.part_transform(frame, k, f)) if frame else back
-                keep &= to_segment(points, moved(into, a[None])[0], moved(into, b[None])[0]) > radius + reach
+                last[q] = (near, posed)
+            for (place, a, b, radius), reach in places:
+                ends = moved(frame(place, k, f), numpy.array([a, b])) if place else numpy.array([a, b])
+                a_, b_ = unmoved(at, ends)
+                keep &= to_segment(points, a_, b_) > radius + reach
     return points[keep]
 
 
@@ -213,12 +235,12 @@ def removed_material(solved, report, meshes):
     """Problems: bodies missing material where nothing comes near (untouched_points)."""
     model = works.Model(solved)
     scale, turned, gap = float(report["scale"]), bool(report.get("turned")), float(report["gap_mm"])
-    problems = []
+    problems, frame = [], part_frames(model)
     for body, triangles in meshes.items():
         for part in body.split(" + "):
             if part not in model.parts:
                 continue  # a link
-            points = untouched_points(model, part, scale, gap)
+            points = untouched_points(model, part, scale, gap, frame)
             if not len(points):
                 continue
             out = ~inside(on_the_bed(points, scale, turned), triangles)

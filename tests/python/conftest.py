@@ -4,6 +4,11 @@ import os
 import pytest
 
 
+def sample(items):
+    """One in FABGUIDE_SAMPLE of `items`, from the first (CI's Debian 13 run: 6; docs/decisions.md); all by default."""
+    return list(items)[::int(os.environ.get("FABGUIDE_SAMPLE") or 1)]
+
+
 @pytest.fixture(scope="session")
 def mod_dir():
     """The workbench folder installed for the tests (Mod/FabGuide in a throw-away HOME)."""

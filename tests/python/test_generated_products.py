@@ -17,17 +17,16 @@ import fuzz_products  # noqa: E402
 import products  # noqa: E402
 import roughen  # noqa: E402
 import workslike_checker  # noqa: E402
+from conftest import sample  # noqa: E402
 
-# FABGUIDE_SAMPLE=N judges one in N of each (CI's Debian 13 run: 6; docs/decisions.md)
-SAMPLE = int(os.environ.get("FABGUIDE_SAMPLE") or 1)
-SOLVED = range(0, 240, SAMPLE)  # solve + check: a few hundred in CI
-PRINTED = range(0, 200, 10 * SAMPLE)  # fitted prints of every tenth
+SOLVED = sample(range(240))  # solve + check: a few hundred in CI
+PRINTED = sample(range(0, 200, 10))  # fitted prints of every tenth
 
 
 def regressions():
     """The rough models that once failed (tests/gen/regressions), each with what it is known to be."""
     folder = os.path.join(GEN, "regressions")
-    return sorted(f for f in os.listdir(folder) if f.endswith(".workslike.json"))[::SAMPLE]
+    return sample(sorted(f for f in os.listdir(folder) if f.endswith(".workslike.json")))
 
 
 def known(what, seeds):

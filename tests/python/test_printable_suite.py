@@ -11,10 +11,12 @@ import subprocess
 
 import pytest
 
+from conftest import sample
+
 VOLUME = (250, 210, 210)
 SUITE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data", "printable")
-PRODUCTS = sorted(os.path.basename(p)[:-len(".workslike.json")]
-                  for p in glob.glob(os.path.join(SUITE, "*.workslike.json")))
+PRODUCTS = sample(sorted(os.path.basename(p)[:-len(".workslike.json")]  # CI's Debian 13 run: one in six
+                         for p in glob.glob(os.path.join(SUITE, "*.workslike.json"))))
 
 
 @pytest.mark.parametrize("name", PRODUCTS)
