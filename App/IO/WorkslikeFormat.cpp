@@ -66,23 +66,24 @@ Face face(const function::Model& model, const nlohmann::json& value, const std::
     return e.terms[0].second;
 }
 
-/// A side of a geometric relationship: one quantity or a list summed, each a string or {"quantity", "times"}.
-function::Expression sum(const function::Model& model, const nlohmann::json& value, const std::string& path)
+/// A side of a geometric relationship: one quantity or a list summed, each a string or {"quantity", "times"};
+/// `normal` the list of {"quantity", "times"}.
+function::Expression sum(const function::Model& model, const nlohmann::json& value, const std::string& path,
+                         nlohmann::json& normal)
 {
     function::Expression total;
     const nlohmann::json items = value.is_array() ? value : nlohmann::json::array({value});
+    normal = nlohmann::json::array();
     for (size_t k = 0; k < items.size(); ++k) {
         const std::string here = value.is_array() ? at(path, k) : path;
-        if (!items[k].is_object()) {
-            const function::Expression e = quantity(model, items[k], here);
-            total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
-            continue;
-        }
-        const Fields term(items[k], here);
-        const function::Expression e =
-            quantity(model, term.value("quantity"), here + ".quantity", term.number("times", 1.0));
-        term.noOthers();
+        const nlohmann::json term = items[k].is_object() ? items[k] : nlohmann::json{{"quantity", items[k]}};
+        const Fields fields(term, here);
+        const double times = fields.number("times", 1.0);
+        const function::Expression e = quantity(
+            model, fields.value("quantity"), items[k].is_object() ? fields.pathOf("quantity") : here, times);
+        fields.noOthers();
         total.terms.insert(total.terms.end(), e.terms.begin(), e.terms.end());
+        normal.push_back({{"quantity", term["quantity"]}, {"times", times}});
     }
     return total;
 }
@@ -356,11 +357,12 @@ std::vector<std::pair<Face, Face>> facePairs(const function::Model& model, const
 
 /// Support (thesis 4.2.3): "pairs" [["leg.top", "top.bottom"], …] as given, or inferred (4.3.3) when absent.
 function::Support readSupport(const function::Model& model, const Fields& r, const std::string& name,
-                              int configuration)
+                              int configuration, nlohmann::json& normal)
 {
     function::Support s{
         name, partList(model, r, "supporting"), partList(model, r, "supported"), {}, configuration, {}};
     const double distance = r.number("distance", 100.0, 0.0);  // how far apart inferred pairs may be
+    normal["distance"] = distance;
     if (!r.has("pairs")) {
         function::InferredSupport inferred =
             function::inferSupport(model, s.supporting, s.supported, configuration, distance);
@@ -386,7 +388,7 @@ function::Support readSupport(const function::Model& model, const Fields& r, con
 /// axis) and "just" as axes ["x", …] or face pairs [["drawer 1.left", "chest.left"], …]; inferred when absent
 /// (4.3.2).
 function::FitInside readFitInside(const function::Model& model, const Fields& r, const std::string& name,
-                                  int configuration)
+                                  int configuration, nlohmann::json& normal)
 {
     function::FitInside f;
     f.name = name;
@@ -403,6 +405,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
                                                       model.parts[f.enclosing].name + "'");
     }
     const nlohmann::json& portion = r.array("portion", true);
+    normal["portion"] = portion;
     for (size_t k = 0; k < portion.size(); ++k) {
         const std::string here = at(r.pathOf("portion"), k);
         if (!portion[k].is_string())
@@ -432,6 +435,7 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
         }
     }
     const nlohmann::json& just = r.array("just", true);
+    normal["just"] = just;
     std::vector<int> axes;
     for (size_t k = 0; k < just.size(); ++k) {
         const std::string here = at(r.pathOf("just"), k);
@@ -460,11 +464,13 @@ function::FitInside readFitInside(const function::Model& model, const Fields& r,
 /// Cover (thesis 4.2.1): "pairs" [["lid.bottom", "body.top"], …] (covering face, covered face) as given, or
 /// inferred (4.3.1) when absent; faces of one component of the graph must be parallel.
 function::Cover readCover(const function::Model& model, const Fields& r, const std::string& name,
-                          int configuration)
+                          int configuration, nlohmann::json& normal)
 {
     function::Cover c{name, partList(model, r, "covering"), partList(model, r, "covered"),
                       {},   r.flag("just", false),          configuration,
                       {},   r.number("distance", 5.0, 0.0)};
+    normal["just"] = c.just;
+    normal["distance"] = c.distance;
     if (!r.has("pairs")) {
         const double distance = c.distance;
         function::InferredCover inferred =
@@ -512,7 +518,8 @@ function::ConflictKind relationshipKind(const std::string& type, const std::stri
     throw FormatError(path, "\"" + type + "\" is not a relationship this FabGuide knows (" + known + ")");
 }
 
-void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path)
+void readRelationship(function::Model& model, const nlohmann::json& json, const std::string& path,
+                      nlohmann::json& normal)
 {
     const Fields r(json, path);
     const std::string type = r.text("type"), name = r.text("name");
@@ -545,21 +552,23 @@ void readRelationship(function::Model& model, const nlohmann::json& json, const 
             function::Geometric g{name,
                                   relation == "equal" ? function::Geometric::Relation::Equal
                                                       : function::Geometric::Relation::AtMost,
-                                  sum(model, json["left"], r.pathOf("left")),
-                                  sum(model, json["right"], r.pathOf("right"))};
+                                  sum(model, json["left"], r.pathOf("left"), normal["left"]),
+                                  sum(model, json["right"], r.pathOf("right"), normal["right"])};
             g.right.constant = r.number("offset", 0.0);
+            normal["relation"] = relation;
+            normal["offset"] = g.right.constant;
             g.configuration = configuration;
             model.geometric.push_back(g);
             break;
         }
         case K::FitInside:
-            model.fitInside.push_back(readFitInside(model, r, name, configuration));
+            model.fitInside.push_back(readFitInside(model, r, name, configuration, normal));
             break;
         case K::Support:
-            model.support.push_back(readSupport(model, r, name, configuration));
+            model.support.push_back(readSupport(model, r, name, configuration, normal));
             break;
         case K::Cover:
-            model.cover.push_back(readCover(model, r, name, configuration));
+            model.cover.push_back(readCover(model, r, name, configuration, normal));
             break;
         default:  // not a relationship: relationshipKind refused it
             break;
@@ -612,14 +621,17 @@ void inReadingOrder(nlohmann::json& relationships, const std::vector<std::string
 
 }  // namespace
 
-function::Model readWorkslike(const nlohmann::json& document)
+WorkslikeDocument readWorkslikeDocument(const nlohmann::json& document)
 {
     checkNumbers(document);
     const Fields root(document, "");
     root.header("fabguide.workslike", kWorkslikeFormatVersion);
     function::Model model;
-    model.minimumSize = root.number("minimum_size", 1.0, 0.0);
-    model.minimumWall = root.number("minimum_wall", 1.0, 0.0);
+    nlohmann::json normal = document;
+    normal["format"] = "fabguide.workslike";
+    normal["version"] = kWorkslikeFormatVersion;
+    normal["minimum_size"] = model.minimumSize = root.number("minimum_size", 1.0, 0.0);
+    normal["minimum_wall"] = model.minimumWall = root.number("minimum_wall", 1.0, 0.0);
     const nlohmann::json& parts = root.array("parts");
     for (size_t p = 0; p < parts.size(); ++p) {
         const Fields part(parts[p], at("parts", p));
@@ -631,6 +643,8 @@ function::Model readWorkslike(const nlohmann::json& document)
             const Fields cuboid(cuboids[c], at(part.pathOf("cuboids"), c));
             const std::string name =
                 cuboid.text("name", built.name + (cuboids.size() > 1 ? std::to_string(c + 1) : ""));
+            nlohmann::json& written = normal["parts"][p]["cuboids"][c];
+            written["name"] = name;
             for (const function::Cuboid& other : model.cuboids)
                 if (other.name == name)
                     throw FormatError(cuboid.pathOf("name"), "'" + name + "' is used twice");
@@ -638,7 +652,7 @@ function::Model readWorkslike(const nlohmann::json& document)
             model.cuboids.push_back({name, cuboid.box()});
             if (cuboid.has("drawn"))
                 model.cuboids.back().drawn = drawnSizes(cuboid);
-            if (cuboid.flag("cavity", false)) {
+            if (written["cavity"] = cuboid.flag("cavity", false); written["cavity"]) {
                 if (c == 0)
                     throw FormatError(cuboid.pathOf("cavity"),
                                       "a part's first cuboid is solid (cavities are cut from solids)");
@@ -655,6 +669,7 @@ function::Model readWorkslike(const nlohmann::json& document)
                                   " cuboids in the model; FabGuide solves up to that");
     }
     const nlohmann::json& joints = root.array("joints", true);
+    normal["joints"] = joints;
     for (size_t j = 0; j < joints.size(); ++j)
         readJoint(model, joints[j], at("joints", j));
     for (size_t j = 0; j < model.joints.size(); ++j) {  // every chain of joints ends on the ground
@@ -672,6 +687,7 @@ function::Model readWorkslike(const nlohmann::json& document)
     }
 
     const nlohmann::json& configurations = root.array("configurations", true);
+    normal["configurations"] = configurations;
     for (size_t c = 0; c < configurations.size(); ++c)
         readConfiguration(model, configurations[c], at("configurations", c));
     if (model.cuboids.size() * configurations.size() > kMostPosedCuboids)
@@ -680,13 +696,15 @@ function::Model readWorkslike(const nlohmann::json& document)
                               std::to_string(model.cuboids.size()) + " cuboids; FabGuide solves up to " +
                               std::to_string(kMostPosedCuboids) + " cuboids times configurations");
     const nlohmann::json& relationships = root.array("relationships", true);
+    normal["relationships"] = relationships;
     for (size_t r = 0; r < relationships.size(); ++r)
-        readRelationship(model, relationships[r], at("relationships", r));
+        readRelationship(model, relationships[r], at("relationships", r), normal["relationships"][r]);
     const nlohmann::json& locks = root.array("locks", true);
+    normal["locks"] = locks;
     for (size_t l = 0; l < locks.size(); ++l)
         model.locks.push_back({face(model, locks[l], at("locks", l))});
     root.noOthers({"report"});  // what a solve wrote for people
-    return function::indexed(std::move(model));
+    return {function::indexed(std::move(model)), std::move(normal)};
 }
 
 nlohmann::json workslikeToJson(const function::Model& model, const function::SolveResult* result)

@@ -31,14 +31,12 @@ void bindFunction(py::module_& m)
 {
     m.def(
         "read_workslike",
-        [](const py::object& model) {
-            return fromJson(io::workslikeToJson(io::readWorkslike(toJson(model))));
-        },
+        [](const py::object& model) { return fromJson(io::readWorkslikeDocument(toJson(model)).document); },
         py::arg("model"),
-        "A *.workslike.json dict as the core reads it, written back in full (every default filled in); "
-        "raises\n"
-        "FormatError (a ValueError) naming a bad field, e.g. \"relationships[0].faces[1]: no cuboid named "
-        "'bodyy'\".");
+        "Reads a *.workslike.json dict as every command does and returns its normal form: as given, every "
+        "default\n"
+        "filled in (docs/formats.md). Raises FormatError (a ValueError) naming a bad field, e.g.\n"
+        "\"relationships[0].faces[1]: no cuboid named 'bodyy'\".");
     m.def(
         "joint_kinds",
         [] {

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 using namespace fabguide;
 using function::Side;
 using nlohmann::json;
@@ -280,4 +283,64 @@ TEST(WorkslikeFormat, WritesRelationshipsInTheOrderTheyWereRead)
     ASSERT_EQ(written["relationships"].size(), 2u);
     EXPECT_EQ(written["relationships"][0]["name"], d["relationships"][0]["name"]);
     EXPECT_EQ(written["relationships"][1]["name"], d["relationships"][1]["name"]);
+}
+
+TEST(WorkslikeFormat, TheNormalFormWritesEveryDefaultTheReaderTakes)
+{
+    const json given = json::parse(R"({
+      "parts": [{"name": "body", "cuboids": [{"min": [0, 0, 0], "max": [100, 60, 40]},
+                                             {"min": [10, 10, 10], "max": [90, 50, 40], "cavity": true}]},
+                {"name": "lid", "cuboids": [{"name": "lid", "min": [0, 0, 42], "max": [100, 60, 47]}]},
+                {"name": "tray", "cuboids": [{"name": "tray", "min": [20, 20, 12], "max": [80, 40, 30]}]}],
+      "relationships": [{"type": "cover", "name": "lid covers", "covering": ["lid"], "covered": ["body"]},
+                        {"type": "support", "name": "lid on body", "supporting": ["body"], "supported": ["lid"]},
+                        {"type": "fit_inside", "name": "tray in", "inner": ["tray"], "enclosing": "body"},
+                        {"type": "geometric", "name": "lid thin", "left": "lid.height",
+                         "right": [{"quantity": "tray.depth"}, {"quantity": "tray.left", "times": -1}]}]
+    })");
+    const json normal = io::readWorkslikeDocument(given).document;
+    EXPECT_EQ(normal["format"], "fabguide.workslike");
+    EXPECT_EQ(normal["version"], io::kWorkslikeFormatVersion);
+    EXPECT_EQ(normal["minimum_size"], 1.0);
+    EXPECT_EQ(normal["minimum_wall"], 1.0);
+    const json& body = normal["parts"][0]["cuboids"];
+    EXPECT_EQ(body[0],
+              (json{{"name", "body1"}, {"min", {0, 0, 0}}, {"max", {100, 60, 40}}, {"cavity", false}}));
+    EXPECT_EQ(body[1]["name"], "body2");
+    EXPECT_EQ(body[1]["cavity"], true);
+    for (const char* key : {"joints", "configurations", "locks"})
+        EXPECT_EQ(normal[key], json::array()) << key;
+    const json& r = normal["relationships"];
+    EXPECT_EQ(r[0]["just"], false);
+    EXPECT_EQ(r[0]["distance"], 5.0);
+    EXPECT_FALSE(r[0].contains("pairs"));  // inferred by the solve, not written in
+    EXPECT_EQ(r[1]["distance"], 100.0);
+    EXPECT_EQ(r[2]["just"], json::array());
+    EXPECT_EQ(r[2]["portion"], json::array());
+    EXPECT_FALSE(r[2].contains("apart"));
+    EXPECT_EQ(r[3]["left"], (json{{{"quantity", "lid.height"}, {"times", 1.0}}}));
+    EXPECT_EQ(r[3]["right"], (json{{{"quantity", "tray.depth"}, {"times", 1.0}},
+                                   {{"quantity", "tray.left"}, {"times", -1.0}}}));
+    EXPECT_EQ(r[3]["relation"], "equal");
+    EXPECT_EQ(r[3]["offset"], 0.0);
+}
+
+TEST(WorkslikeFormat, EveryBundledModelIsTheSameModelReadFromItsNormalForm)
+{
+    size_t models = 0;
+    for (const char* folder :
+         {"examples", "tests/data/printable", "tests/data/workslike", "tests/data/workslike/contradictory"})
+        for (const auto& entry :
+             std::filesystem::directory_iterator(std::string(FABGUIDE_SOURCE_DIR) + "/" + folder)) {
+            const std::string path = entry.path().string();
+            if (path.find(".workslike.json") == std::string::npos)
+                continue;
+            std::ifstream file(path);
+            const io::WorkslikeDocument given = io::readWorkslikeDocument(json::parse(file));
+            const io::WorkslikeDocument normal = io::readWorkslikeDocument(given.document);
+            EXPECT_EQ(normal.document, given.document) << path;  // the normal form of a normal form is itself
+            EXPECT_EQ(io::workslikeToJson(normal.model), io::workslikeToJson(given.model)) << path;
+            ++models;
+        }
+    EXPECT_GE(models, 80u);
 }

@@ -494,6 +494,27 @@ def test_a_file_the_core_refuses_is_refused_with_its_field_path(doc, tmp_path):
     assert doc.Objects == []
 
 
+def test_a_file_imports_with_the_cores_defaults_and_keeps_what_it_gives(doc, tmp_path):
+    """The import builds from the core's normal form: an unnamed cuboid gets the name the core gives it, the
+    defaults are the core's, and a cover's distance given in the file is kept (and written back)."""
+    model = {"parts": [{"name": "body", "cuboids": [{"min": [0, 0, 0], "max": [60, 40, 20]}]},
+                       {"name": "lid", "cuboids": [{"min": [0, 0, 21], "max": [60, 40, 24]}]}],
+             "relationships": [{"type": "cover", "name": "lid on top", "covering": ["lid"], "covered": ["body"],
+                                "distance": 8},
+                               {"type": "geometric", "name": "thin lid", "left": "lid.height", "right": []}]}
+    path = tmp_path / "plain.workslike.json"
+    path.write_text(json.dumps(model))
+    mech = workslike_file.read(doc, str(path))
+    cover, thin = [o for o in mech.Group if relationships.is_relationship(o)]
+    assert sorted(o.Label for o in doc.Objects if o.TypeId == "Part::Box") == ["body", "lid"]
+    assert (cover.Distance.Value, cover.Just, cover.Pairs) == (8, False, [])
+    assert (thin.Relation, thin.Offset.Value) == ("Equal", 0)
+    assert (mech.MinimumSize, mech.MinimumWall) == (1, 1)
+    out = tmp_path / "again.workslike.json"
+    workslike_file.write(mech, str(out))
+    assert json.loads(out.read_text())["relationships"][0]["distance"] == 8
+
+
 def test_the_preview_moves_parts_as_the_print_does_turns_first_then_slides(doc, source_dir):
     from freecad.fabguide.gui import posing
 
