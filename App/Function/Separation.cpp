@@ -319,16 +319,47 @@ Separation inferSeparation(const Model& arranged, int a, int b, int configuratio
     return best.separation;
 }
 
+namespace {
+
+/// Whether one move v of one cuboid against the other meets every demand (n, o): n·v ≥ o; Hildreth's method
+/// (coordinate ascent on the dual) finds the least such move where there is one. There is none for a way that
+/// keeps a pair on one side of each other in one pose and on the other side in the next, which no motion
+/// does.
+bool oneMoveKeeps(const std::vector<std::pair<Direction, double>>& demands)
+{
+    double v[3] = {0, 0, 0};
+    std::vector<double> weight(demands.size(), 0.0);
+    const auto shortOf = [&](const std::pair<Direction, double>& d) {
+        return d.second - (d.first[0] * v[0] + d.first[1] * v[1] + d.first[2] * v[2]);
+    };
+    bool moved = true;  // a sweep that moves nothing has converged
+    for (int sweep = 0; sweep < 1000 && moved; ++sweep) {
+        moved = false;
+        for (size_t k = 0; k < demands.size(); ++k) {
+            const Direction& n = demands[k].first;
+            const double step =
+                std::max(-weight[k], shortOf(demands[k]) / (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+            weight[k] += step;
+            for (int i = 0; i < 3; ++i)
+                v[i] += step * n[i];
+            moved = moved || std::abs(step) > 1e-12;
+        }
+    }
+    return std::all_of(demands.begin(), demands.end(), [&](const auto& d) { return shortOf(d) <= 1e-3; });
+}
+
+/// Whether two separations keep the pair on the same side (in whichever pose).
+bool sameSide(const Separation& s, const Separation& t)
+{
+    return s.a == t.a && s.b == t.b && s.direction == t.direction && s.walls == t.walls;
+}
+
+}  // namespace
+
 bool sameWay(const Choice& x, const Choice& y)
 {
-    if (x.separations.size() != y.separations.size())
-        return false;
-    for (size_t i = 0; i < x.separations.size(); ++i) {
-        const Separation &s = x.separations[i], &t = y.separations[i];
-        if (s.a != t.a || s.b != t.b || s.direction != t.direction || s.walls != t.walls)
-            return false;
-    }
-    return true;
+    return std::equal(x.separations.begin(), x.separations.end(), y.separations.begin(), y.separations.end(),
+                      sameSide);
 }
 
 std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
@@ -337,13 +368,20 @@ std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std:
     std::vector<Choice> choices;
     const auto consider = [&](const std::function<Option(int)>& option) {
         Choice c;
+        std::vector<std::pair<Direction, double>> apart;  // b moved against a by v: n·v ≥ overlap, each pose
         for (int k : judged) {
             Option o = option(k);
             c.cost += o.cost;
             c.near = c.near && o.near;
+            if (const Separation& s = o.separation; s.walls.empty())
+                apart.push_back(
+                    {s.a == a ? s.direction : Direction{-s.direction[0], -s.direction[1], -s.direction[2]},
+                     o.cost});
             if (std::find(poses.begin(), poses.end(), k) != poses.end())
                 c.separations.push_back(std::move(o.separation));
         }
+        if (!oneMoveKeeps(apart))
+            c.cost = std::numeric_limits<double>::infinity();  // tried last
         if (std::none_of(choices.begin(), choices.end(),
                          [&](const Choice& other) { return sameWay(c, other); }))
             choices.push_back(std::move(c));

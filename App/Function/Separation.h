@@ -46,7 +46,9 @@ std::vector<std::pair<int, int>> drawnInside(const Model& model);
 /// other with less to change (its bounding box, for parts turned by other than quarter turns).
 Separation inferSeparation(const Model& arranged, int a, int b, int configuration);
 
-/// One way of keeping a pair apart along a motion: a separation in each of its poses, and what it changes.
+/// One way of keeping a pair apart along a motion: a separation in each of its poses, and what it changes
+/// (the sum of what each pose changes; infinite for a way that has the pair change sides between poses, which
+/// no motion does: no one move of one against the other keeps them on their sides in every pose).
 struct Choice {
     std::vector<Separation> separations;
     double cost = 0;
@@ -59,10 +61,10 @@ bool sameWay(const Choice& x, const Choice& y);
 
 /// The ways of keeping a and b apart in each of `poses` (poses of one motion: a configuration and poses on
 /// the way to it, or the modelled pose alone), each chosen for all of them together, ranked by the change
-/// they make in all the poses `judged` (those and the rest of the motion): kept out pose by pose as
-/// inferSeparation keeps them out, held by one cavity all the way, or kept apart along one axis all the way.
-/// A pocket door turning into its bay stays within the bay's opening all the way, not out of the carcass at
-/// the ends and in the bay between, nor in the neighbouring bay its hinge was drawn a hair into.
+/// they make in all the poses `judged` (those and the rest of the motion; Choice::cost): kept out pose by
+/// pose as inferSeparation keeps them out, held by one cavity all the way, or kept apart along one axis all
+/// the way. A pocket door turning into its bay stays within the bay's opening all the way, not out of the
+/// carcass at the ends and in the bay between, nor in the neighbouring bay its hinge was drawn a hair into.
 std::vector<Choice> choicesAlong(const Model& arranged, int a, int b, const std::vector<int>& poses,
                                  const std::vector<int>& judged);
 

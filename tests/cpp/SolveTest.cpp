@@ -206,6 +206,23 @@ TEST(Solve, AHingeStaysOnTheCuboidItWasDrawnAlong)
               1 - 1e-6);  // running beside it
 }
 
+TEST(Solve, ADoorSwingingThroughAPostIsClearedByTheLeastChangeNotByRedesigningTheCabinet)
+{
+    const function::Model drawn = io::readWorkslike(doorThroughPost());
+    const function::SolveResult r = function::solve(drawn);
+    ASSERT_TRUE(r.solved);
+    double moved = 0;  // mm, over every coordinate
+    for (size_t c = 0; c < drawn.cuboids.size(); ++c)
+        for (int k = 0; k < 6; ++k)
+            moved += std::abs(r.model.cuboids[c].coordinates[k] - drawn.cuboids[c].coordinates[k]);
+    // Before: 1285 mm. The way kept the post below the door's face in some poses of its swing and above it in
+    // the next (ranked by the sum of each pose's least overlap), which the carcass 207 mm wider, the door 417
+    // mm wide and the post thinned to 1 mm met. Now: the post 14 mm to the right, the door 24 mm narrower.
+    EXPECT_LT(moved, 100);
+    const function::Cuboid& post = r.model.cuboids[2];
+    EXPECT_GE(post.at(Side::Right) - post.at(Side::Left), 10 - 1e-6);
+}
+
 TEST(Solve, AHingeAskedOffItsPartIsAConflictNamingTheJoint)
 {
     json d = doorThroughPost();
