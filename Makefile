@@ -36,7 +36,7 @@ CTEST_ARGS ?=
 CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFABGUIDE_WERROR=ON
 SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) -DFABGUIDE_SANITIZE=ON >/dev/null
 CPP_CHECK = cmake --build $(1) -j$(JOBS) --target fabguide_tests $(2) && ctest --test-dir $(1) -L cpp --output-on-failure -j$(JOBS) $(3)
-# Under the sanitizers three searches over a hundred pieces run twenty times slower (200 s of CI's 2 cores) and
+# Under the sanitizers three searches over a hundred pieces run twenty times slower (214 s of one core here) and
 # go through no code the shorter ones miss; the optimised builds run them (docs/decisions.md).
 SANITIZE_SKIP := MinWastageTest.TheSameSeedGivesTheSameSuggestionsOnOneThreadOrTwo
 SANITIZE_SKIP := $(SANITIZE_SKIP)|Skyline.SearchingTheTopOfTheLowestStripAgain

@@ -109,14 +109,8 @@ def inside(points, triangles):
     return result
 
 
-def to_box(points, lo, hi):
-    """Distance of each point from the box [lo, hi] (0 inside)."""
-    out = numpy.maximum(numpy.maximum(lo - points, points - hi), 0.0)
-    return numpy.sqrt((out * out).sum(axis=1))
-
-
 def to_boxes(points, lo, hi):
-    """Distance of each point from the nearest of the boxes [lo[i], hi[i]]."""
+    """Distance of each point from the nearest of the boxes [lo[i], hi[i]] (0 inside)."""
     out = numpy.maximum(numpy.maximum(lo - points[:, None, :], points[:, None, :] - hi), 0.0)
     return numpy.sqrt((out * out).sum(axis=2)).min(axis=1)
 
@@ -130,7 +124,7 @@ def to_segment(points, a, b):
 
 def moved(transform, points):
     r, t = transform
-    return points @ numpy.array(r).T + numpy.array(t)
+    return points @ numpy.asarray(r).T + numpy.asarray(t)
 
 
 def unmoved(transform, points):
@@ -196,7 +190,7 @@ def untouched_points(model, part, scale, gap, frame=None):
     points = numpy.concatenate(points)
     for c in model.part_cuboids[part]:
         if c.cavity:
-            points = points[to_box(points, numpy.array(c.lo), numpy.array(c.hi)) > 1e-9]
+            points = points[to_boxes(points, numpy.array([c.lo]), numpy.array([c.hi])) > 1e-9]
     keep = numpy.ones(len(points), dtype=bool)
     boxes = {q: (numpy.array([s.lo for s in model.solids(q)]), numpy.array([s.hi for s in model.solids(q)]))
              for q in model.parts if q != part and model.solids(q)}
