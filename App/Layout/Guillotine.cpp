@@ -459,8 +459,10 @@ Layout guillotine(const PackProblem& problem, long runs, std::uint64_t seed, Dea
         std::optional<Layout> layout;
         try {
             layout = run(problem, rules, poses, best ? rulesEnd : Deadline());
-        } catch (const PackingError& e) {  // this order ran out of boards; another may not
+        } catch (const PackingError& e) {  // this order ran out of boards; another may not, in the time left
             ranOutFirst = ranOutFirst.value_or(e);
+            if (rulesEnd.passed())
+                break;
             continue;
         }
         if (!layout)

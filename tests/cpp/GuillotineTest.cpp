@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -133,6 +135,24 @@ TEST(Guillotine, BoardsRunningOutNameThePartLeft)
     problem.settings.cuts = Cuts::Guillotine;
     try {
         guillotine(problem, 10, 1, kNoDeadline);
+        FAIL() << "two doors do not fit on one sheet";
+    } catch (const PackingError& e) {
+        EXPECT_NE(std::string(e.what()).find("'door'"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Guillotine, RunsWithoutEndStopAtTheDeadlineWhenEveryOrderRunsOutOfBoards)
+{
+    // Unbounded runs (the CLI's default) ran on for ever when no order fitted: the deadline was only checked
+    // once a layout was in hand. A search cancelled before it starts now names the part left after one run.
+    PackProblem problem;
+    problem.boards.push_back({"sheet", "ply", 1000, 600, 18, 1});
+    problem.parts = {rectangularPart("door", 900, 500, 2)};
+    problem.settings.cuts = Cuts::Guillotine;
+    const std::atomic<bool> cancelled{true};
+    try {
+        guillotine(problem, std::numeric_limits<long>::max(), 1,
+                   Deadline(Deadline::Clock::time_point::max(), &cancelled));
         FAIL() << "two doors do not fit on one sheet";
     } catch (const PackingError& e) {
         EXPECT_NE(std::string(e.what()).find("'door'"), std::string::npos) << e.what();
