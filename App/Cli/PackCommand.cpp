@@ -149,8 +149,10 @@ void addPackCommand(CLI::App& app)
         ->check(between(0.0, 86400.0))
         ->capture_default_str();
     args->job.search.iterations = std::numeric_limits<long>::max();
-    cmd->add_option("--iterations", args->job.search.iterations,
-                    "ordering swaps to try (default: as many as --time-limit allows; -1: parts squared)")
+    cmd->add_option(
+           "--iterations", args->job.search.iterations,
+           "ordering swaps to try, and as many runs of the saw's search (default: as many as --time-limit "
+           "allows; -1: parts squared, and 2000 runs)")
         ->check(CLI::Range(-1LL, 1000000000000000000LL));
     args->job.search.threads = cores();
     cmd->add_option(

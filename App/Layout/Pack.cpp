@@ -416,6 +416,13 @@ bool gridOutOfReach(const PackProblem& problem, long units, const Deadline& dead
            gridBytes(problem) > memoryLimit();
 }
 
+/// The guillotine search's runs: the ordering search's iterations when given (a run bounded by work is so
+/// bounded throughout), else kGuillotineRuns to the deadline.
+long guillotineRuns(const OrderingSearchOptions& search)
+{
+    return search.iterations < 0 ? kGuillotineRuns : search.iterations;
+}
+
 /// The guillotine search's layout instead of `layout` when it is better: a layout for a saw is a free one
 /// too, and on shop cut lists it often needs fewer sheets than MaxRects or Docking. Three stages:
 /// in its share of the time, unlimited stages (four stage counts a sheet) made a quarter of the runs and
@@ -428,7 +435,7 @@ Layout sawnIfBetter(const PackProblem& problem, Layout layout, const OrderingSea
     saw.settings.stages = 3;
     saw.settings.firstCut = FirstCut::Any;
     try {
-        Layout sawn = guillotine(saw, kGuillotineRuns, search.seed, deadline, search.threads);
+        Layout sawn = guillotine(saw, guillotineRuns(search), search.seed, deadline, search.threads);
         sawn.sawCuts.clear();
         return better(sawn, layout) ? sawn : layout;
     } catch (const PackingError&) {  // a strip at a board's edge too narrow to saw: the free layout stands
@@ -576,8 +583,7 @@ Layout pack(const PackProblem& given, const OrderingSearchOptions& search)
     const PackProblem problem = freelyTurned(given);
     checkSettings(problem);
     if (problem.settings.cuts == Cuts::Guillotine)
-        return guillotine(problem, search.iterations < 0 ? kGuillotineRuns : search.iterations, search.seed,
-                          deadline, search.threads);
+        return guillotine(problem, guillotineRuns(search), search.seed, deadline, search.threads);
     std::vector<int> left;
     for (const PartSpec& part : problem.parts)
         left.push_back(part.quantity);
