@@ -110,39 +110,42 @@ def inside(points, triangles):
 
 
 def to_boxes(points, lo, hi):
-    """Distance of each point from the nearest of the boxes [lo[i], hi[i]] (0 inside)."""
-    out = numpy.maximum(numpy.maximum(lo - points[:, None, :], points[:, None, :] - hi), 0.0)
-    return numpy.sqrt((out * out).sum(axis=2)).min(axis=1)
+    """Distance of each point (the last axis: x, y, z) from the nearest of the boxes [lo[i], hi[i]] (0 inside)."""
+    out = numpy.maximum(numpy.maximum(lo - points[..., None, :], points[..., None, :] - hi), 0.0)
+    return numpy.sqrt((out * out).sum(axis=-1)).min(axis=-1)
 
 
-def to_segment(points, a, b):
-    """Distance of each point from the segment a-b."""
+def to_segments(points, a, b):
+    """Distance of each point (N) from each segment a[p]-b[p] (P): P x N."""
     d = b - a
-    t = numpy.clip((points - a) @ d / max(d @ d, 1e-12), 0.0, 1.0)
-    return numpy.linalg.norm(points - (a + t[:, None] * d), axis=1)
+    t = numpy.clip(numpy.einsum("pnj,pj->pn", points[None] - a[:, None], d) /
+                   numpy.maximum(numpy.einsum("pj,pj->p", d, d), 1e-12)[:, None], 0.0, 1.0)
+    return numpy.linalg.norm(points[None] - (a[:, None] + t[..., None] * d[:, None]), axis=2)
 
 
-def moved(transform, points):
-    r, t = transform
-    return points @ numpy.asarray(r).T + numpy.asarray(t)
+def moved(transforms, points):
+    """The points (N) moved by each of the P rigid transforms: P x N."""
+    r, t = transforms
+    return points @ r.transpose(0, 2, 1) + t[:, None]
 
 
-def unmoved(transform, points):
-    """The points a rigid transform moves onto `points`."""
-    r, t = transform
-    return (points - t) @ r
+def unmoved(transforms, points):
+    """The points each of the P rigid transforms moves onto points[p] (P x N): P x N."""
+    r, t = transforms
+    return (points - t[:, None]) @ r
 
 
 def part_frames(model):
-    """A part's model transform `f` of the way to configuration k, as numpy arrays, each computed once."""
+    """A part's model transforms at the poses (k, f) of a way (f of the way to configuration k), stacked as
+    numpy arrays (P rotations, P translations), each transform computed once."""
     frames = {}
 
-    def frame(part, k, f):
-        if (part, k, f) not in frames:
-            r, t = model.part_transform(part, k, f)
-            frames[part, k, f] = numpy.array(r), numpy.array(t)
-        return frames[part, k, f]
-    return frame
+    def way_frames(part, way):
+        if (part, tuple(way)) not in frames:
+            rs, ts = zip(*(model.part_transform(part, k, f) for k, f in way))
+            frames[part, tuple(way)] = numpy.array(rs, float), numpy.array(ts, float)
+        return frames[part, tuple(way)]
+    return way_frames
 
 
 def joint_reach(model, j, scale, gap):
@@ -191,7 +194,6 @@ def untouched_points(model, part, scale, gap, frame=None):
     for c in model.part_cuboids[part]:
         if c.cavity:
             points = points[to_boxes(points, numpy.array([c.lo]), numpy.array([c.hi])) > 1e-9]
-    keep = numpy.ones(len(points), dtype=bool)
     boxes = {q: (numpy.array([s.lo for s in model.solids(q)]), numpy.array([s.hi for s in model.solids(q)]))
              for q in model.parts if q != part and model.solids(q)}
     corners = {q: numpy.array([[x, y, z] for s in model.solids(q) for x in (s.lo[0], s.hi[0])
@@ -199,24 +201,24 @@ def untouched_points(model, part, scale, gap, frame=None):
     places = [(place, joint_reach(model, j, scale, gap)) for j in model.joints.values()
               if j["type"] in ("hinge", "sliding_hinge", "double_pivot") for place in joint_places(model, j)]
     ways = [[(None, 1.0)]] + [[(k, i / POSES) for i in range(POSES + 1)] for k in model.configuration_order]
-    for way in ways:
-        last = {}
-        for k, f in way:
-            at = frame(part, k, f)
-            world = moved(at, points)
-            for q, (lo, hi) in boxes.items():
-                near = to_boxes(unmoved(frame(q, k, f), world), lo, hi)
-                posed = unmoved(at, moved(frame(q, k, f), corners[q]))  # q's corners in the part's frame
-                keep &= near > margin
-                if q in last:  # on the way between the last pose and this one: within half the move
-                    step = float(numpy.linalg.norm(posed - last[q][1], axis=1).max())
-                    keep &= numpy.minimum(near, last[q][0]) > margin + 0.55 * step
-                last[q] = (near, posed)
-            for (place, a, b, radius), reach in places:
-                ends = moved(frame(place, k, f), numpy.array([a, b])) if place else numpy.array([a, b])
-                a_, b_ = unmoved(at, ends)
-                keep &= to_segment(points, a_, b_) > radius + reach
-    return points[keep]
+    for way in ways:  # every pose of a way at once; the points a check drops are not checked again
+        at = frame(part, way)
+        for q, (lo, hi) in boxes.items():
+            others = frame(q, way)
+            near = numpy.concatenate([to_boxes(unmoved(others, moved(at, chunk)), lo, hi)
+                                      for chunk in numpy.array_split(points, 1 + len(points) // 256)], axis=1)
+            keep = (near > margin).all(axis=0)
+            if len(way) > 1:  # on the way between two poses: within half the move
+                posed = unmoved(at, moved(others, corners[q]))  # q's corners in the part's frame
+                step = numpy.linalg.norm(posed[1:] - posed[:-1], axis=2).max(axis=1)
+                keep &= (numpy.minimum(near[1:], near[:-1]) > margin + 0.55 * step[:, None]).all(axis=0)
+            points = points[keep]
+        for (place, a, b, radius), reach in places:
+            ends = numpy.array([a, b])
+            ends = moved(frame(place, way), ends) if place else numpy.broadcast_to(ends, (len(way), 2, 3))
+            ends = unmoved(at, ends)
+            points = points[(to_segments(points, ends[:, 0], ends[:, 1]) > radius + reach).all(axis=0)]
+    return points
 
 
 def on_the_bed(points, scale, turned):
