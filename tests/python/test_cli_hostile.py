@@ -294,9 +294,9 @@ def test_an_equality_of_100000_references_is_refused_by_name(fabguide_cli, sourc
 
 def test_sixty_near_limit_and_hostile_inputs_finish_or_are_refused_by_name(fabguide_cli):
     """The cases of tests/gen/hostile.py across pack, solve, printable and optimise each end with exit 0, or
-    exit 1 naming the field, under 2 GB. Their time is judged by the benchmark run of the same script, not here:
-    a test does not assert on wall time."""
-    rows = list(hostile.results(fabguide_cli, limit=2.0, timed=False))
+    exit 1 naming the field, under 2 GB. Their time is judged by the benchmark run of the same script (2 s
+    searches), not here: a test does not assert on wall time, and half-second searches reach the same ends."""
+    rows = list(hostile.results(fabguide_cli, limit=0.5, timed=False))
     assert len(rows) >= 60
     assert [(row[0], row[6]) for row in rows if row[6]] == []
 
