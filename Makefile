@@ -8,7 +8,8 @@
 #   make deb      ... then build the Debian package of this release into build/ (tools/make-deb)
 # and what CI runs besides `make test` (.ci/run):
 #   make test-debian13   `make test` inside a Debian 13 chroot (FreeCAD 1.0, OCCT 7.8), made by tools/in-debian13;
-#                        CTEST_ARGS="-LE host" (as CI runs it) leaves out the suites no Debian release changes
+#                        CTEST_ARGS="-LE host" (as CI runs it) leaves out the suites no Debian release changes,
+#                        CMAKE_ARGS=-DFABGUIDE_CPP_TESTS=OFF (as CI) the C++ tests, run by Debian 12 and the sanitizers
 #   make test-deb        `make deb`, then apt install the package and test the installed workbench (tools/test-deb)
 #   make test-deb-debian13   the same in the Debian 13 chroot
 #   make demo-debian13   `make demo` there
@@ -32,6 +33,7 @@ FIRST ?= 0
 BASE ?= HEAD
 SEEDS ?= 200
 CTEST_ARGS ?=
+CMAKE_ARGS ?=
 # The clang builds check the code, not its speed: -O1 compiles in half the time of -O3 and keeps the sanitizers fast.
 CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFABGUIDE_WERROR=ON
 SANITIZE_CONFIGURE = cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++ $(CLANG_FLAGS) -DFABGUIDE_SANITIZE=ON >/dev/null
@@ -46,7 +48,7 @@ SANITIZE_SKIP := $(SANITIZE_SKIP)|LeastDesignTest.ShortestSidesAreNoLongerThanAn
 	clang-deps fuzz-products deb test-deb test-deb-debian13 test-debian14 translations same-outputs
 
 all: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
 	cmake --build $(BUILD) -j$(JOBS)
 
 deps:
@@ -68,7 +70,7 @@ demo: install
 	  { grep -E "^(wrote|demo: )" || true; }; test $${PIPESTATUS[0]} -eq 0
 
 test-debian13:
-	tools/in-debian13 make test CTEST_ARGS="$(CTEST_ARGS)"
+	tools/in-debian13 make test CTEST_ARGS="$(CTEST_ARGS)" CMAKE_ARGS="$(CMAKE_ARGS)"
 
 deb: all
 	tools/make-deb $(BUILD)
