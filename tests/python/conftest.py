@@ -5,7 +5,7 @@ import pytest
 
 
 def sample(items):
-    """One in FABGUIDE_SAMPLE of `items`, from the first (CI's Debian 13 run: 6; docs/decisions.md); all by default."""
+    """One in FABGUIDE_SAMPLE of `items`, from the first (CI's Debian 13 run: 12; docs/decisions.md); all by default."""
     return list(items)[::int(os.environ.get("FABGUIDE_SAMPLE") or 1)]
 
 
