@@ -203,16 +203,17 @@ def untouched_points(model, part, scale, gap, frame=None):
     ways = [[(None, 1.0)]] + [[(k, i / POSES) for i in range(POSES + 1)] for k in model.configuration_order]
     for way in ways:  # every pose of a way at once; the points a check drops are not checked again
         at = frame(part, way)
+        world = moved(at, points)  # P x N
         for q, (lo, hi) in boxes.items():
             others = frame(q, way)
-            near = numpy.concatenate([to_boxes(unmoved(others, moved(at, chunk)), lo, hi)
-                                      for chunk in numpy.array_split(points, 1 + len(points) // 256)], axis=1)
+            near = numpy.concatenate([to_boxes(unmoved(others, chunk), lo, hi)
+                                      for chunk in numpy.array_split(world, 1 + len(points) // 256, axis=1)], axis=1)
             keep = (near > margin).all(axis=0)
             if len(way) > 1:  # on the way between two poses: within half the move
                 posed = unmoved(at, moved(others, corners[q]))  # q's corners in the part's frame
                 step = numpy.linalg.norm(posed[1:] - posed[:-1], axis=2).max(axis=1)
                 keep &= (numpy.minimum(near[1:], near[:-1]) > margin + 0.55 * step[:, None]).all(axis=0)
-            points = points[keep]
+            points, world = points[keep], world[:, keep]
         for (place, a, b, radius), reach in places:
             ends = numpy.array([a, b])
             ends = moved(frame(place, way), ends) if place else numpy.broadcast_to(ends, (len(way), 2, 3))
